@@ -1,0 +1,21 @@
+// Energy and momentum, the quantities the physics tests check.
+#pragma once
+
+#include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/state.h"
+
+namespace rigid_body_sim::core {
+
+/// ½ M |v|² + ½ ωᵀ I ω (J).
+double kineticEnergy(const BodyModel& body, const BodyState& s);
+
+/// −M g · p_WB (J), zero at the world origin.
+double potentialEnergy(const BodyModel& body, const BodyState& s, const Vec3& gravity_W);
+
+/// Kinetic plus potential energy of all bodies (J).
+double totalEnergy(const Model& model, const State& state);
+
+/// Angular momentum about the centre of mass, world frame: R_WB I_B w_B (kg·m²/s).
+Vec3 angularMomentumWorld(const BodyModel& body, const BodyState& s);
+
+}  // namespace rigid_body_sim::core

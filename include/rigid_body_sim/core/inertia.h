@@ -1,0 +1,47 @@
+// Mass properties: point-mass inertia, the parallel-axis theorem, lumping
+// rigidly joined parts, and the physical validity of an inertia tensor.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/core/types.h"
+
+namespace rigid_body_sim::core {
+
+/// Mass, centre of mass and inertia of a rigid part, all in one frame F.
+struct MassProperties {
+  double mass = 0.0;          ///< kg
+  Vec3 p_FC = Vec3::Zero();   ///< centre of mass C in F (m)
+  Mat3 I_C_F = Mat3::Zero();  ///< inertia about C, axes of F (kg·m²)
+};
+
+/// Inertia of point masses mᵢ at rᵢ about their centre of mass (the notes,
+/// corrected by ERRATA.md): I = Σ mᵢ (rᵢᵀrᵢ 𝐈 − rᵢrᵢᵀ), rᵢ measured from the
+/// centre of mass. Positions may be given in any frame; they are re-centred.
+MassProperties pointMassProperties(const std::vector<double>& masses,
+                                   const std::vector<Vec3>& positions);
+
+/// Parallel-axis theorem: inertia about a point O displaced by d = p_O − p_C
+/// from the centre of mass C: I_O = I_C + m (dᵀd 𝐈 − d dᵀ).
+Mat3 parallelAxis(const Mat3& I_C, double mass, const Vec3& d);
+
+/// Combined mass properties of rigidly joined parts expressed in one frame.
+MassProperties combine(const std::vector<MassProperties>& parts);
+
+/// Checks that I is an inertia tensor a real mass distribution can have:
+/// finite, symmetric, positive definite (positive semi-definite if
+/// allow_zero), and its principal moments meeting the triangle inequality
+/// I₁ + I₂ ≥ I₃ and its rotations. Throws std::invalid_argument naming
+/// `field` and the offending values.
+void validateInertia(const Mat3& I, const std::string& field, bool allow_zero = false);
+
+/// Principal axes: I = R diag(moments) Rᵀ with R a proper rotation. When I
+/// is already diagonal, R is exactly the identity (no eigen-solver rounding).
+struct PrincipalAxes {
+  Vec3 moments;  ///< kg·m²
+  Quat q_FP;     ///< orientation of the principal frame P in the frame F of I
+};
+PrincipalAxes principalAxes(const Mat3& I);
+
+}  // namespace rigid_body_sim::core

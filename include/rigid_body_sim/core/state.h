@@ -1,0 +1,54 @@
+// The state: everything that changes, as a plain value. A snapshot is a copy,
+// a reset is an assignment, a determinism check is a comparison.
+#pragma once
+
+#include <vector>
+
+#include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/types.h"
+
+namespace rigid_body_sim::core {
+
+/// State of one body, in its body frame B (centre of mass, principal axes).
+struct BodyState {
+  Vec3 p_WB = Vec3::Zero();      ///< centre of mass in the world (m)
+  Vec3 v_WB = Vec3::Zero();      ///< velocity of the centre of mass, world frame (m/s)
+  Quat q_WB = Quat::Identity();  ///< orientation of B in W (unit)
+  /// Angular velocity expressed in B (rad/s). Stored in the body frame
+  /// because Euler's equations live there: a torque-free step needs no
+  /// rotation of vectors, and the world value is R_WB w_B.
+  Vec3 w_B = Vec3::Zero();
+
+  bool operator==(const BodyState& o) const {
+    return p_WB == o.p_WB && v_WB == o.v_WB && q_WB.coeffs() == o.q_WB.coeffs() && w_B == o.w_B;
+  }
+};
+
+struct State {
+  double time = 0.0;  ///< s
+  std::vector<BodyState> bodies;
+
+  bool operator==(const State& o) const { return time == o.time && bodies == o.bodies; }
+};
+
+/// The kinematics users see: the URDF root link frame L.
+struct LinkState {
+  Vec3 p_WL = Vec3::Zero();      ///< link origin in the world (m)
+  Quat q_WL = Quat::Identity();  ///< link orientation in the world
+  Vec3 v_WL = Vec3::Zero();      ///< velocity of the link origin, world frame (m/s)
+  Vec3 w_W = Vec3::Zero();       ///< angular velocity, world frame (rad/s)
+};
+
+/// Link pose and twist of a body.
+LinkState linkState(const BodyModel& body, const BodyState& s);
+
+/// The body state whose link frame has the given pose and twist.
+BodyState bodyStateFromLink(const BodyModel& body, const LinkState& link);
+
+/// A state with every body at rest at the identity pose, time 0.
+State restState(const Model& model);
+
+/// Angular velocity in the world frame: ω_W = R_WB w_B (rad/s).
+inline Vec3 angularVelocityWorld(const BodyState& s) { return s.q_WB * s.w_B; }
+
+}  // namespace rigid_body_sim::core

@@ -1,0 +1,32 @@
+// Common Eigen aliases and small helpers of the core. Eigen only.
+//
+// Frame names follow Drake's monogram notation: p_WB is the position of B in
+// W, q_WB the orientation of B in W, v_WB the velocity of B in W, w_B an
+// angular velocity expressed in B. Frames used throughout:
+//   W  the world (inertial) frame, z up (REP 103)
+//   L  the URDF root link frame: what users see and what is reported
+//   B  the body frame: origin at the centre of mass, axes along the
+//      principal axes of inertia, so the inertia tensor is diagonal in B
+#pragma once
+
+#include <cmath>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace rigid_body_sim::core {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using Quat = Eigen::Quaterniond;
+
+/// The cross-product matrix r* of the notes: r × q = skew(r) q.
+inline Mat3 skew(const Vec3& r) {
+  Mat3 s;
+  s << 0.0, -r.z(), r.y(),  //
+      r.z(), 0.0, -r.x(),   //
+      -r.y(), r.x(), 0.0;
+  return s;
+}
+
+}  // namespace rigid_body_sim::core

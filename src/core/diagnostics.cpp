@@ -1,0 +1,26 @@
+#include "rigid_body_sim/core/diagnostics.h"
+
+namespace rigid_body_sim::core {
+
+double kineticEnergy(const BodyModel& body, const BodyState& s) {
+  return 0.5 * body.mass * s.v_WB.squaredNorm() + 0.5 * s.w_B.dot(body.inertia_B.cwiseProduct(s.w_B));
+}
+
+double potentialEnergy(const BodyModel& body, const BodyState& s, const Vec3& gravity_W) {
+  return -body.mass * gravity_W.dot(s.p_WB);
+}
+
+double totalEnergy(const Model& model, const State& state) {
+  double e = 0.0;
+  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
+    e += kineticEnergy(model.body(i), state.bodies[i]) +
+         potentialEnergy(model.body(i), state.bodies[i], model.gravity());
+  }
+  return e;
+}
+
+Vec3 angularMomentumWorld(const BodyModel& body, const BodyState& s) {
+  return s.q_WB * body.inertia_B.cwiseProduct(s.w_B);
+}
+
+}  // namespace rigid_body_sim::core
