@@ -1,0 +1,131 @@
+#include "rigid_body_sim/io/urdf_loader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <urdf_parser/urdf_parser.h>
+#include <vector>
+
+#include "rigid_body_sim/core/inertia.h"
+
+namespace rigid_body_sim::io {
+namespace {
+
+using core::Mat3;
+using core::Quat;
+using core::Vec3;
+
+/// A rigid transform: the pose of a frame in the root link frame L.
+struct Pose {
+  Quat q = Quat::Identity();
+  Vec3 p = Vec3::Zero();
+  Pose operator*(const Pose& o) const { return {q * o.q, p + q * o.p}; }
+};
+
+Pose toPose(const urdf::Pose& u) {
+  // urdf::Rotation is (x, y, z, w); Eigen's constructor takes (w, x, y, z).
+  return {Quat(u.rotation.w, u.rotation.x, u.rotation.y, u.rotation.z).normalized(),
+          Vec3(u.position.x, u.position.y, u.position.z)};
+}
+
+const char* jointTypeName(int type) {
+  switch (type) {
+    case urdf::Joint::REVOLUTE: return "revolute";
+    case urdf::Joint::CONTINUOUS: return "continuous";
+    case urdf::Joint::PRISMATIC: return "prismatic";
+    case urdf::Joint::FLOATING: return "floating";
+    case urdf::Joint::PLANAR: return "planar";
+    case urdf::Joint::FIXED: return "fixed";
+    default: return "unknown";
+  }
+}
+
+class Lumper {
+ public:
+  explicit Lumper(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& what) const { throw UrdfError(source_ + ": " + what); }
+
+  /// Mass properties of `link` in L, given the pose of the link in L.
+  core::MassProperties part(const urdf::Link& link, const Pose& X_LK) const {
+    const std::string where = "link '" + link.name + "'";
+    if (!link.inertial) {
+      fail(where + " has no <inertial>: every link of the body needs a mass and an inertia "
+                   "(a massless frame can say <mass value=\"0\"/> with zero inertia)");
+    }
+    const urdf::Inertial& in = *link.inertial;
+    if (!std::isfinite(in.mass) || in.mass < 0.0) {
+      std::ostringstream value;
+      value << in.mass;
+      fail(where + ": <mass value> = " + value.str() + ": must be finite and >= 0 kg");
+    }
+    Mat3 I;
+    I << in.ixx, in.ixy, in.ixz,  //
+        in.ixy, in.iyy, in.iyz,   //
+        in.ixz, in.iyz, in.izz;
+    try {
+      core::validateInertia(I, "<inertia>", /*allow_zero=*/true);
+    } catch (const std::invalid_argument& e) {
+      fail(where + ": " + e.what());
+    }
+    if (in.mass == 0.0 && !I.isZero(0.0)) fail(where + ": mass is 0 kg but <inertia> is not zero");
+    // <inertial><origin> places the centre of mass and the inertia axes.
+    const Pose X_LI = X_LK * toPose(in.origin);
+    const Mat3 R = X_LI.q.toRotationMatrix();
+    return {in.mass, X_LI.p, R * I * R.transpose()};
+  }
+
+  /// Adds `link` and, through fixed joints, everything below it.
+  void collect(const urdf::Link& link, const Pose& X_LK, std::vector<core::MassProperties>& parts) const {
+    parts.push_back(part(link, X_LK));
+    for (const auto& joint : link.child_joints) {
+      if (joint->type != urdf::Joint::FIXED) {
+        fail(std::string("joint '") + joint->name + "' is " + jointTypeName(joint->type) +
+             ": only fixed joints are supported (articulated bodies are out of scope)");
+      }
+      const auto child = std::find_if(link.child_links.begin(), link.child_links.end(),
+                                      [&](const auto& l) { return l->name == joint->child_link_name; });
+      if (child == link.child_links.end()) fail("joint '" + joint->name + "' has no child link");
+      collect(**child, X_LK * toPose(joint->parent_to_joint_origin_transform), parts);
+    }
+  }
+
+ private:
+  std::string source_;
+};
+
+}  // namespace
+
+core::BodySpec loadUrdfString(const std::string& xml, const std::string& source) {
+  const Lumper lumper(source);
+  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
+  if (!model) lumper.fail("not a valid URDF document (the parser's reason is printed above)");
+  const urdf::LinkConstSharedPtr root = model->getRoot();
+  if (!root) lumper.fail("no root link");
+
+  std::vector<core::MassProperties> parts;
+  lumper.collect(*root, Pose{}, parts);
+  const core::MassProperties total = core::combine(parts);
+  if (!(total.mass > 0.0)) {
+    lumper.fail("the body rooted at link '" + root->name + "' has a total mass of 0 kg");
+  }
+  core::BodySpec spec;
+  spec.name = root->name;
+  spec.mass = total.mass;
+  spec.p_LC = total.p_FC;
+  spec.I_C_L = total.I_C_F;
+  return spec;
+}
+
+core::BodySpec loadUrdfFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw UrdfError("cannot read URDF '" + path + "': " + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return loadUrdfString(text.str(), path);
+}
+
+}  // namespace rigid_body_sim::io
