@@ -1,0 +1,136 @@
+// The URDF loader: lumping by fixed joints, the inertial frame, and refusals
+// that name the element. Test models are inline, as in MuJoCo's tests.
+#include "rigid_body_sim/io/urdf_loader.h"
+
+#include <gtest/gtest.h>
+
+#include "rigid_body_sim/core/inertia.h"
+#include "rigid_body_sim/core/state.h"
+#include "../test_util.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+std::string robot(const std::string& body) { return "<robot name='r'>" + body + "</robot>"; }
+
+std::string link(const std::string& name, const std::string& inertial) {
+  return "<link name='" + name + "'>" + inertial + "</link>";
+}
+
+std::string inertial(double mass, const std::string& origin = "", const std::string& inertia =
+                                                                      "ixx='0.1' iyy='0.2' izz='0.25' ixy='0' ixz='0' iyz='0'") {
+  return "<inertial>" + origin + "<mass value='" + std::to_string(mass) + "'/><inertia " + inertia + "/></inertial>";
+}
+
+std::string joint(const std::string& name, const std::string& type, const std::string& parent,
+                  const std::string& child, const std::string& xyz, const std::string& rpy = "0 0 0") {
+  return "<joint name='" + name + "' type='" + type + "'><parent link='" + parent + "'/><child link='" + child +
+         "'/><origin xyz='" + xyz + "' rpy='" + rpy + "'/>" + (type == "fixed" ? "" : "<axis xyz='0 0 1'/>") +
+         "</joint>";
+}
+
+core::BodySpec load(const std::string& xml) { return io::loadUrdfString(xml, "test.urdf"); }
+
+void expectRefused(const std::string& xml, std::initializer_list<std::string> parts) {
+  expectThrowsWith<io::UrdfError>([&] { load(xml); }, parts);
+}
+
+TEST(UrdfLoader, ShippedBoxIsTheIssueBox) {
+  const core::BodySpec b = io::loadUrdfFile(std::string(RBS_SOURCE_DIR) + "/urdf/box.urdf");
+  EXPECT_EQ(b.name, "base_link");
+  EXPECT_DOUBLE_EQ(b.mass, 1.0);
+  EXPECT_LT((b.I_C_L - boxInertia(1.0, Vec3(0.2, 0.1, 0.05))).norm(), 1e-17);
+  EXPECT_EQ(b.p_LC, Vec3::Zero());
+}
+
+TEST(UrdfLoader, InertialOriginPlacesAndTurnsTheInertia) {
+  // The inertia is given in the inertial frame, turned 90° about z: ixx and
+  // iyy swap in the link frame; the centre of mass is at the origin's xyz.
+  const core::BodySpec b =
+      load(robot(link("base", inertial(2.0, "<origin xyz='0.1 0.2 0.3' rpy='0 0 1.5707963267948966'/>"))));
+  EXPECT_LT((b.p_LC - Vec3(0.1, 0.2, 0.3)).norm(), 1e-15);
+  EXPECT_LT((b.I_C_L - Mat3(Vec3(0.2, 0.1, 0.25).asDiagonal())).norm(), 1e-15);
+}
+
+TEST(UrdfLoader, FixedJointsLumpByTheParallelAxisTheorem) {
+  const core::BodySpec b = io::loadUrdfFile(std::string(RBS_SOURCE_DIR) + "/urdf/two_boxes.urdf");
+  EXPECT_EQ(b.name, "base_link");
+  EXPECT_DOUBLE_EQ(b.mass, 2.0);
+  EXPECT_LT((b.p_LC - Vec3(0.1, 0.0, 0.0)).norm(), 1e-16);
+  // Two 0.2 m cubes side by side are one 0.4 × 0.2 × 0.2 bar.
+  EXPECT_LT((b.I_C_L - boxInertia(2.0, Vec3(0.2, 0.1, 0.1))).norm(), 1e-15);
+}
+
+TEST(UrdfLoader, ChainsOfFixedJointsComposeTheirTransforms) {
+  // base → mid (0.5 m along x, turned 90° about z) → tip (0.5 m along the
+  // turned x, i.e. world y). Point masses of 1 kg at mid and tip, base 2 kg.
+  const std::string zero = "ixx='0' iyy='0' izz='0' ixy='0' ixz='0' iyz='0'";
+  const std::string xml =
+      robot(link("base", inertial(2.0)) + link("mid", inertial(1.0, "", zero)) + link("tip", inertial(1.0, "", zero)) +
+            joint("j1", "fixed", "base", "mid", "0.5 0 0", "0 0 1.5707963267948966") +
+            joint("j2", "fixed", "mid", "tip", "0.5 0 0"));
+  const core::BodySpec b = load(xml);
+  EXPECT_DOUBLE_EQ(b.mass, 4.0);
+  EXPECT_LT((b.p_LC - Vec3(0.25, 0.125, 0.0)).norm(), 1e-15);  // (2·0 + 1·(0.5,0) + 1·(0.5,0.5)) / 4
+  const core::MassProperties expected = core::combine(
+      {{2.0, Vec3::Zero(), Vec3(0.1, 0.2, 0.25).asDiagonal()}, {1.0, Vec3(0.5, 0, 0), Mat3::Zero()},
+       {1.0, Vec3(0.5, 0.5, 0), Mat3::Zero()}});
+  EXPECT_LT((b.I_C_L - expected.I_C_F).norm(), 1e-14);
+}
+
+TEST(UrdfLoader, ReportsTheLinkFrameNotTheCentreOfMass) {
+  const core::BodySpec b = io::loadUrdfFile(std::string(RBS_SOURCE_DIR) + "/urdf/two_boxes.urdf");
+  core::ModelSpec ms = spec(b, 1e-3, Vec3::Zero());
+  const core::Model model(ms);
+  core::LinkState link;
+  link.p_WL = Vec3(1.0, 2.0, 3.0);
+  link.q_WL = Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ()));
+  link.w_W = Vec3(0.0, 0.0, 2.0);
+  const core::BodyState s = core::bodyStateFromLink(model.body(0), link);
+  // The centre of mass is 0.1 m along the link's x, which points along world y.
+  EXPECT_LT((s.p_WB - Vec3(1.0, 2.1, 3.0)).norm(), 1e-15);
+  EXPECT_LT((s.v_WB - Vec3(-0.2, 0.0, 0.0)).norm(), 1e-15);  // ω × r
+  const core::LinkState back = core::linkState(model.body(0), s);
+  EXPECT_LT((back.p_WL - link.p_WL).norm(), 1e-15);
+  EXPECT_LT((back.v_WL - link.v_WL).norm(), 1e-15);
+  EXPECT_LT(back.q_WL.angularDistance(link.q_WL), 1e-15);
+}
+
+TEST(UrdfLoader, RefusesAMovableJoint) {
+  const std::string continuous = robot(link("base", inertial(1.0)) + link("wheel", inertial(1.0)) +
+                                       joint("axle", "continuous", "base", "wheel", "0 0 0.1"));
+  expectRefused(continuous, {"test.urdf", "joint 'axle' is continuous", "only fixed joints"});
+  const std::string revolute =
+      robot(link("base", inertial(1.0)) + link("arm", inertial(1.0)) +
+            "<joint name='shoulder' type='revolute'><parent link='base'/><child link='arm'/>"
+            "<axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='10' velocity='1'/></joint>");
+  expectRefused(revolute, {"joint 'shoulder' is revolute"});
+}
+
+TEST(UrdfLoader, RefusesALinkWithoutInertial) {
+  const std::string xml = robot(link("base", inertial(1.0)) + link("sensor", "") +
+                                joint("mount", "fixed", "base", "sensor", "0 0 0.1"));
+  expectRefused(xml, {"link 'sensor' has no <inertial>"});
+}
+
+TEST(UrdfLoader, RefusesNonPhysicalInertia) {
+  expectRefused(robot(link("base", inertial(1.0, "", "ixx='1' iyy='1' izz='3' ixy='0' ixz='0' iyz='0'"))),
+                {"link 'base'", "<inertia> = (ixx=1, iyy=1, izz=3", "triangle inequality"});
+  expectRefused(robot(link("base", inertial(1.0, "", "ixx='1' iyy='-1' izz='1' ixy='0' ixz='0' iyz='0'"))),
+                {"link 'base'", "iyy=-1", "positive semi-definite"});
+}
+
+TEST(UrdfLoader, RefusesZeroTotalMass) {
+  const std::string zero = "ixx='0' iyy='0' izz='0' ixy='0' ixz='0' iyz='0'";
+  expectRefused(robot(link("base", inertial(0.0, "", zero))), {"link 'base'", "total mass of 0 kg"});
+  expectRefused(robot(link("base", inertial(0.0))), {"link 'base': mass is 0 kg but <inertia> is not zero"});
+}
+
+TEST(UrdfLoader, RefusesNonsenseAndMissingFiles) {
+  expectRefused("this is not xml", {"test.urdf", "not a valid URDF"});
+  expectThrowsWith<io::UrdfError>([] { io::loadUrdfFile("/nonexistent/robot.urdf"); },
+                                  {"cannot read URDF '/nonexistent/robot.urdf'", "No such file"});
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test

@@ -1,0 +1,136 @@
+// rbsim end to end: what a user running the binary gets (JSON, CSV, exit codes).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace rigid_body_sim::test {
+namespace {
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string tempPath(const std::string& name) {
+  return ::testing::TempDir() + "rbsim_test_" + std::to_string(::getpid()) + "_" + name;
+}
+
+Result rbsim(const std::string& args) {
+  const std::string out = tempPath("out"), err = tempPath("err");
+  const std::string cmd = std::string(RBS_RBSIM) + " " + args + " >" + out + " 2>" + err;
+  const int status = std::system(cmd.c_str());
+  Result r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+const std::string kBox = std::string(RBS_SOURCE_DIR) + "/urdf/box.urdf";
+
+std::vector<double> seq(const YAML::Node& n) { return n.as<std::vector<double>>(); }
+
+TEST(Rbsim, PrintsOneJsonLineWithTheRunsFigures) {
+  const Result r = rbsim("--urdf " + kBox + " --set initial.position=[0,0,10] --duration 1 --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1);
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  const YAML::Node j = YAML::Load(r.out);  // JSON is YAML
+  EXPECT_EQ(j["steps"].as<long>(), 1000);
+  EXPECT_NEAR(j["sim_time"].as<double>(), 1.0, 1e-12);
+  EXPECT_GT(j["wall_s"].as<double>(), 0.0);
+  EXPECT_GT(j["ns_per_step"].as<double>(), 0.0);
+  // Free fall from 10 m for 1 s with Euler-Cromer: z = 10 − ½ g t² − ½ g Δt t.
+  const auto p = seq(j["final"]["position"]);
+  EXPECT_NEAR(p[2], 10.0 - 0.5 * 9.81 - 0.5 * 9.81 * 1e-3, 1e-9);
+  EXPECT_EQ(seq(j["final"]["quaternion"]), (std::vector<double>{0, 0, 0, 1}));
+  EXPECT_NEAR(seq(j["final"]["linear_velocity"])[2], -9.81, 1e-10);
+  EXPECT_EQ(seq(j["final"]["angular_velocity"]), (std::vector<double>{0, 0, 0}));
+  EXPECT_NEAR(j["energy"]["start"].as<double>(), 1.0 * 9.81 * 10.0, 1e-12);
+  // Euler-Cromer's energy error in free fall: ½ m g² Δt t.
+  EXPECT_NEAR(j["energy"]["end"].as<double>() - j["energy"]["start"].as<double>(), -0.5 * 9.81 * 9.81 * 1e-3, 1e-9);
+  EXPECT_EQ(seq(j["angular_momentum"]["start"]), (std::vector<double>{0, 0, 0}));
+}
+
+TEST(Rbsim, SpinConfigConservesMomentumAndReadsOverrides) {
+  const Result r = rbsim("--urdf " + kBox + " --config " + RBS_SOURCE_DIR +
+                         "/config/spin.yaml --set initial.angular_velocity=[0.01,3,0] --duration 20 --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const YAML::Node j = YAML::Load(r.out);
+  const auto l0 = seq(j["angular_momentum"]["start"]), l1 = seq(j["angular_momentum"]["end"]);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(l1[i], l0[i], 1e-12);
+  EXPECT_NEAR(j["energy"]["end"].as<double>() / j["energy"]["start"].as<double>(), 1.0, 1e-10);
+  EXPECT_EQ(seq(j["final"]["position"]), (std::vector<double>{0, 0, 1}));  // gravity off in spin.yaml
+}
+
+TEST(Rbsim, WritesTheCsvEveryNStepsAndTheFinalState) {
+  const std::string csv = tempPath("traj.csv");
+  const Result r = rbsim("--urdf " + kBox + " --duration 0.1 --dt 0.01 --every 3 --csv " + csv + " --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz");
+  std::vector<double> times;
+  while (std::getline(in, line)) {
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 13) << line;
+    times.push_back(std::stod(line.substr(0, line.find(','))));
+  }
+  // Steps 0, 3, 6, 9 and the final step 10.
+  ASSERT_EQ(times.size(), 5u);
+  EXPECT_NEAR(times[1], 0.03, 1e-12);
+  EXPECT_NEAR(times.back(), 0.1, 1e-12);
+}
+
+TEST(Rbsim, PrintsAReadableSummaryOnStderr) {
+  const Result r = rbsim("--urdf " + kBox + " --duration 0.5");
+  ASSERT_EQ(r.code, 0);
+  EXPECT_NE(r.err.find("rbsim: 'base_link' (1 kg) for 0.5 s: 500 steps"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("energy"), std::string::npos);
+}
+
+void expectUsageError(const std::string& args, const std::string& message) {
+  const Result r = rbsim(args);
+  EXPECT_EQ(r.code, 2) << args;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("rbsim: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(message), std::string::npos) << "'" << message << "' not in: " << r.err;
+}
+
+TEST(Rbsim, BadInputIsOneLineAndExitCodeTwo) {
+  expectUsageError("--duration 1", "--urdf FILE is required");
+  expectUsageError("--urdf " + kBox, "--duration S is required");
+  expectUsageError("--urdf " + kBox + " --duration -1", "--duration: expected a number > 0, got '-1'");
+  expectUsageError("--urdf " + kBox + " --duration 1 --every 2.5", "--every: expected a whole number");
+  expectUsageError("--urdf " + kBox + " --duration 1 --frobnicate 3", "unknown argument '--frobnicate'");
+  expectUsageError("--urdf /nonexistent.urdf --duration 1", "cannot read URDF '/nonexistent.urdf'");
+  expectUsageError("--urdf " + kBox + " --config /nonexistent.yaml --duration 1", "cannot read config");
+  expectUsageError("--urdf " + kBox + " --set dampign.linear=1 --duration 1", "config key 'dampign'");
+  expectUsageError("--urdf " + kBox + " --set dt=-1 --duration 1", "dt = -1");
+  expectUsageError("--urdf " + kBox + " --duration 0.0001", "shorter than one step");
+  // The URDF loader's refusals carry the link name through.
+  const std::string bad = tempPath("bad.urdf");
+  std::ofstream(bad) << "<robot name='r'><link name='base'/></robot>";
+  expectUsageError("--urdf " + bad + " --duration 1", "link 'base' has no <inertial>");
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
