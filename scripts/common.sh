@@ -1,0 +1,36 @@
+# Sourced by the scripts: environment and the workspace layout.
+# A pyenv python3 shadows /usr/bin/python3 on these machines and has no ROS
+# modules: put /usr/bin first and pass the python flags to catkin.
+export PATH=/usr/bin:/bin:$PATH
+RBS_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+RBS_WS=${RBS_WS:-$RBS_ROOT/.ws}
+RBS_BUILD_TYPE=${RBS_BUILD_TYPE:-Release}
+RBS_PYFLAGS="-DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3"
+export ROS_HOME=${ROS_HOME:-$RBS_WS/ros_home}
+export ROS_HOSTNAME=${ROS_HOSTNAME:-localhost}
+
+# Debian 12 packages the project needs (ROS 1 from Debian, under /usr).
+RBS_APT_PACKAGES=(
+  build-essential cmake catkin
+  libeigen3-dev liburdfdom-dev libyaml-cpp-dev
+  libgtest-dev libbenchmark-dev
+)
+
+rbs_install_packages() {
+  local missing=()
+  for p in "${RBS_APT_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if [ ${#missing[@]} -eq 0 ] && [ "${RBS_FORCE_APT:-0}" != 1 ]; then return 0; fi
+  local sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "setup: installing ${missing[*]:-all packages}" >&2
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${RBS_APT_PACKAGES[@]}"
+}
+
+rbs_build() {
+  mkdir -p "$RBS_WS/src"
+  ln -sfn "$RBS_ROOT" "$RBS_WS/src/rigid_body_sim"
+  catkin_make -C "$RBS_WS" -j2 $RBS_PYFLAGS -DCMAKE_BUILD_TYPE="$RBS_BUILD_TYPE" "$@"
+}
