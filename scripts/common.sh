@@ -14,6 +14,8 @@ RBS_APT_PACKAGES=(
   build-essential cmake catkin
   libeigen3-dev liburdfdom-dev libyaml-cpp-dev
   libgtest-dev libbenchmark-dev
+  # ROS headers: the core's ROS-free check needs them installed to mean anything.
+  libroscpp-dev
 )
 
 rbs_install_packages() {

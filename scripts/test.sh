@@ -6,4 +6,9 @@ source "$(dirname "$0")/common.sh"
 rbs_install_packages
 rbs_build
 rbs_build tests
-ctest --test-dir "$RBS_WS/build" --output-on-failure -j2
+log="$RBS_WS/ctest.log"
+status=0
+ctest --test-dir "$RBS_WS/build" --output-on-failure -j2 2>&1 | tee "$log" || status=$?
+# ctest's verdict line ("100% tests passed, 0 tests failed out of N") last.
+grep -E "tests passed|tests failed" "$log" | tail -n 1
+exit "$status"
