@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <functional>
 #include <string>
 
@@ -32,6 +33,32 @@ inline core::BodySpec issueBox() {
   return b;
 }
 
+/// A solid box body with a box <collision>: half extents `half` (m).
+inline core::BodySpec boxBody(const Vec3& half, double mass = 1.0) {
+  core::BodySpec b;
+  b.name = "box";
+  b.mass = mass;
+  b.I_C_L = boxInertia(mass, half);
+  core::CollisionShape shape;
+  shape.kind = core::CollisionShape::Kind::kBox;
+  shape.size = 2.0 * half;
+  b.collision = {shape};
+  return b;
+}
+
+/// A solid ball with a sphere <collision>: I = 2/5 m r².
+inline core::BodySpec ballBody(double radius, double mass = 1.0) {
+  core::BodySpec b;
+  b.name = "ball";
+  b.mass = mass;
+  b.I_C_L = (0.4 * mass * radius * radius) * Mat3::Identity();
+  core::CollisionShape shape;
+  shape.kind = core::CollisionShape::Kind::kSphere;
+  shape.size = Vec3(radius, 0.0, 0.0);
+  b.collision = {shape};
+  return b;
+}
+
 inline core::ModelSpec spec(const core::BodySpec& body, double dt, const Vec3& gravity, bool gyroscopic = true) {
   core::ModelSpec s;
   s.bodies = {body};
@@ -41,11 +68,34 @@ inline core::ModelSpec spec(const core::BodySpec& body, double dt, const Vec3& g
   return s;
 }
 
+/// A model on the ground plane z = 0 with the given contact settings.
+inline core::ModelSpec onGround(const core::BodySpec& body, const core::ContactSettings& contact, double dt = 1e-3) {
+  core::ModelSpec s = spec(body, dt, Vec3(0.0, 0.0, -9.81));
+  s.scene = {core::Sdf::plane(Vec3::UnitZ())};
+  s.contact = contact;
+  return s;
+}
+
 /// A one-body state from the link's pose and twist.
 inline core::State stateOf(const core::Model& model, const core::LinkState& link) {
   core::State s;
   s.bodies = {core::bodyStateFromLink(model.body(0), link)};
   return s;
+}
+
+/// Bit-for-bit equality of two states (== would call −0 equal to +0).
+inline bool bitIdentical(const core::State& a, const core::State& b) {
+  auto same = [](const double* x, const double* y, int n) { return std::memcmp(x, y, n * sizeof(double)) == 0; };
+  if (a.bodies.size() != b.bodies.size() || !same(&a.time, &b.time, 1)) return false;
+  for (std::size_t i = 0; i < a.bodies.size(); ++i) {
+    const core::BodyState &x = a.bodies[i], &y = b.bodies[i];
+    if (!same(x.p_WB.data(), y.p_WB.data(), 3) || !same(x.v_WB.data(), y.v_WB.data(), 3) ||
+        !same(x.q_WB.coeffs().data(), y.q_WB.coeffs().data(), 4) || !same(x.w_B.data(), y.w_B.data(), 3) ||
+        x.asleep != y.asleep || !same(&x.still_time, &y.still_time, 1)) {
+      return false;
+    }
+  }
+  return true;
 }
 
 /// Expects `fn` to throw E with a message containing every one of `parts`.

@@ -27,6 +27,8 @@ void applyImpulse(const BodyModel& body, BodyState& s, const Impulse& impulse) {
   }
   s.v_WB += body.inv_mass * J_W;                      // Δv = J / M
   s.w_B += body.inv_inertia_B.cwiseProduct(dL_B);     // Δω = I⁻¹ (r × J + H)
+  s.asleep = false;                                   // an impulse wakes a sleeping body
+  s.still_time = 0.0;
 }
 
 }  // namespace rigid_body_sim::core

@@ -1,5 +1,7 @@
 #include "rigid_body_sim/core/model.h"
 
+#include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 #include "rigid_body_sim/core/inertia.h"
@@ -7,6 +9,34 @@
 
 namespace rigid_body_sim::core {
 namespace {
+
+/// Samples the body's collision shapes into contact points in B, and the
+/// quantities shape matching needs.
+void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, BodyModel& b) {
+  const Pose X_BL = Pose{b.q_LB, b.p_LB}.inverse();
+  const bool sample_spheres = contact.method == ContactMethod::kShapeMatching;
+  for (const CollisionShape& shape : spec.collision) {
+    const auto points = sampleShape(shape, X_BL, contact.sample_spacing, sample_spheres);
+    b.contact_points.insert(b.contact_points.end(), points.begin(), points.end());
+  }
+  const auto first_other = std::stable_partition(b.contact_points.begin(), b.contact_points.end(),
+                                                 [](const ContactPoint& p) { return p.extreme; });
+  b.extreme_points = static_cast<std::size_t>(first_other - b.contact_points.begin());
+  for (const ContactPoint& p : b.contact_points) {
+    b.bound_radius = std::max(b.bound_radius, p.r_B.norm() + p.radius);
+    b.points_centroid_B += p.r_B;
+  }
+  if (b.contact_points.empty()) return;
+  b.points_centroid_B /= static_cast<double>(b.contact_points.size());
+  Mat3 spread = Mat3::Zero();
+  for (const ContactPoint& p : b.contact_points) {
+    const Vec3 r = p.r_B - b.points_centroid_B;
+    spread += r * r.transpose();
+  }
+  // Invertible only if the points span three dimensions (not coplanar).
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(spread, Eigen::EigenvaluesOnly);
+  if (eig.eigenvalues()(0) > 1e-12 * std::max(1.0, eig.eigenvalues()(2))) b.points_inv_spread = spread.inverse();
+}
 
 BodyModel buildBody(const BodySpec& spec) {
   const std::string where = "body '" + spec.name + "': ";
@@ -49,15 +79,60 @@ void validateDamping(const Damping& d, double dt, const std::vector<BodyModel>& 
   }
 }
 
+void validateContact(const ContactSettings& c) {
+  if (!std::isfinite(c.restitution) || c.restitution < 0.0 || c.restitution > 1.0) {
+    detail::fail("contact.restitution", detail::str(c.restitution), "must be within [0, 1]");
+  }
+  detail::requireNonNegative(c.friction, "contact.friction", "");
+  detail::requireNonNegative(c.restitution_threshold, "contact.restitution_threshold", "m/s");
+  detail::requirePositive(c.sample_spacing, "contact.sample_spacing", "m");
+  if (c.iterations < 1) detail::fail("contact.iterations", std::to_string(c.iterations), "must be >= 1");
+  detail::requireNonNegative(c.position_slop, "contact.position_slop", "m");
+  detail::requirePositive(c.penalty_stiffness, "contact.penalty_stiffness", "N/m");
+  detail::requireNonNegative(c.penalty_damping, "contact.penalty_damping", "N·s/m");
+  detail::requirePositive(c.penalty_buffer, "contact.penalty_buffer", "m");
+  detail::requirePositive(c.barrier_strength, "contact.barrier_strength", "N·m");
+  detail::requirePositive(c.barrier_buffer, "contact.barrier_buffer", "m");
+}
+
+void validateSleep(const SleepSettings& s) {
+  detail::requireNonNegative(s.linear_velocity, "sleep.linear_velocity", "m/s");
+  detail::requireNonNegative(s.angular_velocity, "sleep.angular_velocity", "rad/s");
+  detail::requireNonNegative(s.time, "sleep.time", "s");
+}
+
 }  // namespace
 
 Model::Model(const ModelSpec& spec)
-    : dt_(spec.dt), gravity_W_(spec.gravity_W), damping_(spec.damping), gyroscopic_(spec.gyroscopic) {
+    : dt_(spec.dt),
+      gravity_W_(spec.gravity_W),
+      damping_(spec.damping),
+      gyroscopic_(spec.gyroscopic),
+      scene_(spec.scene),
+      contact_(spec.contact),
+      sleep_(spec.sleep) {
   if (spec.bodies.empty()) detail::fail("bodies", "[]", "the model needs at least one body");
   detail::requirePositive(spec.dt, "dt", "s");
   detail::requireFinite(spec.gravity_W, "gravity");
+  validateContact(spec.contact);
+  validateSleep(spec.sleep);
   bodies_.reserve(spec.bodies.size());
-  for (const BodySpec& b : spec.bodies) bodies_.push_back(buildBody(b));
+  for (const BodySpec& b : spec.bodies) {
+    bodies_.push_back(buildBody(b));
+    BodyModel& body = bodies_.back();
+    buildContactPoints(b, spec.contact, body);
+    if (!scene_.empty() && body.contact_points.empty()) {
+      detail::fail("body '" + b.name + "': collision", "none",
+                   "contacts are on (the scene is not empty) but the body has no <collision> geometry; "
+                   "add one to the URDF or set scene: []");
+    }
+    if (spec.contact.method == ContactMethod::kShapeMatching && !scene_.empty() &&
+        body.points_inv_spread.isZero(0.0)) {
+      detail::fail("body '" + b.name + "': collision", std::to_string(body.contact_points.size()) + " points",
+                   "shape matching needs collision points that span three dimensions");
+    }
+  }
+  restitution_threshold_ = std::max(spec.contact.restitution_threshold, 2.0 * gravity_W_.norm() * dt_);
   validateDamping(spec.damping, spec.dt, bodies_);
   linear_decay_ = std::exp(-spec.damping.linear_rate * spec.dt);
   angular_decay_ = std::exp(-spec.damping.angular_rate * spec.dt);

@@ -25,6 +25,8 @@ BodyState bodyStateFromLink(const BodyModel& body, const LinkState& link) {
   return s;
 }
 
+bool atRest(const Model& model, const BodyState& s) { return s.asleep || s.still_time >= model.sleep().time; }
+
 State restState(const Model& model) {
   State state;
   for (const BodyModel& b : model.bodies()) state.bodies.push_back(bodyStateFromLink(b, LinkState{}));

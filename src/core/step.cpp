@@ -1,50 +1,75 @@
 // The simulator loop of the notes (rigid_body_notes.md, "Simulator loop"),
-// one named stage per line of step(), plus the gyroscopic term the notes
-// leave out (ERRATA.md).
+// one named stage per line of advance(), plus what the notes leave out
+// (ERRATA.md): the gyroscopic term, contacts, sleeping.
 #include "rigid_body_sim/core/step.h"
 
 #include <cmath>
 
+#include "rigid_body_sim/core/contact.h"
+#include "rigid_body_sim/core/shape_matching.h"
+
 namespace rigid_body_sim::core {
 namespace {
 
-/// External and drag loads on one body for this step (gravity is applied as
-/// an acceleration, so free fall is exactly v += Δt g).
+/// External, drag and penalty loads on one body for this step (gravity is
+/// applied as an acceleration, so free fall is exactly v += h g).
 struct NetLoad {
-  Vec3 force_W;   ///< N, world frame
-  Vec3 torque_B;  ///< N·m, body frame
+  Vec3 force_W = Vec3::Zero();   ///< N, world frame
+  Vec3 torque_B = Vec3::Zero();  ///< N·m, body frame
 };
 
-// F = −σ v + F_ext,  τ = −σ_ω ω + τ_ext; the notes' τᵢ = (R rᵢ) × Fᵢ has
-// been reduced to the centre of mass by addWrench().
-NetLoad accumulateForces(const Damping& damping, const BodyState& s, const BodyLoad* load) {
-  NetLoad net{Vec3::Zero(), Vec3::Zero()};
+// A load, an impulse or a new state wakes a sleeping body (impulses and
+// states do it themselves; loads here).
+void wakeLoadedBodies(State& state, const Loads& loads) {
+  for (std::size_t i = 0; i < loads.size() && i < state.bodies.size(); ++i) {
+    BodyState& s = state.bodies[i];
+    if (s.asleep && !loads[i].isZero()) {
+      s.asleep = false;
+      s.still_time = 0.0;
+    }
+  }
+}
+
+// F = −σ v + F_ext (+ penalty),  τ = −σ_ω ω + τ_ext (+ penalty); the notes'
+// τᵢ = (R rᵢ) × Fᵢ has been reduced to the centre of mass by addWrench().
+NetLoad accumulateForces(const Model& model, const State& state, const BodyLoad* load, const Workspace& ws,
+                         int body) {
+  const Damping& damping = model.damping();
+  const BodyState& s = state.bodies[body];
+  NetLoad net;
   if (damping.linear_drag != 0.0) net.force_W = -damping.linear_drag * s.v_WB;
   if (damping.angular_drag != 0.0) net.torque_B = -damping.angular_drag * s.w_B;
+  Vec3 torque_W = Vec3::Zero();
   if (load != nullptr) {
     net.force_W += load->force_W + s.q_WB * load->force_B;
-    net.torque_B += load->torque_B + s.q_WB.conjugate() * load->torque_W;
+    net.torque_B += load->torque_B;
+    torque_W += load->torque_W;
   }
+  const ContactMethod method = model.contact().method;
+  if (method == ContactMethod::kPenaltyQuadratic || method == ContactMethod::kPenaltyLogBarrier) {
+    accumulatePenaltyForces(model, state, ws, body, net.force_W, torque_W);
+  }
+  if (!torque_W.isZero(0.0)) net.torque_B += s.q_WB.conjugate() * torque_W;
   return net;
 }
 
-// v_{n+1} = v_n + Δt (g + F/M);  ω_{n+1} = ω_n + Δt I⁻¹ τ.
+// v_{n+1} = v_n + h (g + F/M);  ω_{n+1} = ω_n + h I⁻¹ τ.
 // In the body frame I is constant and diagonal: the notes' I_n = R I_ref Rᵀ
 // and its inverse are never formed.
-void integrateVelocities(const Model& model, const BodyModel& b, const NetLoad& net, BodyState& s) {
-  const double dt = model.dt();
-  s.v_WB += dt * (model.gravity() + b.inv_mass * net.force_W);
-  s.w_B += dt * b.inv_inertia_B.cwiseProduct(net.torque_B);
+void integrateVelocities(const Model& model, const BodyModel& b, const NetLoad& net, double h, BodyState& s) {
+  s.v_WB += h * (model.gravity() + b.inv_mass * net.force_W);
+  s.w_B += h * b.inv_inertia_B.cwiseProduct(net.torque_B);
 }
 
-// v ← α v with α = e^(−k Δt): the notes' decay coefficient, made independent of Δt.
-void applyDamping(const Model& model, BodyState& s) {
-  if (model.linearDecay() != 1.0) s.v_WB *= model.linearDecay();
-  if (model.angularDecay() != 1.0) s.w_B *= model.angularDecay();
+// v ← α v with α = e^(−k h): the notes' decay coefficient, made independent of h.
+void applyDamping(const Model& model, double h, BodyState& s) {
+  const Damping& d = model.damping();
+  if (d.linear_rate != 0.0) s.v_WB *= h == model.dt() ? model.linearDecay() : std::exp(-d.linear_rate * h);
+  if (d.angular_rate != 0.0) s.w_B *= h == model.dt() ? model.angularDecay() : std::exp(-d.angular_rate * h);
 }
 
 /// Solves one implicit-midpoint step of the torque-free Euler equation
-/// Π̇ = Π × I⁻¹Π (Π = I Ω, body frame) over h, for u = Π + Π_{n+1}:
+/// Π̇ = Π × I⁻¹Π (Π = I Ω, body frame) for u = Π + Π_{n+1}:
 ///   u = 2Π + u × (c ∘ u),  c = (h/4) I⁻¹   (fixed-point iteration)
 /// The iteration contracts by about h|Ω| per pass: 4 passes at 1 ms and
 /// 3 rad/s. Returns false if it does not converge (h|Ω| too large).
@@ -66,25 +91,24 @@ bool solveMidpoint(const Vec3& Pi, const Vec3& c, Vec3& u) {
 
 // The gyroscopic term −ω × (I ω) of Euler's equation, which the notes leave
 // out. Returns the body-frame rotation of this step as the (unnormalized)
-// quaternion increment [1, Δt/2 Ω] and updates w_B.
+// quaternion increment [1, h/2 Ω] and updates w_B.
 //
 // Why implicit midpoint: it conserves both quadratic invariants of the free
 // rigid body, |Π| and the energy ½ ΠᵀI⁻¹Π, and its update is exactly
-// Π_{n+1} = cay(−Δt Ω̂_m) Π_n with Ω_m = I⁻¹(Π_n + Π_{n+1})/2. Rotating the
-// body by cay(Δt Ω̂_m), which is the notes' quaternion update evaluated with
+// Π_{n+1} = cay(−h Ω̂_m) Π_n with Ω_m = I⁻¹(Π_n + Π_{n+1})/2. Rotating the
+// body by cay(h Ω̂_m), which is the notes' quaternion update evaluated with
 // Ω_m, therefore leaves the world angular momentum R Π unchanged. First-order
 // variants drift about 1% in energy over 20 s (bench/README.md).
 // Gyroscopic off: Ω = ω_{n+1}, the notes exactly.
-Quat gyroscopicRotation(const Model& model, const BodyModel& b, BodyState& s) {
-  const double dt = model.dt();
+Quat gyroscopicRotation(const Model& model, const BodyModel& b, double h, BodyState& s) {
   if (!model.gyroscopic()) {
-    const Vec3 h = 0.5 * dt * s.w_B;
-    return Quat(1.0, h.x(), h.y(), h.z());
+    const Vec3 half = 0.5 * h * s.w_B;
+    return Quat(1.0, half.x(), half.y(), half.z());
   }
   // Sub-step only when one step is too large for the iteration to contract;
   // every sub-step conserves the invariants, so the result stays exact.
   for (int substeps = 1;; substeps *= 2) {
-    const Vec3 c = (0.25 * dt / substeps) * b.inv_inertia_B;
+    const Vec3 c = (0.25 * h / substeps) * b.inv_inertia_B;
     Vec3 w = s.w_B;
     Quat increment = Quat::Identity();
     bool converged = true;
@@ -93,8 +117,8 @@ Quat gyroscopicRotation(const Model& model, const BodyModel& b, BodyState& s) {
       Vec3 u;
       converged = solveMidpoint(Pi, c, u);
       w = b.inv_inertia_B.cwiseProduct(u - Pi);  // Ω_{n+1} = I⁻¹ Π_{n+1}
-      const Vec3 h = c.cwiseProduct(u);          // Δt/2 Ω_m = (Δt/4) I⁻¹ u
-      increment = increment * Quat(1.0, h.x(), h.y(), h.z());
+      const Vec3 half = c.cwiseProduct(u);       // h/2 Ω_m = (h/4) I⁻¹ u
+      increment = increment * Quat(1.0, half.x(), half.y(), half.z());
     }
     if (converged || substeps >= (1 << 16)) {
       if (w.allFinite()) s.w_B = w;
@@ -103,31 +127,98 @@ Quat gyroscopicRotation(const Model& model, const BodyModel& b, BodyState& s) {
   }
 }
 
-// x_{n+1} = x_n + Δt v_{n+1}.
-void integratePosition(double dt, BodyState& s) { s.p_WB += dt * s.v_WB; }
+// x_{n+1} = x_n + h v_{n+1}.
+void integratePosition(double h, BodyState& s) { s.p_WB += h * s.v_WB; }
 
-// q_{n+1} = q_n + [0, Δt/2 ω] × q_n, then normalize (ERRATA: it drifts off
+// q_{n+1} = q_n + [0, h/2 ω] × q_n, then normalize (ERRATA: it drifts off
 // the unit sphere otherwise).
 void integrateOrientation(const Quat& increment, BodyState& s) {
   s.q_WB = s.q_WB * increment;
   s.q_WB.coeffs() *= 1.0 / std::sqrt(s.q_WB.squaredNorm());
 }
 
+/// One step of length h of every awake body: the stages in order.
+void advance(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
+  const bool impulse = model.contact().method == ContactMethod::kImpulse;
+  const std::size_t n = model.bodyCount();
+  detectContacts(model, state, h, ws);
+  for (std::size_t i = 0; i < n; ++i) {
+    BodyState& s = state.bodies[i];
+    if (s.asleep) continue;
+    const NetLoad net = accumulateForces(model, state, loads.empty() ? nullptr : &loads[i], ws, static_cast<int>(i));
+    integrateVelocities(model, model.body(i), net, h, s);
+    applyDamping(model, h, s);
+  }
+  if (impulse) solveContactImpulses(model, state, h, ws);
+  ws.rotations.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    BodyState& s = state.bodies[i];
+    if (s.asleep) continue;
+    ws.rotations[i] = gyroscopicRotation(model, model.body(i), h, s);
+    integratePosition(h, s);
+    integrateOrientation(ws.rotations[i], s);
+  }
+  if (impulse) correctPositions(model, state, ws);
+}
+
+/// The log-barrier method needs φ > 0 at every contact point at all times,
+/// and its force ρ/φ is stiff: taken explicitly over a step in which φ
+/// changes a lot, it pumps energy in. So a step is taken again as two half
+/// steps (step control) if any body's smallest φ inside the buffer would
+/// reach 0, or shrink or grow by more than a factor of two.
+void advanceKeepingBarrier(const Model& model, State& state, const Loads& loads, double h, Workspace& ws,
+                           int depth) {
+  constexpr int kMaxHalvings = 20;
+  const double buffer = model.contact().barrier_buffer;
+  const State before = state;
+  advance(model, state, loads, h, ws);
+  bool redo = false;
+  for (std::size_t i = 0; i < model.bodyCount() && !redo; ++i) {
+    const int body = static_cast<int>(i);
+    const double was = minSeparation(model, before.bodies[i], body, buffer);
+    const double now = minSeparation(model, state.bodies[i], body, buffer);
+    if (std::isinf(was) && std::isinf(now)) continue;  // outside the buffer throughout
+    redo = !(now > 0.0) || (!std::isinf(was) && !std::isinf(now) && (now < 0.5 * was || now > 2.0 * was)) ||
+           (std::isinf(was) && now < 0.5 * buffer);
+  }
+  if (!redo || depth >= kMaxHalvings) return;
+  state = before;
+  advanceKeepingBarrier(model, state, loads, 0.5 * h, ws, depth + 1);
+  advanceKeepingBarrier(model, state, loads, 0.5 * h, ws, depth + 1);
+}
+
+// A body in contact whose speeds stay below the sleep speeds for the sleep
+// time falls asleep: it is no longer integrated, so it stays exactly put.
+void updateSleep(const Model& model, const Workspace& ws, double h, State& state) {
+  const SleepSettings& sleep = model.sleep();
+  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
+    BodyState& s = state.bodies[i];
+    if (s.asleep) continue;
+    const bool still = s.v_WB.norm() < sleep.linear_velocity && s.w_B.norm() < sleep.angular_velocity;
+    s.still_time = still ? s.still_time + h : 0.0;
+    const bool touching = i < ws.in_contact.size() && ws.in_contact[i];
+    if (sleep.enabled && touching && still && s.still_time >= sleep.time) {
+      s.asleep = true;
+      s.v_WB.setZero();
+      s.w_B.setZero();
+    }
+  }
+}
+
 }  // namespace
 
-void step(const Model& model, State& state, const Loads& loads) {
-  const Damping& damping = model.damping();
-  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
-    const BodyModel& body = model.bodies()[i];
-    BodyState& s = state.bodies[i];
-    const NetLoad net = accumulateForces(damping, s, loads.empty() ? nullptr : &loads[i]);
-    integrateVelocities(model, body, net, s);
-    applyDamping(model, s);
-    const Quat rotation = gyroscopicRotation(model, body, s);
-    integratePosition(model.dt(), s);
-    integrateOrientation(rotation, s);
+void step(const Model& model, State& state, const Loads& loads, Workspace* workspace) {
+  Workspace local;
+  Workspace& ws = workspace != nullptr ? *workspace : local;
+  const double h = model.dt();
+  wakeLoadedBodies(state, loads);
+  switch (model.contact().method) {
+    case ContactMethod::kShapeMatching: stepShapeMatching(model, state, loads, h, ws); break;
+    case ContactMethod::kPenaltyLogBarrier: advanceKeepingBarrier(model, state, loads, h, ws, 0); break;
+    default: advance(model, state, loads, h, ws); break;
   }
-  state.time += model.dt();
+  updateSleep(model, ws, h, state);
+  state.time += h;
 }
 
 }  // namespace rigid_body_sim::core

@@ -54,7 +54,8 @@ using Loads = std::vector<BodyLoad>;
 void addWrench(const BodyModel& body, BodyLoad& load, const Wrench& wrench);
 
 /// Applies an impulse now: Δv = J / M, Δω = I⁻¹ (r × J + H), with I and r in
-/// the current orientation (the notes' rigid-body impulse response).
+/// the current orientation (the notes' rigid-body impulse response). Wakes
+/// the body if it was asleep.
 void applyImpulse(const BodyModel& body, BodyState& s, const Impulse& impulse);
 
 }  // namespace rigid_body_sim::core

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "rigid_body_sim/core/collision.h"
+#include "rigid_body_sim/core/sdf.h"
 #include "rigid_body_sim/core/types.h"
 
 namespace rigid_body_sim::core {
@@ -24,6 +26,41 @@ struct Damping {
   double angular_drag = 0.0;  ///< σ_ω, N·m·s/rad
 };
 
+/// How contacts with the scene are resolved (the notes' responses).
+enum class ContactMethod {
+  kImpulse,           ///< velocity impulses J = K⁻¹Δv per contact, Coulomb friction (default)
+  kPenaltyQuadratic,  ///< f = k (ε − φ) N inside the buffer ε, plus damping
+  kPenaltyLogBarrier, ///< f = ρ (1/φ − 1/ε) N inside ε; the step shrinks so φ stays > 0
+  kShapeMatching,     ///< per-vertex update with collision and friction, then rigidify
+};
+
+struct ContactSettings {
+  ContactMethod method = ContactMethod::kImpulse;
+  double restitution = 0.0;            ///< μ_N ∈ [0, 1]
+  double friction = 0.5;               ///< μ_T (Coulomb) ≥ 0
+  /// Restitution applies only above this approach speed (m/s), so a resting
+  /// body does not jitter; never below 2|g|Δt (ERRATA.md), whatever is set.
+  double restitution_threshold = 0.1;
+  double sample_spacing = 0.1;         ///< m between collision samples on boxes and cylinders
+  int iterations = 30;                 ///< impulse solver: most Gauss-Seidel sweeps per step
+  double position_slop = 1e-4;         ///< m of penetration left alone by the position correction
+  double penalty_stiffness = 1e4;      ///< k, N/m per contact point
+  double penalty_damping = 50.0;       ///< N·s/m per contact point (both penalty methods)
+  double penalty_buffer = 0.005;       ///< ε, m
+  double barrier_strength = 0.01;      ///< ρ, N·m per contact point
+  double barrier_buffer = 0.005;       ///< ε, m
+};
+
+/// A body whose speed stays below these for `time` while in contact falls
+/// asleep: it is not integrated, so it stays exactly where it is, until a
+/// load, an impulse or a new state wakes it.
+struct SleepSettings {
+  bool enabled = true;
+  double linear_velocity = 0.01;   ///< m/s
+  double angular_velocity = 0.05;  ///< rad/s
+  double time = 0.5;               ///< s
+};
+
 /// Creation settings of one rigid body (what a URDF provides).
 struct BodySpec {
   std::string name = "body";  ///< the URDF root link name
@@ -31,6 +68,7 @@ struct BodySpec {
   Vec3 p_LC = Vec3::Zero();   ///< centre of mass in the link frame L (m)
   /// Inertia about the centre of mass, axes of L (kg·m²).
   Mat3 I_C_L = Mat3::Identity();
+  std::vector<CollisionShape> collision;  ///< the URDF <collision> elements
 };
 
 /// Creation settings of the whole model.
@@ -43,6 +81,11 @@ struct ModelSpec {
   /// reproduces the notes exactly (ω_{n+1} = ω_n + Δt I⁻¹ τ), which is only
   /// right for bodies with isotropic inertia (spheres, cubes).
   bool gyroscopic = true;
+  /// Static geometry the bodies collide with; empty means no contacts.
+  /// (The config's default is the ground plane z = 0.)
+  std::vector<Sdf> scene;
+  ContactSettings contact;
+  SleepSettings sleep;
 };
 
 /// One body as the integrator uses it: derived and validated quantities.
@@ -55,6 +98,13 @@ struct BodyModel {
   Vec3 p_LB = Vec3::Zero();               ///< B's origin (the centre of mass) in L (m)
   Quat q_LB = Quat::Identity();           ///< principal axes B in L
   Mat3 I_C_L = Mat3::Identity();          ///< inertia about the centre of mass in L axes, as given
+  std::vector<ContactPoint> contact_points;  ///< collision samples, body frame B, extreme ones first
+  std::size_t extreme_points = 0;         ///< how many of contact_points are extreme (see ContactPoint)
+  double bound_radius = 0.0;              ///< m: every contact point lies within it of the centre of mass
+  /// Shape matching: the mean of the contact points (B) and (Σ r̄ r̄ᵀ)⁻¹ of
+  /// the points about it; empty when the points do not span three dimensions.
+  Vec3 points_centroid_B = Vec3::Zero();
+  Mat3 points_inv_spread = Mat3::Zero();
 };
 
 class Model {
@@ -70,6 +120,11 @@ class Model {
   const Vec3& gravity() const { return gravity_W_; }
   const Damping& damping() const { return damping_; }
   bool gyroscopic() const { return gyroscopic_; }
+  const std::vector<Sdf>& scene() const { return scene_; }
+  const ContactSettings& contact() const { return contact_; }
+  const SleepSettings& sleep() const { return sleep_; }
+  /// max(restitution_threshold, 2 |g| Δt), m/s.
+  double restitutionThreshold() const { return restitution_threshold_; }
   /// Per-step decay factors α = e^(−k Δt) of the damping rates.
   double linearDecay() const { return linear_decay_; }
   double angularDecay() const { return angular_decay_; }
@@ -80,6 +135,10 @@ class Model {
   Vec3 gravity_W_;
   Damping damping_;
   bool gyroscopic_;
+  std::vector<Sdf> scene_;
+  ContactSettings contact_;
+  SleepSettings sleep_;
+  double restitution_threshold_;
   double linear_decay_;
   double angular_decay_;
 };

@@ -1,6 +1,7 @@
 // One time step of the simulation.
 #pragma once
 
+#include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/loads.h"
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/state.h"
@@ -8,14 +9,22 @@
 namespace rigid_body_sim::core {
 
 /// Advances `state` by model.dt(). `loads` is one BodyLoad per body, held
-/// constant over the step, or empty. The step is the notes' Euler-Cromer
-/// loop, one named stage per line (see step.cpp):
-///   accumulate forces and torques  F = M g − σ v + F_ext,  τ = −σ_ω ω + τ_ext
+/// constant over the step, or empty. `workspace` is scratch memory reused
+/// across steps (optional; it also reports the step's contacts and deepest
+/// penetration). The step is the notes' Euler-Cromer loop, one named stage
+/// per line (see step.cpp):
+///   detect contacts                φ(x + R rᵢ) < margin against the scene
+///   accumulate forces and torques  F = M g − σ v + F_ext (+ penalty),  τ likewise
 ///   integrate velocities           v += Δt F / M,  ω += Δt I⁻¹ τ
 ///   apply damping                  v *= e^(−k Δt),  ω *= e^(−k_ω Δt)
+///   solve contact impulses         J = K⁻¹ Δv per contact, together (impulse method)
 ///   gyroscopic rotation            Euler's −ω × Iω term (implicit midpoint)
 ///   integrate positions            x += Δt v
 ///   integrate orientations         q += [0, Δt/2 ω] × q, then normalize
-void step(const Model& model, State& state, const Loads& loads = {});
+///   correct positions              push penetrating bodies out (impulse method)
+///   update sleep                   bodies at rest stop being integrated
+/// Shape matching replaces the stages from the forces on (shape_matching.h);
+/// the log-barrier method repeats a step as two halves when φ would cross 0.
+void step(const Model& model, State& state, const Loads& loads = {}, Workspace* workspace = nullptr);
 
 }  // namespace rigid_body_sim::core

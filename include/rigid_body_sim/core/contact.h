@@ -1,0 +1,95 @@
+// Contacts with the static scene: detection by signed distance, and the
+// notes' responses (impulse, penalty). Shape matching is in shape_matching.h.
+#pragma once
+
+#include <vector>
+
+#include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/core/types.h"
+
+namespace rigid_body_sim::core {
+
+/// One contact point of a body against one scene item.
+struct Contact {
+  int body = 0;                    ///< index in the model
+  int item = 0;                    ///< index in model.scene()
+  int point = 0;                   ///< index in the body's contact points
+  Vec3 normal_W = Vec3::UnitZ();   ///< unit, out of the scene toward the body (∇φ)
+  Vec3 r_W = Vec3::Zero();         ///< contact point relative to the centre of mass, world axes (m)
+  double separation = 0.0;         ///< φ − radius (m): < 0 penetrating, > 0 not yet touching
+
+  // Impulse solver data (set by solveContactImpulses). With K the notes'
+  // 3×3 matrix of the point, the solver needs nᵀKn and the 2×2 TᵀKT, and the
+  // angular velocity an impulse along n, t₁, t₂ gives: I⁻¹ (r × n) etc.
+  Vec3 tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();
+  Vec3 turn_n = Vec3::Zero(), turn_t1 = Vec3::Zero(), turn_t2 = Vec3::Zero();  ///< I⁻¹ (r × ·), 1/(kg·m)
+  double normal_mass = 0.0;        ///< 1 / (nᵀ K n), kg
+  Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();  ///< (Tᵀ K T)⁻¹, kg
+  double target_normal_velocity = 0.0;  ///< m/s
+  double normal_impulse = 0.0;     ///< accumulated λ_N ≥ 0, N·s
+  Eigen::Vector2d tangent_impulse = Eigen::Vector2d::Zero();  ///< accumulated, |λ_T| ≤ μ λ_N, N·s
+};
+
+/// A contact point found by the detection, before the reduction.
+struct ContactCandidate {
+  int item = 0;
+  int point = 0;
+  int region = 0;
+  double separation = 0.0;        ///< m
+  Vec3 normal_W = Vec3::UnitZ();  ///< ∇φ at the point
+};
+
+/// Scratch memory of a step (MuJoCo keeps it in mjData; here it is passed in).
+struct Workspace {
+  std::vector<Contact> contacts;
+  std::vector<ContactCandidate> candidates;
+  std::vector<Vec3> region_normals;
+  std::vector<int> region_members;
+  std::vector<Vec3> region_points;
+  /// Deepest penetration seen in this step's detection (m, ≥ 0).
+  double deepest_penetration = 0.0;
+  /// Per body: touched the scene this step (only bodies in contact may sleep).
+  std::vector<char> in_contact;
+  /// Per body: the step's rotation increment [1, h/2 Ω] (see step.cpp).
+  std::vector<Quat> rotations;
+  /// Impulse solver: the bodies' angular velocities in world axes (rad/s).
+  std::vector<Vec3> angular_velocities;
+  /// Shape matching: where each vertex of the current body went (m, world).
+  std::vector<Vec3> positions;
+};
+
+/// Contacts of the awake bodies against the scene at the current state:
+/// every contact point with φ − radius < margin, where the margin is the
+/// distance the body can travel in h (speculative contacts: a fast body is
+/// caught before it passes through a thin shape) or the penalty buffer.
+/// For the impulse method the points of one region (one scene item, one
+/// normal direction) are reduced to at most four that span it; separate
+/// regions (the three walls of a room's corner) stay separate.
+void detectContacts(const Model& model, const State& state, double h, Workspace& ws);
+
+/// The notes' impulse response, for all contacts together: per contact the
+/// 3×3 K = M⁻¹𝐈 − (r)* I⁻¹ (r)* of the notes; normal and friction impulses
+/// solved by projected Gauss-Seidel with accumulated clamping, λ_N ≥ 0 and
+/// |λ_T| ≤ μ λ_N (Coulomb's law on the impulse, which is the notes'
+/// a = max(1 − μ_T(1+μ_N)|v_N|/|v_T|, 0) when K is isotropic); restitution
+/// from the approach speed before the solve, zero below the threshold.
+/// Updates v_WB and w_B of the bodies in contact.
+void solveContactImpulses(const Model& model, State& state, double h, Workspace& ws);
+
+/// Moves penetrating bodies out along the contact normals (nonlinear
+/// Gauss-Seidel on positions, as Box2D does), leaving at most the slop.
+/// Velocities are not touched, so no kinetic energy is added.
+void correctPositions(const Model& model, State& state, Workspace& ws);
+
+/// Penalty forces of the contacts on one body, reduced to the centre of
+/// mass: quadratic f = k (ε − φ) or log-barrier f = ρ (1/φ − 1/ε), both
+/// minus damping c v_N and never pulling, with Coulomb friction μ |f_N|.
+void accumulatePenaltyForces(const Model& model, const State& state, const Workspace& ws, int body, Vec3& force_W,
+                             Vec3& torque_W);
+
+/// The smallest φ − radius of any contact point of `body` within `margin`
+/// of the scene (+infinity if none is that close).
+double minSeparation(const Model& model, const BodyState& s, int body, double margin);
+
+}  // namespace rigid_body_sim::core

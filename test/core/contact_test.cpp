@@ -1,0 +1,286 @@
+// The impulse response against closed forms: bounce, sliding, tumbling,
+// inclines, rolling, thin plates, a room's corner, rest and determinism.
+#include "rigid_body_sim/core/contact.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rigid_body_sim/core/diagnostics.h"
+#include "rigid_body_sim/core/step.h"
+#include "../test_util.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+constexpr double kG = 9.81;
+const Vec3 kHalf(0.2, 0.1, 0.05);  // the issue box
+
+core::ContactSettings impulse(double restitution, double friction) {
+  core::ContactSettings c;
+  c.restitution = restitution;
+  c.friction = friction;
+  return c;
+}
+
+core::State at(const core::Model& model, const Vec3& p, const Quat& q = Quat::Identity(), const Vec3& v = Vec3::Zero(),
+               const Vec3& w = Vec3::Zero()) {
+  core::LinkState link;
+  link.p_WL = p;
+  link.q_WL = q;
+  link.v_WL = v;
+  link.w_W = w;
+  return stateOf(model, link);
+}
+
+TEST(Bounce, ApexRatioIsRestitutionSquared) {
+  const double e = 0.8, r = 0.1, h = 1.0;
+  const core::Model model(onGround(ballBody(r), impulse(e, 0.5)));
+  core::State s = at(model, Vec3(0, 0, h + r));
+  std::vector<double> apexes;
+  double prev_vz = 0.0;
+  for (int n = 0; n < 4000 && apexes.size() < 2; ++n) {
+    core::step(model, s);
+    const double vz = s.bodies[0].v_WB.z();
+    if (prev_vz > 0.0 && vz <= 0.0) apexes.push_back(s.bodies[0].p_WB.z() - r);
+    prev_vz = vz;
+  }
+  ASSERT_EQ(apexes.size(), 2u);
+  EXPECT_NEAR(apexes[0] / h, e * e, 0.02 * e * e);
+  EXPECT_NEAR(apexes[1] / apexes[0], e * e, 0.02 * e * e);
+}
+
+TEST(Friction, SlidingBoxStopsAfterTheClosedFormDistance) {
+  const double mu = 0.5, v0 = 2.0;
+  core::ModelSpec ms = onGround(boxBody(kHalf), impulse(0.0, mu));
+  ms.sleep.enabled = false;
+  const core::Model model(ms);
+  core::State s = at(model, Vec3(0, 0, kHalf.z()), Quat::Identity(), Vec3(v0, 0, 0));
+  int n = 0;
+  while (s.bodies[0].v_WB.x() > 1e-9 && n++ < 5000) core::step(model, s);
+  const double expected = v0 * v0 / (2 * mu * kG);
+  EXPECT_NEAR(s.bodies[0].p_WB.x(), expected, 0.02 * expected);
+  EXPECT_NEAR(s.bodies[0].p_WB.z(), kHalf.z(), 1e-4);  // it slid flat, no tipping
+}
+
+/// A box dropped from 1 m, tumbling, with a record of what happened.
+struct Drop {
+  double deepest = 0.0;      ///< m, over every step
+  double highest_energy;     ///< J
+  double first_impact = -1;  ///< s
+  double rest_time = -1;     ///< s, when it was last moving faster than the sleep speeds
+  core::State end;
+};
+
+Drop drop(const core::Model& model, const Quat& q, const Vec3& w, double duration) {
+  Drop d;
+  core::State s = at(model, Vec3(0, 0, 1.0), q, Vec3::Zero(), w);
+  d.highest_energy = core::totalEnergy(model, s);
+  const double e0 = d.highest_energy;
+  core::Workspace ws;
+  const int steps = static_cast<int>(std::lround(duration / model.dt()));
+  for (int n = 0; n < steps; ++n) {
+    core::step(model, s, {}, &ws);
+    d.deepest = std::max(d.deepest, ws.deepest_penetration);
+    d.highest_energy = std::max(d.highest_energy, core::totalEnergy(model, s));
+    if (d.first_impact < 0 && !ws.contacts.empty()) d.first_impact = s.time;
+    if (s.bodies[0].still_time == 0.0) d.rest_time = s.time;
+  }
+  d.deepest = std::max(d.deepest, -std::min(0.0, core::minSeparation(model, s.bodies[0], 0, 0.0)));
+  d.end = s;
+  EXPECT_LE(d.highest_energy, e0 + 1e-9) << "energy rose above the start";
+  return d;
+}
+
+TEST(Tumbling, BoxComesToRestOnAFaceAtItsHalfHeight) {
+  const Quat starts[] = {Quat(Eigen::AngleAxisd(0.5, Vec3(1, 2, 0.3).normalized())),
+                         Quat(Eigen::AngleAxisd(2.0, Vec3(-0.4, 1, 1).normalized())),
+                         Quat(Eigen::AngleAxisd(1.2, Vec3(0.1, 0.2, 1).normalized()))};
+  const Vec3 spins[] = {Vec3(1, 2, 3), Vec3(-4, 0.5, 1), Vec3(0, 6, 0)};
+  for (double e : {0.0, 0.3}) {
+    const core::Model model(onGround(boxBody(kHalf), impulse(e, 0.5)));
+    for (int k = 0; k < 3; ++k) {
+      const Drop d = drop(model, starts[k], spins[k], 5.0);
+      const core::BodyState& b = d.end.bodies[0];
+      ASSERT_TRUE(core::atRest(model, b)) << "start " << k << " e " << e;
+      // On a face: one body axis vertical; the centre at that half extent.
+      const Mat3 R = b.q_WB.toRotationMatrix();
+      int axis = 0;
+      const double up = R.row(2).cwiseAbs().maxCoeff(&axis);
+      EXPECT_GT(up, std::cos(1.0 * M_PI / 180)) << "start " << k << ": not on a face";
+      EXPECT_NEAR(b.p_WB.z(), kHalf(axis), 1e-3) << "start " << k;
+      EXPECT_LT(d.deepest, 1e-3) << "start " << k;
+      EXPECT_LT(d.rest_time - d.first_impact, 1.0) << "start " << k << " e " << e;
+    }
+  }
+}
+
+/// A tilted plane through the origin: normal (sin θ, 0, cos θ).
+core::ModelSpec onIncline(double theta, double mu) {
+  core::ModelSpec ms = onGround(boxBody(kHalf), impulse(0.0, mu));
+  ms.scene = {core::Sdf::plane(Vec3(std::sin(theta), 0, std::cos(theta)))};
+  ms.sleep.enabled = false;
+  return ms;
+}
+
+core::State restingOnIncline(const core::Model& model, double theta) {
+  const Quat q(Eigen::AngleAxisd(theta, Vec3::UnitY()));  // body z along the plane's normal
+  return at(model, q * Vec3(0, 0, kHalf.z()), q);
+}
+
+TEST(Incline, StaticFrictionHoldsBelowTheFrictionAngle) {
+  const double theta = 20 * M_PI / 180, mu = 0.5;  // tan θ = 0.36 < μ
+  const core::Model model(onIncline(theta, mu));
+  core::State s = restingOnIncline(model, theta);
+  const Vec3 start = s.bodies[0].p_WB;
+  for (int n = 0; n < 2000; ++n) core::step(model, s);
+  EXPECT_LT((s.bodies[0].p_WB - start).norm(), 1e-6);
+}
+
+TEST(Incline, SlidesWithTheCoulombAccelerationAboveIt) {
+  const double theta = 35 * M_PI / 180, mu = 0.5;  // tan θ = 0.70 > μ
+  const core::Model model(onIncline(theta, mu));
+  core::State s = restingOnIncline(model, theta);
+  for (int n = 0; n < 1000; ++n) core::step(model, s);
+  const Vec3 down_slope(std::cos(theta), 0, -std::sin(theta));  // along the plane, downhill
+  const double a = kG * (std::sin(theta) - mu * std::cos(theta));
+  EXPECT_NEAR(s.bodies[0].v_WB.dot(down_slope), a * s.time, 0.02 * a * s.time);
+  EXPECT_NEAR(s.bodies[0].v_WB.dot(Vec3(std::sin(theta), 0, std::cos(theta))), 0.0, 1e-6);  // stays on it
+}
+
+TEST(Rolling, SlidingBallStartsRollingAtTheClosedFormTimeAndSpeed) {
+  const double r = 0.1, mu = 0.3, v0 = 3.0;
+  core::ModelSpec ms = onGround(ballBody(r), impulse(0.0, mu));
+  ms.sleep.enabled = false;
+  const core::Model model(ms);
+  core::State s = at(model, Vec3(0, 0, r), Quat::Identity(), Vec3(v0, 0, 0));
+  double t_roll = -1.0, v_roll = 0.0;
+  for (int n = 0; n < 2000 && t_roll < 0; ++n) {
+    core::step(model, s);
+    const Vec3 w = core::angularVelocityWorld(s.bodies[0]);
+    const double slip = (s.bodies[0].v_WB + w.cross(Vec3(0, 0, -r))).x();
+    if (slip < 1e-9) {
+      t_roll = s.time;
+      v_roll = s.bodies[0].v_WB.x();
+    }
+  }
+  const double expected_t = 2 * v0 / (7 * mu * kG);
+  EXPECT_NEAR(t_roll, expected_t, 0.02 * expected_t);
+  EXPECT_NEAR(v_roll, 5 * v0 / 7, 0.01 * 5 * v0 / 7);
+  for (int n = 0; n < 500; ++n) core::step(model, s);  // then it rolls on at that speed
+  EXPECT_NEAR(s.bodies[0].v_WB.x(), 5 * v0 / 7, 0.01 * 5 * v0 / 7);
+}
+
+TEST(Tunneling, FastBodiesStopOnAThinPlate) {
+  // A 1 cm plate, top at z = 0.005; bodies hit it at 20 m/s, moving 2 cm per step.
+  for (const core::BodySpec& body : {ballBody(0.05), boxBody(Vec3(0.05, 0.05, 0.05))}) {
+    core::ModelSpec ms = onGround(body, impulse(0.0, 0.5));
+    ms.scene = {core::Sdf::box(Vec3(2, 2, 0.01))};
+    const core::Model model(ms);
+    core::State s = at(model, Vec3(0, 0, 0.5), Quat::Identity(), Vec3(0, 0, -20));
+    core::Workspace ws;
+    double deepest = 0.0;
+    for (int n = 0; n < 300; ++n) {
+      core::step(model, s, {}, &ws);
+      deepest = std::max(deepest, ws.deepest_penetration);
+    }
+    EXPECT_NEAR(s.bodies[0].p_WB.z(), 0.005 + 0.05, 1e-3) << body.name;
+    EXPECT_LT(deepest, 1e-3) << body.name;
+  }
+}
+
+core::Sdf room() {
+  // Floor z = 0, walls x = ±1 and y = ±1, open on top.
+  return core::Sdf::subtract({core::Sdf::box(Vec3(2.2, 2.2, 1.2)).transformed({Quat::Identity(), Vec3(0, 0, 0.5)}),
+                              core::Sdf::box(Vec3(2.0, 2.0, 1.5)).transformed({Quat::Identity(), Vec3(0, 0, 0.75)})});
+}
+
+TEST(Room, ACornerGivesSeparateContactRegions) {
+  core::ModelSpec ms = onGround(boxBody(kHalf), impulse(0.0, 0.5));
+  ms.scene = {room()};
+  const core::Model model(ms);
+  // Pressed 0.1 mm into the floor and both walls of the (+x, +y) corner.
+  const core::State s = at(model, Vec3(1 - kHalf.x() + 1e-4, 1 - kHalf.y() + 1e-4, kHalf.z() - 1e-4));
+  core::Workspace ws;
+  core::detectContacts(model, s, model.dt(), ws);
+  // Group the contacts by normal: each group is one region, at most four points.
+  std::vector<std::pair<Vec3, int>> groups;
+  for (const core::Contact& c : ws.contacts) {
+    auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) { return x.first.isApprox(c.normal_W, 1e-9); });
+    if (g == groups.end()) {
+      groups.emplace_back(c.normal_W, 1);
+    } else {
+      ++g->second;
+    }
+  }
+  auto count = [&](const Vec3& n) {
+    auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) { return x.first.isApprox(n, 1e-9); });
+    return g == groups.end() ? 0 : g->second;
+  };
+  // The floor and both walls push separately (the edges pressed into two
+  // surfaces at once get the diagonal normal of the nearest free space).
+  EXPECT_GE(count(Vec3::UnitZ()), 3);
+  EXPECT_GE(count(-Vec3::UnitX()), 2);
+  EXPECT_GE(count(-Vec3::UnitY()), 2);
+  for (const auto& g : groups) EXPECT_LE(g.second, 4) << g.first.transpose();
+}
+
+TEST(Room, BoxThrownIntoTheCornerStaysInsideAndRests) {
+  core::ModelSpec ms = onGround(boxBody(kHalf), impulse(0.2, 0.5));
+  ms.scene = {room()};
+  const core::Model model(ms);
+  core::State s = at(model, Vec3(0.3, 0.3, 0.6), Quat(Eigen::AngleAxisd(0.4, Vec3(1, 1, 0).normalized())),
+                     Vec3(3, 3, 0), Vec3(2, -1, 4));
+  core::Workspace ws;
+  double deepest = 0.0;
+  for (int n = 0; n < 6000; ++n) {
+    core::step(model, s, {}, &ws);
+    deepest = std::max(deepest, ws.deepest_penetration);
+  }
+  EXPECT_LT(deepest, 1e-3);
+  EXPECT_TRUE(core::atRest(model, s.bodies[0]));
+  EXPECT_LT(s.bodies[0].p_WB.head<2>().cwiseAbs().maxCoeff(), 1.0);
+}
+
+TEST(Rest, ARestingBodyStaysExactlyPutAndWakesOnLoadsAndImpulses) {
+  const core::Model model(onGround(boxBody(kHalf), impulse(0.0, 0.5)));
+  core::State s = at(model, Vec3(0, 0, kHalf.z() + 0.01));
+  for (int n = 0; n < 1500; ++n) core::step(model, s);
+  ASSERT_TRUE(s.bodies[0].asleep);
+  const core::BodyState asleep = s.bodies[0];
+  for (int n = 0; n < 1000; ++n) core::step(model, s);
+  EXPECT_TRUE(s.bodies[0] == asleep);  // bit for bit: no drift
+
+  core::Loads push(1);
+  core::addWrench(model.body(0), push[0], {Vec3(20, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld});
+  core::State pushed = s;
+  core::step(model, pushed, push);
+  EXPECT_FALSE(pushed.bodies[0].asleep);
+  EXPECT_GT(pushed.bodies[0].v_WB.x(), 0.0);
+
+  core::State kicked = s;
+  core::applyImpulse(model.body(0), kicked.bodies[0], {Vec3(0, 1, 0), Vec3::Zero(), Vec3::Zero()});
+  EXPECT_FALSE(kicked.bodies[0].asleep);
+  core::step(model, kicked);
+  EXPECT_GT(kicked.bodies[0].p_WB.y(), asleep.p_WB.y());
+}
+
+TEST(Determinism, EveryMethodIsBitIdenticalRunToRun) {
+  for (core::ContactMethod method :
+       {core::ContactMethod::kImpulse, core::ContactMethod::kPenaltyQuadratic,
+        core::ContactMethod::kPenaltyLogBarrier, core::ContactMethod::kShapeMatching}) {
+    core::ContactSettings c = impulse(0.3, 0.5);
+    c.method = method;
+    const core::Model model(onGround(boxBody(kHalf), c));
+    auto run = [&] {
+      core::State s = at(model, Vec3(0, 0, 0.5), Quat(Eigen::AngleAxisd(0.5, Vec3(1, 2, 0.3).normalized())),
+                         Vec3(0.5, 0, 0), Vec3(1, 2, 3));
+      for (int n = 0; n < 3000; ++n) core::step(model, s);
+      return s;
+    };
+    EXPECT_TRUE(bitIdentical(run(), run())) << "method " << static_cast<int>(method);
+  }
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
