@@ -12,7 +12,7 @@ export ROS_HOSTNAME=${ROS_HOSTNAME:-localhost}
 # Debian 12 packages the project needs (ROS 1 from Debian, under /usr).
 RBS_APT_PACKAGES=(
   build-essential cmake catkin
-  libeigen3-dev liburdfdom-dev libyaml-cpp-dev
+  libeigen3-dev liburdfdom-dev libyaml-cpp-dev libassimp-dev
   libgtest-dev libbenchmark-dev
   # ROS headers: the core's ROS-free check needs them installed to mean anything.
   libroscpp-dev

@@ -68,6 +68,130 @@ Quat fromRpy(const Vec3& rpy) {
               Eigen::AngleAxisd(rpy.x(), Vec3::UnitX()));
 }
 
+double positiveNumber(const YAML::Node& node, const std::string& key) {
+  const double x = number(node, key);
+  if (!(x > 0.0)) fail(key, "must be > 0, got " + show(node));
+  return x;
+}
+
+Quat orientation(const YAML::Node& node, const std::string& path) {
+  if (node["rpy"] && node["quaternion"]) fail(path, "give " + path + ".rpy or " + path + ".quaternion, not both");
+  if (node["rpy"]) return fromRpy(vec3(node["rpy"], join(path, "rpy")));
+  if (!node["quaternion"]) return Quat::Identity();
+  const YAML::Node q = node["quaternion"];
+  const std::string key = join(path, "quaternion");
+  if (!q.IsSequence() || q.size() != 4) fail(key, "expected [x, y, z, w], got " + show(q));
+  // geometry_msgs order (x, y, z, w); Eigen's constructor takes (w, x, y, z).
+  const Quat value(number(q[3], key + "[3]"), number(q[0], key + "[0]"), number(q[1], key + "[1]"),
+                   number(q[2], key + "[2]"));
+  if (std::abs(value.norm() - 1.0) > 1e-3) {
+    std::ostringstream os;
+    os << value.norm();
+    fail(key, "norm " + os.str() + " is not 1 (within 1e-3): " + show(q));
+  }
+  return value.normalized();
+}
+
+/// One scene entry: a primitive or a composition, with an optional pose.
+core::Sdf parseShape(const YAML::Node& node, const std::string& path) {
+  if (!node.IsMap() || !node["type"]) fail(path, "expected a map with a 'type', got " + show(node));
+  const std::string type = node["type"].as<std::string>();
+  const std::set<std::string> pose_keys{"type", "position", "rpy", "quaternion"};
+  auto known = [&](std::initializer_list<std::string> extra) {
+    std::set<std::string> keys = pose_keys;
+    keys.insert(extra.begin(), extra.end());
+    requireKnownKeys(node, path, keys);
+  };
+  core::Sdf shape = core::Sdf::sphere(1.0);
+  if (type == "plane") {
+    known({"normal"});
+    const Vec3 normal = node["normal"] ? vec3(node["normal"], join(path, "normal")) : Vec3::UnitZ();
+    if (!(normal.norm() > 0.0)) fail(join(path, "normal"), "must not be zero");
+    shape = core::Sdf::plane(normal);
+  } else if (type == "box") {
+    known({"size"});
+    if (!node["size"]) fail(join(path, "size"), "a box needs size: [x, y, z] (m)");
+    const Vec3 size = vec3(node["size"], join(path, "size"));
+    if (!(size.minCoeff() > 0.0)) fail(join(path, "size"), "must be > 0, got " + show(node["size"]));
+    shape = core::Sdf::box(size);
+  } else if (type == "sphere") {
+    known({"radius"});
+    if (!node["radius"]) fail(join(path, "radius"), "a sphere needs a radius (m)");
+    shape = core::Sdf::sphere(positiveNumber(node["radius"], join(path, "radius")));
+  } else if (type == "capsule" || type == "cylinder") {
+    known({"radius", "length"});
+    if (!node["radius"] || !node["length"]) fail(path, "a " + type + " needs radius and length (m)");
+    const double r = positiveNumber(node["radius"], join(path, "radius"));
+    const double l = positiveNumber(node["length"], join(path, "length"));
+    shape = type == "capsule" ? core::Sdf::capsule(r, l) : core::Sdf::cylinder(r, l);
+  } else if (type == "union" || type == "intersection" || type == "difference") {
+    known({"shapes"});
+    const YAML::Node list = node["shapes"];
+    const std::size_t least = type == "difference" ? 2 : 1;
+    if (!list || !list.IsSequence() || list.size() < least) {
+      fail(join(path, "shapes"), "a " + type + " needs a list of at least " + std::to_string(least) + " shapes");
+    }
+    std::vector<core::Sdf> children;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      children.push_back(parseShape(list[i], join(path, "shapes") + "[" + std::to_string(i) + "]"));
+    }
+    shape = type == "union"          ? core::Sdf::unite(std::move(children))
+            : type == "intersection" ? core::Sdf::intersect(std::move(children))
+                                     : core::Sdf::subtract(std::move(children));
+  } else {
+    fail(join(path, "type"), "unknown shape '" + type +
+                                 "' (plane, box, sphere, capsule, cylinder, union, intersection, difference)");
+  }
+  const Vec3 position = node["position"] ? vec3(node["position"], join(path, "position")) : Vec3::Zero();
+  return shape.transformed({orientation(node, path), position});
+}
+
+std::vector<core::Sdf> parseScene(const YAML::Node& node) {
+  if (!node.IsSequence()) fail("scene", "expected a list of shapes, got " + show(node));
+  std::vector<core::Sdf> scene;
+  for (std::size_t i = 0; i < node.size(); ++i) scene.push_back(parseShape(node[i], "scene[" + std::to_string(i) + "]"));
+  return scene;
+}
+
+core::ContactMethod contactMethod(const YAML::Node& node) {
+  const std::string m = node.IsScalar() ? node.as<std::string>() : show(node);
+  if (m == "impulse") return core::ContactMethod::kImpulse;
+  if (m == "penalty_quadratic") return core::ContactMethod::kPenaltyQuadratic;
+  if (m == "penalty_log_barrier") return core::ContactMethod::kPenaltyLogBarrier;
+  if (m == "shape_matching") return core::ContactMethod::kShapeMatching;
+  fail("contact.method", "unknown method '" + m + "' (impulse, penalty_quadratic, penalty_log_barrier, shape_matching)");
+}
+
+void parseContact(const YAML::Node& node, core::ContactSettings& c) {
+  requireKnownKeys(node, "contact",
+                   {"method", "restitution", "friction", "restitution_threshold", "sample_spacing", "iterations",
+                    "position_slop", "penalty_stiffness", "penalty_damping", "penalty_buffer", "barrier_strength",
+                    "barrier_buffer"});
+  if (node["method"]) c.method = contactMethod(node["method"]);
+  const std::pair<const char*, double*> numbers[] = {
+      {"restitution", &c.restitution},         {"friction", &c.friction},
+      {"restitution_threshold", &c.restitution_threshold}, {"sample_spacing", &c.sample_spacing},
+      {"position_slop", &c.position_slop},     {"penalty_stiffness", &c.penalty_stiffness},
+      {"penalty_damping", &c.penalty_damping}, {"penalty_buffer", &c.penalty_buffer},
+      {"barrier_strength", &c.barrier_strength}, {"barrier_buffer", &c.barrier_buffer}};
+  for (const auto& [key, field] : numbers) {
+    if (node[key]) *field = number(node[key], std::string("contact.") + key);
+  }
+  if (node["iterations"]) {
+    const double n = number(node["iterations"], "contact.iterations");
+    if (n != std::floor(n) || n < 1 || n > 1e6) fail("contact.iterations", "expected a whole number >= 1, got " + show(node["iterations"]));
+    c.iterations = static_cast<int>(n);
+  }
+}
+
+void parseSleep(const YAML::Node& node, core::SleepSettings& s) {
+  requireKnownKeys(node, "sleep", {"enabled", "linear_velocity", "angular_velocity", "time"});
+  if (node["enabled"]) s.enabled = boolean(node["enabled"], "sleep.enabled");
+  if (node["linear_velocity"]) s.linear_velocity = number(node["linear_velocity"], "sleep.linear_velocity");
+  if (node["angular_velocity"]) s.angular_velocity = number(node["angular_velocity"], "sleep.angular_velocity");
+  if (node["time"]) s.time = number(node["time"], "sleep.time");
+}
+
 void parseDamping(const YAML::Node& node, core::Damping& d) {
   requireKnownKeys(node, "damping", {"linear", "angular", "linear_drag", "angular_drag"});
   if (node["linear"]) d.linear_rate = number(node["linear"], "damping.linear");
@@ -79,22 +203,7 @@ void parseDamping(const YAML::Node& node, core::Damping& d) {
 void parseInitial(const YAML::Node& node, core::LinkState& s) {
   requireKnownKeys(node, "initial", {"position", "rpy", "quaternion", "linear_velocity", "angular_velocity"});
   if (node["position"]) s.p_WL = vec3(node["position"], "initial.position");
-  if (node["rpy"] && node["quaternion"]) fail("initial", "give initial.rpy or initial.quaternion, not both");
-  if (node["rpy"]) s.q_WL = fromRpy(vec3(node["rpy"], "initial.rpy"));
-  if (node["quaternion"]) {
-    const YAML::Node q = node["quaternion"];
-    const std::string key = "initial.quaternion";
-    if (!q.IsSequence() || q.size() != 4) fail(key, "expected [x, y, z, w], got " + show(q));
-    // geometry_msgs order (x, y, z, w); Eigen's constructor takes (w, x, y, z).
-    const Quat value(number(q[3], key + "[3]"), number(q[0], key + "[0]"), number(q[1], key + "[1]"),
-                     number(q[2], key + "[2]"));
-    if (std::abs(value.norm() - 1.0) > 1e-3) {
-      std::ostringstream os;
-      os << value.norm();
-      fail(key, "norm " + os.str() + " is not 1 (within 1e-3): " + show(q));
-    }
-    s.q_WL = value.normalized();
-  }
+  s.q_WL = orientation(node, "initial");
   if (node["linear_velocity"]) s.v_WL = vec3(node["linear_velocity"], "initial.linear_velocity");
   if (node["angular_velocity"]) s.w_W = vec3(node["angular_velocity"], "initial.angular_velocity");
 }
@@ -103,13 +212,17 @@ void parseInitial(const YAML::Node& node, core::LinkState& s) {
 
 SimConfig parseConfig(const YAML::Node& root) {
   SimConfig c;
+  c.model.scene = {core::Sdf::plane(Vec3::UnitZ())};  // the ground, z = 0
   if (!root || root.IsNull()) return c;
-  requireKnownKeys(root, "", {"dt", "gravity", "gyroscopic", "damping", "initial"});
+  requireKnownKeys(root, "", {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep"});
   if (root["dt"]) c.model.dt = number(root["dt"], "dt");
   if (root["gravity"]) c.model.gravity_W = vec3(root["gravity"], "gravity");
   if (root["gyroscopic"]) c.model.gyroscopic = boolean(root["gyroscopic"], "gyroscopic");
   if (root["damping"]) parseDamping(root["damping"], c.model.damping);
   if (root["initial"]) parseInitial(root["initial"], c.initial);
+  if (root["scene"]) c.model.scene = parseScene(root["scene"]);
+  if (root["contact"]) parseContact(root["contact"], c.model.contact);
+  if (root["sleep"]) parseSleep(root["sleep"], c.model.sleep);
   return c;
 }
 

@@ -4,12 +4,14 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <urdf_parser/urdf_parser.h>
 #include <vector>
 
 #include "rigid_body_sim/core/inertia.h"
+#include "rigid_body_sim/io/mesh_loader.h"
 
 namespace rigid_body_sim::io {
 namespace {
@@ -18,12 +20,7 @@ using core::Mat3;
 using core::Quat;
 using core::Vec3;
 
-/// A rigid transform: the pose of a frame in the root link frame L.
-struct Pose {
-  Quat q = Quat::Identity();
-  Vec3 p = Vec3::Zero();
-  Pose operator*(const Pose& o) const { return {q * o.q, p + q * o.p}; }
-};
+using core::Pose;
 
 Pose toPose(const urdf::Pose& u) {
   // urdf::Rotation is (x, y, z, w); Eigen's constructor takes (w, x, y, z).
@@ -45,7 +42,7 @@ const char* jointTypeName(int type) {
 
 class Lumper {
  public:
-  explicit Lumper(std::string source) : source_(std::move(source)) {}
+  Lumper(std::string source, std::string base_dir) : source_(std::move(source)), base_dir_(std::move(base_dir)) {}
 
   [[noreturn]] void fail(const std::string& what) const { throw UrdfError(source_ + ": " + what); }
 
@@ -74,13 +71,75 @@ class Lumper {
     if (in.mass == 0.0 && !I.isZero(0.0)) fail(where + ": mass is 0 kg but <inertia> is not zero");
     // <inertial><origin> places the centre of mass and the inertia axes.
     const Pose X_LI = X_LK * toPose(in.origin);
-    const Mat3 R = X_LI.q.toRotationMatrix();
-    return {in.mass, X_LI.p, R * I * R.transpose()};
+    const Mat3 R = X_LI.q_WS.toRotationMatrix();
+    return {in.mass, X_LI.p_WS, R * I * R.transpose()};
+  }
+
+  /// The link's <collision> elements as shapes posed in L.
+  void collisions(const urdf::Link& link, const Pose& X_LK, std::vector<core::CollisionShape>& out) const {
+    for (std::size_t i = 0; i < link.collision_array.size(); ++i) {
+      const urdf::Collision& col = *link.collision_array[i];
+      const std::string where = "link '" + link.name + "' <collision> " + std::to_string(i);
+      if (!col.geometry) fail(where + " has no <geometry>");
+      core::CollisionShape shape;
+      shape.X_LS = X_LK * toPose(col.origin);
+      shape.name = where;
+      auto positive = [&](double x, const std::string& field) {
+        if (!std::isfinite(x) || !(x > 0.0)) {
+          std::ostringstream value;
+          value << x;
+          fail(where + ": " + field + " = " + value.str() + ": must be finite and > 0 m");
+        }
+      };
+      switch (col.geometry->type) {
+        case urdf::Geometry::BOX: {
+          const auto& box = static_cast<const urdf::Box&>(*col.geometry);
+          shape.kind = core::CollisionShape::Kind::kBox;
+          shape.size = Vec3(box.dim.x, box.dim.y, box.dim.z);
+          positive(box.dim.x, "box size x");
+          positive(box.dim.y, "box size y");
+          positive(box.dim.z, "box size z");
+          break;
+        }
+        case urdf::Geometry::SPHERE: {
+          const auto& sphere = static_cast<const urdf::Sphere&>(*col.geometry);
+          shape.kind = core::CollisionShape::Kind::kSphere;
+          shape.size = Vec3(sphere.radius, 0.0, 0.0);
+          positive(sphere.radius, "sphere radius");
+          break;
+        }
+        case urdf::Geometry::CYLINDER: {
+          const auto& cyl = static_cast<const urdf::Cylinder&>(*col.geometry);
+          shape.kind = core::CollisionShape::Kind::kCylinder;
+          shape.size = Vec3(cyl.radius, cyl.length, 0.0);
+          positive(cyl.radius, "cylinder radius");
+          positive(cyl.length, "cylinder length");
+          break;
+        }
+        case urdf::Geometry::MESH: {
+          const auto& mesh = static_cast<const urdf::Mesh&>(*col.geometry);
+          shape.kind = core::CollisionShape::Kind::kPoints;
+          const Vec3 scale(mesh.scale.x, mesh.scale.y, mesh.scale.z);
+          if (!scale.allFinite() || (scale.array() == 0.0).any()) fail(where + ": mesh scale must be finite and non-zero");
+          try {
+            shape.points_S = loadMeshVertices(resolveMeshUri(mesh.filename, base_dir_), scale);
+          } catch (const MeshError& e) {
+            fail(where + ": " + e.what());
+          }
+          shape.name += " (" + mesh.filename + ")";
+          break;
+        }
+        default: fail(where + ": unsupported geometry type");
+      }
+      out.push_back(std::move(shape));
+    }
   }
 
   /// Adds `link` and, through fixed joints, everything below it.
-  void collect(const urdf::Link& link, const Pose& X_LK, std::vector<core::MassProperties>& parts) const {
+  void collect(const urdf::Link& link, const Pose& X_LK, std::vector<core::MassProperties>& parts,
+               std::vector<core::CollisionShape>& shapes) const {
     parts.push_back(part(link, X_LK));
+    collisions(link, X_LK, shapes);
     for (const auto& joint : link.child_joints) {
       if (joint->type != urdf::Joint::FIXED) {
         fail(std::string("joint '") + joint->name + "' is " + jointTypeName(joint->type) +
@@ -89,25 +148,27 @@ class Lumper {
       const auto child = std::find_if(link.child_links.begin(), link.child_links.end(),
                                       [&](const auto& l) { return l->name == joint->child_link_name; });
       if (child == link.child_links.end()) fail("joint '" + joint->name + "' has no child link");
-      collect(**child, X_LK * toPose(joint->parent_to_joint_origin_transform), parts);
+      collect(**child, X_LK * toPose(joint->parent_to_joint_origin_transform), parts, shapes);
     }
   }
 
  private:
   std::string source_;
+  std::string base_dir_;
 };
 
 }  // namespace
 
-core::BodySpec loadUrdfString(const std::string& xml, const std::string& source) {
-  const Lumper lumper(source);
+core::BodySpec loadUrdfString(const std::string& xml, const std::string& source, const std::string& base_dir) {
+  const Lumper lumper(source, base_dir);
   const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
   if (!model) lumper.fail("not a valid URDF document (the parser's reason is printed above)");
   const urdf::LinkConstSharedPtr root = model->getRoot();
   if (!root) lumper.fail("no root link");
 
   std::vector<core::MassProperties> parts;
-  lumper.collect(*root, Pose{}, parts);
+  std::vector<core::CollisionShape> shapes;
+  lumper.collect(*root, Pose{}, parts, shapes);
   const core::MassProperties total = core::combine(parts);
   if (!(total.mass > 0.0)) {
     lumper.fail("the body rooted at link '" + root->name + "' has a total mass of 0 kg");
@@ -117,6 +178,7 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source)
   spec.mass = total.mass;
   spec.p_LC = total.p_FC;
   spec.I_C_L = total.I_C_F;
+  spec.collision = std::move(shapes);
   return spec;
 }
 
@@ -125,7 +187,7 @@ core::BodySpec loadUrdfFile(const std::string& path) {
   if (!in) throw UrdfError("cannot read URDF '" + path + "': " + std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
-  return loadUrdfString(text.str(), path);
+  return loadUrdfString(text.str(), path, std::filesystem::path(path).parent_path().string());
 }
 
 }  // namespace rigid_body_sim::io

@@ -28,6 +28,109 @@ TEST(Config, ShippedDefaultsAreTheCodeDefaults) {
   EXPECT_EQ(file.initial.q_WL.coeffs(), code.initial.q_WL.coeffs());
   EXPECT_EQ(file.initial.v_WL, code.initial.v_WL);
   EXPECT_EQ(file.initial.w_W, code.initial.w_W);
+  const core::ContactSettings &fc = file.model.contact, &cc = code.model.contact;
+  EXPECT_EQ(fc.method, cc.method);
+  EXPECT_EQ(fc.restitution, cc.restitution);
+  EXPECT_EQ(fc.friction, cc.friction);
+  EXPECT_EQ(fc.restitution_threshold, cc.restitution_threshold);
+  EXPECT_EQ(fc.sample_spacing, cc.sample_spacing);
+  EXPECT_EQ(fc.iterations, cc.iterations);
+  EXPECT_EQ(fc.position_slop, cc.position_slop);
+  EXPECT_EQ(fc.penalty_stiffness, cc.penalty_stiffness);
+  EXPECT_EQ(fc.penalty_damping, cc.penalty_damping);
+  EXPECT_EQ(fc.penalty_buffer, cc.penalty_buffer);
+  EXPECT_EQ(fc.barrier_strength, cc.barrier_strength);
+  EXPECT_EQ(fc.barrier_buffer, cc.barrier_buffer);
+  const core::SleepSettings &fs = file.model.sleep, &cs = code.model.sleep;
+  EXPECT_EQ(fs.enabled, cs.enabled);
+  EXPECT_EQ(fs.linear_velocity, cs.linear_velocity);
+  EXPECT_EQ(fs.angular_velocity, cs.angular_velocity);
+  EXPECT_EQ(fs.time, cs.time);
+  // The default scene is the ground plane z = 0, in the file and in the code.
+  for (const io::SimConfig* c : {&file, &code}) {
+    ASSERT_EQ(c->model.scene.size(), 1u);
+    EXPECT_EQ(c->model.scene[0].kind(), core::Sdf::Kind::kPlane);
+    EXPECT_DOUBLE_EQ(c->model.scene[0].eval(Vec3(3, -2, 0.7)), 0.7);
+  }
+}
+
+TEST(Config, SceneShapesAndCompositions) {
+  const io::SimConfig c = parse(R"(
+scene:
+  - {type: plane, normal: [0, 0, 2], position: [0, 0, -1]}
+  - {type: box, size: [1, 2, 3], position: [5, 0, 0], rpy: [0, 0, 1.5707963267948966]}
+  - {type: sphere, radius: 0.5, position: [0, 5, 0]}
+  - {type: capsule, radius: 0.2, length: 1}
+  - {type: cylinder, radius: 0.2, length: 1, quaternion: [0, 0, 0, 1]}
+  - type: difference
+    position: [0, 0, 10]
+    shapes:
+      - {type: box, size: [2.2, 2.2, 1.2], position: [0, 0, 0.5]}
+      - {type: box, size: [2, 2, 1.5], position: [0, 0, 0.75]}
+)");
+  ASSERT_EQ(c.model.scene.size(), 6u);
+  EXPECT_DOUBLE_EQ(c.model.scene[0].eval(Vec3(1, 1, 1)), 2.0);               // normal normalized
+  EXPECT_NEAR(c.model.scene[1].eval(Vec3(5, 0.6, 0)), 0.1, 1e-12);           // turned: its x is world y
+  EXPECT_NEAR(c.model.scene[2].eval(Vec3(0, 5, 1)), 0.5, 1e-12);
+  EXPECT_NEAR(c.model.scene[3].eval(Vec3(0, 0, 1.5)), 0.8, 1e-12);
+  EXPECT_NEAR(c.model.scene[4].eval(Vec3(1, 0, 0)), 0.8, 1e-12);
+  EXPECT_NEAR(c.model.scene[5].eval(Vec3(0, 0, 10.3)), 0.3, 1e-12);          // the room's floor, moved up
+  EXPECT_TRUE(parse("scene: []").model.scene.empty());
+}
+
+TEST(Config, ContactAndSleepKeys) {
+  const io::SimConfig c = parse(R"(
+contact: {method: penalty_log_barrier, restitution: 0.4, friction: 0.8, restitution_threshold: 0.2,
+          sample_spacing: 0.05, iterations: 12, position_slop: 0.0002, penalty_stiffness: 5000,
+          penalty_damping: 20, penalty_buffer: 0.01, barrier_strength: 0.02, barrier_buffer: 0.004}
+sleep: {enabled: false, linear_velocity: 0.02, angular_velocity: 0.1, time: 1.5}
+)");
+  EXPECT_EQ(c.model.contact.method, core::ContactMethod::kPenaltyLogBarrier);
+  EXPECT_EQ(c.model.contact.restitution, 0.4);
+  EXPECT_EQ(c.model.contact.friction, 0.8);
+  EXPECT_EQ(c.model.contact.restitution_threshold, 0.2);
+  EXPECT_EQ(c.model.contact.sample_spacing, 0.05);
+  EXPECT_EQ(c.model.contact.iterations, 12);
+  EXPECT_EQ(c.model.contact.position_slop, 0.0002);
+  EXPECT_EQ(c.model.contact.penalty_stiffness, 5000);
+  EXPECT_EQ(c.model.contact.penalty_damping, 20);
+  EXPECT_EQ(c.model.contact.penalty_buffer, 0.01);
+  EXPECT_EQ(c.model.contact.barrier_strength, 0.02);
+  EXPECT_EQ(c.model.contact.barrier_buffer, 0.004);
+  EXPECT_FALSE(c.model.sleep.enabled);
+  EXPECT_EQ(c.model.sleep.linear_velocity, 0.02);
+  EXPECT_EQ(c.model.sleep.angular_velocity, 0.1);
+  EXPECT_EQ(c.model.sleep.time, 1.5);
+  for (const char* m : {"impulse", "penalty_quadratic", "shape_matching"}) {
+    EXPECT_NO_THROW(parse(std::string("contact: {method: ") + m + "}"));
+  }
+}
+
+TEST(Config, BadScenesAndContactsAreRefusedByKey) {
+  expectRefused("scene: {type: plane}", {"'scene'", "expected a list"});
+  expectRefused("scene: [{type: cone}]", {"'scene[0].type'", "unknown shape 'cone'"});
+  expectRefused("scene: [{type: box}]", {"'scene[0].size'", "needs size"});
+  expectRefused("scene: [{type: box, size: [1, 0, 1]}]", {"'scene[0].size'", "> 0"});
+  expectRefused("scene: [{type: sphere, radius: -1}]", {"'scene[0].radius'", "> 0"});
+  expectRefused("scene: [{type: plane, normal: [0, 0, 0]}]", {"'scene[0].normal'", "not be zero"});
+  expectRefused("scene: [{type: plane, size: [1, 1, 1]}]", {"'scene[0].size'", "unknown key"});
+  expectRefused("scene: [{type: difference, shapes: [{type: sphere, radius: 1}]}]",
+                {"'scene[0].shapes'", "at least 2"});
+  expectRefused("scene: [{type: union, shapes: [{type: ball}]}]", {"'scene[0].shapes[0].type'"});
+  expectRefused("contact: {method: magic}", {"'contact.method'", "unknown method 'magic'"});
+  expectRefused("contact: {iterations: 2.5}", {"'contact.iterations'", "whole number"});
+  expectRefused("contact: {frction: 1}", {"'contact.frction'", "unknown key"});
+  expectRefused("sleep: {enabled: sometimes}", {"'sleep.enabled'", "true or false"});
+}
+
+TEST(Config, ContactValidationNamesTheField) {
+  const io::SimConfig bad = parse("contact: {restitution: 1.5}");
+  expectThrowsWith<std::invalid_argument>([&] { io::buildModel(bad, issueBox()); },
+                                          {"contact.restitution = 1.5", "[0, 1]"});
+  // The default scene (the ground) needs the body to have collision geometry.
+  expectThrowsWith<std::invalid_argument>([&] { io::buildModel(parse(""), issueBox()); },
+                                          {"body 'box'", "no <collision> geometry", "scene: []"});
+  EXPECT_NO_THROW(io::buildModel(parse("scene: []"), issueBox()));
 }
 
 TEST(Config, ReadsEveryKey) {
@@ -105,7 +208,7 @@ TEST(Config, RefusalsNameTheKeyAndTheValue) {
 }
 
 TEST(Config, ModelValidationNamesTheField) {
-  const io::SimConfig c = parse("dt: -0.001");
+  const io::SimConfig c = parse("dt: -0.001\nscene: []");
   expectThrowsWith<std::invalid_argument>([&] { io::buildModel(c, issueBox()); }, {"dt = -0.001", "> 0 s"});
 }
 

@@ -19,7 +19,7 @@ class ConfigError : public std::runtime_error {
 };
 
 struct SimConfig {
-  /// dt, gravity, damping, gyroscopic (bodies come from URDF).
+  /// dt, gravity, damping, gyroscopic, scene, contact, sleep (bodies come from URDF).
   core::ModelSpec model;
   /// Initial pose and twist of the root link frame, world frame.
   core::LinkState initial;

@@ -27,8 +27,13 @@ class UrdfError : public std::runtime_error {
 /// <inertial>, a negative or non-finite mass, an inertia that no mass
 /// distribution can have, a total mass of zero.
 ///
+/// The <collision> elements of the lumped links become the body's collision
+/// shapes (box, sphere, cylinder, mesh vertices through assimp); mesh URIs
+/// resolve as resolveMeshUri() says, relative to `base_dir`. A non-positive
+/// size or an unreadable mesh is refused, naming the link.
+///
 /// `source` names the document in messages (a file path, or the parameter).
-core::BodySpec loadUrdfString(const std::string& xml, const std::string& source);
+core::BodySpec loadUrdfString(const std::string& xml, const std::string& source, const std::string& base_dir = "");
 
 /// Reads and loads a URDF file.
 core::BodySpec loadUrdfFile(const std::string& path);

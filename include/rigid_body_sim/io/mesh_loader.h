@@ -1,0 +1,30 @@
+// Mesh files (STL, OBJ, DAE, ... through assimp) as collision vertices. ROS-free.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/core/types.h"
+
+namespace rigid_body_sim::io {
+
+class MeshError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The file a URDF mesh reference points to:
+///  - package://NAME/PATH: NAME is looked up in ROS_PACKAGE_PATH (a directory
+///    NAME, or any directory whose package.xml says <name>NAME</name>), then
+///    upward from `base_dir` (so a package's own URDFs resolve without ROS);
+///  - file:///ABS/PATH: that path;
+///  - a relative path: relative to `base_dir` (the URDF file's folder).
+/// Throws MeshError naming the URI when nothing is found.
+std::string resolveMeshUri(const std::string& uri, const std::string& base_dir);
+
+/// The distinct vertices of every mesh in the file, node transforms applied,
+/// multiplied by `scale` (m). Throws MeshError naming the file.
+std::vector<core::Vec3> loadMeshVertices(const std::string& path, const core::Vec3& scale);
+
+}  // namespace rigid_body_sim::io

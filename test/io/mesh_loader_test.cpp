@@ -1,0 +1,148 @@
+// Meshes through assimp, URI resolution, collision shapes from URDF, and the
+// shipped bunny dropping onto the ground.
+#include "rigid_body_sim/io/mesh_loader.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "rigid_body_sim/core/contact.h"
+#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/urdf_loader.h"
+#include "../test_util.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A fresh temporary folder for one test.
+fs::path tempDir(const std::string& name) {
+  const fs::path dir = fs::path(::testing::TempDir()) / ("rbs_mesh_" + std::to_string(::getpid()) + "_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+const Vec3 kTet[4] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+
+void writeTetrahedronStl(const fs::path& path) {
+  // ASCII STL repeats every vertex in each facet that uses it.
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  std::ofstream out(path);
+  out << "solid tet\n";
+  for (const auto& f : faces) {
+    out << "facet normal 0 0 0\n outer loop\n";
+    for (int v : f) out << "  vertex " << kTet[v].x() << " " << kTet[v].y() << " " << kTet[v].z() << "\n";
+    out << " endloop\nendfacet\n";
+  }
+  out << "endsolid tet\n";
+}
+
+void writeTetrahedronObj(const fs::path& path) {
+  std::ofstream out(path);
+  for (const Vec3& v : kTet) out << "v " << v.x() << " " << v.y() << " " << v.z() << "\n";
+  out << "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+}
+
+TEST(MeshLoader, ReadsStlAndObjVerticesOnceEachAndScales) {
+  const fs::path dir = tempDir("formats");
+  writeTetrahedronStl(dir / "tet.stl");
+  writeTetrahedronObj(dir / "tet.obj");
+  for (const char* file : {"tet.stl", "tet.obj"}) {
+    const auto v = io::loadMeshVertices((dir / file).string(), Vec3(2, 3, 4));
+    ASSERT_EQ(v.size(), 4u) << file;
+    for (const Vec3& t : kTet) {
+      const Vec3 scaled = t.cwiseProduct(Vec3(2, 3, 4));
+      EXPECT_TRUE(std::any_of(v.begin(), v.end(), [&](const Vec3& x) { return (x - scaled).norm() < 1e-6; }))
+          << file << ": " << scaled.transpose();
+    }
+  }
+  EXPECT_THROW(io::loadMeshVertices((dir / "missing.stl").string(), Vec3::Ones()), io::MeshError);
+  std::ofstream(dir / "garbage.obj") << "this is not a mesh\n";
+  EXPECT_THROW(io::loadMeshVertices((dir / "garbage.obj").string(), Vec3::Ones()), io::MeshError);
+}
+
+TEST(MeshLoader, ResolvesFilePackageAndRelativeUris) {
+  const fs::path dir = tempDir("uris");
+  fs::create_directories(dir / "ws" / "my_pkg" / "meshes");
+  std::ofstream(dir / "ws" / "my_pkg" / "package.xml") << "<package><name>my_pkg</name></package>";
+  EXPECT_EQ(io::resolveMeshUri("file:///abs/a.stl", "/x"), "/abs/a.stl");
+  EXPECT_EQ(io::resolveMeshUri("meshes/a.stl", "/base"), "/base/meshes/a.stl");
+  EXPECT_EQ(io::resolveMeshUri("/abs/a.stl", "/base"), "/abs/a.stl");
+  // Through ROS_PACKAGE_PATH ...
+  ::setenv("ROS_PACKAGE_PATH", (dir / "ws").c_str(), 1);
+  EXPECT_EQ(io::resolveMeshUri("package://my_pkg/meshes/a.stl", ""), (dir / "ws" / "my_pkg" / "meshes/a.stl").string());
+  ::unsetenv("ROS_PACKAGE_PATH");
+  // ... or upward from the URDF's folder, without ROS.
+  EXPECT_EQ(io::resolveMeshUri("package://my_pkg/meshes/a.stl", (dir / "ws" / "my_pkg" / "urdf").string()),
+            (dir / "ws" / "my_pkg" / "meshes/a.stl").string());
+  expectThrowsWith<io::MeshError>([] { io::resolveMeshUri("package://nobody/a.stl", "/tmp"); },
+                                  {"package://nobody/a.stl", "package 'nobody' not found"});
+}
+
+TEST(UrdfCollision, ShapesArePosedInTheRootLinkFrame) {
+  const std::string xml = R"(<robot name="r">
+    <link name="base">
+      <inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>
+      <collision><origin xyz="0 0 0.5"/><geometry><box size="0.2 0.4 0.6"/></geometry></collision>
+      <collision><geometry><sphere radius="0.3"/></geometry></collision>
+    </link>
+    <joint name="j" type="fixed"><parent link="base"/><child link="arm"/><origin xyz="1 0 0" rpy="0 0 1.5707963267948966"/></joint>
+    <link name="arm">
+      <inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>
+      <collision><origin xyz="0.5 0 0"/><geometry><cylinder radius="0.1" length="0.8"/></geometry></collision>
+    </link>
+  </robot>)";
+  const core::BodySpec b = io::loadUrdfString(xml, "test.urdf");
+  ASSERT_EQ(b.collision.size(), 3u);
+  EXPECT_EQ(b.collision[0].kind, core::CollisionShape::Kind::kBox);
+  EXPECT_EQ(b.collision[0].size, Vec3(0.2, 0.4, 0.6));
+  EXPECT_LT((b.collision[0].X_LS.p_WS - Vec3(0, 0, 0.5)).norm(), 1e-15);
+  EXPECT_EQ(b.collision[1].kind, core::CollisionShape::Kind::kSphere);
+  EXPECT_EQ(b.collision[1].size.x(), 0.3);
+  EXPECT_EQ(b.collision[2].kind, core::CollisionShape::Kind::kCylinder);
+  EXPECT_EQ(b.collision[2].size.head<2>(), Eigen::Vector2d(0.1, 0.8));
+  // The arm is 1 m along x, turned 90° about z: its 0.5 m along x is world +y.
+  EXPECT_LT((b.collision[2].X_LS.p_WS - Vec3(1, 0.5, 0)).norm(), 1e-15);
+}
+
+TEST(UrdfCollision, BadGeometryIsRefusedNamingTheLink) {
+  const std::string head = R"(<robot name="r"><link name="base">
+      <inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>)";
+  expectThrowsWith<io::UrdfError>(
+      [&] { io::loadUrdfString(head + R"(<collision><geometry><sphere radius="0"/></geometry></collision></link></robot>)", "t"); },
+      {"link 'base' <collision> 0", "sphere radius = 0"});
+  expectThrowsWith<io::UrdfError>(
+      [&] { io::loadUrdfString(head + R"(<collision><geometry><mesh filename="file:///nope/x.stl"/></geometry></collision></link></robot>)", "t"); },
+      {"link 'base' <collision> 0", "/nope/x.stl"});
+}
+
+TEST(Bunny, LoadsWithoutRosAndRestsOnTheGround) {
+  ::unsetenv("ROS_PACKAGE_PATH");
+  const core::BodySpec bunny = io::loadUrdfFile(std::string(RBS_SOURCE_DIR) + "/urdf/bunny.urdf");
+  ASSERT_EQ(bunny.collision.size(), 1u);
+  EXPECT_EQ(bunny.collision[0].points_S.size(), 162u);
+  io::SimConfig config = io::parseConfig(YAML::Load("initial: {position: [0, 0, 0.5], rpy: [0.5, 0.2, 0]}"));
+  const core::Model model = io::buildModel(config, bunny);
+  EXPECT_FALSE(model.body(0).q_LB.isApprox(Quat::Identity()));  // ixz ≠ 0: turned principal axes
+  core::State s;
+  s.bodies = {core::bodyStateFromLink(model.body(0), config.initial)};
+  core::Workspace ws;
+  double deepest = 0.0;
+  for (int n = 0; n < 4000; ++n) {
+    core::step(model, s, {}, &ws);
+    deepest = std::max(deepest, ws.deepest_penetration);
+  }
+  EXPECT_TRUE(core::atRest(model, s.bodies[0]));
+  EXPECT_LT(deepest, 1e-3);
+  // Resting: its lowest vertex is on the ground.
+  EXPECT_NEAR(core::minSeparation(model, s.bodies[0], 0, 1.0), 0.0, 2e-4);
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
