@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/diagnostics.h"
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/io/config.h"
@@ -192,13 +193,18 @@ int run(const Args& args) {
   const auto wall_start = Clock::now();
   Clock::duration stepping{0};
   if (csv) csv->row(0.0, core::linkState(bm, state.bodies[0]));
+  core::Workspace workspace;
+  double max_penetration = 0.0;  // m, over the states at the start of every step
   long long done = 0;
   while (done < steps) {
     long long block = steps - done;
     if (csv) block = std::min(block, args.every - done % args.every);
     block = std::min(block, progress_every - done % progress_every);
     const auto t0 = Clock::now();
-    for (long long k = 0; k < block; ++k) core::step(model, state);
+    for (long long k = 0; k < block; ++k) {
+      core::step(model, state, {}, &workspace);
+      max_penetration = std::max(max_penetration, workspace.deepest_penetration);
+    }
     stepping += Clock::now() - t0;
     done += block;
     if (csv && (done % args.every == 0 || done == steps)) csv->row(done * dt, core::linkState(bm, state.bodies[0]));
@@ -212,14 +218,19 @@ int run(const Args& args) {
   const core::LinkState final_link = core::linkState(bm, state.bodies[0]);
   const double energy_end = core::totalEnergy(model, state);
   const Vec3 momentum_end = core::angularMomentumWorld(bm, state.bodies[0]);
+  // The final state's penetration (the loop saw every earlier state).
+  max_penetration = std::max(max_penetration, -std::min(0.0, core::minSeparation(model, state.bodies[0], 0, 0.0)));
+  const bool at_rest = core::atRest(model, state.bodies[0]);
 
   std::printf(
       "{\"steps\":%lld,\"sim_time\":%s,\"wall_s\":%s,\"ns_per_step\":%s,"
       "\"final\":{\"position\":%s,\"quaternion\":%s,\"linear_velocity\":%s,\"angular_velocity\":%s},"
-      "\"energy\":{\"start\":%s,\"end\":%s},\"angular_momentum\":{\"start\":%s,\"end\":%s}}\n",
+      "\"energy\":{\"start\":%s,\"end\":%s},\"angular_momentum\":{\"start\":%s,\"end\":%s},"
+      "\"max_penetration\":%s,\"at_rest\":%s}\n",
       steps, num(sim_time).c_str(), num(wall_s).c_str(), num(ns_per_step).c_str(), vec(final_link.p_WL).c_str(),
       quat(final_link.q_WL).c_str(), vec(final_link.v_WL).c_str(), vec(final_link.w_W).c_str(),
-      num(energy_start).c_str(), num(energy_end).c_str(), vec(momentum_start).c_str(), vec(momentum_end).c_str());
+      num(energy_start).c_str(), num(energy_end).c_str(), vec(momentum_start).c_str(), vec(momentum_end).c_str(),
+      num(max_penetration).c_str(), at_rest ? "true" : "false");
 
   if (!args.quiet) {
     const auto rel = [](double a, double b) { return a == 0.0 ? std::abs(b) : (b - a) / std::abs(a); };
@@ -235,6 +246,8 @@ int run(const Args& args) {
                  rel(energy_start, energy_end));
     std::fprintf(stderr, "  |L| about the CoM %.9g -> %.9g kg m^2/s (relative change %.2e)\n", momentum_start.norm(),
                  momentum_end.norm(), rel(momentum_start.norm(), momentum_end.norm()));
+    std::fprintf(stderr, "  contacts          deepest penetration %.3g mm, %s at the end\n", 1e3 * max_penetration,
+                 at_rest ? "at rest" : "moving");
   }
   return 0;
 }

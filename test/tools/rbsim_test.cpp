@@ -80,6 +80,24 @@ TEST(Rbsim, SpinConfigConservesMomentumAndReadsOverrides) {
   EXPECT_EQ(seq(j["final"]["position"]), (std::vector<double>{0, 0, 1}));  // gravity off in spin.yaml
 }
 
+TEST(Rbsim, ReportsPenetrationAndRestOfADroppedBox) {
+  const Result r = rbsim("--urdf " + kBox +
+                         " --set initial.position=[0,0,1] --set initial.rpy=[0.4,0.3,0.2]"
+                         " --set initial.angular_velocity=[1,2,3] --duration 5 --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const YAML::Node j = YAML::Load(r.out);
+  EXPECT_TRUE(j["at_rest"].as<bool>());
+  EXPECT_GE(j["max_penetration"].as<double>(), 0.0);
+  EXPECT_LT(j["max_penetration"].as<double>(), 1e-3);
+  const double z = seq(j["final"]["position"])[2];
+  EXPECT_TRUE(std::abs(z - 0.05) < 1e-3 || std::abs(z - 0.1) < 1e-3 || std::abs(z - 0.2) < 1e-3) << z;
+  // In the air the whole time: no contact, not at rest.
+  const Result air = rbsim("--urdf " + kBox + " --set initial.position=[0,0,10] --duration 1 --quiet");
+  const YAML::Node a = YAML::Load(air.out);
+  EXPECT_FALSE(a["at_rest"].as<bool>());
+  EXPECT_EQ(a["max_penetration"].as<double>(), 0.0);
+}
+
 TEST(Rbsim, WritesTheCsvEveryNStepsAndTheFinalState) {
   const std::string csv = tempPath("traj.csv");
   const Result r = rbsim("--urdf " + kBox + " --duration 0.1 --dt 0.01 --every 3 --csv " + csv + " --quiet");
