@@ -26,9 +26,10 @@ void runSpin(benchmark::State& bench, const Model& model, const Loads& loads) {
   start.w_W = Vec3(0.01, 3.0, 0.0);
   const State initial{0.0, {bodyStateFromLink(model.body(0), start)}};
   State s = initial;
+  Workspace ws;
   int n = 0;
   for (auto _ : bench) {
-    step(model, s, loads);
+    step(model, s, loads, &ws);
     if (++n == 20000) {
       s = initial;
       n = 0;

@@ -26,5 +26,9 @@ print(f"ns_per_step median {statistics.median(ns):.1f} (min {ns[0]:.1f}, max {ns
 print(f"energy relative change {(e1 - e0) / e0:.2e}, |L| relative change {(norm(l1) - norm(l0)) / norm(l0):.2e}")
 '
 
+echo "== contacts: box drop (10 s) and mesh bodies against their vertex count (median of $REPS)"
+"$BIN/bench_contact" --benchmark_repetitions="$REPS" --benchmark_report_aggregates_only=true 2>/dev/null |
+  grep -E '_median|^Benchmark'
+
 echo "== gyroscopic integrator study (one run; ns/step is indicative only)"
 "$BIN/gyroscopic_study"

@@ -13,23 +13,40 @@ namespace {
 /// φ(point) ≥ φ(centre) − bound_radius. Planes take a fast path: with the
 /// normal turned into the body frame, φ is one dot product per point.
 template <class Visit>
-void scanBody(const Model& model, const BodyState& s, int body, double margin, Visit&& visit) {
+void scanBody(const Model& model, const BodyState& s, int body, double margin, std::vector<double>& scratch,
+              Visit&& visit) {
   const BodyModel& b = model.body(body);
   const std::vector<Sdf>& scene = model.scene();
-  const Mat3 R = s.q_WB.toRotationMatrix();
+  Mat3 R = Mat3::Zero();
+  bool have_R = false;
   const int n_points = static_cast<int>(b.contact_points.size());
   for (int item = 0; item < static_cast<int>(scene.size()); ++item) {
     const Sdf& sdf = scene[item];
     if (sdf.eval(s.p_WB) - b.bound_radius >= margin) continue;
+    if (!have_R) {
+      R = s.q_WB.toRotationMatrix();
+      have_R = true;
+    }
     if (sdf.kind() == Sdf::Kind::kPlane) {
       const Vec3 n_W = sdf.pose().q_WS * sdf.params();
       const double phi_centre = n_W.dot(s.p_WB - sdf.pose().p_WS);
       const Vec3 n_B = R.transpose() * n_W;
-      const int n_extreme = static_cast<int>(b.extreme_points);  // only these can be deepest against a plane
-      for (int i = 0; i < n_extreme; ++i) {
-        const ContactPoint& p = b.contact_points[i];
-        const double separation = phi_centre + n_B.dot(p.r_B) - p.radius;
-        if (separation < margin) visit(item, i, separation, n_W);
+      // Only the extreme points can be deepest against a plane; groups whose
+      // bounding sphere stays beyond the margin are skipped whole. Within a
+      // group, two passes: all separations (vectorizable), then the few
+      // within the margin.
+      scratch.resize(b.extreme_points);
+      double* sep = scratch.data();
+      const double *x = b.extreme_x.data(), *y = b.extreme_y.data(), *z = b.extreme_z.data(),
+                   *rad = b.extreme_radius.data();
+      const double nx = n_B.x(), ny = n_B.y(), nz = n_B.z();
+      for (const BodyModel::PointGroup& g : b.extreme_groups) {
+        if (phi_centre + n_B.dot(g.centre_B) - g.radius >= margin) continue;
+        const int begin = static_cast<int>(g.begin), end = static_cast<int>(g.end);
+        for (int i = begin; i < end; ++i) sep[i] = phi_centre + nx * x[i] + ny * y[i] + nz * z[i] - rad[i];
+        for (int i = begin; i < end; ++i) {
+          if (sep[i] < margin) visit(item, i, sep[i], n_W);
+        }
       }
       continue;
     }
@@ -49,44 +66,38 @@ double speculativeMargin(const BodyModel& b, const BodyState& s, double h, doubl
 }
 
 /// Of the candidates listed in `members` (one region), keeps at most four
-/// that span its area (the usual contact-manifold reduction): the point
-/// farthest from the region's centroid, the farthest from that one, the
-/// farthest from the line through both, and the farthest on the other side
-/// of that line. On a plane the deepest point of a flat region is one of
-/// these corners. Ties go to the lowest point index, so the same points are
-/// kept from step to step (which is what lets the solver warm-start).
+/// that span its area (the usual contact-manifold reduction): the deepest
+/// point, the farthest from it, the farthest from the line through both,
+/// and the farthest on the other side of that line. Near-ties (within a
+/// nanometre, or 1e-9 relative) go to the lowest point index, so the same
+/// points are kept from step to step, which lets the solver warm-start.
 /// Distances are rigid, so it works on the body-frame points.
 void reduceRegion(const std::vector<ContactCandidate>& cands, const BodyModel& b, const Vec3& n_B,
                   std::vector<int>& members, std::vector<Vec3>& at) {
   const std::size_t n = members.size();
   if (n <= 4) return;
   at.resize(n);
-  Vec3 centroid = Vec3::Zero();
-  for (std::size_t k = 0; k < n; ++k) {
-    at[k] = b.contact_points[cands[members[k]].point].r_B;
-    centroid += at[k];
-  }
-  centroid /= static_cast<double>(n);
-  // The index of the largest score (the first one on ties).
-  const auto argmax = [n](auto score) {
+  for (std::size_t k = 0; k < n; ++k) at[k] = b.contact_points[cands[members[k]].point].r_B;
+  // The index of the largest score (the first one on near-ties).
+  const auto argmax = [n](auto score, double tie) {
     std::size_t best = 0;
     double best_score = score(0);
     for (std::size_t k = 1; k < n; ++k) {
       const double sc = score(k);
-      if (sc > best_score * (1.0 + 1e-9) + 1e-15) {
+      if (sc > best_score + tie + 1e-9 * std::abs(best_score)) {
         best_score = sc;
         best = k;
       }
     }
     return std::make_pair(best, best_score);
   };
-  const std::size_t a = argmax([&](std::size_t k) { return (at[k] - centroid).squaredNorm(); }).first;
-  const std::size_t b2 = argmax([&](std::size_t k) { return (at[k] - at[a]).squaredNorm(); }).first;
+  const std::size_t a = argmax([&](std::size_t k) { return -cands[members[k]].separation; }, 1e-9).first;
+  const std::size_t b2 = argmax([&](std::size_t k) { return (at[k] - at[a]).squaredNorm(); }, 1e-18).first;
   const Vec3 normal_of_ab = (at[b2] - at[a]).cross(n_B);  // in the plane, across the line ab
   const auto side = [&](std::size_t k) { return normal_of_ab.dot(at[k] - at[a]); };
-  const auto [c, c_score] = argmax([&](std::size_t k) { return std::abs(side(k)); });
+  const auto [c, c_score] = argmax([&](std::size_t k) { return std::abs(side(k)); }, 1e-18);
   const double sign = side(c) >= 0.0 ? 1.0 : -1.0;
-  const auto [d, d_score] = argmax([&](std::size_t k) { return -sign * side(k); });
+  const auto [d, d_score] = argmax([&](std::size_t k) { return -sign * side(k); }, 1e-18);
   const int kept[4] = {members[a], members[b2], members[c], members[d]};
   members.resize(2);
   members[0] = kept[0];
@@ -189,8 +200,11 @@ Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
 void detectContacts(const Model& model, const State& state, double h, Workspace& ws) {
   ws.contacts.clear();
   ws.deepest_penetration = 0.0;
+  if (model.scene().empty()) {
+    ws.in_contact.clear();  // no scene, no contact (and no allocation)
+    return;
+  }
   ws.in_contact.assign(model.bodyCount(), 0);
-  if (model.scene().empty()) return;
   const ContactSettings& cs = model.contact();
   const bool impulse = cs.method == ContactMethod::kImpulse;
   for (int body = 0; body < static_cast<int>(model.bodyCount()); ++body) {
@@ -201,7 +215,7 @@ void detectContacts(const Model& model, const State& state, double h, Workspace&
     if (cs.method == ContactMethod::kPenaltyQuadratic) margin = cs.penalty_buffer;
     if (cs.method == ContactMethod::kPenaltyLogBarrier) margin = cs.barrier_buffer;
     ws.candidates.clear();
-    scanBody(model, s, body, margin, [&](int item, int point, double separation, const Vec3& n) {
+    scanBody(model, s, body, margin, ws.separations, [&](int item, int point, double separation, const Vec3& n) {
       ws.candidates.push_back({item, point, 0, separation, n});
       ws.deepest_penetration = std::max(ws.deepest_penetration, -separation);
     });
@@ -371,7 +385,8 @@ void accumulatePenaltyForces(const Model& model, const State& state, const Works
 
 double minSeparation(const Model& model, const BodyState& s, int body, double margin) {
   double smallest = std::numeric_limits<double>::infinity();
-  scanBody(model, s, body, margin, [&](int, int, double separation, const Vec3&) {
+  std::vector<double> scratch;
+  scanBody(model, s, body, margin, scratch, [&](int, int, double separation, const Vec3&) {
     smallest = std::min(smallest, separation);
   });
   return smallest;

@@ -10,6 +10,48 @@
 namespace rigid_body_sim::core {
 namespace {
 
+/// Orders the extreme points by recursive median splits along the widest
+/// axis into groups of at most kGroupSize, and bounds each group by a sphere.
+void groupExtremePoints(BodyModel& b) {
+  constexpr std::size_t kGroupSize = 32;
+  std::vector<std::pair<std::size_t, std::size_t>> todo{{0, b.extreme_points}};
+  while (!todo.empty()) {
+    const auto [begin, end] = todo.back();
+    todo.pop_back();
+    if (begin == end) continue;
+    const auto first = b.contact_points.begin() + static_cast<std::ptrdiff_t>(begin);
+    const auto last = b.contact_points.begin() + static_cast<std::ptrdiff_t>(end);
+    if (end - begin <= kGroupSize) {
+      BodyModel::PointGroup g;
+      g.begin = begin;
+      g.end = end;
+      for (auto it = first; it != last; ++it) g.centre_B += it->r_B;
+      g.centre_B /= static_cast<double>(end - begin);
+      for (auto it = first; it != last; ++it) g.radius = std::max(g.radius, (it->r_B - g.centre_B).norm() + it->radius);
+      b.extreme_groups.push_back(g);
+      continue;
+    }
+    Vec3 lo = first->r_B, hi = first->r_B;
+    for (auto it = first; it != last; ++it) {
+      lo = lo.cwiseMin(it->r_B);
+      hi = hi.cwiseMax(it->r_B);
+    }
+    int axis = 0;
+    (hi - lo).maxCoeff(&axis);
+    const std::size_t mid = begin + (end - begin) / 2;
+    std::nth_element(first, b.contact_points.begin() + static_cast<std::ptrdiff_t>(mid), last,
+                     [axis](const ContactPoint& x, const ContactPoint& y) {
+                       return x.r_B(axis) != y.r_B(axis) ? x.r_B(axis) < y.r_B(axis)
+                                                         : std::lexicographical_compare(x.r_B.data(), x.r_B.data() + 3,
+                                                                                        y.r_B.data(), y.r_B.data() + 3);
+                     });
+    todo.push_back({mid, end});
+    todo.push_back({begin, mid});
+  }
+  std::sort(b.extreme_groups.begin(), b.extreme_groups.end(),
+            [](const BodyModel::PointGroup& x, const BodyModel::PointGroup& y) { return x.begin < y.begin; });
+}
+
 /// Samples the body's collision shapes into contact points in B, and the
 /// quantities shape matching needs.
 void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, BodyModel& b) {
@@ -22,6 +64,13 @@ void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, Bo
   const auto first_other = std::stable_partition(b.contact_points.begin(), b.contact_points.end(),
                                                  [](const ContactPoint& p) { return p.extreme; });
   b.extreme_points = static_cast<std::size_t>(first_other - b.contact_points.begin());
+  groupExtremePoints(b);
+  for (std::size_t i = 0; i < b.extreme_points; ++i) {
+    b.extreme_x.push_back(b.contact_points[i].r_B.x());
+    b.extreme_y.push_back(b.contact_points[i].r_B.y());
+    b.extreme_z.push_back(b.contact_points[i].r_B.z());
+    b.extreme_radius.push_back(b.contact_points[i].radius);
+  }
   for (const ContactPoint& p : b.contact_points) {
     b.bound_radius = std::max(b.bound_radius, p.r_B.norm() + p.radius);
     b.points_centroid_B += p.r_B;

@@ -135,6 +135,7 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
     s.p_WB = p_new;
     s.q_WB = Quat(R_new).normalized();
     s.w_B = s.q_WB.conjugate() * w_new;
+    updateSleep(model, ws.in_contact[i] != 0, h, s);
   }
 }
 

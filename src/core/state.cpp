@@ -25,7 +25,9 @@ BodyState bodyStateFromLink(const BodyModel& body, const LinkState& link) {
   return s;
 }
 
-bool atRest(const Model& model, const BodyState& s) { return s.asleep || s.still_time >= model.sleep().time; }
+bool atRest(const Model& model, const BodyState& s) {
+  return s.asleep || (s.still_time > 0.0 && s.still_time >= model.sleep().time);
+}
 
 State restState(const Model& model) {
   State state;

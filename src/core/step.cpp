@@ -4,6 +4,7 @@
 #include "rigid_body_sim/core/step.h"
 
 #include <cmath>
+#include <optional>
 
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/shape_matching.h"
@@ -46,10 +47,9 @@ NetLoad accumulateForces(const Model& model, const State& state, const BodyLoad*
     torque_W += load->torque_W;
   }
   const ContactMethod method = model.contact().method;
-  if (method == ContactMethod::kPenaltyQuadratic || method == ContactMethod::kPenaltyLogBarrier) {
-    accumulatePenaltyForces(model, state, ws, body, net.force_W, torque_W);
-  }
-  if (!torque_W.isZero(0.0)) net.torque_B += s.q_WB.conjugate() * torque_W;
+  const bool penalty = method == ContactMethod::kPenaltyQuadratic || method == ContactMethod::kPenaltyLogBarrier;
+  if (penalty && !ws.contacts.empty()) accumulatePenaltyForces(model, state, ws, body, net.force_W, torque_W);
+  if (load != nullptr || penalty) net.torque_B += s.q_WB.conjugate() * torque_W;
   return net;
 }
 
@@ -139,24 +139,43 @@ void integrateOrientation(const Quat& increment, BodyState& s) {
 
 /// One step of length h of every awake body: the stages in order.
 void advance(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
-  const bool impulse = model.contact().method == ContactMethod::kImpulse;
   const std::size_t n = model.bodyCount();
-  detectContacts(model, state, h, ws);
+  if (!model.scene().empty()) {
+    detectContacts(model, state, h, ws);
+  } else {
+    ws.contacts.clear();
+    ws.in_contact.clear();
+    ws.deepest_penetration = 0.0;
+  }
+  const bool impulse = model.contact().method == ContactMethod::kImpulse && !ws.contacts.empty();
+  const Damping& d = model.damping();
+  // Without loads, drag or penalty contacts the only force is gravity.
+  const bool forces = !loads.empty() || d.linear_drag != 0.0 || d.angular_drag != 0.0 ||
+                      (!ws.contacts.empty() && !impulse);
   for (std::size_t i = 0; i < n; ++i) {
     BodyState& s = state.bodies[i];
     if (s.asleep) continue;
-    const NetLoad net = accumulateForces(model, state, loads.empty() ? nullptr : &loads[i], ws, static_cast<int>(i));
-    integrateVelocities(model, model.body(i), net, h, s);
+    if (forces) {
+      const NetLoad net =
+          accumulateForces(model, state, loads.empty() ? nullptr : &loads[i], ws, static_cast<int>(i));
+      integrateVelocities(model, model.body(i), net, h, s);
+    } else {
+      s.v_WB += h * model.gravity();
+    }
     applyDamping(model, h, s);
   }
-  if (impulse) solveContactImpulses(model, state, h, ws);
-  ws.rotations.resize(n);
+  if (impulse) {
+    solveContactImpulses(model, state, h, ws);
+  } else if (!state.contact_impulses.empty()) {
+    state.contact_impulses.clear();  // nothing to warm-start from next time
+  }
   for (std::size_t i = 0; i < n; ++i) {
     BodyState& s = state.bodies[i];
     if (s.asleep) continue;
-    ws.rotations[i] = gyroscopicRotation(model, model.body(i), h, s);
+    const Quat rotation = gyroscopicRotation(model, model.body(i), h, s);
     integratePosition(h, s);
-    integrateOrientation(ws.rotations[i], s);
+    integrateOrientation(rotation, s);
+    updateSleep(model, i < ws.in_contact.size() && ws.in_contact[i], h, s);
   }
   if (impulse) correctPositions(model, state, ws);
 }
@@ -187,29 +206,11 @@ void advanceKeepingBarrier(const Model& model, State& state, const Loads& loads,
   advanceKeepingBarrier(model, state, loads, 0.5 * h, ws, depth + 1);
 }
 
-// A body in contact whose speeds stay below the sleep speeds for the sleep
-// time falls asleep: it is no longer integrated, so it stays exactly put.
-void updateSleep(const Model& model, const Workspace& ws, double h, State& state) {
-  const SleepSettings& sleep = model.sleep();
-  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
-    BodyState& s = state.bodies[i];
-    if (s.asleep) continue;
-    const bool still = s.v_WB.norm() < sleep.linear_velocity && s.w_B.norm() < sleep.angular_velocity;
-    s.still_time = still ? s.still_time + h : 0.0;
-    const bool touching = i < ws.in_contact.size() && ws.in_contact[i];
-    if (sleep.enabled && touching && still && s.still_time >= sleep.time) {
-      s.asleep = true;
-      s.v_WB.setZero();
-      s.w_B.setZero();
-    }
-  }
-}
-
 }  // namespace
 
 void step(const Model& model, State& state, const Loads& loads, Workspace* workspace) {
-  Workspace local;
-  Workspace& ws = workspace != nullptr ? *workspace : local;
+  std::optional<Workspace> local;  // only built when the caller brings none
+  Workspace& ws = workspace != nullptr ? *workspace : local.emplace();
   const double h = model.dt();
   wakeLoadedBodies(state, loads);
   switch (model.contact().method) {
@@ -217,7 +218,6 @@ void step(const Model& model, State& state, const Loads& loads, Workspace* works
     case ContactMethod::kPenaltyLogBarrier: advanceKeepingBarrier(model, state, loads, h, ws, 0); break;
     default: advance(model, state, loads, h, ws); break;
   }
-  updateSleep(model, ws, h, state);
   state.time += h;
 }
 

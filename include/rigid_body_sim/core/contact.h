@@ -47,12 +47,11 @@ struct Workspace {
   std::vector<Vec3> region_normals;
   std::vector<int> region_members;
   std::vector<Vec3> region_points;
+  std::vector<double> separations;
   /// Deepest penetration seen in this step's detection (m, ≥ 0).
   double deepest_penetration = 0.0;
   /// Per body: touched the scene this step (only bodies in contact may sleep).
   std::vector<char> in_contact;
-  /// Per body: the step's rotation increment [1, h/2 Ω] (see step.cpp).
-  std::vector<Quat> rotations;
   /// Impulse solver: the bodies' angular velocities in world axes (rad/s).
   std::vector<Vec3> angular_velocities;
   /// Shape matching: where each vertex of the current body went (m, world).

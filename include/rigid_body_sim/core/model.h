@@ -100,6 +100,18 @@ struct BodyModel {
   Mat3 I_C_L = Mat3::Identity();          ///< inertia about the centre of mass in L axes, as given
   std::vector<ContactPoint> contact_points;  ///< collision samples, body frame B, extreme ones first
   std::size_t extreme_points = 0;         ///< how many of contact_points are extreme (see ContactPoint)
+  /// The extreme points again as columns (x, y, z, radius), so the plane
+  /// test over a large mesh runs as vector arithmetic.
+  std::vector<double> extreme_x, extreme_y, extreme_z, extreme_radius;
+  /// The extreme points, ordered so that each group of at most 32 is
+  /// spatially compact (a median split), with a bounding sphere per group:
+  /// a plane far from a group's sphere skips its points.
+  struct PointGroup {
+    std::size_t begin = 0, end = 0;  ///< range in contact_points
+    Vec3 centre_B = Vec3::Zero();    ///< m
+    double radius = 0.0;             ///< m, includes the points' own radii
+  };
+  std::vector<PointGroup> extreme_groups;
   double bound_radius = 0.0;              ///< m: every contact point lies within it of the centre of mass
   /// Shape matching: the mean of the contact points (B) and (Σ r̄ r̄ᵀ)⁻¹ of
   /// the points about it; empty when the points do not span three dimensions.

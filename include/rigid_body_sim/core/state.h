@@ -74,6 +74,22 @@ State restState(const Model& model);
 /// (whether or not sleeping is enabled).
 bool atRest(const Model& model, const BodyState& s);
 
+/// After a step of h: counts the time a body stays below the sleep speeds,
+/// and puts it to sleep (velocities zeroed, no longer integrated, so it stays
+/// exactly put) once it has been still for the sleep time while `touching`
+/// the scene. A body in free flight never sleeps.
+inline void updateSleep(const Model& model, bool touching, double h, BodyState& s) {
+  const SleepSettings& sleep = model.sleep();
+  const bool still = s.v_WB.squaredNorm() < sleep.linear_velocity * sleep.linear_velocity &&
+                     s.w_B.squaredNorm() < sleep.angular_velocity * sleep.angular_velocity;
+  s.still_time = still ? s.still_time + h : 0.0;
+  if (sleep.enabled && touching && still && s.still_time >= sleep.time) {
+    s.asleep = true;
+    s.v_WB.setZero();
+    s.w_B.setZero();
+  }
+}
+
 /// Angular velocity in the world frame: ω_W = R_WB w_B (rad/s).
 inline Vec3 angularVelocityWorld(const BodyState& s) { return s.q_WB * s.w_B; }
 

@@ -1,0 +1,126 @@
+// Contact benchmarks (issue 3), Google Benchmark; run through bench/run.sh.
+//  - BM_BoxDrop: the issue box (half extents 0.2 × 0.1 × 0.05 m, 1 kg)
+//    dropped from 1 m, tumbling, onto the ground; 10 s at Δt = 1 ms, with and
+//    without sleeping. Counters: ns per step, deepest penetration (mm), time
+//    from the first impact until it stops moving (s).
+//  - BM_MeshDrop: a mesh body of N vertices (a UV sphere written as OBJ and
+//    loaded through the URDF loader and assimp) dropped from 0.3 m, 3 s,
+//    without sleeping: ns per step against N.
+#include <benchmark/benchmark.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/urdf_loader.h"
+
+namespace {
+
+using namespace rigid_body_sim;
+using core::Vec3;
+
+const char* kBoxUrdf = R"(<robot name="box"><link name="base_link">
+  <inertial><mass value="1"/><inertia ixx="0.004166666666666667" iyy="0.014166666666666668" izz="0.016666666666666666" ixy="0" ixz="0" iyz="0"/></inertial>
+  <collision><geometry><box size="0.4 0.2 0.1"/></geometry></collision></link></robot>)";
+
+struct Run {
+  double deepest = 0.0, first_impact = -1.0, last_moving = 0.0;
+};
+
+Run simulate(const core::Model& model, core::State s, int steps) {
+  Run r;
+  core::Workspace ws;
+  for (int n = 0; n < steps; ++n) {
+    core::step(model, s, {}, &ws);
+    r.deepest = std::max(r.deepest, ws.deepest_penetration);
+    if (r.first_impact < 0.0 && !ws.contacts.empty()) r.first_impact = s.time;
+    if (s.bodies[0].still_time == 0.0) r.last_moving = s.time;
+  }
+  return r;
+}
+
+/// Runs the scenario once per benchmark iteration and sets the counters:
+/// ns per step (the run's time over its steps), deepest penetration (mm),
+/// seconds from the first impact until the body stopped moving.
+void measure(benchmark::State& bench, const core::Model& model, const core::State& start, int steps) {
+  Run r;
+  double ns = 0.0;
+  for (auto _ : bench) {
+    const auto t0 = std::chrono::steady_clock::now();
+    r = simulate(model, start, steps);
+    ns += std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
+  }
+  bench.counters["ns_per_step"] = ns / static_cast<double>(bench.iterations()) / steps;
+  bench.counters["deepest_mm"] = 1e3 * r.deepest;
+  bench.counters["rest_after_impact_s"] = r.last_moving - r.first_impact;
+}
+
+void BM_BoxDrop(benchmark::State& bench) {
+  const bool sleep = bench.range(0) != 0;
+  io::SimConfig config = io::parseConfig(YAML::Load(
+      "initial: {position: [0, 0, 1], rpy: [0.5, 0.2, 0.1], angular_velocity: [1, 2, 3]}"));
+  config.model.sleep.enabled = sleep;
+  const core::Model model = io::buildModel(config, io::loadUrdfString(kBoxUrdf, "box"));
+  const core::State start{0.0, {core::bodyStateFromLink(model.body(0), config.initial)}, {}};
+  measure(bench, model, start, 10000);
+  bench.SetLabel(sleep ? "sleep on" : "sleep off");
+}
+BENCHMARK(BM_BoxDrop)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+/// A UV sphere of radius 0.1 m with `rings` × `segments` + 2 vertices, as OBJ.
+std::string writeSphereObj(int rings, int segments) {
+  const std::string path = "/tmp/rbs_bench_sphere_" + std::to_string(::getpid()) + "_" +
+                           std::to_string(rings) + "x" + std::to_string(segments) + ".obj";
+  std::ofstream out(path);
+  out << "v 0 0 0.1\n";
+  for (int i = 1; i <= rings; ++i) {
+    const double theta = M_PI * i / (rings + 1);
+    for (int j = 0; j < segments; ++j) {
+      const double phi = 2 * M_PI * j / segments;
+      out << "v " << 0.1 * std::sin(theta) * std::cos(phi) << " " << 0.1 * std::sin(theta) * std::sin(phi) << " "
+          << 0.1 * std::cos(theta) << "\n";
+    }
+  }
+  out << "v 0 0 -0.1\n";
+  const int last = rings * segments + 2;
+  auto at = [&](int i, int j) { return 2 + (i - 1) * segments + (j % segments); };
+  for (int j = 0; j < segments; ++j) out << "f 1 " << at(1, j) << " " << at(1, j + 1) << "\n";
+  for (int i = 1; i < rings; ++i) {
+    for (int j = 0; j < segments; ++j) {
+      out << "f " << at(i, j) << " " << at(i + 1, j) << " " << at(i + 1, j + 1) << " " << at(i, j + 1) << "\n";
+    }
+  }
+  for (int j = 0; j < segments; ++j) out << "f " << last << " " << at(rings, j + 1) << " " << at(rings, j) << "\n";
+  return path;
+}
+
+void BM_MeshDrop(benchmark::State& bench) {
+  const int rings = static_cast<int>(bench.range(0)), segments = static_cast<int>(bench.range(1));
+  const std::string obj = writeSphereObj(rings, segments);
+  const std::string urdf = std::string(R"(<robot name="mesh"><link name="mesh">
+    <inertial><mass value="1"/><inertia ixx="0.004" iyy="0.004" izz="0.004" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><mesh filename="file://)") + obj + R"("/></geometry></collision></link></robot>)";
+  io::SimConfig config =
+      io::parseConfig(YAML::Load("initial: {position: [0, 0, 0.4], rpy: [0.3, 0.2, 0]}\nsleep: {enabled: false}"));
+  const core::Model model = io::buildModel(config, io::loadUrdfString(urdf, "mesh"));
+  std::filesystem::remove(obj);
+  const core::State start{0.0, {core::bodyStateFromLink(model.body(0), config.initial)}, {}};
+  measure(bench, model, start, 3000);
+  bench.counters["vertices"] = static_cast<double>(model.body(0).contact_points.size());
+}
+BENCHMARK(BM_MeshDrop)
+    ->Args({10, 16})   // 162 vertices
+    ->Args({20, 25})   // 502
+    ->Args({25, 40})   // 1002
+    ->Args({40, 50})   // 2002
+    ->Args({50, 80})   // 4002
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
