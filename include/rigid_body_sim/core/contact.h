@@ -27,6 +27,7 @@ struct Contact {
   double normal_mass = 0.0;        ///< 1 / (nᵀ K n), kg
   Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();  ///< (Tᵀ K T)⁻¹, kg
   double target_normal_velocity = 0.0;  ///< m/s
+  double predicted_separation = 0.0;    ///< m after the step, from the solved velocity (linear)
   double normal_impulse = 0.0;     ///< accumulated λ_N ≥ 0, N·s
   Eigen::Vector2d tangent_impulse = Eigen::Vector2d::Zero();  ///< accumulated, |λ_T| ≤ μ λ_N, N·s
 };
