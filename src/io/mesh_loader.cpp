@@ -1,6 +1,7 @@
 #include "rigid_body_sim/io/mesh_loader.h"
 
 #include <assimp/Importer.hpp>
+#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -77,6 +78,9 @@ std::vector<core::Vec3> loadMeshVertices(const std::string& path, const core::Ve
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw MeshError("mesh '" + path + "': no such file");
   Assimp::Importer importer;
+  // ROS reads mesh coordinates as they are, z up (rviz, Gazebo): a Collada
+  // <up_axis> must not rotate them.
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   // Bake node transforms into the vertices (DAE files carry them).
   const aiScene* scene = importer.ReadFile(path, aiProcess_PreTransformVertices);
   if (scene == nullptr || scene->mNumMeshes == 0) {

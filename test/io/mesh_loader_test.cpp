@@ -2,6 +2,9 @@
 // shipped bunny dropping onto the ground.
 #include "rigid_body_sim/io/mesh_loader.h"
 
+#include <assimp/Exporter.hpp>
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -65,6 +68,31 @@ TEST(MeshLoader, ReadsStlAndObjVerticesOnceEachAndScales) {
   EXPECT_THROW(io::loadMeshVertices((dir / "missing.stl").string(), Vec3::Ones()), io::MeshError);
   std::ofstream(dir / "garbage.obj") << "this is not a mesh\n";
   EXPECT_THROW(io::loadMeshVertices((dir / "garbage.obj").string(), Vec3::Ones()), io::MeshError);
+}
+
+TEST(MeshLoader, ReadsColladaAsRosDoesWhateverItsUpAxis) {
+  // A Collada copy of the tetrahedron (assimp's exporter), then the same file
+  // declaring Z_UP: ROS tools read the coordinates as they are, and so do we.
+  const fs::path dir = tempDir("collada");
+  writeTetrahedronObj(dir / "tet.obj");
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile((dir / "tet.obj").string(), 0);
+  ASSERT_NE(scene, nullptr);
+  Assimp::Exporter exporter;
+  ASSERT_EQ(exporter.Export(scene, "collada", (dir / "tet.dae").string()), AI_SUCCESS);
+  std::ifstream in(dir / "tet.dae");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = text.find("Y_UP");
+  ASSERT_NE(at, std::string::npos);
+  std::ofstream(dir / "tet_z_up.dae") << text.replace(at, 4, "Z_UP");
+  for (const char* file : {"tet.dae", "tet_z_up.dae"}) {
+    const auto v = io::loadMeshVertices((dir / file).string(), Vec3::Ones());
+    ASSERT_EQ(v.size(), 4u) << file;
+    for (const Vec3& t : kTet) {
+      EXPECT_TRUE(std::any_of(v.begin(), v.end(), [&](const Vec3& x) { return (x - t).norm() < 1e-6; }))
+          << file << ": " << t.transpose();
+    }
+  }
 }
 
 TEST(MeshLoader, ResolvesFilePackageAndRelativeUris) {
