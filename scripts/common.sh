@@ -14,8 +14,14 @@ RBS_APT_PACKAGES=(
   build-essential cmake catkin
   libeigen3-dev liburdfdom-dev libyaml-cpp-dev libassimp-dev
   libgtest-dev libbenchmark-dev
-  # ROS headers: the core's ROS-free check needs them installed to mean anything.
-  libroscpp-dev
+  # ROS 1 (Debian's packages): build and test
+  libroscpp-dev ros-message-generation ros-message-runtime
+  libgeometry-msgs-dev ros-geometry-msgs libnav-msgs-dev ros-nav-msgs libstd-srvs-dev ros-std-srvs
+  libvisualization-msgs-dev ros-visualization-msgs libros-rosgraph-msgs-dev ros-std-msgs libstd-msgs-dev
+  libtf2-ros-dev libtf2-dev librostest-dev python3-rostest python3-roslaunch
+  # running and poking at the node (rosrun, roslaunch, rostopic, rosservice, the demo's printer)
+  ros-robot-state-publisher rosbash python3-rospy python3-rostopic python3-rosservice python3-rosnode
+  python3-nav-msgs python3-geometry-msgs python3-std-srvs python3-tf2-msgs python3-rosgraph-msgs
 )
 
 rbs_install_packages() {

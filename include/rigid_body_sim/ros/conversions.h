@@ -1,0 +1,56 @@
+// geometry_msgs ↔ Eigen. geometry_msgs quaternions are (x, y, z, w); Eigen's
+// constructor takes (w, x, y, z): every conversion goes through here.
+#pragma once
+
+#include <geometry_msgs/Point.h>
+#include <geometry_msgs/Pose.h>
+#include <geometry_msgs/Transform.h>
+#include <geometry_msgs/Vector3.h>
+
+#include "rigid_body_sim/core/types.h"
+
+namespace rigid_body_sim::node {
+
+inline core::Vec3 fromVector3(const geometry_msgs::Vector3& v) { return {v.x, v.y, v.z}; }
+inline core::Vec3 fromPoint(const geometry_msgs::Point& p) { return {p.x, p.y, p.z}; }
+
+inline geometry_msgs::Vector3 toVector3(const core::Vec3& v) {
+  geometry_msgs::Vector3 m;
+  m.x = v.x();
+  m.y = v.y();
+  m.z = v.z();
+  return m;
+}
+
+inline geometry_msgs::Point toPoint(const core::Vec3& v) {
+  geometry_msgs::Point m;
+  m.x = v.x();
+  m.y = v.y();
+  m.z = v.z();
+  return m;
+}
+
+inline geometry_msgs::Quaternion toQuaternion(const core::Quat& q) {
+  geometry_msgs::Quaternion m;
+  m.x = q.x();
+  m.y = q.y();
+  m.z = q.z();
+  m.w = q.w();
+  return m;
+}
+
+inline geometry_msgs::Pose toPose(const core::Vec3& p, const core::Quat& q) {
+  geometry_msgs::Pose m;
+  m.position = toPoint(p);
+  m.orientation = toQuaternion(q);
+  return m;
+}
+
+inline geometry_msgs::Transform toTransform(const core::Vec3& p, const core::Quat& q) {
+  geometry_msgs::Transform m;
+  m.translation = toVector3(p);
+  m.rotation = toQuaternion(q);
+  return m;
+}
+
+}  // namespace rigid_body_sim::node

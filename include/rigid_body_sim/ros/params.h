@@ -1,0 +1,41 @@
+// The node's private parameters: its own settings plus the simulation keys,
+// which go through the same parser as rbsim's YAML config (io/config.h).
+#pragma once
+
+#include <ros/node_handle.h>
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+#include "rigid_body_sim/io/config.h"
+
+namespace rigid_body_sim::node {
+
+/// Settings of the node itself (not of the simulation).
+struct NodeSettings {
+  double rate = 1000.0;              ///< ~rate: Hz of wall clock at which the loop ticks
+  double realtime_factor = 1.0;      ///< ~realtime_factor: sim s per wall s; 0 = as fast as possible
+  double publish_rate = 100.0;       ///< ~publish_rate: Hz of sim time for odom, tf and /clock
+  std::string world_frame = "world"; ///< ~world_frame: parent frame of the body's transform
+  double wrench_timeout = 1.0;       ///< ~wrench_timeout: s of sim time a ~wrench message is held; <= 0: forever
+  double covariance = 1e-9;          ///< ~covariance: diagonal of the odometry covariances (ground truth)
+  double scene_size = 20.0;          ///< ~scene_size: m, extent drawn for planes and unbounded shapes
+  bool report_timing = false;        ///< ~report_timing: log the tick-period jitter at shutdown
+};
+
+struct NodeParams {
+  NodeSettings node;
+  io::SimConfig sim;
+  YAML::Node sim_yaml;  ///< the simulation keys as read, for the log
+};
+
+/// Reads every private parameter once. Keys of NodeSettings are the node's;
+/// every other key is a simulation key (config/default.yaml) and is parsed
+/// by io::parseConfig, so unknown keys and bad values are refused with the
+/// key's name (io::ConfigError).
+NodeParams readParams(const ros::NodeHandle& private_nh);
+
+/// A parameter tree as YAML (structs → maps, arrays → sequences).
+YAML::Node toYaml(const XmlRpc::XmlRpcValue& value);
+
+}  // namespace rigid_body_sim::node

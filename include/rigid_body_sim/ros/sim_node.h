@@ -1,0 +1,101 @@
+// The ROS node: a thin adapter over the core. It owns one Model and one
+// State, steps them at a fixed rate, publishes tf and nav_msgs/Odometry, and
+// turns services and the ~wrench topic into loads, impulses and new states.
+#pragma once
+
+#include <geometry_msgs/WrenchStamped.h>
+#include <ros/ros.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/ApplyImpulse.h"
+#include "rigid_body_sim/ApplyWrench.h"
+#include "rigid_body_sim/BodyState.h"
+#include "rigid_body_sim/ClearWrenches.h"
+#include "rigid_body_sim/GetState.h"
+#include "rigid_body_sim/SetState.h"
+#include "rigid_body_sim/Step.h"
+#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/core/wrench_schedule.h"
+#include "rigid_body_sim/ros/params.h"
+
+namespace rigid_body_sim::node {
+
+class SimNode {
+ public:
+  /// Reads the parameters and robot_description and builds the model.
+  /// Throws std::exception with a message naming the problem (bad URDF, bad
+  /// parameter); main() reports it with ROS_FATAL and exits.
+  SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
+
+  /// Steps and publishes until ROS shuts down.
+  void run();
+
+ private:
+  // Stepping and publishing.
+  double simTime() const { return static_cast<double>(steps_) * model_.dt(); }
+  ros::Time stamp() const;
+  void stepOnce();
+  void publish();
+  void publishClock();
+  void publishScene();
+
+  // Requests. Each validates first: a refused request changes nothing.
+  bool applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res);
+  bool applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& res);
+  bool clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response& res);
+  bool getState(GetState::Request& req, GetState::Response& res);
+  bool setState(SetState::Request& req, SetState::Response& res);
+  bool reset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
+  bool pause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
+  bool unpause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
+  bool step(Step::Request& req, Step::Response& res);
+  void onWrench(const geometry_msgs::WrenchStamped::ConstPtr& msg);
+
+  /// The body named `name` ("" = the first), or an error message.
+  std::optional<int> findBody(const std::string& name, std::string& error) const;
+  /// `frame` as a core frame for `body`: "" or the world frame → world, the
+  /// body's root link → body; anything else is an error.
+  std::optional<core::Frame> findFrame(const std::string& frame, int body, std::string& error) const;
+  BodyState bodyState(int body, bool twist_in_body) const;
+  void rebaseClock();
+
+  ros::NodeHandle nh_, pnh_;
+  NodeParams params_;
+  const NodeSettings& settings_ = params_.node;
+  core::Model model_;
+  core::State state_, initial_;
+  core::Workspace workspace_;
+  core::WrenchSchedule schedule_;
+  core::Loads loads_;
+
+  struct HeldWrench {
+    int body;
+    core::Wrench wrench;
+    double received;  ///< sim time
+  };
+  std::optional<HeldWrench> held_wrench_;  ///< from the ~wrench topic
+
+  bool paused_ = false;
+  bool use_sim_time_ = false;
+  long long steps_ = 0;  ///< steps since start: sim time = steps × dt, also across resets
+  long long publish_every_ = 1;
+  ros::Time last_published_;
+
+  // Pacing: sim time follows wall time × realtime factor from a reference.
+  std::chrono::steady_clock::time_point ref_wall_;
+  double ref_sim_ = 0.0;
+  std::vector<double> tick_periods_;  ///< s, when ~report_timing
+
+  ros::Publisher odom_pub_, clock_pub_, scene_pub_;
+  tf2_ros::TransformBroadcaster tf_;
+  ros::Subscriber wrench_sub_;
+  std::vector<ros::ServiceServer> services_;
+};
+
+}  // namespace rigid_body_sim::node

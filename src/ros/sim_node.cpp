@@ -1,0 +1,488 @@
+#include "rigid_body_sim/ros/sim_node.h"
+
+#include <nav_msgs/Odometry.h>
+#include <rosgraph_msgs/Clock.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <thread>
+
+#include "rigid_body_sim/core/sdf_surface.h"
+#include "rigid_body_sim/io/urdf_loader.h"
+#include "rigid_body_sim/ros/conversions.h"
+
+namespace rigid_body_sim::node {
+namespace {
+
+using core::Quat;
+using core::Vec3;
+
+// What a request may ask for at most: beyond these it is refused as absurd.
+constexpr double kMaxForce = 1e6;         // N
+constexpr double kMaxTorque = 1e6;        // N·m
+constexpr double kMaxImpulse = 1e5;       // N·s and N·m·s
+constexpr double kMaxPosition = 1e6;      // m, also for points of application
+constexpr double kMaxSpeed = 1e4;         // m/s
+constexpr double kMaxAngularSpeed = 1e4;  // rad/s
+constexpr int kMaxSteps = 1000000;        // per ~step call
+constexpr int kMaxStepsPerTick = 1000;    // beyond this the loop gives up catching up
+
+/// "" if v is finite and |v| ≤ limit, else why not.
+std::string checkVector(const Vec3& v, double limit, const std::string& what, const std::string& unit) {
+  std::ostringstream os;
+  if (!v.allFinite()) {
+    os << what << " is not finite: [" << v.x() << ", " << v.y() << ", " << v.z() << "]";
+  } else if (v.norm() > limit) {
+    os << what << " is absurd: |" << what << "| = " << v.norm() << " " << unit << " > " << limit << " " << unit;
+  }
+  return os.str();
+}
+
+core::Model buildModel(const NodeParams& params, const ros::NodeHandle& nh) {
+  std::string xml;
+  if (!nh.getParam("robot_description", xml)) {
+    throw std::runtime_error("parameter '" + nh.resolveName("robot_description") +
+                             "' is not set: load the body's URDF there (launch/sim.launch does)");
+  }
+  const core::BodySpec body = io::loadUrdfString(xml, nh.resolveName("robot_description"));
+  return io::buildModel(params.sim, body);
+}
+
+}  // namespace
+
+SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
+    : nh_(nh), pnh_(private_nh), params_(readParams(private_nh)), model_(buildModel(params_, nh_)) {
+  const core::BodyModel& body = model_.body(0);
+  state_.bodies = {core::bodyStateFromLink(body, params_.sim.initial)};
+  initial_ = state_;
+  use_sim_time_ = ros::param::param("/use_sim_time", false);
+  publish_every_ = std::max(1LL, std::llround(1.0 / (settings_.publish_rate * model_.dt())));
+
+  ROS_INFO("sim_node: body '%s', %.6g kg, %zu collision points", body.name.c_str(), body.mass,
+           body.contact_points.size());
+  ROS_INFO("sim_node: ~rate %g Hz, ~dt %g s, ~realtime_factor %g, ~publish_rate %g Hz (every %lld steps)",
+           settings_.rate, model_.dt(), settings_.realtime_factor, settings_.publish_rate, publish_every_);
+  ROS_INFO("sim_node: ~world_frame '%s', ~wrench_timeout %g s, ~covariance %g, /use_sim_time %s",
+           settings_.world_frame.c_str(), settings_.wrench_timeout, settings_.covariance,
+           use_sim_time_ ? "true" : "false");
+  YAML::Emitter sim;
+  sim << YAML::Flow << params_.sim_yaml;
+  ROS_INFO("sim_node: simulation keys given: %s (others at config/default.yaml's defaults)", sim.c_str());
+
+  odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", 10);
+  scene_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, /*latch=*/true);
+  if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+  wrench_sub_ = pnh_.subscribe("wrench", 10, &SimNode::onWrench, this);
+  services_ = {pnh_.advertiseService("apply_wrench", &SimNode::applyWrench, this),
+               pnh_.advertiseService("apply_impulse", &SimNode::applyImpulse, this),
+               pnh_.advertiseService("clear_wrenches", &SimNode::clearWrenches, this),
+               pnh_.advertiseService("get_state", &SimNode::getState, this),
+               pnh_.advertiseService("set_state", &SimNode::setState, this),
+               pnh_.advertiseService("reset", &SimNode::reset, this),
+               pnh_.advertiseService("pause", &SimNode::pause, this),
+               pnh_.advertiseService("unpause", &SimNode::unpause, this),
+               pnh_.advertiseService("step", &SimNode::step, this)};
+  publishScene();
+  publishClock();
+  publish();
+}
+
+// ------------------------------------------------------------------ stepping
+
+ros::Time SimNode::stamp() const {
+  if (use_sim_time_) return ros::Time().fromNSec(static_cast<uint64_t>(std::llround(simTime() * 1e9)));
+  const ros::WallTime now = ros::WallTime::now();
+  return ros::Time(now.sec, now.nsec);
+}
+
+void SimNode::stepOnce() {
+  const double t = simTime(), h = model_.dt();
+  schedule_.loadsFor(model_, t, h, loads_);
+  if (held_wrench_) {
+    if (settings_.wrench_timeout > 0.0 && t - held_wrench_->received > settings_.wrench_timeout) {
+      held_wrench_.reset();
+    } else {
+      if (loads_.empty()) loads_.resize(model_.bodyCount());
+      core::addWrench(model_.body(held_wrench_->body), loads_[held_wrench_->body], held_wrench_->wrench);
+    }
+  }
+  core::step(model_, state_, loads_, &workspace_);
+  ++steps_;
+  state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
+  schedule_.dropFinished(simTime());
+  if (steps_ % publish_every_ == 0) {
+    publishClock();
+    publish();
+  }
+}
+
+void SimNode::publishClock() {
+  if (!use_sim_time_) return;
+  rosgraph_msgs::Clock clock;
+  clock.clock = stamp();
+  clock_pub_.publish(clock);
+}
+
+void SimNode::publish() {
+  const ros::Time now = stamp();
+  // Never the same stamp twice (tf2 would warn of repeated data) and never
+  // an older one: on sim time a paused set_state waits for the next step.
+  if (!last_published_.isZero() && now <= last_published_) return;
+  last_published_ = now;
+  for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
+    const core::BodyModel& body = model_.body(i);
+    const core::LinkState link = core::linkState(body, state_.bodies[i]);
+    geometry_msgs::TransformStamped tf;
+    tf.header.stamp = now;
+    tf.header.frame_id = settings_.world_frame;
+    tf.child_frame_id = body.name;
+    tf.transform = toTransform(link.p_WL, link.q_WL);
+    tf_.sendTransform(tf);
+
+    nav_msgs::Odometry odom;
+    odom.header = tf.header;
+    odom.child_frame_id = body.name;  // the twist is in this frame (nav_msgs/Odometry)
+    odom.pose.pose = toPose(link.p_WL, link.q_WL);
+    const Quat q_LW = link.q_WL.conjugate();
+    odom.twist.twist.linear = toVector3(q_LW * link.v_WL);
+    odom.twist.twist.angular = toVector3(q_LW * link.w_W);
+    for (int k = 0; k < 6; ++k) {
+      odom.pose.covariance[k * 7] = settings_.covariance;
+      odom.twist.covariance[k * 7] = settings_.covariance;
+    }
+    odom_pub_.publish(odom);
+  }
+}
+
+void SimNode::rebaseClock() {
+  ref_wall_ = std::chrono::steady_clock::now();
+  ref_sim_ = simTime();
+}
+
+void SimNode::run() {
+  using Clock = std::chrono::steady_clock;
+  const auto tick = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / settings_.rate));
+  rebaseClock();
+  auto next_tick = Clock::now();
+  auto last_tick = next_tick;
+  auto last_paused_publish = next_tick;
+  const double rtf = settings_.realtime_factor;
+  if (settings_.report_timing) tick_periods_.reserve(1 << 20);
+  while (ros::ok()) {
+    const auto tick_start = Clock::now();
+    if (settings_.report_timing) tick_periods_.push_back(std::chrono::duration<double>(tick_start - last_tick).count());
+    last_tick = tick_start;
+    if (!paused_ && rtf > 0.0) {
+      // Step until sim time reaches wall time × realtime factor.
+      const double target = ref_sim_ + std::chrono::duration<double>(tick_start - ref_wall_).count() * rtf;
+      int n = 0;
+      while (simTime() + 0.5 * model_.dt() <= target && n < kMaxStepsPerTick) {
+        stepOnce();
+        ++n;
+      }
+      if (n == kMaxStepsPerTick) {
+        ROS_WARN_THROTTLE(5.0, "sim_node: cannot keep up with realtime_factor %g; slowing down", rtf);
+        rebaseClock();
+      }
+    } else if (!paused_) {
+      // As fast as possible: steps in slices of about a millisecond, then callbacks.
+      const auto slice_end = tick_start + std::chrono::milliseconds(1);
+      do {
+        for (int k = 0; k < 64; ++k) stepOnce();
+      } while (Clock::now() < slice_end);
+    } else if (!use_sim_time_ &&
+               std::chrono::duration<double>(tick_start - last_paused_publish).count() >= 1.0 / settings_.publish_rate) {
+      // Paused on wall time: keep tf fresh for listeners (sim time stands still otherwise).
+      publish();
+      last_paused_publish = tick_start;
+    }
+    ros::spinOnce();
+    if (rtf > 0.0 || paused_) {
+      next_tick += tick;
+      const auto now = Clock::now();
+      if (next_tick < now) next_tick = now;  // late: do not try to make up ticks
+      std::this_thread::sleep_until(next_tick);
+    }
+  }
+  if (settings_.report_timing && tick_periods_.size() > 10) {
+    std::vector<double> d(tick_periods_.begin() + 1, tick_periods_.end());
+    for (double& x : d) x = std::abs(x - 1.0 / settings_.rate);
+    std::sort(d.begin(), d.end());
+    ROS_INFO("sim_node: timing: %zu ticks, |period - %.6g s| p50 %.1f us, p99 %.1f us, max %.1f us; sim time %.3f s",
+             d.size(), 1.0 / settings_.rate, 1e6 * d[d.size() / 2], 1e6 * d[d.size() * 99 / 100], 1e6 * d.back(),
+             simTime());
+  }
+}
+
+// ------------------------------------------------------------------ requests
+
+std::optional<int> SimNode::findBody(const std::string& name, std::string& error) const {
+  if (name.empty()) return 0;
+  for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
+    if (model_.body(i).name == name) return static_cast<int>(i);
+  }
+  error = "unknown body '" + name + "' (the body is '" + model_.body(0).name + "')";
+  return std::nullopt;
+}
+
+std::optional<core::Frame> SimNode::findFrame(const std::string& frame, int body, std::string& error) const {
+  if (frame.empty() || frame == settings_.world_frame || frame == "world") return core::Frame::kWorld;
+  if (frame == model_.body(body).name) return core::Frame::kBody;
+  error = "unknown frame '" + frame + "' (use '" + settings_.world_frame + "' or the body's link '" +
+          model_.body(body).name + "')";
+  return std::nullopt;
+}
+
+BodyState SimNode::bodyState(int body, bool twist_in_body) const {
+  const core::BodyModel& b = model_.body(body);
+  const core::LinkState link = core::linkState(b, state_.bodies[body]);
+  BodyState msg;
+  msg.body = b.name;
+  msg.stamp = stamp();
+  msg.pose = toPose(link.p_WL, link.q_WL);
+  msg.twist_frame = twist_in_body ? b.name : settings_.world_frame;
+  const Quat q = twist_in_body ? link.q_WL.conjugate() : Quat::Identity();
+  msg.twist.linear = toVector3(q * link.v_WL);
+  msg.twist.angular = toVector3(q * link.w_W);
+  return msg;
+}
+
+bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res) {
+  res.success = false;
+  const auto body = findBody(req.body, res.message);
+  if (!body) return true;
+  const auto frame = findFrame(req.frame, *body, res.message);
+  if (!frame) return true;
+  const Vec3 force = fromVector3(req.force), torque = fromVector3(req.torque), point = fromPoint(req.point);
+  for (const std::string& why : {checkVector(force, kMaxForce, "force", "N"), checkVector(torque, kMaxTorque, "torque", "N·m"),
+                                 checkVector(point, kMaxPosition, "point", "m")}) {
+    if (!why.empty()) {
+      res.message = why;
+      return true;
+    }
+  }
+  const double duration = req.duration.toSec();
+  if (duration == 0.0) {
+    res.message = "duration 0 applies nothing: give duration > 0 (for that long), < 0 (until clear_wrenches), "
+                  "or call apply_impulse for an instantaneous push";
+    return true;
+  }
+  const double start = std::max(req.start_time.toSec(), simTime());  // 0 or the past: now
+  const double end = duration > 0.0 ? start + duration : core::WrenchSchedule::kForever;
+  schedule_.add(*body, {force, torque, point, *frame}, start, end);
+  res.success = true;
+  std::ostringstream os;
+  os << "wrench on '" << model_.body(*body).name << "' from t = " << start << " s "
+     << (duration > 0.0 ? "for " + std::to_string(duration) + " s" : std::string("until cleared"));
+  res.message = os.str();
+  return true;
+}
+
+bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& res) {
+  res.success = false;
+  const auto body = findBody(req.body, res.message);
+  if (!body) return true;
+  const auto frame = findFrame(req.frame, *body, res.message);
+  if (!frame) return true;
+  const Vec3 linear = fromVector3(req.linear), angular = fromVector3(req.angular), point = fromPoint(req.point);
+  for (const std::string& why :
+       {checkVector(linear, kMaxImpulse, "linear", "N·s"), checkVector(angular, kMaxImpulse, "angular", "N·m·s"),
+        checkVector(point, kMaxPosition, "point", "m")}) {
+    if (!why.empty()) {
+      res.message = why;
+      return true;
+    }
+  }
+  core::BodyState after = state_.bodies[*body];
+  core::applyImpulse(model_.body(*body), after, {linear, angular, point, *frame});
+  const std::string speed = checkVector(after.v_WB, kMaxSpeed, "resulting velocity", "m/s");
+  const std::string spin = checkVector(after.w_B, kMaxAngularSpeed, "resulting angular velocity", "rad/s");
+  if (!speed.empty() || !spin.empty()) {
+    res.message = speed.empty() ? spin : speed;
+    return true;
+  }
+  state_.bodies[*body] = after;
+  res.success = true;
+  res.message = "impulse applied to '" + model_.body(*body).name + "'";
+  return true;
+}
+
+bool SimNode::clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response& res) {
+  int body = -1;
+  if (!req.body.empty()) {
+    const auto found = findBody(req.body, res.message);
+    if (!found) {
+      res.success = false;
+      return true;
+    }
+    body = *found;
+  }
+  schedule_.clear(body);
+  if (held_wrench_ && (body < 0 || held_wrench_->body == body)) held_wrench_.reset();
+  res.success = true;
+  res.message = "wrenches cleared";
+  return true;
+}
+
+bool SimNode::getState(GetState::Request& req, GetState::Response& res) {
+  res.success = false;
+  const auto body = findBody(req.body, res.message);
+  if (!body) return true;
+  const auto frame = findFrame(req.frame, *body, res.message);
+  if (!frame) return true;
+  res.state = bodyState(*body, *frame == core::Frame::kBody);
+  res.success = true;
+  return true;
+}
+
+bool SimNode::setState(SetState::Request& req, SetState::Response& res) {
+  res.success = false;
+  const auto body = findBody(req.body.empty() ? req.state.body : req.body, res.message);
+  if (!body) return true;
+  const auto frame = findFrame(req.state.twist_frame, *body, res.message);
+  if (!frame) return true;
+  const Vec3 p = fromPoint(req.state.pose.position);
+  const Vec3 v = fromVector3(req.state.twist.linear), w = fromVector3(req.state.twist.angular);
+  const geometry_msgs::Quaternion& mq = req.state.pose.orientation;
+  const Quat q(mq.w, mq.x, mq.y, mq.z);  // geometry_msgs is (x, y, z, w); Eigen takes (w, x, y, z)
+  for (const std::string& why : {checkVector(p, kMaxPosition, "position", "m"), checkVector(v, kMaxSpeed, "linear velocity", "m/s"),
+                                 checkVector(w, kMaxAngularSpeed, "angular velocity", "rad/s")}) {
+    if (!why.empty()) {
+      res.message = why;
+      return true;
+    }
+  }
+  if (!q.coeffs().allFinite() || std::abs(q.norm() - 1.0) > 1e-3) {
+    std::ostringstream os;
+    os << "orientation is not a unit quaternion (norm " << q.norm() << "; the identity is x=0 y=0 z=0 w=1)";
+    res.message = os.str();
+    return true;
+  }
+  core::LinkState link;
+  link.p_WL = p;
+  link.q_WL = q.normalized();
+  const Quat q_frame = *frame == core::Frame::kBody ? link.q_WL : Quat::Identity();
+  link.v_WL = q_frame * v;
+  link.w_W = q_frame * w;
+  state_.bodies[*body] = core::bodyStateFromLink(model_.body(*body), link);
+  state_.contact_impulses.clear();  // nothing carries over to a new pose
+  res.success = true;
+  res.message = "state set";
+  publish();
+  return true;
+}
+
+bool SimNode::reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+  // Back to the initial state; sim time keeps increasing (tf listeners never see it go back).
+  state_ = initial_;
+  state_.time = simTime();
+  schedule_.clear(-1);
+  held_wrench_.reset();
+  rebaseClock();
+  publish();
+  res.success = true;
+  res.message = "reset to the initial state at t = " + std::to_string(simTime()) + " s";
+  return true;
+}
+
+bool SimNode::pause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+  paused_ = true;
+  res.success = true;
+  res.message = "paused at t = " + std::to_string(simTime()) + " s";
+  return true;
+}
+
+bool SimNode::unpause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+  paused_ = false;
+  rebaseClock();  // do not make up for the paused time
+  res.success = true;
+  res.message = "running from t = " + std::to_string(simTime()) + " s";
+  return true;
+}
+
+bool SimNode::step(Step::Request& req, Step::Response& res) {
+  res.success = false;
+  if (!paused_) {
+    res.message = "the simulation is running: call pause first (step advances a paused simulation)";
+    return true;
+  }
+  if (req.steps < 1 || req.steps > kMaxSteps) {
+    res.message = "steps = " + std::to_string(req.steps) + ": must be within 1 ... " + std::to_string(kMaxSteps);
+    return true;
+  }
+  for (int k = 0; k < req.steps; ++k) stepOnce();
+  publishClock();
+  publish();
+  res.success = true;
+  res.message = "stepped " + std::to_string(req.steps) + " steps";
+  res.time = stamp();
+  for (std::size_t i = 0; i < model_.bodyCount(); ++i) res.states.push_back(bodyState(static_cast<int>(i), false));
+  return true;
+}
+
+void SimNode::onWrench(const geometry_msgs::WrenchStamped::ConstPtr& msg) {
+  std::string why;
+  const auto frame = findFrame(msg->header.frame_id, 0, why);
+  const Vec3 force = fromVector3(msg->wrench.force), torque = fromVector3(msg->wrench.torque);
+  if (why.empty()) why = checkVector(force, kMaxForce, "force", "N");
+  if (why.empty()) why = checkVector(torque, kMaxTorque, "torque", "N·m");
+  if (!why.empty()) {
+    ROS_WARN_THROTTLE(1.0, "sim_node: ~wrench ignored: %s", why.c_str());
+    return;
+  }
+  held_wrench_ = HeldWrench{0, {force, torque, Vec3::Zero(), *frame}, simTime()};
+}
+
+// ------------------------------------------------------------------ scene
+
+void SimNode::publishScene() {
+  visualization_msgs::MarkerArray markers;
+  int id = 0;
+  const auto base = [&](int type) {
+    visualization_msgs::Marker m;
+    m.header.frame_id = settings_.world_frame;
+    m.ns = "scene";
+    m.id = id++;
+    m.type = type;
+    m.action = visualization_msgs::Marker::ADD;
+    m.pose.orientation.w = 1.0;
+    m.scale.x = m.scale.y = m.scale.z = 1.0;
+    m.color.r = 0.6f;
+    m.color.g = 0.6f;
+    m.color.b = 0.65f;
+    m.color.a = 0.8f;
+    m.frame_locked = false;
+    return m;
+  };
+  for (const core::Sdf& item : model_.scene()) {
+    if (item.kind() == core::Sdf::Kind::kPlane) {
+      // A thin square slab standing for the half-space's surface.
+      visualization_msgs::Marker m = base(visualization_msgs::Marker::CUBE);
+      const Vec3 n = item.pose().q_WS * item.params();
+      m.pose = toPose(item.pose().p_WS - 0.0005 * n, Quat::FromTwoVectors(Vec3::UnitZ(), n));
+      m.scale.x = m.scale.y = settings_.scene_size;
+      m.scale.z = 0.001;
+      markers.markers.push_back(m);
+      continue;
+    }
+    // Anything else is drawn as its surface φ = 0 (exact compositions too).
+    core::Bounds bounds;
+    if (const auto b = core::solidBounds(item)) {
+      bounds = *b;
+    } else {
+      bounds = {Vec3::Constant(-0.5 * settings_.scene_size), Vec3::Constant(0.5 * settings_.scene_size)};
+    }
+    const Vec3 margin = Vec3::Constant(1e-3 + 0.02 * (bounds.hi - bounds.lo).maxCoeff());
+    bounds.lo -= margin;
+    bounds.hi += margin;
+    const double cell = (bounds.hi - bounds.lo).maxCoeff() / 64.0;
+    visualization_msgs::Marker m = base(visualization_msgs::Marker::TRIANGLE_LIST);
+    for (const Vec3& p : core::surfaceTriangles(item, bounds, cell)) m.points.push_back(toPoint(p));
+    markers.markers.push_back(m);
+  }
+  scene_pub_.publish(markers);
+}
+
+}  // namespace rigid_body_sim::node

@@ -1,0 +1,66 @@
+// Timed wrenches deliver exactly force × duration; surfaces of the scene.
+#include "rigid_body_sim/core/wrench_schedule.h"
+
+#include <gtest/gtest.h>
+
+#include "rigid_body_sim/core/sdf_surface.h"
+#include "rigid_body_sim/core/step.h"
+#include "../test_util.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+TEST(WrenchSchedule, DeliversForceTimesDurationOffTheStepGrid) {
+  // 2 N for 0.0123 s from t = 0.0047: windows that cut steps in the middle.
+  const double dt = 1e-3;
+  const core::Model model(spec(issueBox(), dt, Vec3::Zero()));
+  core::WrenchSchedule schedule;
+  schedule.add(0, {Vec3(2, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, 0.0047, 0.0047 + 0.0123);
+  core::State s = stateOf(model, core::LinkState{});
+  core::Loads loads;
+  for (int n = 0; n < 40; ++n) {
+    schedule.loadsFor(model, s.time, dt, loads);
+    core::step(model, s, loads);
+    schedule.dropFinished(s.time);
+  }
+  EXPECT_NEAR(s.bodies[0].v_WB.x(), 2.0 * 0.0123 / 1.0, 1e-14);  // Δv = F T / M
+  EXPECT_TRUE(schedule.entries().empty());
+}
+
+TEST(WrenchSchedule, WrenchesAddAndClearPerBody) {
+  const core::Model model(spec(issueBox(), 1e-3, Vec3::Zero()));
+  core::WrenchSchedule schedule;
+  const double forever = core::WrenchSchedule::kForever;
+  schedule.add(0, {Vec3(1, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, 0.0, forever);
+  schedule.add(0, {Vec3(0, 3, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, 0.0, forever);
+  core::Loads loads;
+  schedule.loadsFor(model, 5.0, 1e-3, loads);
+  ASSERT_EQ(loads.size(), 1u);
+  EXPECT_EQ(loads[0].force_W, Vec3(1, 3, 0));
+  schedule.add(0, {Vec3(0, 0, 7), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, 9.0, forever);  // later
+  schedule.loadsFor(model, 5.0, 1e-3, loads);
+  EXPECT_EQ(loads[0].force_W, Vec3(1, 3, 0));
+  schedule.clear(0);
+  schedule.loadsFor(model, 10.0, 1e-3, loads);
+  EXPECT_TRUE(loads.empty());
+}
+
+TEST(SdfSurface, TrianglesLieOnTheSurfaceOfAComposition) {
+  const core::Sdf room =
+      core::Sdf::subtract({core::Sdf::box(Vec3(2.2, 2.2, 1.2)).transformed({Quat::Identity(), Vec3(0, 0, 0.5)}),
+                           core::Sdf::box(Vec3(2.0, 2.0, 1.5)).transformed({Quat::Identity(), Vec3(0, 0, 0.75)})});
+  const auto bounds = core::solidBounds(room);
+  ASSERT_TRUE(bounds.has_value());
+  EXPECT_LT((bounds->lo - Vec3(-1.1, -1.1, -0.1)).norm(), 1e-12);
+  EXPECT_LT((bounds->hi - Vec3(1.1, 1.1, 1.1)).norm(), 1e-12);
+  const double cell = 0.05;
+  const std::vector<Vec3> tris = core::surfaceTriangles(room, *bounds, cell);
+  ASSERT_GT(tris.size(), 300u);
+  EXPECT_EQ(tris.size() % 3, 0u);
+  for (const Vec3& p : tris) EXPECT_LT(std::abs(room.eval(p)), cell) << p.transpose();
+  EXPECT_FALSE(core::solidBounds(core::Sdf::plane(Vec3::UnitZ())).has_value());
+  EXPECT_FALSE(core::solidBounds(core::Sdf::unite({core::Sdf::sphere(1), core::Sdf::plane(Vec3::UnitZ())})));
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test

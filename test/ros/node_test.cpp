@@ -1,0 +1,460 @@
+// The node as its users meet it: services called, topics received. Each
+// .test in this folder starts sim_node with its own parameters and runs one
+// suite of this file (--gtest_filter).
+#include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <std_srvs/Trigger.h>
+#include <sys/wait.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/ApplyImpulse.h"
+#include "rigid_body_sim/ApplyWrench.h"
+#include "rigid_body_sim/ClearWrenches.h"
+#include "rigid_body_sim/GetState.h"
+#include "rigid_body_sim/SetState.h"
+#include "rigid_body_sim/Step.h"
+
+namespace {
+
+using rigid_body_sim::BodyState;
+
+constexpr double kG = 9.81;
+constexpr double kDt = 1e-3;
+const std::string kLink = "base_link";
+
+geometry_msgs::Vector3 vec(double x, double y, double z) {
+  geometry_msgs::Vector3 v;
+  v.x = x;
+  v.y = y;
+  v.z = z;
+  return v;
+}
+
+/// Waits (wall time) until `done` or `seconds` pass, spinning callbacks.
+bool spinUntil(const std::function<bool()>& done, double seconds) {
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+  while (ros::ok() && ros::WallTime::now() < end) {
+    ros::spinOnce();
+    if (done()) return true;
+    ros::WallDuration(0.002).sleep();
+  }
+  return done();
+}
+
+class Node : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    for (const char* s : {"get_state", "set_state", "apply_wrench", "apply_impulse", "clear_wrenches", "step",
+                          "pause", "unpause", "reset"}) {
+      ASSERT_TRUE(ros::service::waitForService(std::string("/sim_node/") + s, 30000)) << s;
+    }
+  }
+
+  template <class Srv>
+  Srv call(const std::string& name, Srv srv) {
+    EXPECT_TRUE(ros::service::call("/sim_node/" + name, srv)) << name;
+    return srv;
+  }
+
+  bool trigger(const std::string& name) {
+    std_srvs::Trigger t;
+    EXPECT_TRUE(ros::service::call("/sim_node/" + name, t)) << name;
+    return t.response.success;
+  }
+
+  BodyState state(const std::string& frame = "") {
+    rigid_body_sim::GetState s;
+    s.request.frame = frame;
+    s = call("get_state", s);
+    EXPECT_TRUE(s.response.success) << s.response.message;
+    return s.response.state;
+  }
+
+  rigid_body_sim::Step::Response step(int n) {
+    rigid_body_sim::Step s;
+    s.request.steps = n;
+    return call("step", s).response;
+  }
+
+  rigid_body_sim::ApplyWrench::Response wrench(const std::string& frame, const geometry_msgs::Vector3& force,
+                                              double duration, const geometry_msgs::Vector3& torque = vec(0, 0, 0)) {
+    rigid_body_sim::ApplyWrench w;
+    w.request.frame = frame;
+    w.request.force = force;
+    w.request.torque = torque;
+    w.request.duration = ros::Duration(duration);
+    return call("apply_wrench", w).response;
+  }
+
+  rigid_body_sim::ApplyImpulse::Response impulse(const std::string& frame, const geometry_msgs::Vector3& linear,
+                                                const geometry_msgs::Point& point = geometry_msgs::Point()) {
+    rigid_body_sim::ApplyImpulse i;
+    i.request.frame = frame;
+    i.request.linear = linear;
+    i.request.point = point;
+    return call("apply_impulse", i).response;
+  }
+
+  ros::NodeHandle nh_;
+};
+
+/// The box of urdf/box.urdf: 1 kg, half extents 0.2 × 0.1 × 0.05 m.
+const double kI[3] = {(0.01 + 0.0025) / 3.0, (0.04 + 0.0025) / 3.0, (0.04 + 0.01) / 3.0};
+
+// ------------------------------------------------------------------ free fall (sim time)
+
+class FreeFall : public Node {};
+
+TEST_F(FreeFall, OdometryFollowsTheClosedForm) {
+  // Dropped from 50 m at t = 0; stamps are sim times. Euler-Cromer gives
+  // z(t) = z₀ − ½ g t (t + Δt): the closed form plus its first-order term.
+  std::vector<nav_msgs::Odometry> msgs;
+  const ros::Subscriber sub =
+      nh_.subscribe<nav_msgs::Odometry>("/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { msgs.push_back(*m); });
+  ASSERT_TRUE(spinUntil([&] { return msgs.size() >= 60; }, 30.0));
+  for (const auto& m : msgs) {
+    const double t = m.header.stamp.toSec();
+    if (t == 0.0) continue;
+    EXPECT_EQ(m.header.frame_id, "world");
+    EXPECT_EQ(m.child_frame_id, kLink);
+    EXPECT_NEAR(m.pose.pose.position.z, 50.0 - 0.5 * kG * t * (t + kDt), 1e-9) << "t " << t;
+    EXPECT_NEAR(m.pose.pose.position.z, 50.0 - 0.5 * kG * t * t, 0.5 * kG * kDt * t + 1e-9);
+    EXPECT_NEAR(m.twist.twist.linear.z, -kG * t, 1e-9);  // body frame = world frame here
+    EXPECT_DOUBLE_EQ(m.pose.pose.position.x, 0.0);
+  }
+}
+
+// ------------------------------------------------------------------ tf
+
+class Tf : public Node {};
+
+TEST_F(Tf, LookupEqualsTheOdometryPose) {
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  std::vector<nav_msgs::Odometry> msgs;
+  const ros::Subscriber sub =
+      nh_.subscribe<nav_msgs::Odometry>("/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { msgs.push_back(*m); });
+  ASSERT_TRUE(spinUntil([&] { return msgs.size() >= 50; }, 30.0));
+  ros::WallDuration(0.2).sleep();
+  ros::spinOnce();
+  int checked = 0;
+  for (const auto& m : msgs) {
+    geometry_msgs::TransformStamped tf;
+    try {
+      tf = buffer.lookupTransform("world", kLink, m.header.stamp);
+    } catch (const tf2::TransformException&) {
+      continue;  // older than the listener
+    }
+    ++checked;
+    const auto& p = m.pose.pose;
+    EXPECT_NEAR(tf.transform.translation.x, p.position.x, 1e-12);
+    EXPECT_NEAR(tf.transform.translation.y, p.position.y, 1e-12);
+    EXPECT_NEAR(tf.transform.translation.z, p.position.z, 1e-12);
+    EXPECT_NEAR(tf.transform.rotation.x, p.orientation.x, 1e-12);
+    EXPECT_NEAR(tf.transform.rotation.y, p.orientation.y, 1e-12);
+    EXPECT_NEAR(tf.transform.rotation.z, p.orientation.z, 1e-12);
+    EXPECT_NEAR(tf.transform.rotation.w, p.orientation.w, 1e-12);
+  }
+  EXPECT_GT(checked, 20);
+}
+
+// ------------------------------------------------------------------ loads (paused, stepped: exact)
+
+class Impulse : public Node {};
+
+TEST_F(Impulse, ChangesTheVelocityByJOverM) {
+  ASSERT_TRUE(trigger("pause"));
+  const BodyState before = state();
+  ASSERT_TRUE(impulse("world", vec(0.3, -0.2, 0.5)).success);
+  const BodyState after = state();
+  EXPECT_NEAR(after.twist.linear.x - before.twist.linear.x, 0.3, 1e-12);  // M = 1 kg
+  EXPECT_NEAR(after.twist.linear.y - before.twist.linear.y, -0.2, 1e-12);
+  EXPECT_NEAR(after.twist.linear.z - before.twist.linear.z, 0.5, 1e-12);
+  EXPECT_EQ(after.pose.position.z, before.pose.position.z);
+  // Off the centre of mass it also turns the body: Δω = I⁻¹ (r × J).
+  geometry_msgs::Point r;
+  r.x = 0.2;
+  ASSERT_TRUE(impulse("world", vec(0, 0, 0.1), r).success);  // r × J = (0, −0.02, 0)
+  const BodyState turned = state();
+  EXPECT_NEAR(turned.twist.angular.y - after.twist.angular.y, -0.02 / kI[1], 1e-12);
+  EXPECT_NEAR(turned.twist.angular.x, 0.0, 1e-12);
+}
+
+class WrenchDuration : public Node {};
+
+TEST_F(WrenchDuration, DeliversForceTimesDuration) {
+  ASSERT_TRUE(trigger("pause"));
+  const BodyState before = state();
+  const auto res = wrench("world", vec(2, 0, 0), 0.0123);  // not a whole number of steps
+  ASSERT_TRUE(res.success) << res.message;
+  ASSERT_TRUE(step(50).success);
+  EXPECT_NEAR(state().twist.linear.x - before.twist.linear.x, 2 * 0.0123, 1e-12);
+  ASSERT_TRUE(step(50).success);  // and nothing after it ended
+  EXPECT_NEAR(state().twist.linear.x - before.twist.linear.x, 2 * 0.0123, 1e-12);
+}
+
+class BodyFrameWrench : public Node {};
+
+TEST_F(BodyFrameWrench, PushesAlongTheRotatedAxis) {
+  // The body is turned 90° about z: its x axis is world y (gazebo_ros_pkgs #310).
+  ASSERT_TRUE(trigger("pause"));
+  ASSERT_TRUE(wrench(kLink, vec(1, 0, 0), 0.1).success);
+  ASSERT_TRUE(step(200).success);
+  const BodyState s = state();
+  EXPECT_NEAR(s.twist.linear.x, 0.0, 1e-12);
+  EXPECT_NEAR(s.twist.linear.y, 0.1, 1e-12);
+  const BodyState in_body = state(kLink);  // and in the body frame it is along x
+  EXPECT_NEAR(in_body.twist.linear.x, 0.1, 1e-12);
+}
+
+class TwoWrenches : public Node {};
+
+TEST_F(TwoWrenches, AddUpAndClear) {
+  ASSERT_TRUE(trigger("pause"));
+  ASSERT_TRUE(wrench("world", vec(1, 0, 0), 0.05).success);
+  ASSERT_TRUE(wrench("world", vec(0, 2, 0), 0.1).success);
+  ASSERT_TRUE(step(200).success);
+  BodyState s = state();
+  EXPECT_NEAR(s.twist.linear.x, 0.05, 1e-12);
+  EXPECT_NEAR(s.twist.linear.y, 0.2, 1e-12);
+  // Until cleared: 3 N for exactly ten steps.
+  ASSERT_TRUE(wrench("world", vec(0, 0, 3), -1.0).success);
+  ASSERT_TRUE(step(10).success);
+  rigid_body_sim::ClearWrenches clear;
+  ASSERT_TRUE(call("clear_wrenches", clear).response.success);
+  ASSERT_TRUE(step(10).success);
+  EXPECT_NEAR(state().twist.linear.z, 3 * 10 * kDt, 1e-12);
+}
+
+// ------------------------------------------------------------------ time (sim time)
+
+class PauseStep : public Node {};
+
+TEST_F(PauseStep, PausedTimeStandsStepAdvancesByNSteps) {
+  ASSERT_TRUE(trigger("pause"));
+  const BodyState a = state();
+  ros::WallDuration(0.3).sleep();
+  const BodyState b = state();
+  EXPECT_EQ(a.stamp, b.stamp);
+  EXPECT_EQ(a.pose.position.z, b.pose.position.z);
+  const auto r = step(25);
+  ASSERT_TRUE(r.success) << r.message;
+  EXPECT_EQ((r.time - b.stamp).toNSec(), 25 * 1000000LL);
+  ASSERT_EQ(r.states.size(), 1u);
+  EXPECT_EQ(r.states[0].stamp, r.time);
+  ASSERT_TRUE(trigger("unpause"));
+  EXPECT_FALSE(step(1).success);  // step is for a paused simulation
+  ros::WallDuration(0.3).sleep();
+  EXPECT_GT(state().stamp, r.time);
+}
+
+class Reset : public Node {};
+
+TEST_F(Reset, ReturnsToTheStartWithTimeMovingOn) {
+  std::vector<ros::Time> stamps;
+  const ros::Subscriber sub = nh_.subscribe<nav_msgs::Odometry>(
+      "/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { stamps.push_back(m->header.stamp); });
+  ASSERT_TRUE(spinUntil([&] { return stamps.size() >= 30; }, 30.0));
+  ASSERT_TRUE(trigger("pause"));
+  const BodyState moved = state();
+  EXPECT_LT(moved.pose.position.z, 0.99);
+  ASSERT_TRUE(trigger("reset"));
+  const BodyState back = state();
+  EXPECT_EQ(back.pose.position.x, 0.0);  // the initial pose of this test's config, exactly
+  EXPECT_EQ(back.pose.position.z, 1.0);
+  EXPECT_EQ(back.twist.linear.z, 0.0);
+  EXPECT_EQ(back.stamp, moved.stamp);  // reset does not touch time
+  ASSERT_TRUE(trigger("unpause"));
+  const std::size_t seen = stamps.size();
+  ASSERT_TRUE(spinUntil([&] { return stamps.size() >= seen + 30; }, 30.0));
+  EXPECT_GT(state().stamp, moved.stamp);
+  for (std::size_t i = 1; i < stamps.size(); ++i) EXPECT_GT(stamps[i], stamps[i - 1]) << "message " << i;
+}
+
+// ------------------------------------------------------------------ set / get
+
+class SetGetState : public Node {};
+
+TEST_F(SetGetState, RoundTripInEitherFrame) {
+  ASSERT_TRUE(trigger("pause"));
+  rigid_body_sim::SetState set;
+  set.request.state.pose.position.x = 1;
+  set.request.state.pose.position.y = 2;
+  set.request.state.pose.position.z = 3;
+  set.request.state.pose.orientation.z = std::sqrt(0.5);  // 90° about z, (x, y, z, w)
+  set.request.state.pose.orientation.w = std::sqrt(0.5);
+  set.request.state.twist.linear = vec(0.1, 0.2, 0.3);
+  set.request.state.twist.angular = vec(0.4, 0.5, 0.6);
+  ASSERT_TRUE(call("set_state", set).response.success);
+  const BodyState w = state();
+  EXPECT_NEAR(w.pose.position.y, 2, 1e-12);
+  EXPECT_NEAR(w.pose.orientation.z, std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(w.twist.linear.x, 0.1, 1e-12);
+  EXPECT_NEAR(w.twist.angular.z, 0.6, 1e-12);
+  const BodyState b = state(kLink);  // body x = world y: a world (0.1, 0.2) is body (0.2, −0.1)
+  EXPECT_EQ(b.twist_frame, kLink);
+  EXPECT_NEAR(b.twist.linear.x, 0.2, 1e-12);
+  EXPECT_NEAR(b.twist.linear.y, -0.1, 1e-12);
+  // Setting the twist in the body frame.
+  set.request.state.twist_frame = kLink;
+  set.request.state.twist.linear = vec(1, 0, 0);
+  set.request.state.twist.angular = vec(0, 0, 0);
+  ASSERT_TRUE(call("set_state", set).response.success);
+  EXPECT_NEAR(state().twist.linear.y, 1.0, 1e-12);
+}
+
+// ------------------------------------------------------------------ refusals
+
+class BadRequests : public Node {};
+
+TEST_F(BadRequests, AreRefusedWithAMessageAndChangeNothing) {
+  ASSERT_TRUE(trigger("pause"));
+  const BodyState before = state();
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  auto refused = [&](bool success, const std::string& message, const std::string& what) {
+    EXPECT_FALSE(success) << what;
+    EXPECT_FALSE(message.empty()) << what;
+    const BodyState now = state();
+    EXPECT_EQ(now.pose, before.pose) << what;
+    EXPECT_EQ(now.twist, before.twist) << what;
+  };
+  auto w = wrench("world", vec(nan, 0, 0), 1.0);
+  refused(w.success, w.message, "NaN force");
+  EXPECT_NE(w.message.find("not finite"), std::string::npos) << w.message;
+  w = wrench("world", vec(0, 0, 0), 1.0, vec(0, inf, 0));
+  refused(w.success, w.message, "infinite torque");
+  w = wrench("world", vec(1e9, 0, 0), 1.0);
+  refused(w.success, w.message, "absurd force");
+  w = wrench("map", vec(1, 0, 0), 1.0);
+  refused(w.success, w.message, "unknown frame");
+  EXPECT_NE(w.message.find("unknown frame 'map'"), std::string::npos) << w.message;
+  w = wrench("world", vec(1, 0, 0), 0.0);
+  refused(w.success, w.message, "zero duration");
+  EXPECT_NE(w.message.find("apply_impulse"), std::string::npos) << w.message;
+  rigid_body_sim::ApplyWrench other;
+  other.request.body = "robot";
+  other.request.duration = ros::Duration(1.0);
+  other = call("apply_wrench", other);
+  refused(other.response.success, other.response.message, "unknown body");
+  auto i = impulse("world", vec(nan, 0, 0));
+  refused(i.success, i.message, "NaN impulse");
+  i = impulse("world", vec(0, 1e9, 0));
+  refused(i.success, i.message, "absurd impulse");
+  i = impulse("odom", vec(0, 1, 0));
+  refused(i.success, i.message, "unknown impulse frame");
+  rigid_body_sim::SetState set;  // an all-zero quaternion: not an orientation
+  set.request.state.pose.position.z = 1;
+  set = call("set_state", set);
+  refused(set.response.success, set.response.message, "zero quaternion");
+  set.request.state.pose.orientation.w = 1;
+  set.request.state.pose.position.x = nan;
+  set = call("set_state", set);
+  refused(set.response.success, set.response.message, "NaN position");
+  for (int n : {-1, 0, 2000000}) {
+    const auto s = step(n);
+    refused(s.success, s.message, "steps " + std::to_string(n));
+  }
+  // Nothing was scheduled either: stepping on leaves the body where it was
+  // (no gravity in this test's config).
+  ASSERT_TRUE(step(100).success);
+  const BodyState later = state();
+  EXPECT_EQ(later.pose, before.pose);
+  EXPECT_EQ(later.twist, before.twist);
+}
+
+// ------------------------------------------------------------------ bad URDF: the node refuses to start
+
+class BadUrdf : public ::testing::Test {};
+
+/// Starts sim_node in namespace `ns` with `urdf` as its robot_description;
+/// returns its exit code and everything it printed.
+std::pair<int, std::string> runNode(const std::string& ns, const std::string& urdf, const std::string& extra = "") {
+  ros::param::set(ns + "/robot_description", urdf);
+  const std::string cmd = "timeout 30 " + std::string(RBS_SIM_NODE) + " __ns:=" + ns + " " + extra + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[512];
+  while (pipe != nullptr && fgets(buf, sizeof buf, pipe) != nullptr) out += buf;
+  const int status = pipe != nullptr ? pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+const char* kInertia = "<inertia ixx='0.1' iyy='0.1' izz='0.1' ixy='0' ixz='0' iyz='0'/>";
+const char* kCollision = "<collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision>";
+
+TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
+  const std::string head = "<robot name='r'><link name='base'>";
+  const struct {
+    std::string name, urdf, expected;
+  } cases[] = {
+      {"no_inertial", head + kCollision + "</link></robot>", "link 'base' has no <inertial>"},
+      {"zero_mass", head + "<inertial><mass value='0'/><inertia ixx='0' iyy='0' izz='0' ixy='0' ixz='0' iyz='0'/></inertial>" +
+                        kCollision + "</link></robot>",
+       "total mass of 0 kg"},
+      {"bad_inertia", head + "<inertial><mass value='1'/><inertia ixx='1' iyy='1' izz='3' ixy='0' ixz='0' iyz='0'/></inertial>" +
+                          kCollision + "</link></robot>",
+       "triangle inequality"},
+      {"movable", head + "<inertial><mass value='1'/>" + kInertia + "</inertial>" + kCollision +
+                      "</link><link name='wheel'><inertial><mass value='1'/>" + kInertia +
+                      "</inertial></link><joint name='axle' type='continuous'><parent link='base'/>"
+                      "<child link='wheel'/><axis xyz='0 0 1'/></joint></robot>",
+       "joint 'axle' is continuous"},
+      {"no_collision", head + "<inertial><mass value='1'/>" + kInertia + "</inertial></link></robot>",
+       "no <collision> geometry"},
+      {"not_xml", "this is not a robot", "not a valid URDF"},
+  };
+  for (const auto& c : cases) {
+    const auto [code, out] = runNode("/" + c.name, c.urdf);
+    EXPECT_EQ(code, 1) << c.name << ": " << out;
+    EXPECT_NE(out.find("FATAL"), std::string::npos) << c.name << ": " << out;
+    EXPECT_NE(out.find(c.expected), std::string::npos) << c.name << ": " << out;
+  }
+  // A bad parameter stops it too, naming the key.
+  const std::string good = head + "<inertial><mass value='1'/>" + kInertia + "</inertial>" + kCollision + "</link></robot>";
+  ros::param::set("/bad_param/sim_node/dt", -0.001);
+  const auto [code, out] = runNode("/bad_param", good);
+  EXPECT_EQ(code, 1) << out;
+  EXPECT_NE(out.find("dt = -0.001"), std::string::npos) << out;
+}
+
+/// Fails loudly when a .test's --gtest_filter names no suite of this file
+/// (gtest would otherwise run nothing and report success).
+class UnknownSuite : public ::testing::Test {
+ public:
+  explicit UnknownSuite(std::string filter) : filter_(std::move(filter)) {}
+  void TestBody() override { FAIL() << "--gtest_filter=" << filter_ << " selects no test of node_test"; }
+
+ private:
+  std::string filter_;
+};
+
+void checkFilterSelectsSomething() {
+  const std::string filter = ::testing::GTEST_FLAG(filter);
+  const std::string suite = filter.substr(0, filter.find('.'));
+  const ::testing::UnitTest& unit = *::testing::UnitTest::GetInstance();
+  for (int i = 0; i < unit.total_test_suite_count(); ++i) {
+    if (filter == "*" || unit.GetTestSuite(i)->name() == suite) return;
+  }
+  ::testing::RegisterTest("Selection", "UnknownSuite", nullptr, nullptr, __FILE__, __LINE__,
+                          [filter]() -> ::testing::Test* { return new UnknownSuite(filter); });
+  ::testing::GTEST_FLAG(filter) = "Selection.UnknownSuite";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  checkFilterSelectsSomething();
+  ros::init(argc, argv, "node_test", ros::init_options::AnonymousName);
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}
