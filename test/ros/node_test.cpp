@@ -8,6 +8,8 @@
 #include <sys/wait.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
+#include <geometry_msgs/WrenchStamped.h>
 
 #include <cmath>
 #include <cstdio>
@@ -22,6 +24,7 @@
 #include "rigid_body_sim/GetState.h"
 #include "rigid_body_sim/SetState.h"
 #include "rigid_body_sim/Step.h"
+#include "rigid_body_sim/core/sdf.h"
 
 namespace {
 
@@ -214,6 +217,71 @@ TEST_F(BodyFrameWrench, PushesAlongTheRotatedAxis) {
   EXPECT_NEAR(s.twist.linear.y, 0.1, 1e-12);
   const BodyState in_body = state(kLink);  // and in the body frame it is along x
   EXPECT_NEAR(in_body.twist.linear.x, 0.1, 1e-12);
+  // Odometry carries its twist in child_frame_id, the body (not the world, gazebo_ros #1026).
+  nav_msgs::Odometry odom;
+  bool got = false;
+  const ros::Subscriber sub = nh_.subscribe<nav_msgs::Odometry>("/odom", 10, [&](const nav_msgs::Odometry::ConstPtr& m) {
+    odom = *m;
+    got = true;
+  });
+  ASSERT_TRUE(spinUntil([&] { return sub.getNumPublishers() > 0; }, 10.0));
+  ASSERT_TRUE(step(10).success);  // a new stamp to publish at
+  ASSERT_TRUE(spinUntil([&] { return got; }, 10.0));
+  EXPECT_EQ(odom.child_frame_id, kLink);
+  EXPECT_NEAR(odom.twist.twist.linear.x, 0.1, 1e-12);
+  EXPECT_NEAR(odom.twist.twist.linear.y, 0.0, 1e-12);
+}
+
+class WrenchTopic : public Node {};
+
+TEST_F(WrenchTopic, IsHeldUntilItsTimeout) {
+  // ~wrench_timeout is 0.05 s in this test: a message pushes for 50 steps of sim time.
+  ASSERT_TRUE(trigger("pause"));
+  ros::Publisher pub = nh_.advertise<geometry_msgs::WrenchStamped>("/sim_node/wrench", 1, true);
+  ASSERT_TRUE(spinUntil([&] { return pub.getNumSubscribers() > 0; }, 10.0));
+  geometry_msgs::WrenchStamped w;
+  w.header.frame_id = kLink;  // body frame: the body is not turned here
+  w.wrench.force.y = 2.0;
+  pub.publish(w);
+  ros::WallDuration(0.3).sleep();  // delivered before the steps
+  ASSERT_TRUE(step(200).success);
+  const BodyState s = state();
+  EXPECT_NEAR(s.twist.linear.y, 2.0 * 0.05, 2.0 * kDt + 1e-12);  // within one step of the timeout
+  EXPECT_GT(s.twist.linear.y, 2.0 * 0.04);
+  w.header.frame_id = "map";  // an unknown frame is ignored
+  pub.publish(w);
+  ros::WallDuration(0.3).sleep();
+  ASSERT_TRUE(step(100).success);
+  EXPECT_EQ(state().twist.linear.y, s.twist.linear.y);
+}
+
+class Scene : public Node {};
+
+TEST_F(Scene, MarkersShowTheGroundAndTheRoom) {
+  visualization_msgs::MarkerArray markers;
+  bool got = false;
+  const ros::Subscriber sub = nh_.subscribe<visualization_msgs::MarkerArray>(
+      "/sim_node/scene_markers", 1, [&](const visualization_msgs::MarkerArray::ConstPtr& m) {
+        markers = *m;
+        got = true;
+      });
+  ASSERT_TRUE(spinUntil([&] { return got; }, 10.0));  // latched: arrives without waiting for a change
+  ASSERT_EQ(markers.markers.size(), 2u);
+  const auto& ground = markers.markers[0];
+  EXPECT_EQ(ground.type, visualization_msgs::Marker::CUBE);
+  EXPECT_EQ(ground.header.frame_id, "world");
+  EXPECT_NEAR(ground.pose.position.z, -0.0005, 1e-12);  // a 1 mm slab whose top is z = 0
+  const auto& room = markers.markers[1];
+  EXPECT_EQ(room.type, visualization_msgs::Marker::TRIANGLE_LIST);
+  ASSERT_GT(room.points.size(), 300u);
+  EXPECT_EQ(room.points.size() % 3, 0u);
+  // Every vertex lies on the room's surface φ = 0 (within one grid cell).
+  namespace core = rigid_body_sim::core;
+  const core::Sdf room_sdf = core::Sdf::subtract(
+      {core::Sdf::box(core::Vec3(6.2, 6.2, 2.2)).transformed({core::Quat::Identity(), core::Vec3(0, 0, 11)}),
+       core::Sdf::box(core::Vec3(6.0, 6.0, 3.0)).transformed({core::Quat::Identity(), core::Vec3(0, 0, 11.6)})});
+  const double cell = 6.2 * 1.06 / 64;
+  for (const auto& p : room.points) EXPECT_LT(std::abs(room_sdf.eval(core::Vec3(p.x, p.y, p.z))), cell) << p;
 }
 
 class TwoWrenches : public Node {};
