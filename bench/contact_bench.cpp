@@ -62,8 +62,8 @@ void measure(benchmark::State& bench, const core::Model& model, const core::Stat
 
 void BM_BoxDrop(benchmark::State& bench) {
   const bool sleep = bench.range(0) != 0;
-  io::SimConfig config = io::parseConfig(YAML::Load(
-      "initial: {position: [0, 0, 1], rpy: [0.5, 0.2, 0.1], angular_velocity: [1, 2, 3]}"));
+  io::SimConfig config =
+      io::parseConfig(YAML::Load("initial: {position: [0, 0, 1], rpy: [0.5, 0.2, 0.1], angular_velocity: [1, 2, 3]}"));
   config.model.sleep.enabled = sleep;
   const core::Model model = io::buildModel(config, io::loadUrdfString(kBoxUrdf, "box"));
   const core::State start{0.0, {core::bodyStateFromLink(model.body(0), config.initial)}, {}};
@@ -74,8 +74,8 @@ BENCHMARK(BM_BoxDrop)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 /// A UV sphere of radius 0.1 m with `rings` × `segments` + 2 vertices, as OBJ.
 std::string writeSphereObj(int rings, int segments) {
-  const std::string path = "/tmp/rbs_bench_sphere_" + std::to_string(::getpid()) + "_" +
-                           std::to_string(rings) + "x" + std::to_string(segments) + ".obj";
+  const std::string path = "/tmp/rbs_bench_sphere_" + std::to_string(::getpid()) + "_" + std::to_string(rings) + "x" +
+                           std::to_string(segments) + ".obj";
   std::ofstream out(path);
   out << "v 0 0 0.1\n";
   for (int i = 1; i <= rings; ++i) {
@@ -104,7 +104,8 @@ void BM_MeshDrop(benchmark::State& bench) {
   const std::string obj = writeSphereObj(rings, segments);
   const std::string urdf = std::string(R"(<robot name="mesh"><link name="mesh">
     <inertial><mass value="1"/><inertia ixx="0.004" iyy="0.004" izz="0.004" ixy="0" ixz="0" iyz="0"/></inertial>
-    <collision><geometry><mesh filename="file://)") + obj + R"("/></geometry></collision></link></robot>)";
+    <collision><geometry><mesh filename="file://)") +
+                           obj + R"("/></geometry></collision></link></robot>)";
   io::SimConfig config =
       io::parseConfig(YAML::Load("initial: {position: [0, 0, 0.4], rpy: [0.3, 0.2, 0]}\nsleep: {enabled: false}"));
   const core::Model model = io::buildModel(config, io::loadUrdfString(urdf, "mesh"));
@@ -114,11 +115,11 @@ void BM_MeshDrop(benchmark::State& bench) {
   bench.counters["vertices"] = static_cast<double>(model.body(0).contact_points.size());
 }
 BENCHMARK(BM_MeshDrop)
-    ->Args({10, 16})   // 162 vertices
-    ->Args({20, 25})   // 502
-    ->Args({25, 40})   // 1002
-    ->Args({40, 50})   // 2002
-    ->Args({50, 80})   // 4002
+    ->Args({10, 16})  // 162 vertices
+    ->Args({20, 25})  // 502
+    ->Args({25, 40})  // 1002
+    ->Args({40, 50})  // 2002
+    ->Args({50, 80})  // 4002
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

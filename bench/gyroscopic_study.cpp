@@ -32,9 +32,7 @@ struct Spin {
   Vec3 w_B = kW0;
 };
 
-Quat cayley(const Quat& q, const Vec3& h_B) {
-  return (q * Quat(1.0, h_B.x(), h_B.y(), h_B.z())).normalized();
-}
+Quat cayley(const Quat& q, const Vec3& h_B) { return (q * Quat(1.0, h_B.x(), h_B.y(), h_B.z())).normalized(); }
 
 void worldLEuler(Spin& s, double dt) {
   const Vec3 L_W = s.q * kI.cwiseProduct(s.w_B);
@@ -135,8 +133,8 @@ int main() {
     };
     for (const auto& v : variants) {
       const Result r = run(v.advance, dt);
-      std::printf("%-14s %6g %12.2e %12.2e %6d %11.4f %8.1f\n", v.name, dt, r.energy_change, r.momentum_change,
-                  r.flips, r.first_flip, r.ns_per_step);
+      std::printf("%-14s %6g %12.2e %12.2e %6d %11.4f %8.1f\n", v.name, dt, r.energy_change, r.momentum_change, r.flips,
+                  r.first_flip, r.ns_per_step);
     }
   }
 }

@@ -8,7 +8,8 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "bench_listener", ros::init_options::AnonymousName);
   ros::NodeHandle nh;
   long count = 0;
-  const auto odom = nh.subscribe<nav_msgs::Odometry>("/odom", 100, [&](const nav_msgs::Odometry::ConstPtr&) { ++count; });
+  const auto odom =
+      nh.subscribe<nav_msgs::Odometry>("/odom", 100, [&](const nav_msgs::Odometry::ConstPtr&) { ++count; });
   const auto tf = nh.subscribe<tf2_msgs::TFMessage>("/tf", 100, [&](const tf2_msgs::TFMessage::ConstPtr&) { ++count; });
   ros::spin();
   return count < 0;

@@ -7,7 +7,9 @@ namespace rigid_body_sim::core {
 namespace {
 
 /// Number of intervals so that none is longer than `spacing`.
-int intervals(double length, double spacing) { return std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9))); }
+int intervals(double length, double spacing) {
+  return std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9)));
+}
 
 void sampleBox(const Vec3& size, double spacing, std::vector<Vec3>& out, std::vector<bool>& extreme) {
   const Vec3 h = 0.5 * size;
@@ -72,8 +74,12 @@ std::vector<ContactPoint> sampleShape(const CollisionShape& shape, const Pose& X
   std::vector<bool> extreme;
   double radius = 0.0;
   switch (shape.kind) {
-    case CollisionShape::Kind::kBox: sampleBox(shape.size, spacing, local, extreme); break;
-    case CollisionShape::Kind::kCylinder: sampleCylinder(shape.size.x(), shape.size.y(), spacing, local, extreme); break;
+    case CollisionShape::Kind::kBox:
+      sampleBox(shape.size, spacing, local, extreme);
+      break;
+    case CollisionShape::Kind::kCylinder:
+      sampleCylinder(shape.size.x(), shape.size.y(), spacing, local, extreme);
+      break;
     case CollisionShape::Kind::kSphere:
       if (sample_spheres) {
         sampleSphereSurface(shape.size.x(), spacing, local);
@@ -82,7 +88,9 @@ std::vector<ContactPoint> sampleShape(const CollisionShape& shape, const Pose& X
         radius = shape.size.x();
       }
       break;
-    case CollisionShape::Kind::kPoints: local = shape.points_S; break;
+    case CollisionShape::Kind::kPoints:
+      local = shape.points_S;
+      break;
   }
   std::vector<ContactPoint> points;
   points.reserve(local.size());

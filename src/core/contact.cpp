@@ -395,9 +395,8 @@ void accumulatePenaltyForces(const Model& model, const State& state, const Works
 double minSeparation(const Model& model, const BodyState& s, int body, double margin) {
   double smallest = std::numeric_limits<double>::infinity();
   std::vector<double> scratch;
-  scanBody(model, s, body, margin, scratch, [&](int, int, double separation, const Vec3&) {
-    smallest = std::min(smallest, separation);
-  });
+  scanBody(model, s, body, margin, scratch,
+           [&](int, int, double separation, const Vec3&) { smallest = std::min(smallest, separation); });
   return smallest;
 }
 

@@ -25,9 +25,9 @@ void applyImpulse(const BodyModel& body, BodyState& s, const Impulse& impulse) {
     J_W = s.q_WB * (q_BL * impulse.linear);
     dL_B = q_BL * dL;
   }
-  s.v_WB += body.inv_mass * J_W;                      // Δv = J / M
-  s.w_B += body.inv_inertia_B.cwiseProduct(dL_B);     // Δω = I⁻¹ (r × J + H)
-  s.asleep = false;                                   // an impulse wakes a sleeping body
+  s.v_WB += body.inv_mass * J_W;                   // Δv = J / M
+  s.w_B += body.inv_inertia_B.cwiseProduct(dL_B);  // Δω = I⁻¹ (r × J + H)
+  s.asleep = false;                                // an impulse wakes a sleeping body
   s.still_time = 0.0;
 }
 

@@ -175,8 +175,7 @@ Model::Model(const ModelSpec& spec)
                    "contacts are on (the scene is not empty) but the body has no <collision> geometry; "
                    "add one to the URDF or set scene: []");
     }
-    if (spec.contact.method == ContactMethod::kShapeMatching && !scene_.empty() &&
-        body.points_inv_spread.isZero(0.0)) {
+    if (spec.contact.method == ContactMethod::kShapeMatching && !scene_.empty() && body.points_inv_spread.isZero(0.0)) {
       detail::fail("body '" + b.name + "': collision", std::to_string(body.contact_points.size()) + " points",
                    "shape matching needs collision points that span three dimensions");
     }

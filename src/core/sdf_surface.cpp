@@ -24,13 +24,20 @@ std::optional<Bounds> solidBounds(const Sdf& sdf) {
   const Vec3& k = sdf.params();
   std::optional<Bounds> local;
   switch (sdf.kind()) {
-    case Sdf::Kind::kPlane: return std::nullopt;
-    case Sdf::Kind::kSphere: local = Bounds{Vec3::Constant(-k.x()), Vec3::Constant(k.x())}; break;
-    case Sdf::Kind::kBox: local = Bounds{-0.5 * k, 0.5 * k}; break;
+    case Sdf::Kind::kPlane:
+      return std::nullopt;
+    case Sdf::Kind::kSphere:
+      local = Bounds{Vec3::Constant(-k.x()), Vec3::Constant(k.x())};
+      break;
+    case Sdf::Kind::kBox:
+      local = Bounds{-0.5 * k, 0.5 * k};
+      break;
     case Sdf::Kind::kCapsule:
       local = Bounds{Vec3(-k.x(), -k.x(), -0.5 * k.y() - k.x()), Vec3(k.x(), k.x(), 0.5 * k.y() + k.x())};
       break;
-    case Sdf::Kind::kCylinder: local = Bounds{Vec3(-k.x(), -k.x(), -0.5 * k.y()), Vec3(k.x(), k.x(), 0.5 * k.y())}; break;
+    case Sdf::Kind::kCylinder:
+      local = Bounds{Vec3(-k.x(), -k.x(), -0.5 * k.y()), Vec3(k.x(), k.x(), 0.5 * k.y())};
+      break;
     case Sdf::Kind::kUnion:
       for (const Sdf& c : sdf.children()) {
         const auto b = solidBounds(c);
@@ -59,7 +66,9 @@ std::vector<Vec3> surfaceTriangles(const Sdf& sdf, const Bounds& bounds, double 
   int n[3];
   for (int a = 0; a < 3; ++a) n[a] = std::max(1, static_cast<int>(std::ceil(extent(a) / cell)));
   const Vec3 step(extent.x() / n[0], extent.y() / n[1], extent.z() / n[2]);
-  const auto index = [&](int i, int j, int k) { return (static_cast<std::size_t>(k) * (n[1] + 1) + j) * (n[0] + 1) + i; };
+  const auto index = [&](int i, int j, int k) {
+    return (static_cast<std::size_t>(k) * (n[1] + 1) + j) * (n[0] + 1) + i;
+  };
   const auto point = [&](int i, int j, int k) { return Vec3(bounds.lo + Vec3(i, j, k).cwiseProduct(step)); };
   std::vector<double> phi((n[0] + 1) * static_cast<std::size_t>(n[1] + 1) * (n[2] + 1));
   for (int k = 0; k <= n[2]; ++k)

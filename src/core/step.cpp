@@ -33,8 +33,7 @@ void wakeLoadedBodies(State& state, const Loads& loads) {
 
 // F = −σ v + F_ext (+ penalty),  τ = −σ_ω ω + τ_ext (+ penalty); the notes'
 // τᵢ = (R rᵢ) × Fᵢ has been reduced to the centre of mass by addWrench().
-NetLoad accumulateForces(const Model& model, const State& state, const BodyLoad* load, const Workspace& ws,
-                         int body) {
+NetLoad accumulateForces(const Model& model, const State& state, const BodyLoad* load, const Workspace& ws, int body) {
   const Damping& damping = model.damping();
   const BodyState& s = state.bodies[body];
   NetLoad net;
@@ -150,14 +149,13 @@ void advance(const Model& model, State& state, const Loads& loads, double h, Wor
   const bool impulse = model.contact().method == ContactMethod::kImpulse && !ws.contacts.empty();
   const Damping& d = model.damping();
   // Without loads, drag or penalty contacts the only force is gravity.
-  const bool forces = !loads.empty() || d.linear_drag != 0.0 || d.angular_drag != 0.0 ||
-                      (!ws.contacts.empty() && !impulse);
+  const bool forces =
+      !loads.empty() || d.linear_drag != 0.0 || d.angular_drag != 0.0 || (!ws.contacts.empty() && !impulse);
   for (std::size_t i = 0; i < n; ++i) {
     BodyState& s = state.bodies[i];
     if (s.asleep) continue;
     if (forces) {
-      const NetLoad net =
-          accumulateForces(model, state, loads.empty() ? nullptr : &loads[i], ws, static_cast<int>(i));
+      const NetLoad net = accumulateForces(model, state, loads.empty() ? nullptr : &loads[i], ws, static_cast<int>(i));
       integrateVelocities(model, model.body(i), net, h, s);
     } else {
       s.v_WB += h * model.gravity();
@@ -185,8 +183,7 @@ void advance(const Model& model, State& state, const Loads& loads, double h, Wor
 /// changes a lot, it pumps energy in. So a step is taken again as two half
 /// steps (step control) if any body's smallest φ inside the buffer would
 /// reach 0, or shrink or grow by more than a factor of two.
-void advanceKeepingBarrier(const Model& model, State& state, const Loads& loads, double h, Workspace& ws,
-                           int depth) {
+void advanceKeepingBarrier(const Model& model, State& state, const Loads& loads, double h, Workspace& ws, int depth) {
   constexpr int kMaxHalvings = 20;
   const double buffer = model.contact().barrier_buffer;
   const State before = state;
@@ -214,9 +211,15 @@ void step(const Model& model, State& state, const Loads& loads, Workspace* works
   const double h = model.dt();
   wakeLoadedBodies(state, loads);
   switch (model.contact().method) {
-    case ContactMethod::kShapeMatching: stepShapeMatching(model, state, loads, h, ws); break;
-    case ContactMethod::kPenaltyLogBarrier: advanceKeepingBarrier(model, state, loads, h, ws, 0); break;
-    default: advance(model, state, loads, h, ws); break;
+    case ContactMethod::kShapeMatching:
+      stepShapeMatching(model, state, loads, h, ws);
+      break;
+    case ContactMethod::kPenaltyLogBarrier:
+      advanceKeepingBarrier(model, state, loads, h, ws, 0);
+      break;
+    default:
+      advance(model, state, loads, h, ws);
+      break;
   }
   state.time += h;
 }

@@ -18,9 +18,7 @@ inline std::string str(double x) {
   return os.str();
 }
 
-inline std::string str(const Vec3& v) {
-  return "[" + str(v.x()) + ", " + str(v.y()) + ", " + str(v.z()) + "]";
-}
+inline std::string str(const Vec3& v) { return "[" + str(v.x()) + ", " + str(v.y()) + ", " + str(v.z()) + "]"; }
 
 /// Inertia in the six URDF terms, so a message reads like the file.
 inline std::string str(const Mat3& I) {

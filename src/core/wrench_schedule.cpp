@@ -5,9 +5,9 @@
 namespace rigid_body_sim::core {
 
 void WrenchSchedule::clear(int body) {
-  entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
-                                [body](const Entry& e) { return body < 0 || e.body == body; }),
-                 entries_.end());
+  entries_.erase(
+      std::remove_if(entries_.begin(), entries_.end(), [body](const Entry& e) { return body < 0 || e.body == body; }),
+      entries_.end());
 }
 
 void WrenchSchedule::dropFinished(double t) {

@@ -139,8 +139,8 @@ core::Sdf parseShape(const YAML::Node& node, const std::string& path) {
             : type == "intersection" ? core::Sdf::intersect(std::move(children))
                                      : core::Sdf::subtract(std::move(children));
   } else {
-    fail(join(path, "type"), "unknown shape '" + type +
-                                 "' (plane, box, sphere, capsule, cylinder, union, intersection, difference)");
+    fail(join(path, "type"),
+         "unknown shape '" + type + "' (plane, box, sphere, capsule, cylinder, union, intersection, difference)");
   }
   const Vec3 position = node["position"] ? vec3(node["position"], join(path, "position")) : Vec3::Zero();
   return shape.transformed({orientation(node, path), position});
@@ -149,7 +149,8 @@ core::Sdf parseShape(const YAML::Node& node, const std::string& path) {
 std::vector<core::Sdf> parseScene(const YAML::Node& node) {
   if (!node.IsSequence()) fail("scene", "expected a list of shapes, got " + show(node));
   std::vector<core::Sdf> scene;
-  for (std::size_t i = 0; i < node.size(); ++i) scene.push_back(parseShape(node[i], "scene[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < node.size(); ++i)
+    scene.push_back(parseShape(node[i], "scene[" + std::to_string(i) + "]"));
   return scene;
 }
 
@@ -159,27 +160,33 @@ core::ContactMethod contactMethod(const YAML::Node& node) {
   if (m == "penalty_quadratic") return core::ContactMethod::kPenaltyQuadratic;
   if (m == "penalty_log_barrier") return core::ContactMethod::kPenaltyLogBarrier;
   if (m == "shape_matching") return core::ContactMethod::kShapeMatching;
-  fail("contact.method", "unknown method '" + m + "' (impulse, penalty_quadratic, penalty_log_barrier, shape_matching)");
+  fail("contact.method",
+       "unknown method '" + m + "' (impulse, penalty_quadratic, penalty_log_barrier, shape_matching)");
 }
 
 void parseContact(const YAML::Node& node, core::ContactSettings& c) {
-  requireKnownKeys(node, "contact",
-                   {"method", "restitution", "friction", "restitution_threshold", "sample_spacing", "iterations",
-                    "position_slop", "penalty_stiffness", "penalty_damping", "penalty_buffer", "barrier_strength",
-                    "barrier_buffer"});
+  requireKnownKeys(
+      node, "contact",
+      {"method", "restitution", "friction", "restitution_threshold", "sample_spacing", "iterations", "position_slop",
+       "penalty_stiffness", "penalty_damping", "penalty_buffer", "barrier_strength", "barrier_buffer"});
   if (node["method"]) c.method = contactMethod(node["method"]);
-  const std::pair<const char*, double*> numbers[] = {
-      {"restitution", &c.restitution},         {"friction", &c.friction},
-      {"restitution_threshold", &c.restitution_threshold}, {"sample_spacing", &c.sample_spacing},
-      {"position_slop", &c.position_slop},     {"penalty_stiffness", &c.penalty_stiffness},
-      {"penalty_damping", &c.penalty_damping}, {"penalty_buffer", &c.penalty_buffer},
-      {"barrier_strength", &c.barrier_strength}, {"barrier_buffer", &c.barrier_buffer}};
+  const std::pair<const char*, double*> numbers[] = {{"restitution", &c.restitution},
+                                                     {"friction", &c.friction},
+                                                     {"restitution_threshold", &c.restitution_threshold},
+                                                     {"sample_spacing", &c.sample_spacing},
+                                                     {"position_slop", &c.position_slop},
+                                                     {"penalty_stiffness", &c.penalty_stiffness},
+                                                     {"penalty_damping", &c.penalty_damping},
+                                                     {"penalty_buffer", &c.penalty_buffer},
+                                                     {"barrier_strength", &c.barrier_strength},
+                                                     {"barrier_buffer", &c.barrier_buffer}};
   for (const auto& [key, field] : numbers) {
     if (node[key]) *field = number(node[key], std::string("contact.") + key);
   }
   if (node["iterations"]) {
     const double n = number(node["iterations"], "contact.iterations");
-    if (n != std::floor(n) || n < 1 || n > 1e6) fail("contact.iterations", "expected a whole number >= 1, got " + show(node["iterations"]));
+    if (n != std::floor(n) || n < 1 || n > 1e6)
+      fail("contact.iterations", "expected a whole number >= 1, got " + show(node["iterations"]));
     c.iterations = static_cast<int>(n);
   }
 }

@@ -1,11 +1,11 @@
 #include "rigid_body_sim/io/mesh_loader.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <assimp/Importer.hpp>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>

@@ -1,5 +1,7 @@
 #include "rigid_body_sim/io/urdf_loader.h"
 
+#include <urdf_parser/urdf_parser.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -7,7 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <urdf_parser/urdf_parser.h>
 #include <vector>
 
 #include "rigid_body_sim/core/inertia.h"
@@ -30,13 +31,20 @@ Pose toPose(const urdf::Pose& u) {
 
 const char* jointTypeName(int type) {
   switch (type) {
-    case urdf::Joint::REVOLUTE: return "revolute";
-    case urdf::Joint::CONTINUOUS: return "continuous";
-    case urdf::Joint::PRISMATIC: return "prismatic";
-    case urdf::Joint::FLOATING: return "floating";
-    case urdf::Joint::PLANAR: return "planar";
-    case urdf::Joint::FIXED: return "fixed";
-    default: return "unknown";
+    case urdf::Joint::REVOLUTE:
+      return "revolute";
+    case urdf::Joint::CONTINUOUS:
+      return "continuous";
+    case urdf::Joint::PRISMATIC:
+      return "prismatic";
+    case urdf::Joint::FLOATING:
+      return "floating";
+    case urdf::Joint::PLANAR:
+      return "planar";
+    case urdf::Joint::FIXED:
+      return "fixed";
+    default:
+      return "unknown";
   }
 }
 
@@ -50,8 +58,9 @@ class Lumper {
   core::MassProperties part(const urdf::Link& link, const Pose& X_LK) const {
     const std::string where = "link '" + link.name + "'";
     if (!link.inertial) {
-      fail(where + " has no <inertial>: every link of the body needs a mass and an inertia "
-                   "(a massless frame can say <mass value=\"0\"/> with zero inertia)");
+      fail(where +
+           " has no <inertial>: every link of the body needs a mass and an inertia "
+           "(a massless frame can say <mass value=\"0\"/> with zero inertia)");
     }
     const urdf::Inertial& in = *link.inertial;
     if (!std::isfinite(in.mass) || in.mass < 0.0) {
@@ -120,7 +129,8 @@ class Lumper {
           const auto& mesh = static_cast<const urdf::Mesh&>(*col.geometry);
           shape.kind = core::CollisionShape::Kind::kPoints;
           const Vec3 scale(mesh.scale.x, mesh.scale.y, mesh.scale.z);
-          if (!scale.allFinite() || (scale.array() == 0.0).any()) fail(where + ": mesh scale must be finite and non-zero");
+          if (!scale.allFinite() || (scale.array() == 0.0).any())
+            fail(where + ": mesh scale must be finite and non-zero");
           try {
             shape.points_S = loadMeshVertices(resolveMeshUri(mesh.filename, base_dir_), scale);
           } catch (const MeshError& e) {
@@ -129,7 +139,8 @@ class Lumper {
           shape.name += " (" + mesh.filename + ")";
           break;
         }
-        default: fail(where + ": unsupported geometry type");
+        default:
+          fail(where + ": unsupported geometry type");
       }
       out.push_back(std::move(shape));
     }

@@ -32,10 +32,14 @@ double positive(const XmlRpc::XmlRpcValue& v, const std::string& key, bool allow
 YAML::Node toYaml(const XmlRpc::XmlRpcValue& value) {
   auto& v = const_cast<XmlRpc::XmlRpcValue&>(value);  // XmlRpc's accessors are not const
   switch (v.getType()) {
-    case XmlRpc::XmlRpcValue::TypeBoolean: return YAML::Node(static_cast<bool>(v));
-    case XmlRpc::XmlRpcValue::TypeInt: return YAML::Node(static_cast<int>(v));
-    case XmlRpc::XmlRpcValue::TypeDouble: return YAML::Node(static_cast<double>(v));
-    case XmlRpc::XmlRpcValue::TypeString: return YAML::Node(static_cast<std::string>(v));
+    case XmlRpc::XmlRpcValue::TypeBoolean:
+      return YAML::Node(static_cast<bool>(v));
+    case XmlRpc::XmlRpcValue::TypeInt:
+      return YAML::Node(static_cast<int>(v));
+    case XmlRpc::XmlRpcValue::TypeDouble:
+      return YAML::Node(static_cast<double>(v));
+    case XmlRpc::XmlRpcValue::TypeString:
+      return YAML::Node(static_cast<std::string>(v));
     case XmlRpc::XmlRpcValue::TypeArray: {
       YAML::Node seq(YAML::NodeType::Sequence);
       for (int i = 0; i < v.size(); ++i) seq.push_back(toYaml(v[i]));
@@ -46,7 +50,8 @@ YAML::Node toYaml(const XmlRpc::XmlRpcValue& value) {
       for (auto it = v.begin(); it != v.end(); ++it) map[it->first] = toYaml(it->second);
       return map;
     }
-    default: return YAML::Node();
+    default:
+      return YAML::Node();
   }
 }
 
@@ -58,8 +63,8 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   }
   NodeParams p;
   NodeSettings& n = p.node;
-  const std::set<std::string> node_keys{"rate", "realtime_factor", "publish_rate", "world_frame", "wrench_timeout",
-                                        "covariance", "scene_size", "report_timing"};
+  const std::set<std::string> node_keys{"rate",           "realtime_factor", "publish_rate", "world_frame",
+                                        "wrench_timeout", "covariance",      "scene_size",   "report_timing"};
   if (all.hasMember("rate")) n.rate = positive(all["rate"], "rate", false);
   if (all.hasMember("realtime_factor")) n.realtime_factor = positive(all["realtime_factor"], "realtime_factor", true);
   if (all.hasMember("publish_rate")) n.publish_rate = positive(all["publish_rate"], "publish_rate", false);

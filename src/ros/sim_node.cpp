@@ -2,9 +2,8 @@
 
 #include <nav_msgs/Odometry.h>
 #include <rosgraph_msgs/Clock.h>
-#include <visualization_msgs/MarkerArray.h>
-
 #include <sys/prctl.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
 #include <cmath>
@@ -41,6 +40,14 @@ std::string checkVector(const Vec3& v, double limit, const std::string& what, co
     os << what << " is absurd: |" << what << "| = " << v.norm() << " " << unit << " > " << limit << " " << unit;
   }
   return os.str();
+}
+
+/// The first non-empty complaint, or "".
+std::string firstProblem(std::initializer_list<std::string> problems) {
+  for (const std::string& p : problems) {
+    if (!p.empty()) return p;
+  }
+  return {};
 }
 
 core::Model buildModel(const NodeParams& params, const ros::NodeHandle& nh) {
@@ -198,8 +205,8 @@ void SimNode::run() {
       do {
         for (int k = 0; k < 64; ++k) stepOnce();
       } while (Clock::now() < slice_end);
-    } else if (!use_sim_time_ &&
-               std::chrono::duration<double>(tick_start - last_paused_publish).count() >= 1.0 / settings_.publish_rate) {
+    } else if (!use_sim_time_ && std::chrono::duration<double>(tick_start - last_paused_publish).count() >=
+                                     1.0 / settings_.publish_rate) {
       // Paused on wall time: keep tf fresh for listeners (sim time stands still otherwise).
       publish();
       last_paused_publish = tick_start;
@@ -217,9 +224,9 @@ void SimNode::run() {
     for (double& x : d) x = std::abs(x - 1.0 / settings_.rate);
     std::sort(d.begin(), d.end());
     // Plain stdout: ROS logging is already shut down once ros::ok() is false.
-    std::printf("sim_node: timing: %zu ticks, |period - %.6g s| p50 %.1f us, p99 %.1f us, max %.1f us; sim time %.3f s\n",
-                d.size(), 1.0 / settings_.rate, 1e6 * d[d.size() / 2], 1e6 * d[d.size() * 99 / 100], 1e6 * d.back(),
-                simTime());
+    std::printf(
+        "sim_node: timing: %zu ticks, |period - %.6g s| p50 %.1f us, p99 %.1f us, max %.1f us; sim time %.3f s\n",
+        d.size(), 1.0 / settings_.rate, 1e6 * d[d.size() / 2], 1e6 * d[d.size() * 99 / 100], 1e6 * d.back(), simTime());
     std::fflush(stdout);
   }
 }
@@ -264,17 +271,15 @@ bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res)
   const auto frame = findFrame(req.frame, *body, res.message);
   if (!frame) return true;
   const Vec3 force = fromVector3(req.force), torque = fromVector3(req.torque), point = fromPoint(req.point);
-  for (const std::string& why : {checkVector(force, kMaxForce, "force", "N"), checkVector(torque, kMaxTorque, "torque", "N·m"),
-                                 checkVector(point, kMaxPosition, "point", "m")}) {
-    if (!why.empty()) {
-      res.message = why;
-      return true;
-    }
-  }
+  res.message =
+      firstProblem({checkVector(force, kMaxForce, "force", "N"), checkVector(torque, kMaxTorque, "torque", "N·m"),
+                    checkVector(point, kMaxPosition, "point", "m")});
+  if (!res.message.empty()) return true;
   const double duration = req.duration.toSec();
   if (duration == 0.0) {
-    res.message = "duration 0 applies nothing: give duration > 0 (for that long), < 0 (until clear_wrenches), "
-                  "or call apply_impulse for an instantaneous push";
+    res.message =
+        "duration 0 applies nothing: give duration > 0 (for that long), < 0 (until clear_wrenches), "
+        "or call apply_impulse for an instantaneous push";
     return true;
   }
   const double start = std::max(req.start_time.toSec(), simTime());  // 0 or the past: now
@@ -295,14 +300,10 @@ bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& r
   const auto frame = findFrame(req.frame, *body, res.message);
   if (!frame) return true;
   const Vec3 linear = fromVector3(req.linear), angular = fromVector3(req.angular), point = fromPoint(req.point);
-  for (const std::string& why :
-       {checkVector(linear, kMaxImpulse, "linear", "N·s"), checkVector(angular, kMaxImpulse, "angular", "N·m·s"),
-        checkVector(point, kMaxPosition, "point", "m")}) {
-    if (!why.empty()) {
-      res.message = why;
-      return true;
-    }
-  }
+  res.message = firstProblem({checkVector(linear, kMaxImpulse, "linear", "N·s"),
+                              checkVector(angular, kMaxImpulse, "angular", "N·m·s"),
+                              checkVector(point, kMaxPosition, "point", "m")});
+  if (!res.message.empty()) return true;
   core::BodyState after = state_.bodies[*body];
   core::applyImpulse(model_.body(*body), after, {linear, angular, point, *frame});
   const std::string speed = checkVector(after.v_WB, kMaxSpeed, "resulting velocity", "m/s");
@@ -355,13 +356,10 @@ bool SimNode::setState(SetState::Request& req, SetState::Response& res) {
   const Vec3 v = fromVector3(req.state.twist.linear), w = fromVector3(req.state.twist.angular);
   const geometry_msgs::Quaternion& mq = req.state.pose.orientation;
   const Quat q(mq.w, mq.x, mq.y, mq.z);  // geometry_msgs is (x, y, z, w); Eigen takes (w, x, y, z)
-  for (const std::string& why : {checkVector(p, kMaxPosition, "position", "m"), checkVector(v, kMaxSpeed, "linear velocity", "m/s"),
-                                 checkVector(w, kMaxAngularSpeed, "angular velocity", "rad/s")}) {
-    if (!why.empty()) {
-      res.message = why;
-      return true;
-    }
-  }
+  res.message =
+      firstProblem({checkVector(p, kMaxPosition, "position", "m"), checkVector(v, kMaxSpeed, "linear velocity", "m/s"),
+                    checkVector(w, kMaxAngularSpeed, "angular velocity", "rad/s")});
+  if (!res.message.empty()) return true;
   if (!q.coeffs().allFinite() || std::abs(q.norm() - 1.0) > 1e-3) {
     std::ostringstream os;
     os << "orientation is not a unit quaternion (norm " << q.norm() << "; the identity is x=0 y=0 z=0 w=1)";

@@ -85,12 +85,18 @@ Args parseArgs(int argc, char** argv) {
     }
     if (i + 1 >= argc) throw UsageError(flag + ": missing value (see rbsim --help)");
     const std::string value = argv[++i];
-    if (flag == "--urdf") a.urdf = value;
-    else if (flag == "--config") a.config = value;
-    else if (flag == "--set") a.sets.push_back(value);
-    else if (flag == "--duration") a.duration = parsePositive(flag, value);
-    else if (flag == "--dt") parsePositive(flag, value), a.dt = value;
-    else if (flag == "--csv") a.csv = value;
+    if (flag == "--urdf")
+      a.urdf = value;
+    else if (flag == "--config")
+      a.config = value;
+    else if (flag == "--set")
+      a.sets.push_back(value);
+    else if (flag == "--duration")
+      a.duration = parsePositive(flag, value);
+    else if (flag == "--dt")
+      parsePositive(flag, value), a.dt = value;
+    else if (flag == "--csv")
+      a.csv = value;
     else if (flag == "--every") {
       const double n = parsePositive(flag, value);
       if (n != std::floor(n)) throw UsageError("--every: expected a whole number > 0, got '" + value + "'");
@@ -134,8 +140,8 @@ class CsvWriter {
     std::fputs("t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz\n", file_.get());
   }
   void row(double t, const core::LinkState& s) {
-    std::fprintf(file_.get(), "%.9g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g\n",
-                 t, s.p_WL.x(), s.p_WL.y(), s.p_WL.z(), s.q_WL.x(), s.q_WL.y(), s.q_WL.z(), s.q_WL.w(), s.v_WL.x(),
+    std::fprintf(file_.get(), "%.9g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g\n", t,
+                 s.p_WL.x(), s.p_WL.y(), s.p_WL.z(), s.q_WL.x(), s.q_WL.y(), s.q_WL.z(), s.q_WL.w(), s.v_WL.x(),
                  s.v_WL.y(), s.v_WL.z(), s.w_W.x(), s.w_W.y(), s.w_W.z());
   }
 
@@ -174,7 +180,8 @@ int run(const Args& args) {
 
   const double dt = model.dt();
   const long long steps = std::llround(args.duration / dt);
-  if (steps < 1) throw UsageError("--duration " + num(args.duration) + " is shorter than one step of " + num(dt) + " s");
+  if (steps < 1)
+    throw UsageError("--duration " + num(args.duration) + " is shorter than one step of " + num(dt) + " s");
 
   core::State state;
   state.bodies = {core::bodyStateFromLink(bm, config.initial)};

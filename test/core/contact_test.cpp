@@ -6,9 +6,9 @@
 
 #include <cmath>
 
+#include "../test_util.h"
 #include "rigid_body_sim/core/diagnostics.h"
 #include "rigid_body_sim/core/step.h"
-#include "../test_util.h"
 
 namespace rigid_body_sim::test {
 namespace {
@@ -206,7 +206,8 @@ TEST(Room, ACornerGivesSeparateContactRegions) {
   // Group the contacts by normal: each group is one region, at most four points.
   std::vector<std::pair<Vec3, int>> groups;
   for (const core::Contact& c : ws.contacts) {
-    auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) { return x.first.isApprox(c.normal_W, 1e-9); });
+    auto g =
+        std::find_if(groups.begin(), groups.end(), [&](const auto& x) { return x.first.isApprox(c.normal_W, 1e-9); });
     if (g == groups.end()) {
       groups.emplace_back(c.normal_W, 1);
     } else {
@@ -266,9 +267,8 @@ TEST(Rest, ARestingBodyStaysExactlyPutAndWakesOnLoadsAndImpulses) {
 }
 
 TEST(Determinism, EveryMethodIsBitIdenticalRunToRun) {
-  for (core::ContactMethod method :
-       {core::ContactMethod::kImpulse, core::ContactMethod::kPenaltyQuadratic,
-        core::ContactMethod::kPenaltyLogBarrier, core::ContactMethod::kShapeMatching}) {
+  for (core::ContactMethod method : {core::ContactMethod::kImpulse, core::ContactMethod::kPenaltyQuadratic,
+                                     core::ContactMethod::kPenaltyLogBarrier, core::ContactMethod::kShapeMatching}) {
     core::ContactSettings c = impulse(0.3, 0.5);
     c.method = method;
     const core::Model model(onGround(boxBody(kHalf), c));

@@ -36,8 +36,7 @@ TEST(PointMasses, ParallelAxisMatchesTheSumAboutAnotherPoint) {
 TEST(Combine, TwoBoxesMatchTheParallelAxisClosedForm) {
   // Two 1 kg cubes of side 0.2 m centred at x = 0 and x = 0.2: a 0.4 × 0.2 × 0.2 bar.
   const Mat3 cube = boxInertia(1.0, Vec3(0.1, 0.1, 0.1));
-  const core::MassProperties total =
-      core::combine({{1.0, Vec3(0, 0, 0), cube}, {1.0, Vec3(0.2, 0, 0), cube}});
+  const core::MassProperties total = core::combine({{1.0, Vec3(0, 0, 0), cube}, {1.0, Vec3(0.2, 0, 0), cube}});
   EXPECT_DOUBLE_EQ(total.mass, 2.0);
   EXPECT_LT((total.p_FC - Vec3(0.1, 0, 0)).norm(), 1e-16);
   EXPECT_LT((total.I_C_F - boxInertia(2.0, Vec3(0.2, 0.1, 0.1))).norm(), 1e-15);
@@ -58,14 +57,12 @@ TEST(Validate, RefusesWithTheFieldAndTheValue) {
   asym(0, 1) = 0.1;
   expectThrowsWith<std::invalid_argument>([&] { core::validateInertia(asym, "inertia"); },
                                           {"ixy=0.1", "must be symmetric"});
-  expectThrowsWith<std::invalid_argument>(
-      [&] { core::validateInertia(Vec3(1.0, -1.0, 1.0).asDiagonal(), "inertia"); },
-      {"iyy=-1", "must be positive definite"});
+  expectThrowsWith<std::invalid_argument>([&] { core::validateInertia(Vec3(1.0, -1.0, 1.0).asDiagonal(), "inertia"); },
+                                          {"iyy=-1", "must be positive definite"});
   expectThrowsWith<std::invalid_argument>([&] { core::validateInertia(Mat3::Zero(), "inertia"); },
                                           {"must be positive definite"});
-  expectThrowsWith<std::invalid_argument>(
-      [&] { core::validateInertia(Vec3(1.0, 1.0, 3.0).asDiagonal(), "inertia"); },
-      {"izz=3", "triangle inequality", "1 + 1 < 3"});
+  expectThrowsWith<std::invalid_argument>([&] { core::validateInertia(Vec3(1.0, 1.0, 3.0).asDiagonal(), "inertia"); },
+                                          {"izz=3", "triangle inequality", "1 + 1 < 3"});
 }
 
 TEST(PrincipalAxes, DiagonalStaysExactlyIdentity) {

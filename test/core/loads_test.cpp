@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "rigid_body_sim/core/step.h"
 #include "../test_util.h"
+#include "rigid_body_sim/core/step.h"
 
 namespace rigid_body_sim::test {
 namespace {

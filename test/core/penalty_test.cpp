@@ -4,9 +4,9 @@
 
 #include <cmath>
 
+#include "../test_util.h"
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/step.h"
-#include "../test_util.h"
 
 namespace rigid_body_sim::test {
 namespace {

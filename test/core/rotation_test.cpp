@@ -6,9 +6,9 @@
 #include <cmath>
 #include <vector>
 
+#include "../test_util.h"
 #include "rigid_body_sim/core/diagnostics.h"
 #include "rigid_body_sim/core/step.h"
-#include "../test_util.h"
 
 namespace rigid_body_sim::test {
 namespace {

@@ -35,11 +35,11 @@ TEST(Sdf, Sphere) {
 }
 
 TEST(Sdf, BoxFacesEdgesCornersAndInside) {
-  const Sdf box = Sdf::box(Vec3(2, 4, 6));  // half extents 1, 2, 3
-  expectSdf(box, Vec3(1.5, 0.3, -1), 0.5, Vec3::UnitX());                        // face region
-  expectSdf(box, Vec3(-5, -5, 0), 5.0, Vec3(-0.8, -0.6, 0));                     // edge region: (4, 3) away
-  expectSdf(box, Vec3(3, 4, 5), std::sqrt(12.0), Vec3(1, 1, 1).normalized());   // corner region
-  expectSdf(box, Vec3(0.2, 1.5, 0), -0.5, Vec3::UnitY());                        // inside: nearest face
+  const Sdf box = Sdf::box(Vec3(2, 4, 6));                                     // half extents 1, 2, 3
+  expectSdf(box, Vec3(1.5, 0.3, -1), 0.5, Vec3::UnitX());                      // face region
+  expectSdf(box, Vec3(-5, -5, 0), 5.0, Vec3(-0.8, -0.6, 0));                   // edge region: (4, 3) away
+  expectSdf(box, Vec3(3, 4, 5), std::sqrt(12.0), Vec3(1, 1, 1).normalized());  // corner region
+  expectSdf(box, Vec3(0.2, 1.5, 0), -0.5, Vec3::UnitY());                      // inside: nearest face
   expectSdf(box, Vec3(0, 0, -2.9), -0.1, -Vec3::UnitZ());
 }
 
@@ -52,12 +52,12 @@ TEST(Sdf, Capsule) {
 }
 
 TEST(Sdf, Cylinder) {
-  const Sdf cyl = Sdf::cylinder(1.0, 2.0);  // radius 1, z ∈ [−1, 1]
-  expectSdf(cyl, Vec3(0, 3, 0.5), 2.0, Vec3::UnitY());                           // side
-  expectSdf(cyl, Vec3(0.5, 0, 1.5), 0.5, Vec3::UnitZ());                          // cap
-  expectSdf(cyl, Vec3(4, 0, -5), 5.0, Vec3(0.6, 0, -0.8));                        // beyond the rim: (3, 4)
-  expectSdf(cyl, Vec3(0.8, 0, 0), -0.2, Vec3::UnitX());                           // inside, nearer the side
-  expectSdf(cyl, Vec3(0, 0.1, -0.95), -0.05, -Vec3::UnitZ());                     // inside, nearer a cap
+  const Sdf cyl = Sdf::cylinder(1.0, 2.0);                     // radius 1, z ∈ [−1, 1]
+  expectSdf(cyl, Vec3(0, 3, 0.5), 2.0, Vec3::UnitY());         // side
+  expectSdf(cyl, Vec3(0.5, 0, 1.5), 0.5, Vec3::UnitZ());       // cap
+  expectSdf(cyl, Vec3(4, 0, -5), 5.0, Vec3(0.6, 0, -0.8));     // beyond the rim: (3, 4)
+  expectSdf(cyl, Vec3(0.8, 0, 0), -0.2, Vec3::UnitX());        // inside, nearer the side
+  expectSdf(cyl, Vec3(0, 0.1, -0.95), -0.05, -Vec3::UnitZ());  // inside, nearer a cap
 }
 
 TEST(Sdf, TransformMovesTheShape) {
@@ -127,8 +127,8 @@ TEST(Sdf, DifferenceMakesARoom) {
   expectSdf(room, Vec3(0, 0, 0.3), 0.3, Vec3::UnitZ());     // above the floor
   expectSdf(room, Vec3(0.9, 0, 0.5), 0.1, -Vec3::UnitX());  // near the +x wall, inside the room
   expectSdf(room, Vec3(0, -0.8, 0.5), 0.2, Vec3::UnitY());
-  EXPECT_LT(room.eval(Vec3(1.05, 0, 0.5)), 0.0);              // inside the wall
-  EXPECT_GT(room.eval(Vec3(0, 0, 5)), 0.0);                   // open top
+  EXPECT_LT(room.eval(Vec3(1.05, 0, 0.5)), 0.0);  // inside the wall
+  EXPECT_GT(room.eval(Vec3(0, 0, 5)), 0.0);       // open top
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "rigid_body_sim/core/step.h"
 #include "../test_util.h"
+#include "rigid_body_sim/core/step.h"
 
 namespace rigid_body_sim::test {
 namespace {
@@ -26,8 +26,8 @@ TEST(Polar, RecoversAKnownRotationExactly) {
 TEST(Polar, ReflectedOrDegenerateInputStillGivesAProperRotation) {
   const Mat3 R = Quat(Eigen::AngleAxisd(0.8, Vec3::UnitX())).toRotationMatrix();
   const Mat3 mirror = Vec3(1, 1, -1).asDiagonal();
-  expectProperRotation(core::polarRotation(R * mirror));  // det A < 0
-  expectProperRotation(core::polarRotation(Vec3(1, 2, 0).asDiagonal()));       // rank 2
+  expectProperRotation(core::polarRotation(R * mirror));                                 // det A < 0
+  expectProperRotation(core::polarRotation(Vec3(1, 2, 0).asDiagonal()));                 // rank 2
   expectProperRotation(core::polarRotation(Vec3(1, 0, 0) * Vec3(0, 1, 1).transpose()));  // rank 1
   expectProperRotation(core::polarRotation(Mat3::Zero()));
 }

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "rigid_body_sim/core/diagnostics.h"
 #include "../test_util.h"
+#include "rigid_body_sim/core/diagnostics.h"
 
 namespace rigid_body_sim::test {
 namespace {

@@ -3,9 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include "../test_util.h"
 #include "rigid_body_sim/core/sdf_surface.h"
 #include "rigid_body_sim/core/step.h"
-#include "../test_util.h"
 
 namespace rigid_body_sim::test {
 namespace {

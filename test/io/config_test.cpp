@@ -69,12 +69,12 @@ scene:
       - {type: box, size: [2, 2, 1.5], position: [0, 0, 0.75]}
 )");
   ASSERT_EQ(c.model.scene.size(), 6u);
-  EXPECT_DOUBLE_EQ(c.model.scene[0].eval(Vec3(1, 1, 1)), 2.0);               // normal normalized
-  EXPECT_NEAR(c.model.scene[1].eval(Vec3(5, 0.6, 0)), 0.1, 1e-12);           // turned: its x is world y
+  EXPECT_DOUBLE_EQ(c.model.scene[0].eval(Vec3(1, 1, 1)), 2.0);      // normal normalized
+  EXPECT_NEAR(c.model.scene[1].eval(Vec3(5, 0.6, 0)), 0.1, 1e-12);  // turned: its x is world y
   EXPECT_NEAR(c.model.scene[2].eval(Vec3(0, 5, 1)), 0.5, 1e-12);
   EXPECT_NEAR(c.model.scene[3].eval(Vec3(0, 0, 1.5)), 0.8, 1e-12);
   EXPECT_NEAR(c.model.scene[4].eval(Vec3(1, 0, 0)), 0.8, 1e-12);
-  EXPECT_NEAR(c.model.scene[5].eval(Vec3(0, 0, 10.3)), 0.3, 1e-12);          // the room's floor, moved up
+  EXPECT_NEAR(c.model.scene[5].eval(Vec3(0, 0, 10.3)), 0.3, 1e-12);  // the room's floor, moved up
   EXPECT_TRUE(parse("scene: []").model.scene.empty());
 }
 
@@ -163,8 +163,8 @@ initial:
 TEST(Config, RpyFollowsTheUrdfConvention) {
   // Fixed axes: roll about x first, then pitch about y, then yaw about z.
   const io::SimConfig c = parse("initial: {rpy: [1.5707963267948966, 0, 1.5707963267948966]}");
-  EXPECT_LT((c.initial.q_WL * Vec3::UnitY() - Vec3(0, 0, 1)).norm(), 1e-15);   // roll: y → z, yaw keeps z
-  EXPECT_LT((c.initial.q_WL * Vec3::UnitX() - Vec3(0, 1, 0)).norm(), 1e-15);   // yaw: x → y
+  EXPECT_LT((c.initial.q_WL * Vec3::UnitY() - Vec3(0, 0, 1)).norm(), 1e-15);  // roll: y → z, yaw keeps z
+  EXPECT_LT((c.initial.q_WL * Vec3::UnitX() - Vec3(0, 1, 0)).norm(), 1e-15);  // yaw: x → y
 }
 
 TEST(Config, OverridesSetAnyKeyWithAYamlValue) {

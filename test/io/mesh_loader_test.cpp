@@ -2,21 +2,21 @@
 // shipped bunny dropping onto the ground.
 #include "rigid_body_sim/io/mesh_loader.h"
 
-#include <assimp/Exporter.hpp>
-#include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <assimp/Exporter.hpp>
+#include <assimp/Importer.hpp>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
+#include "../test_util.h"
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/io/urdf_loader.h"
-#include "../test_util.h"
 
 namespace rigid_body_sim::test {
 namespace {
@@ -143,10 +143,18 @@ TEST(UrdfCollision, BadGeometryIsRefusedNamingTheLink) {
   const std::string head = R"(<robot name="r"><link name="base">
       <inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>)";
   expectThrowsWith<io::UrdfError>(
-      [&] { io::loadUrdfString(head + R"(<collision><geometry><sphere radius="0"/></geometry></collision></link></robot>)", "t"); },
+      [&] {
+        io::loadUrdfString(head + R"(<collision><geometry><sphere radius="0"/></geometry></collision></link></robot>)",
+                           "t");
+      },
       {"link 'base' <collision> 0", "sphere radius = 0"});
   expectThrowsWith<io::UrdfError>(
-      [&] { io::loadUrdfString(head + R"(<collision><geometry><mesh filename="file:///nope/x.stl"/></geometry></collision></link></robot>)", "t"); },
+      [&] {
+        io::loadUrdfString(
+            head +
+                R"(<collision><geometry><mesh filename="file:///nope/x.stl"/></geometry></collision></link></robot>)",
+            "t");
+      },
       {"link 'base' <collision> 0", "/nope/x.stl"});
 }
 

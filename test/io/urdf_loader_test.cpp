@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "../test_util.h"
 #include "rigid_body_sim/core/inertia.h"
 #include "rigid_body_sim/core/state.h"
-#include "../test_util.h"
 
 namespace rigid_body_sim::test {
 namespace {
@@ -17,13 +17,13 @@ std::string link(const std::string& name, const std::string& inertial) {
   return "<link name='" + name + "'>" + inertial + "</link>";
 }
 
-std::string inertial(double mass, const std::string& origin = "", const std::string& inertia =
-                                                                      "ixx='0.1' iyy='0.2' izz='0.25' ixy='0' ixz='0' iyz='0'") {
+std::string inertial(double mass, const std::string& origin = "",
+                     const std::string& inertia = "ixx='0.1' iyy='0.2' izz='0.25' ixy='0' ixz='0' iyz='0'") {
   return "<inertial>" + origin + "<mass value='" + std::to_string(mass) + "'/><inertia " + inertia + "/></inertial>";
 }
 
-std::string joint(const std::string& name, const std::string& type, const std::string& parent,
-                  const std::string& child, const std::string& xyz, const std::string& rpy = "0 0 0") {
+std::string joint(const std::string& name, const std::string& type, const std::string& parent, const std::string& child,
+                  const std::string& xyz, const std::string& rpy = "0 0 0") {
   return "<joint name='" + name + "' type='" + type + "'><parent link='" + parent + "'/><child link='" + child +
          "'/><origin xyz='" + xyz + "' rpy='" + rpy + "'/>" + (type == "fixed" ? "" : "<axis xyz='0 0 1'/>") +
          "</joint>";
@@ -72,9 +72,9 @@ TEST(UrdfLoader, ChainsOfFixedJointsComposeTheirTransforms) {
   const core::BodySpec b = load(xml);
   EXPECT_DOUBLE_EQ(b.mass, 4.0);
   EXPECT_LT((b.p_LC - Vec3(0.25, 0.125, 0.0)).norm(), 1e-15);  // (2·0 + 1·(0.5,0) + 1·(0.5,0.5)) / 4
-  const core::MassProperties expected = core::combine(
-      {{2.0, Vec3::Zero(), Vec3(0.1, 0.2, 0.25).asDiagonal()}, {1.0, Vec3(0.5, 0, 0), Mat3::Zero()},
-       {1.0, Vec3(0.5, 0.5, 0), Mat3::Zero()}});
+  const core::MassProperties expected = core::combine({{2.0, Vec3::Zero(), Vec3(0.1, 0.2, 0.25).asDiagonal()},
+                                                       {1.0, Vec3(0.5, 0, 0), Mat3::Zero()},
+                                                       {1.0, Vec3(0.5, 0.5, 0), Mat3::Zero()}});
   EXPECT_LT((b.I_C_L - expected.I_C_F).norm(), 1e-14);
 }
 
@@ -108,8 +108,8 @@ TEST(UrdfLoader, RefusesAMovableJoint) {
 }
 
 TEST(UrdfLoader, RefusesALinkWithoutInertial) {
-  const std::string xml = robot(link("base", inertial(1.0)) + link("sensor", "") +
-                                joint("mount", "fixed", "base", "sensor", "0 0 0.1"));
+  const std::string xml =
+      robot(link("base", inertial(1.0)) + link("sensor", "") + joint("mount", "fixed", "base", "sensor", "0 0 0.1"));
   expectRefused(xml, {"link 'sensor' has no <inertial>"});
 }
 

@@ -1,6 +1,7 @@
 // The node as its users meet it: services called, topics received. Each
 // .test in this folder starts sim_node with its own parameters and runs one
 // suite of this file (--gtest_filter).
+#include <geometry_msgs/WrenchStamped.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -9,7 +10,6 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
-#include <geometry_msgs/WrenchStamped.h>
 
 #include <cmath>
 #include <cstdio>
@@ -56,8 +56,8 @@ bool spinUntil(const std::function<bool()>& done, double seconds) {
 class Node : public ::testing::Test {
  protected:
   void SetUp() override {
-    for (const char* s : {"get_state", "set_state", "apply_wrench", "apply_impulse", "clear_wrenches", "step",
-                          "pause", "unpause", "reset"}) {
+    for (const char* s : {"get_state", "set_state", "apply_wrench", "apply_impulse", "clear_wrenches", "step", "pause",
+                          "unpause", "reset"}) {
       ASSERT_TRUE(ros::service::waitForService(std::string("/sim_node/") + s, 30000)) << s;
     }
   }
@@ -89,7 +89,7 @@ class Node : public ::testing::Test {
   }
 
   rigid_body_sim::ApplyWrench::Response wrench(const std::string& frame, const geometry_msgs::Vector3& force,
-                                              double duration, const geometry_msgs::Vector3& torque = vec(0, 0, 0)) {
+                                               double duration, const geometry_msgs::Vector3& torque = vec(0, 0, 0)) {
     rigid_body_sim::ApplyWrench w;
     w.request.frame = frame;
     w.request.force = force;
@@ -99,7 +99,7 @@ class Node : public ::testing::Test {
   }
 
   rigid_body_sim::ApplyImpulse::Response impulse(const std::string& frame, const geometry_msgs::Vector3& linear,
-                                                const geometry_msgs::Point& point = geometry_msgs::Point()) {
+                                                 const geometry_msgs::Point& point = geometry_msgs::Point()) {
     rigid_body_sim::ApplyImpulse i;
     i.request.frame = frame;
     i.request.linear = linear;
@@ -121,8 +121,8 @@ TEST_F(FreeFall, OdometryFollowsTheClosedForm) {
   // Dropped from 50 m at t = 0; stamps are sim times. Euler-Cromer gives
   // z(t) = z₀ − ½ g t (t + Δt): the closed form plus its first-order term.
   std::vector<nav_msgs::Odometry> msgs;
-  const ros::Subscriber sub =
-      nh_.subscribe<nav_msgs::Odometry>("/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { msgs.push_back(*m); });
+  const ros::Subscriber sub = nh_.subscribe<nav_msgs::Odometry>(
+      "/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { msgs.push_back(*m); });
   ASSERT_TRUE(spinUntil([&] { return msgs.size() >= 60; }, 30.0));
   for (const auto& m : msgs) {
     const double t = m.header.stamp.toSec();
@@ -144,8 +144,8 @@ TEST_F(Tf, LookupEqualsTheOdometryPose) {
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
   std::vector<nav_msgs::Odometry> msgs;
-  const ros::Subscriber sub =
-      nh_.subscribe<nav_msgs::Odometry>("/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { msgs.push_back(*m); });
+  const ros::Subscriber sub = nh_.subscribe<nav_msgs::Odometry>(
+      "/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { msgs.push_back(*m); });
   ASSERT_TRUE(spinUntil([&] { return msgs.size() >= 50; }, 30.0));
   ros::WallDuration(0.2).sleep();
   ros::spinOnce();
@@ -220,10 +220,11 @@ TEST_F(BodyFrameWrench, PushesAlongTheRotatedAxis) {
   // Odometry carries its twist in child_frame_id, the body (not the world, gazebo_ros #1026).
   nav_msgs::Odometry odom;
   bool got = false;
-  const ros::Subscriber sub = nh_.subscribe<nav_msgs::Odometry>("/odom", 10, [&](const nav_msgs::Odometry::ConstPtr& m) {
-    odom = *m;
-    got = true;
-  });
+  const ros::Subscriber sub =
+      nh_.subscribe<nav_msgs::Odometry>("/odom", 10, [&](const nav_msgs::Odometry::ConstPtr& m) {
+        odom = *m;
+        got = true;
+      });
   ASSERT_TRUE(spinUntil([&] { return sub.getNumPublishers() > 0; }, 10.0));
   ASSERT_TRUE(step(10).success);  // a new stamp to publish at
   ASSERT_TRUE(spinUntil([&] { return got; }, 10.0));
@@ -465,16 +466,19 @@ TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
     std::string name, urdf, expected;
   } cases[] = {
       {"no_inertial", head + kCollision + "</link></robot>", "link 'base' has no <inertial>"},
-      {"zero_mass", head + "<inertial><mass value='0'/><inertia ixx='0' iyy='0' izz='0' ixy='0' ixz='0' iyz='0'/></inertial>" +
-                        kCollision + "</link></robot>",
+      {"zero_mass",
+       head + "<inertial><mass value='0'/><inertia ixx='0' iyy='0' izz='0' ixy='0' ixz='0' iyz='0'/></inertial>" +
+           kCollision + "</link></robot>",
        "total mass of 0 kg"},
-      {"bad_inertia", head + "<inertial><mass value='1'/><inertia ixx='1' iyy='1' izz='3' ixy='0' ixz='0' iyz='0'/></inertial>" +
-                          kCollision + "</link></robot>",
+      {"bad_inertia",
+       head + "<inertial><mass value='1'/><inertia ixx='1' iyy='1' izz='3' ixy='0' ixz='0' iyz='0'/></inertial>" +
+           kCollision + "</link></robot>",
        "triangle inequality"},
-      {"movable", head + "<inertial><mass value='1'/>" + kInertia + "</inertial>" + kCollision +
-                      "</link><link name='wheel'><inertial><mass value='1'/>" + kInertia +
-                      "</inertial></link><joint name='axle' type='continuous'><parent link='base'/>"
-                      "<child link='wheel'/><axis xyz='0 0 1'/></joint></robot>",
+      {"movable",
+       head + "<inertial><mass value='1'/>" + kInertia + "</inertial>" + kCollision +
+           "</link><link name='wheel'><inertial><mass value='1'/>" + kInertia +
+           "</inertial></link><joint name='axle' type='continuous'><parent link='base'/>"
+           "<child link='wheel'/><axis xyz='0 0 1'/></joint></robot>",
        "joint 'axle' is continuous"},
       {"no_collision", head + "<inertial><mass value='1'/>" + kInertia + "</inertial></link></robot>",
        "no <collision> geometry"},
@@ -487,7 +491,8 @@ TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
     EXPECT_NE(out.find(c.expected), std::string::npos) << c.name << ": " << out;
   }
   // A bad parameter stops it too, naming the key.
-  const std::string good = head + "<inertial><mass value='1'/>" + kInertia + "</inertial>" + kCollision + "</link></robot>";
+  const std::string good =
+      head + "<inertial><mass value='1'/>" + kInertia + "</inertial>" + kCollision + "</link></robot>";
   ros::param::set("/bad_param/sim_node/dt", -0.001);
   const auto [code, out] = runNode("/bad_param", good);
   EXPECT_EQ(code, 1) << out;

@@ -12,23 +12,23 @@ namespace rigid_body_sim::core {
 
 /// One contact point of a body against one scene item.
 struct Contact {
-  int body = 0;                    ///< index in the model
-  int item = 0;                    ///< index in model.scene()
-  int point = 0;                   ///< index in the body's contact points
-  Vec3 normal_W = Vec3::UnitZ();   ///< unit, out of the scene toward the body (∇φ)
-  Vec3 r_W = Vec3::Zero();         ///< contact point relative to the centre of mass, world axes (m)
-  double separation = 0.0;         ///< φ − radius (m): < 0 penetrating, > 0 not yet touching
+  int body = 0;                   ///< index in the model
+  int item = 0;                   ///< index in model.scene()
+  int point = 0;                  ///< index in the body's contact points
+  Vec3 normal_W = Vec3::UnitZ();  ///< unit, out of the scene toward the body (∇φ)
+  Vec3 r_W = Vec3::Zero();        ///< contact point relative to the centre of mass, world axes (m)
+  double separation = 0.0;        ///< φ − radius (m): < 0 penetrating, > 0 not yet touching
 
   // Impulse solver data (set by solveContactImpulses). With K the notes'
   // 3×3 matrix of the point, the solver needs nᵀKn and the 2×2 TᵀKT, and the
   // angular velocity an impulse along n, t₁, t₂ gives: I⁻¹ (r × n) etc.
   Vec3 tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();
   Vec3 turn_n = Vec3::Zero(), turn_t1 = Vec3::Zero(), turn_t2 = Vec3::Zero();  ///< I⁻¹ (r × ·), 1/(kg·m)
-  double normal_mass = 0.0;        ///< 1 / (nᵀ K n), kg
-  Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();  ///< (Tᵀ K T)⁻¹, kg
-  double target_normal_velocity = 0.0;  ///< m/s
-  double predicted_separation = 0.0;    ///< m after the step, from the solved velocity (linear)
-  double normal_impulse = 0.0;     ///< accumulated λ_N ≥ 0, N·s
+  double normal_mass = 0.0;                                                    ///< 1 / (nᵀ K n), kg
+  Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();                      ///< (Tᵀ K T)⁻¹, kg
+  double target_normal_velocity = 0.0;                                         ///< m/s
+  double predicted_separation = 0.0;                          ///< m after the step, from the solved velocity (linear)
+  double normal_impulse = 0.0;                                ///< accumulated λ_N ≥ 0, N·s
   Eigen::Vector2d tangent_impulse = Eigen::Vector2d::Zero();  ///< accumulated, |λ_T| ≤ μ λ_N, N·s
 };
 

@@ -19,8 +19,7 @@ struct MassProperties {
 /// Inertia of point masses mᵢ at rᵢ about their centre of mass (the notes,
 /// corrected by ERRATA.md): I = Σ mᵢ (rᵢᵀrᵢ 𝐈 − rᵢrᵢᵀ), rᵢ measured from the
 /// centre of mass. Positions may be given in any frame; they are re-centred.
-MassProperties pointMassProperties(const std::vector<double>& masses,
-                                   const std::vector<Vec3>& positions);
+MassProperties pointMassProperties(const std::vector<double>& masses, const std::vector<Vec3>& positions);
 
 /// Parallel-axis theorem: inertia about a point O displaced by d = p_O − p_C
 /// from the centre of mass C: I_O = I_C + m (dᵀd 𝐈 − d dᵀ).

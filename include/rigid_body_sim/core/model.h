@@ -28,27 +28,27 @@ struct Damping {
 
 /// How contacts with the scene are resolved (the notes' responses).
 enum class ContactMethod {
-  kImpulse,           ///< velocity impulses J = K⁻¹Δv per contact, Coulomb friction (default)
-  kPenaltyQuadratic,  ///< f = k (ε − φ) N inside the buffer ε, plus damping
-  kPenaltyLogBarrier, ///< f = ρ (1/φ − 1/ε) N inside ε; the step shrinks so φ stays > 0
-  kShapeMatching,     ///< per-vertex update with collision and friction, then rigidify
+  kImpulse,            ///< velocity impulses J = K⁻¹Δv per contact, Coulomb friction (default)
+  kPenaltyQuadratic,   ///< f = k (ε − φ) N inside the buffer ε, plus damping
+  kPenaltyLogBarrier,  ///< f = ρ (1/φ − 1/ε) N inside ε; the step shrinks so φ stays > 0
+  kShapeMatching,      ///< per-vertex update with collision and friction, then rigidify
 };
 
 struct ContactSettings {
   ContactMethod method = ContactMethod::kImpulse;
-  double restitution = 0.0;            ///< μ_N ∈ [0, 1]
-  double friction = 0.5;               ///< μ_T (Coulomb) ≥ 0
+  double restitution = 0.0;  ///< μ_N ∈ [0, 1]
+  double friction = 0.5;     ///< μ_T (Coulomb) ≥ 0
   /// Restitution applies only above this approach speed (m/s), so a resting
   /// body does not jitter; never below 2|g|Δt (ERRATA.md), whatever is set.
   double restitution_threshold = 0.1;
-  double sample_spacing = 0.1;         ///< m between collision samples on boxes and cylinders
-  int iterations = 30;                 ///< impulse solver: most Gauss-Seidel sweeps per step
-  double position_slop = 1e-4;         ///< m of penetration left alone by the position correction
-  double penalty_stiffness = 1e4;      ///< k, N/m per contact point
-  double penalty_damping = 50.0;       ///< N·s/m per contact point (both penalty methods)
-  double penalty_buffer = 0.005;       ///< ε, m
-  double barrier_strength = 0.01;      ///< ρ, N·m per contact point
-  double barrier_buffer = 0.005;       ///< ε, m
+  double sample_spacing = 0.1;     ///< m between collision samples on boxes and cylinders
+  int iterations = 30;             ///< impulse solver: most Gauss-Seidel sweeps per step
+  double position_slop = 1e-4;     ///< m of penetration left alone by the position correction
+  double penalty_stiffness = 1e4;  ///< k, N/m per contact point
+  double penalty_damping = 50.0;   ///< N·s/m per contact point (both penalty methods)
+  double penalty_buffer = 0.005;   ///< ε, m
+  double barrier_strength = 0.01;  ///< ρ, N·m per contact point
+  double barrier_buffer = 0.005;   ///< ε, m
 };
 
 /// A body whose speed stays below these for `time` while in contact falls
@@ -74,7 +74,7 @@ struct BodySpec {
 /// Creation settings of the whole model.
 struct ModelSpec {
   std::vector<BodySpec> bodies;
-  double dt = 1e-3;                      ///< time step Δt (s)
+  double dt = 1e-3;                        ///< time step Δt (s)
   Vec3 gravity_W = Vec3(0.0, 0.0, -9.81);  ///< m/s², world frame
   Damping damping;
   /// Integrate the gyroscopic term −ω × (I ω) of Euler's equation. Off
@@ -91,15 +91,15 @@ struct ModelSpec {
 /// One body as the integrator uses it: derived and validated quantities.
 struct BodyModel {
   std::string name;
-  double mass = 1.0;                      ///< kg
-  double inv_mass = 1.0;                  ///< 1/kg
-  Vec3 inertia_B = Vec3::Ones();          ///< principal moments, kg·m²
-  Vec3 inv_inertia_B = Vec3::Ones();      ///< 1/(kg·m²)
-  Vec3 p_LB = Vec3::Zero();               ///< B's origin (the centre of mass) in L (m)
-  Quat q_LB = Quat::Identity();           ///< principal axes B in L
-  Mat3 I_C_L = Mat3::Identity();          ///< inertia about the centre of mass in L axes, as given
+  double mass = 1.0;                         ///< kg
+  double inv_mass = 1.0;                     ///< 1/kg
+  Vec3 inertia_B = Vec3::Ones();             ///< principal moments, kg·m²
+  Vec3 inv_inertia_B = Vec3::Ones();         ///< 1/(kg·m²)
+  Vec3 p_LB = Vec3::Zero();                  ///< B's origin (the centre of mass) in L (m)
+  Quat q_LB = Quat::Identity();              ///< principal axes B in L
+  Mat3 I_C_L = Mat3::Identity();             ///< inertia about the centre of mass in L axes, as given
   std::vector<ContactPoint> contact_points;  ///< collision samples, body frame B, extreme ones first
-  std::size_t extreme_points = 0;         ///< how many of contact_points are extreme (see ContactPoint)
+  std::size_t extreme_points = 0;            ///< how many of contact_points are extreme (see ContactPoint)
   /// The extreme points again as columns (x, y, z, radius), so the plane
   /// test over a large mesh runs as vector arithmetic.
   std::vector<double> extreme_x, extreme_y, extreme_z, extreme_radius;
@@ -112,7 +112,7 @@ struct BodyModel {
     double radius = 0.0;             ///< m, includes the points' own radii
   };
   std::vector<PointGroup> extreme_groups;
-  double bound_radius = 0.0;              ///< m: every contact point lies within it of the centre of mass
+  double bound_radius = 0.0;  ///< m: every contact point lies within it of the centre of mass
   /// Shape matching: the mean of the contact points (B) and (Σ r̄ r̄ᵀ)⁻¹ of
   /// the points about it; empty when the points do not span three dimensions.
   Vec3 points_centroid_B = Vec3::Zero();

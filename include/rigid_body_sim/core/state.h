@@ -22,8 +22,8 @@ struct BodyState {
   double still_time = 0.0;  ///< s spent below the sleep speeds
 
   bool operator==(const BodyState& o) const {
-    return p_WB == o.p_WB && v_WB == o.v_WB && q_WB.coeffs() == o.q_WB.coeffs() && w_B == o.w_B &&
-           asleep == o.asleep && still_time == o.still_time;
+    return p_WB == o.p_WB && v_WB == o.v_WB && q_WB.coeffs() == o.q_WB.coeffs() && w_B == o.w_B && asleep == o.asleep &&
+           still_time == o.still_time;
   }
 };
 
@@ -31,11 +31,11 @@ struct BodyState {
 /// step's solve (warm starting, as Box2D and Bullet do): a resting body's
 /// contacts then converge in one sweep instead of fifteen.
 struct ContactImpulse {
-  int body = 0;                    ///< the body
-  int item = 0;                    ///< the scene item it touched
-  int point = 0;                   ///< the body's contact point
-  double normal = 0.0;             ///< λ_N, N·s
-  Vec3 tangent_W = Vec3::Zero();   ///< λ_T, N·s, world frame
+  int body = 0;                   ///< the body
+  int item = 0;                   ///< the scene item it touched
+  int point = 0;                  ///< the body's contact point
+  double normal = 0.0;            ///< λ_N, N·s
+  Vec3 tangent_W = Vec3::Zero();  ///< λ_T, N·s, world frame
 
   bool operator==(const ContactImpulse& o) const {
     return body == o.body && item == o.item && point == o.point && normal == o.normal && tangent_W == o.tangent_W;

@@ -9,10 +9,9 @@
 //      principal axes of inertia, so the inertia tensor is diagonal in B
 #pragma once
 
-#include <cmath>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cmath>
 
 namespace rigid_body_sim::core {
 

@@ -3,9 +3,10 @@
 // private parameters through the same parser. ROS-free.
 #pragma once
 
+#include <yaml-cpp/yaml.h>
+
 #include <stdexcept>
 #include <string>
-#include <yaml-cpp/yaml.h>
 
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/state.h"

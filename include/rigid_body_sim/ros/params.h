@@ -13,14 +13,14 @@ namespace rigid_body_sim::node {
 
 /// Settings of the node itself (not of the simulation).
 struct NodeSettings {
-  double rate = 1000.0;              ///< ~rate: Hz of wall clock at which the loop ticks
-  double realtime_factor = 1.0;      ///< ~realtime_factor: sim s per wall s; 0 = as fast as possible
-  double publish_rate = 100.0;       ///< ~publish_rate: Hz of sim time for odom, tf and /clock
-  std::string world_frame = "world"; ///< ~world_frame: parent frame of the body's transform
-  double wrench_timeout = 1.0;       ///< ~wrench_timeout: s of sim time a ~wrench message is held; <= 0: forever
-  double covariance = 1e-9;          ///< ~covariance: diagonal of the odometry covariances (ground truth)
-  double scene_size = 20.0;          ///< ~scene_size: m, extent drawn for planes and unbounded shapes
-  bool report_timing = false;        ///< ~report_timing: log the tick-period jitter at shutdown
+  double rate = 1000.0;               ///< ~rate: Hz of wall clock at which the loop ticks
+  double realtime_factor = 1.0;       ///< ~realtime_factor: sim s per wall s; 0 = as fast as possible
+  double publish_rate = 100.0;        ///< ~publish_rate: Hz of sim time for odom, tf and /clock
+  std::string world_frame = "world";  ///< ~world_frame: parent frame of the body's transform
+  double wrench_timeout = 1.0;        ///< ~wrench_timeout: s of sim time a ~wrench message is held; <= 0: forever
+  double covariance = 1e-9;           ///< ~covariance: diagonal of the odometry covariances (ground truth)
+  double scene_size = 20.0;           ///< ~scene_size: m, extent drawn for planes and unbounded shapes
+  bool report_timing = false;         ///< ~report_timing: log the tick-period jitter at shutdown
 };
 
 struct NodeParams {
