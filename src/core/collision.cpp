@@ -89,7 +89,7 @@ std::vector<ContactPoint> sampleShape(const CollisionShape& shape, const Pose& X
       }
       break;
     case CollisionShape::Kind::kPoints:
-      local = shape.points_S;
+      local = shape.mesh.vertices;
       break;
   }
   std::vector<ContactPoint> points;

@@ -7,14 +7,16 @@
 namespace rigid_body_sim::core {
 namespace {
 
+// ---------------------------------------------------------------- detection
+
 /// Calls visit(item, point, separation, normal_W) for every contact point of
-/// a body with φ − radius < margin. Scene items farther than the
-/// body's bounding radius are skipped: φ is 1-Lipschitz, so
+/// a body with φ − radius < margin against the scene. Scene items farther
+/// than the body's bounding radius are skipped: φ is 1-Lipschitz, so
 /// φ(point) ≥ φ(centre) − bound_radius. Planes take a fast path: with the
 /// normal turned into the body frame, φ is one dot product per point.
 template <class Visit>
-void scanBody(const Model& model, const BodyState& s, int body, double margin, std::vector<double>& scratch,
-              Visit&& visit) {
+void scanScene(const Model& model, const BodyState& s, int body, double margin, std::vector<double>& scratch,
+               Visit&& visit) {
   const BodyModel& b = model.body(body);
   const std::vector<Sdf>& scene = model.scene();
   Mat3 R = Mat3::Zero();
@@ -57,6 +59,27 @@ void scanBody(const Model& model, const BodyState& s, int body, double margin, s
       const double separation = sdf.eval(s.p_WB + r_W, &n_W) - p.radius;
       if (separation < margin) visit(item, i, separation, n_W);
     }
+  }
+}
+
+/// The same for the points of body a against the solid of body o: each
+/// point is taken into o's frame, where the solid is.
+template <class Visit>
+void scanBody(const Model& model, const State& state, int a, int o, double margin, Visit&& visit) {
+  const BodyModel &ba = model.body(a), &bo = model.body(o);
+  if (bo.solid_B.empty()) return;
+  const Sdf& solid = bo.solid_B.front();
+  const BodyState &sa = state.bodies[a], &so = state.bodies[o];
+  const Quat q_OW = so.q_WB.conjugate();
+  const Vec3 centre_O = q_OW * (sa.p_WB - so.p_WB);
+  if (solid.eval(centre_O) - ba.bound_radius >= margin) return;
+  const Mat3 R_OA = (q_OW * sa.q_WB).toRotationMatrix();  // a's frame into o's
+  const Mat3 R_WO = so.q_WB.toRotationMatrix();
+  for (int i = 0; i < static_cast<int>(ba.contact_points.size()); ++i) {
+    const ContactPoint& p = ba.contact_points[i];
+    Vec3 n_O;
+    const double separation = solid.eval(centre_O + R_OA * p.r_B, &n_O) - p.radius;
+    if (separation < margin) visit(i, separation, Vec3(R_WO * n_O));
   }
 }
 
@@ -106,27 +129,28 @@ void reduceRegion(const std::vector<ContactCandidate>& cands, const BodyModel& b
   if (d_score > 0.0) members.push_back(kept[3]);
 }
 
-/// Turns one body's candidates into contacts: regions by item and normal
-/// direction (within about 20°; a plane is one region), each reduced to at
-/// most four points for the impulse method.
-void emitContacts(const Model& model, const BodyState& s, int body, bool reduce, Workspace& ws) {
+/// Turns one body's candidates into contacts: regions by item (or other
+/// body) and normal direction (within about 20°; a plane is one region),
+/// each reduced to at most four points for the impulse method.
+void emitContacts(const Model& model, const State& state, int body, bool reduce, Workspace& ws) {
   constexpr double kSameRegionCos = 0.94;
   const BodyModel& b = model.body(body);
+  const BodyState& s = state.bodies[body];
   std::vector<ContactCandidate>& cands = ws.candidates;
-  // Region ids; candidates arrive grouped by item.
-  int regions = 0, item_first_region = 0;
+  // Region ids; candidates arrive grouped by item (or other body).
+  int regions = 0, group_first_region = 0;
   for (std::size_t i = 0; i < cands.size(); ++i) {
-    const bool new_item = i == 0 || cands[i].item != cands[i - 1].item;
-    if (new_item) {
+    const bool new_group = i == 0 || cands[i].item != cands[i - 1].item || cands[i].other != cands[i - 1].other;
+    if (new_group) {
       ws.region_normals.clear();
-      item_first_region = regions;
-    } else if (model.scene()[cands[i].item].kind() == Sdf::Kind::kPlane) {
+      group_first_region = regions;
+    } else if (cands[i].item >= 0 && model.scene()[cands[i].item].kind() == Sdf::Kind::kPlane) {
       cands[i].region = cands[i - 1].region;  // one normal: one region
       continue;
     }
     int r = -1;
     for (std::size_t k = 0; k < ws.region_normals.size() && r < 0; ++k) {
-      if (ws.region_normals[k].dot(cands[i].normal_W) > kSameRegionCos) r = item_first_region + static_cast<int>(k);
+      if (ws.region_normals[k].dot(cands[i].normal_W) > kSameRegionCos) r = group_first_region + static_cast<int>(k);
     }
     if (r < 0) {
       ws.region_normals.push_back(cands[i].normal_W);
@@ -150,44 +174,135 @@ void emitContacts(const Model& model, const BodyState& s, int body, bool reduce,
       const ContactPoint& p = b.contact_points[cand.point];
       Contact& c = ws.contacts.emplace_back();
       c.body = body;
+      c.other = cand.other;
       c.item = cand.item;
       c.point = cand.point;
       c.normal_W = cand.normal_W;
       c.r_W = s.q_WB * p.r_B - p.radius * cand.normal_W;
+      if (c.other >= 0) c.r_other_W = s.p_WB + c.r_W - state.bodies[c.other].p_WB;
       c.separation = cand.separation;
     }
   }
 }
 
-bool keyLess(int body_a, int item_a, int point_a, int body_b, int item_b, int point_b) {
+/// Sweep and prune along x: the pairs of bodies (i < j, at least one awake)
+/// whose boxes, grown by their margins, overlap. Sorted, so the result does
+/// not depend on the order the workspace kept from the last step.
+void broadPhase(const Model& model, const State& state, Workspace& ws) {
+  const int n = static_cast<int>(model.bodyCount());
+  std::vector<int>& order = ws.sweep_order;
+  if (static_cast<int>(order.size()) != n) {
+    order.resize(n);
+    for (int i = 0; i < n; ++i) order[i] = i;
+  }
+  const auto extent = [&](int i) { return model.body(i).bound_radius + ws.margins[i]; };
+  const auto lo_x = [&](int i) { return state.bodies[i].p_WB.x() - extent(i); };
+  // Insertion sort: the bodies barely move between steps, so this is nearly linear.
+  for (int k = 1; k < n; ++k) {
+    const int v = order[k];
+    const double key = lo_x(v);
+    int m = k - 1;
+    while (m >= 0 && lo_x(order[m]) > key) {
+      order[m + 1] = order[m];
+      --m;
+    }
+    order[m + 1] = v;
+  }
+  ws.pairs.clear();
+  for (int k = 0; k < n; ++k) {
+    const int i = order[k];
+    const Vec3& pi = state.bodies[i].p_WB;
+    const double ei = extent(i), hi_x = pi.x() + ei;
+    for (int m = k + 1; m < n; ++m) {
+      const int j = order[m];
+      if (lo_x(j) > hi_x) break;
+      if (state.bodies[i].asleep && state.bodies[j].asleep) continue;
+      const Vec3 d = (state.bodies[j].p_WB - pi).cwiseAbs();
+      const double e = ei + extent(j);
+      if (d.y() <= e && d.z() <= e && d.norm() <= e) ws.pairs.emplace_back(std::min(i, j), std::max(i, j));
+    }
+  }
+  std::sort(ws.pairs.begin(), ws.pairs.end());
+}
+
+// ---------------------------------------------------------------- impulses
+
+bool keyLess(int body_a, int other_a, int item_a, int point_a, int body_b, int other_b, int item_b, int point_b) {
   if (body_a != body_b) return body_a < body_b;
+  if (other_a != other_b) return other_a < other_b;
   if (item_a != item_b) return item_a < item_b;
   return point_a < point_b;
 }
 
-/// Applies the impulse λ_N n + λ₁ t₁ + λ₂ t₂ at a contact to its body.
-void applyImpulse(const Contact& c, double inv_mass, double ln, double l1, double l2, Vec3& v, Vec3& w) {
-  v += inv_mass * (ln * c.normal_W + l1 * c.tangent1_W + l2 * c.tangent2_W);
-  w += ln * c.turn_n + l1 * c.turn_t1 + l2 * c.turn_t2;
+/// The relative velocity at a contact: `body`'s point minus the other's.
+Vec3 relativeVelocity(const Contact& c, const State& state, const std::vector<Vec3>& w_W) {
+  Vec3 u = state.bodies[c.body].v_WB + w_W[c.body].cross(c.r_W);
+  if (c.other >= 0) u -= state.bodies[c.other].v_WB + w_W[c.other].cross(c.r_other_W);
+  return u;
+}
+
+/// Applies the impulse λ_N n + λ₁ t₁ + λ₂ t₂ at a contact: + to `body`, − to the other.
+void applyImpulse(const Contact& c, double ln, double l1, double l2, State& state, std::vector<Vec3>& w_W) {
+  const Vec3 P = ln * c.normal_W + l1 * c.tangent1_W + l2 * c.tangent2_W;
+  state.bodies[c.body].v_WB += c.inv_mass * P;
+  w_W[c.body] += ln * c.turn_n + l1 * c.turn_t1 + l2 * c.turn_t2;
+  if (c.other >= 0) {
+    state.bodies[c.other].v_WB -= c.other_inv_mass * P;
+    w_W[c.other] -= ln * c.other_turn_n + l1 * c.other_turn_t1 + l2 * c.other_turn_t2;
+  }
 }
 
 /// Starts every contact from the impulse it carried last step (if it
 /// existed), applied to the bodies before the first sweep. The last step's
-/// list is sorted by (body, item, point).
+/// list is sorted by key.
 void warmStart(const Model& model, State& state, std::vector<Vec3>& w_W, std::vector<Contact>& contacts) {
   const std::vector<ContactImpulse>& last = state.contact_impulses;
   for (Contact& c : contacts) {
     const auto it = std::lower_bound(last.begin(), last.end(), c, [](const ContactImpulse& x, const Contact& y) {
-      return keyLess(x.body, x.item, x.point, y.body, y.item, y.point);
+      return keyLess(x.body, x.other, x.item, x.point, y.body, y.other, y.item, y.point);
     });
-    if (it == last.end() || it->body != c.body || it->item != c.item || it->point != c.point) continue;
+    if (it == last.end() || it->body != c.body || it->other != c.other || it->item != c.item || it->point != c.point) {
+      continue;
+    }
     c.normal_impulse = it->normal;
     c.tangent_impulse = Eigen::Vector2d(c.tangent1_W.dot(it->tangent_W), c.tangent2_W.dot(it->tangent_W));
     const double limit = model.contact().friction * c.normal_impulse;
     if (c.tangent_impulse.norm() > limit) c.tangent_impulse *= limit / c.tangent_impulse.norm();
-    applyImpulse(c, model.body(c.body).inv_mass, c.normal_impulse, c.tangent_impulse.x(), c.tangent_impulse.y(),
-                 state.bodies[c.body].v_WB, w_W[c.body]);
+    applyImpulse(c, c.normal_impulse, c.tangent_impulse.x(), c.tangent_impulse.y(), state, w_W);
   }
+}
+
+/// One Gauss-Seidel update of one contact, on the accumulated impulses given:
+/// friction first (it matters less than not sinking), then the normal to
+/// reach `target` (m/s). Returns the velocity change it made (m/s).
+double sweepContact(Contact& c, double& normal, Eigen::Vector2d& tangent, double target, double friction,
+                    State& state, std::vector<Vec3>& w_W) {
+  // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows. Otherwise
+  // slide: a point that is clearly slipping gets the full μ λ_N against its
+  // slip (Coulomb's sliding friction opposes the slip, whatever K's
+  // rotational coupling makes of the sticking impulse); near sticking, the
+  // sticking impulse is scaled into the cone.
+  constexpr double kSlipSpeed = 1e-3;  // m/s
+  Vec3 u = relativeVelocity(c, state, w_W);
+  const Eigen::Vector2d vt(c.tangent1_W.dot(u), c.tangent2_W.dot(u));
+  Eigen::Vector2d lt = tangent - c.tangent_mass * vt;
+  const double limit = friction * normal;
+  const double stick = lt.norm();
+  if (stick > limit) {
+    const double slip = vt.norm();
+    lt = slip > kSlipSpeed ? Eigen::Vector2d(-limit / slip * vt) : Eigen::Vector2d(lt * (limit / stick));
+  }
+  const Eigen::Vector2d dlt = lt - tangent;
+  tangent = lt;
+  applyImpulse(c, 0.0, dlt.x(), dlt.y(), state, w_W);
+  // Normal: reach the target velocity, never pull (λ_N ≥ 0).
+  u = relativeVelocity(c, state, w_W);
+  const double vn = c.normal_W.dot(u);
+  const double ln = std::max(normal - c.normal_mass * (vn - target), 0.0);
+  const double dln = ln - normal;
+  normal = ln;
+  applyImpulse(c, dln, 0.0, 0.0, state, w_W);
+  return (std::abs(dln) + dlt.norm()) / c.normal_mass;
 }
 
 Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
@@ -200,29 +315,79 @@ Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
 void detectContacts(const Model& model, const State& state, double h, Workspace& ws) {
   ws.contacts.clear();
   ws.deepest_penetration = 0.0;
-  if (model.scene().empty()) {
-    ws.in_contact.clear();  // no scene, no contact (and no allocation)
+  const int n = static_cast<int>(model.bodyCount());
+  const bool multi = n > 1;
+  if (model.scene().empty() && !multi) {
+    ws.in_contact.clear();  // no scene, no other body: no contact (and no allocation)
     return;
   }
   ws.in_contact.assign(model.bodyCount(), 0);
   const ContactSettings& cs = model.contact();
   const bool impulse = cs.method == ContactMethod::kImpulse;
-  for (int body = 0; body < static_cast<int>(model.bodyCount()); ++body) {
+  const auto margin = [&](int body) {
+    if (cs.method == ContactMethod::kPenaltyQuadratic) return cs.penalty_buffer;
+    if (cs.method == ContactMethod::kPenaltyLogBarrier) return cs.barrier_buffer;
+    return speculativeMargin(model.body(body), state.bodies[body], h, cs.position_slop);
+  };
+  const auto note = [&](int body, double separation) {
+    ws.in_contact[body] = 1;
+    ws.deepest_penetration = std::max(ws.deepest_penetration, -separation);
+  };
+  // Body against body (both ways). A sleeping body that an awake one comes
+  // at, or presses into, wakes up; the state is const here, so the pair's
+  // contacts keep the sleeper as static this step and wake() runs in step().
+  if (multi && cs.method != ContactMethod::kShapeMatching) {
+    ws.margins.resize(n);
+    for (int i = 0; i < n; ++i) ws.margins[i] = state.bodies[i].asleep ? std::max(cs.position_slop, 1e-4) : margin(i);
+    broadPhase(model, state, ws);
+    for (const auto& [i, j] : ws.pairs) {
+      const double m = ws.margins[i] + ws.margins[j];
+      for (const auto& [a, o] : {std::make_pair(i, j), std::make_pair(j, i)}) {
+        ws.candidates.clear();
+        scanBody(model, state, a, o, m, [&](int point, double separation, const Vec3& normal) {
+          ws.candidates.push_back({o, -1, point, 0, separation, normal});
+          note(a, separation);
+          ws.in_contact[o] = 1;
+        });
+        if (!ws.candidates.empty()) emitContacts(model, state, a, impulse, ws);
+      }
+    }
+  }
+  if (model.scene().empty()) return;
+  for (int body = 0; body < n; ++body) {
     const BodyState& s = state.bodies[body];
     if (s.asleep) continue;
-    const BodyModel& b = model.body(body);
-    double margin = speculativeMargin(b, s, h, cs.position_slop);
-    if (cs.method == ContactMethod::kPenaltyQuadratic) margin = cs.penalty_buffer;
-    if (cs.method == ContactMethod::kPenaltyLogBarrier) margin = cs.barrier_buffer;
     ws.candidates.clear();
-    scanBody(model, s, body, margin, ws.separations, [&](int item, int point, double separation, const Vec3& n) {
-      ws.candidates.push_back({item, point, 0, separation, n});
-      ws.deepest_penetration = std::max(ws.deepest_penetration, -separation);
-    });
-    if (ws.candidates.empty()) continue;
-    ws.in_contact[body] = 1;
-    emitContacts(model, s, body, impulse, ws);
+    scanScene(model, s, body, margin(body), ws.separations,
+              [&](int item, int point, double separation, const Vec3& normal) {
+                ws.candidates.push_back({-1, item, point, 0, separation, normal});
+                note(body, separation);
+              });
+    if (!ws.candidates.empty()) emitContacts(model, state, body, impulse, ws);
   }
+}
+
+bool wakeTouchedSleepers(const Model& model, State& state, const Workspace& ws, double h) {
+  // Wake a sleeper when an awake body comes at it faster than a resting
+  // contact would (gravity's one step), or presses in deeper than the slop.
+  const double still = model.sleep().linear_velocity + model.gravity().norm() * h;
+  bool woke = false;
+  for (const Contact& c : ws.contacts) {
+    if (c.other < 0) continue;
+    BodyState &a = state.bodies[c.body], &o = state.bodies[c.other];
+    if (a.asleep == o.asleep) continue;
+    const BodyState& awake = a.asleep ? o : a;
+    BodyState& sleeper = a.asleep ? a : o;
+    const Vec3 w = awake.q_WB * awake.w_B;
+    const Vec3 arm = a.asleep ? c.r_other_W : c.r_W;
+    const double approach = std::abs(c.normal_W.dot(awake.v_WB + w.cross(arm)));
+    if (approach > still || c.separation < -model.contact().position_slop) {
+      sleeper.asleep = false;
+      sleeper.still_time = 0.0;
+      woke = true;
+    }
+  }
+  return woke;
 }
 
 void solveContactImpulses(const Model& model, State& state, double h, Workspace& ws) {
@@ -237,82 +402,96 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
   w_W.resize(model.bodyCount());
   for (std::size_t i = 0; i < model.bodyCount(); ++i) w_W[i] = state.bodies[i].q_WB * state.bodies[i].w_B;
   // Prepare each contact: the entries of the notes' K = M⁻¹𝐈 − r* I⁻¹ r*
-  // the solver needs (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n), and TᵀKT likewise),
-  // and the target normal velocity.
-  int last_body = -1;
-  Mat3 inv_I_W = Mat3::Zero();
+  // the solver needs (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n), and TᵀKT likewise, with
+  // the other body's terms added), and the target normal velocity. A
+  // sleeping body is part of the ground: no mass terms.
   for (Contact& c : ws.contacts) {
-    const BodyModel& b = model.body(c.body);
-    const BodyState& s = state.bodies[c.body];
-    if (c.body != last_body) {
-      inv_I_W = worldInverseInertia(b, s.q_WB);
-      last_body = c.body;
-    }
     const Vec3& n = c.normal_W;
     c.tangent1_W = (std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
     c.tangent2_W = n.cross(c.tangent1_W);
+    const BodyModel& b = model.body(c.body);
+    const Mat3 inv_I = worldInverseInertia(b, state.bodies[c.body].q_WB);
     const Vec3 rn = c.r_W.cross(n), r1 = c.r_W.cross(c.tangent1_W), r2 = c.r_W.cross(c.tangent2_W);
-    c.turn_n = inv_I_W * rn;
-    c.turn_t1 = inv_I_W * r1;
-    c.turn_t2 = inv_I_W * r2;
-    c.normal_mass = 1.0 / (b.inv_mass + rn.dot(c.turn_n));
+    c.inv_mass = b.inv_mass;
+    c.turn_n = inv_I * rn;
+    c.turn_t1 = inv_I * r1;
+    c.turn_t2 = inv_I * r2;
+    double knn = c.inv_mass + rn.dot(c.turn_n);
     Eigen::Matrix2d k;
-    k << b.inv_mass + r1.dot(c.turn_t1), r1.dot(c.turn_t2),  //
-        r2.dot(c.turn_t1), b.inv_mass + r2.dot(c.turn_t2);
-    c.tangent_mass = k.inverse();
-    const double vn = n.dot(s.v_WB + w_W[c.body].cross(c.r_W));
-    // Bounce if the point reaches the surface this step fast enough;
-    // otherwise it may close the gap (a speculative contact), no more.
-    const bool arrives = c.separation <= 0.0 || vn * h < -c.separation;
-    if (arrives && vn < -threshold) {
-      c.target_normal_velocity = -cs.restitution * vn;
-    } else {
-      c.target_normal_velocity = c.separation > 0.0 ? -c.separation / h : 0.0;
+    k << c.inv_mass + r1.dot(c.turn_t1), r1.dot(c.turn_t2),  //
+        r2.dot(c.turn_t1), c.inv_mass + r2.dot(c.turn_t2);
+    c.other_inv_mass = 0.0;
+    c.other_turn_n = c.other_turn_t1 = c.other_turn_t2 = Vec3::Zero();
+    if (c.other >= 0 && !state.bodies[c.other].asleep) {
+      const BodyModel& o = model.body(c.other);
+      const Mat3 inv_I_o = worldInverseInertia(o, state.bodies[c.other].q_WB);
+      const Vec3 on = c.r_other_W.cross(n), o1 = c.r_other_W.cross(c.tangent1_W), o2 = c.r_other_W.cross(c.tangent2_W);
+      c.other_inv_mass = o.inv_mass;
+      c.other_turn_n = inv_I_o * on;
+      c.other_turn_t1 = inv_I_o * o1;
+      c.other_turn_t2 = inv_I_o * o2;
+      knn += o.inv_mass + on.dot(c.other_turn_n);
+      Eigen::Matrix2d ko;
+      ko << o.inv_mass + o1.dot(c.other_turn_t1), o1.dot(c.other_turn_t2),  //
+          o2.dot(c.other_turn_t1), o.inv_mass + o2.dot(c.other_turn_t2);
+      k += ko;
     }
+    c.normal_mass = 1.0 / knn;
+    c.tangent_mass = k.inverse();
+    c.target_normal_velocity = c.separation > 0.0 ? -c.separation / h : 0.0;
     c.normal_impulse = 0.0;
     c.tangent_impulse.setZero();
   }
   warmStart(model, state, w_W, ws.contacts);
-  // Projected Gauss-Seidel: friction first, then the normal, per contact.
+
+  // Impacts first, as a sequence of simultaneous collisions: the contacts
+  // arriving faster than the threshold are solved together to separate at
+  // e × their approach speed (the pre-solve speed, for the first pass).
+  // If that sets other contacts approaching (an impulse passed along a row
+  // of touching bodies), they collide in the next pass: Newton's cradle.
+  // Each pass has its own impulses, so a collision, once resolved, does not
+  // keep pushing.
   constexpr double kTolerance = 1e-8;  // m/s of velocity change in a sweep: 1e-11 m of drift per step
+  if (cs.restitution > 0.0) {
+    const int max_passes = 2 * static_cast<int>(ws.contacts.size()) + 2;
+    std::vector<int>& hit = ws.impact_contacts;
+    for (int pass = 0; pass < max_passes; ++pass) {
+      hit.clear();
+      for (int k = 0; k < static_cast<int>(ws.contacts.size()); ++k) {
+        Contact& c = ws.contacts[k];
+        const double vn = c.normal_W.dot(relativeVelocity(c, state, w_W));
+        const bool arrives = c.separation <= 0.0 || vn * h < -c.separation;
+        if (arrives && vn < -threshold) {
+          c.impact_target = -cs.restitution * vn;
+          c.impact_normal = 0.0;
+          c.impact_tangent.setZero();
+          hit.push_back(k);
+        }
+      }
+      if (hit.empty()) break;
+      for (int sweep = 0; sweep < cs.iterations; ++sweep) {
+        double largest = 0.0;
+        for (int k : hit) {
+          Contact& c = ws.contacts[k];
+          largest = std::max(largest, sweepContact(c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction,
+                                                   state, w_W));
+        }
+        if (largest < kTolerance) break;
+      }
+    }
+  }
+  // Then projected Gauss-Seidel over every contact: no penetration, Coulomb
+  // friction; a speculative contact may close its gap, no more.
   for (int sweep = 0; sweep < cs.iterations; ++sweep) {
     double largest = 0.0;
     for (Contact& c : ws.contacts) {
-      const double inv_mass = model.body(c.body).inv_mass;
-      Vec3& v = state.bodies[c.body].v_WB;
-      Vec3& w = w_W[c.body];
-      // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows.
-      // Otherwise slide: a point that is clearly slipping gets the full
-      // μ λ_N against its slip (Coulomb's sliding friction opposes the slip,
-      // whatever K's rotational coupling makes of the sticking impulse);
-      // near sticking, the sticking impulse is scaled into the cone.
-      constexpr double kSlipSpeed = 1e-3;  // m/s
-      Vec3 u = v + w.cross(c.r_W);
-      const Eigen::Vector2d vt(c.tangent1_W.dot(u), c.tangent2_W.dot(u));
-      Eigen::Vector2d lt = c.tangent_impulse - c.tangent_mass * vt;
-      const double limit = cs.friction * c.normal_impulse;
-      const double stick = lt.norm();
-      if (stick > limit) {
-        const double slip = vt.norm();
-        lt = slip > kSlipSpeed ? Eigen::Vector2d(-limit / slip * vt) : Eigen::Vector2d(lt * (limit / stick));
-      }
-      const Eigen::Vector2d dlt = lt - c.tangent_impulse;
-      c.tangent_impulse = lt;
-      applyImpulse(c, inv_mass, 0.0, dlt.x(), dlt.y(), v, w);
-      // Normal: reach the target velocity, never pull (λ_N ≥ 0).
-      u = v + w.cross(c.r_W);
-      const double vn = c.normal_W.dot(u);
-      const double ln = std::max(c.normal_impulse - c.normal_mass * (vn - c.target_normal_velocity), 0.0);
-      const double dln = ln - c.normal_impulse;
-      c.normal_impulse = ln;
-      applyImpulse(c, inv_mass, dln, 0.0, 0.0, v, w);
-      largest = std::max(largest, (std::abs(dln) + dlt.norm()) / c.normal_mass);
+      largest = std::max(largest, sweepContact(c, c.normal_impulse, c.tangent_impulse, c.target_normal_velocity,
+                                               cs.friction, state, w_W));
     }
     if (largest < kTolerance) break;
   }
   for (Contact& c : ws.contacts) {
-    const double vn = c.normal_W.dot(state.bodies[c.body].v_WB + w_W[c.body].cross(c.r_W));
-    c.predicted_separation = c.separation + h * vn;
+    c.predicted_separation = c.separation + h * c.normal_W.dot(relativeVelocity(c, state, w_W));
   }
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     state.bodies[i].w_B = state.bodies[i].q_WB.conjugate() * w_W[i];
@@ -320,11 +499,11 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
   state.contact_impulses.clear();
   for (const Contact& c : ws.contacts) {
     const Vec3 tangent = c.tangent1_W * c.tangent_impulse.x() + c.tangent2_W * c.tangent_impulse.y();
-    state.contact_impulses.push_back({c.body, c.item, c.point, c.normal_impulse, tangent});
+    state.contact_impulses.push_back({c.body, c.other, c.item, c.point, c.normal_impulse, tangent});
   }
   std::sort(state.contact_impulses.begin(), state.contact_impulses.end(),
             [](const ContactImpulse& x, const ContactImpulse& y) {
-              return keyLess(x.body, x.item, x.point, y.body, y.item, y.point);
+              return keyLess(x.body, x.other, x.item, x.point, y.body, y.other, y.item, y.point);
             });
 }
 
@@ -344,19 +523,42 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
       const ContactPoint& p = b.contact_points[c.point];
       const Vec3 arm = s.q_WB * p.r_B;
       Vec3 n;
-      const double separation = model.scene()[c.item].eval(s.p_WB + arm, &n) - p.radius;
+      double separation;
+      BodyState* o = nullptr;
+      if (c.other < 0) {
+        separation = model.scene()[c.item].eval(s.p_WB + arm, &n) - p.radius;
+      } else {
+        o = &state.bodies[c.other];
+        Vec3 n_O;
+        separation =
+            model.body(c.other).solid_B.front().eval(o->q_WB.conjugate() * (s.p_WB + arm - o->p_WB), &n_O) - p.radius;
+        n = o->q_WB * n_O;
+        if (o->asleep) o = nullptr;  // a sleeper stays put, like the ground
+      }
       const double C = separation + slop;
       if (C >= 0.0) continue;
       deepest = std::min(deepest, C);
       const Vec3 r = arm - p.radius * n;
-      const Mat3 inv_I_W = worldInverseInertia(b, s.q_WB);
+      const Mat3 inv_I = worldInverseInertia(b, s.q_WB);
       const Vec3 rn = r.cross(n);
-      const double k = b.inv_mass + rn.dot(inv_I_W * rn);
+      double k = b.inv_mass + rn.dot(inv_I * rn);
+      Vec3 r_o = Vec3::Zero();
+      Mat3 inv_I_o = Mat3::Zero();
+      if (o != nullptr) {
+        r_o = s.p_WB + r - o->p_WB;
+        inv_I_o = worldInverseInertia(model.body(c.other), o->q_WB);
+        const Vec3 on = r_o.cross(n);
+        k += model.body(c.other).inv_mass + on.dot(inv_I_o * on);
+      }
       const Vec3 P = (-C / k) * n;  // positional impulse that closes C to first order
-      s.p_WB += b.inv_mass * P;
-      const Vec3 half_turn = 0.5 * (inv_I_W * r.cross(P));
-      s.q_WB = Quat(1.0, half_turn.x(), half_turn.y(), half_turn.z()) * s.q_WB;
-      s.q_WB.normalize();
+      const auto move = [](BodyState& x, double inv_mass, const Mat3& inv_I_W, const Vec3& arm_W, const Vec3& impulse) {
+        x.p_WB += inv_mass * impulse;
+        const Vec3 half_turn = 0.5 * (inv_I_W * arm_W.cross(impulse));
+        x.q_WB = Quat(1.0, half_turn.x(), half_turn.y(), half_turn.z()) * x.q_WB;
+        x.q_WB.normalize();
+      };
+      move(s, b.inv_mass, inv_I, r, P);
+      if (o != nullptr) move(*o, model.body(c.other).inv_mass, inv_I_o, r_o, -P);
     }
     if (deepest >= 0.0) break;
   }
@@ -365,12 +567,10 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
 void accumulatePenaltyForces(const Model& model, const State& state, const Workspace& ws, int body, Vec3& force_W,
                              Vec3& torque_W) {
   const ContactSettings& cs = model.contact();
-  const BodyState& s = state.bodies[body];
-  const Vec3 w_W = s.q_WB * s.w_B;
   const bool barrier = cs.method == ContactMethod::kPenaltyLogBarrier;
   constexpr double kStictionSpeed = 1e-3;  // m/s: friction is viscous below it (regularised Coulomb)
   for (const Contact& c : ws.contacts) {
-    if (c.body != body) continue;
+    if (c.body != body && c.other != body) continue;
     const double phi = c.separation;
     double fn = 0.0;
     if (barrier) {
@@ -381,22 +581,28 @@ void accumulatePenaltyForces(const Model& model, const State& state, const Works
       if (phi >= cs.penalty_buffer) continue;
       fn = cs.penalty_stiffness * (cs.penalty_buffer - phi);
     }
-    const Vec3 u = s.v_WB + w_W.cross(c.r_W);
+    const auto angular = [&](int i) { return state.bodies[i].q_WB * state.bodies[i].w_B; };
+    Vec3 u = state.bodies[c.body].v_WB + angular(c.body).cross(c.r_W);
+    if (c.other >= 0) u -= state.bodies[c.other].v_WB + angular(c.other).cross(c.r_other_W);
     const double vn = c.normal_W.dot(u);
     fn = std::max(fn - cs.penalty_damping * vn, 0.0);
     const Vec3 vt = u - vn * c.normal_W;
-    const double speed = vt.norm();
-    const Vec3 f = fn * c.normal_W - (cs.friction * fn / std::max(speed, kStictionSpeed)) * vt;
-    force_W += f;
-    torque_W += c.r_W.cross(f);
+    const Vec3 f = fn * c.normal_W - (cs.friction * fn / std::max(vt.norm(), kStictionSpeed)) * vt;
+    if (c.body == body) {
+      force_W += f;
+      torque_W += c.r_W.cross(f);
+    } else {  // the other side of a body-body contact: equal and opposite
+      force_W -= f;
+      torque_W -= c.r_other_W.cross(f);
+    }
   }
 }
 
 double minSeparation(const Model& model, const BodyState& s, int body, double margin) {
   double smallest = std::numeric_limits<double>::infinity();
   std::vector<double> scratch;
-  scanBody(model, s, body, margin, scratch,
-           [&](int, int, double separation, const Vec3&) { smallest = std::min(smallest, separation); });
+  scanScene(model, s, body, margin, scratch,
+            [&](int, int, double separation, const Vec3&) { smallest = std::min(smallest, separation); });
   return smallest;
 }
 

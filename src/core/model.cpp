@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "rigid_body_sim/core/inertia.h"
+#include "rigid_body_sim/core/sdf_grid.h"
 #include "validate.h"
 
 namespace rigid_body_sim::core {
@@ -87,6 +88,34 @@ void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, Bo
   if (eig.eigenvalues()(0) > 1e-12 * std::max(1.0, eig.eigenvalues()(2))) b.points_inv_spread = spread.inverse();
 }
 
+/// The body's solid in B: the union of its collision shapes, each posed by
+/// X_BS; meshes as a sampled signed-distance grid.
+void buildSolid(const BodySpec& spec, BodyModel& b) {
+  const Pose X_BL = Pose{b.q_LB, b.p_LB}.inverse();
+  std::vector<Sdf> parts;
+  for (const CollisionShape& shape : spec.collision) {
+    const Pose X_BS = X_BL * shape.X_LS;
+    switch (shape.kind) {
+      case CollisionShape::Kind::kBox: parts.push_back(Sdf::box(shape.size).transformed(X_BS)); break;
+      case CollisionShape::Kind::kSphere: parts.push_back(Sdf::sphere(shape.size.x()).transformed(X_BS)); break;
+      case CollisionShape::Kind::kCylinder:
+        parts.push_back(Sdf::cylinder(shape.size.x(), shape.size.y()).transformed(X_BS));
+        break;
+      case CollisionShape::Kind::kPoints:
+        if (shape.mesh.triangles.empty()) break;  // a point cloud has no inside
+        // The grid costs resolution³ × triangles to build: coarser for big meshes.
+        parts.push_back(
+            Sdf::grid(SdfGrid::fromMesh(shape.mesh, shape.mesh.triangles.size() > 2000 ? 20 : 32)).transformed(X_BS));
+        break;
+    }
+  }
+  if (parts.size() == 1) {
+    b.solid_B.push_back(parts.front());
+  } else if (!parts.empty()) {
+    b.solid_B.push_back(Sdf::unite(std::move(parts)));
+  }
+}
+
 BodyModel buildBody(const BodySpec& spec) {
   const std::string where = "body '" + spec.name + "': ";
   detail::requirePositive(spec.mass, where + "mass", "kg");
@@ -165,11 +194,20 @@ Model::Model(const ModelSpec& spec)
   detail::requireFinite(spec.gravity_W, "gravity");
   validateContact(spec.contact);
   validateSleep(spec.sleep);
+  for (std::size_t i = 0; i < spec.bodies.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (spec.bodies[i].name == spec.bodies[j].name) {
+        detail::fail("bodies[" + std::to_string(i) + "].name", "'" + spec.bodies[i].name + "'",
+                     "another body has this name; names must be unique");
+      }
+    }
+  }
   bodies_.reserve(spec.bodies.size());
   for (const BodySpec& b : spec.bodies) {
     bodies_.push_back(buildBody(b));
     BodyModel& body = bodies_.back();
     buildContactPoints(b, spec.contact, body);
+    if (spec.bodies.size() > 1) buildSolid(b, body);
     if (!scene_.empty() && body.contact_points.empty()) {
       detail::fail("body '" + b.name + "': collision", "none",
                    "contacts are on (the scene is not empty) but the body has no <collision> geometry; "

@@ -1,5 +1,7 @@
 #include "rigid_body_sim/core/sdf.h"
 
+#include "rigid_body_sim/core/sdf_grid.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -21,6 +23,12 @@ Sdf Sdf::sphere(double radius) { return Sdf(Kind::kSphere, Vec3(radius, 0.0, 0.0
 Sdf Sdf::box(const Vec3& size) { return Sdf(Kind::kBox, size); }
 Sdf Sdf::capsule(double radius, double length) { return Sdf(Kind::kCapsule, Vec3(radius, length, 0.0)); }
 Sdf Sdf::cylinder(double radius, double length) { return Sdf(Kind::kCylinder, Vec3(radius, length, 0.0)); }
+
+Sdf Sdf::grid(std::shared_ptr<const SdfGrid> grid) {
+  Sdf s(Kind::kGrid, Vec3::Zero());
+  s.grid_ = std::move(grid);
+  return s;
+}
 
 Sdf Sdf::unite(std::vector<Sdf> shapes) {
   if (shapes.empty()) throw std::invalid_argument("unite: needs at least one shape");
@@ -115,6 +123,9 @@ double Sdf::evalLocal(const Vec3& p, Vec3* g) const {
       if (g) *g = axial;
       return dz;
     }
+
+    case Kind::kGrid:
+      return grid_->eval(p, g);
 
     case Kind::kUnion:
     case Kind::kIntersection:

@@ -1,5 +1,7 @@
 #include "rigid_body_sim/core/sdf_surface.h"
 
+#include "rigid_body_sim/core/sdf_grid.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -37,6 +39,9 @@ std::optional<Bounds> solidBounds(const Sdf& sdf) {
       break;
     case Sdf::Kind::kCylinder:
       local = Bounds{Vec3(-k.x(), -k.x(), -0.5 * k.y()), Vec3(k.x(), k.x(), 0.5 * k.y())};
+      break;
+    case Sdf::Kind::kGrid:
+      local = Bounds{sdf.samples()->lo(), sdf.samples()->hi()};
       break;
     case Sdf::Kind::kUnion:
       for (const Sdf& c : sdf.children()) {

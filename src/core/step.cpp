@@ -139,8 +139,10 @@ void integrateOrientation(const Quat& increment, BodyState& s) {
 /// One step of length h of every awake body: the stages in order.
 void advance(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
   const std::size_t n = model.bodyCount();
-  if (!model.scene().empty()) {
+  if (!model.scene().empty() || n > 1) {
     detectContacts(model, state, h, ws);
+    // A woken body takes part from this step on: detect again with it awake.
+    if (n > 1 && wakeTouchedSleepers(model, state, ws, h)) detectContacts(model, state, h, ws);
   } else {
     ws.contacts.clear();
     ws.in_contact.clear();

@@ -5,6 +5,7 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <array>
 #include <assimp/Importer.hpp>
 #include <cstdlib>
 #include <filesystem>
@@ -74,37 +75,54 @@ std::string resolveMeshUri(const std::string& uri, const std::string& base_dir) 
                   "' not found in ROS_PACKAGE_PATH nor above the URDF's folder");
 }
 
-std::vector<core::Vec3> loadMeshVertices(const std::string& path, const core::Vec3& scale) {
+core::TriangleMesh loadMesh(const std::string& path, const core::Vec3& scale) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw MeshError("mesh '" + path + "': no such file");
   Assimp::Importer importer;
   // ROS reads mesh coordinates as they are, z up (rviz, Gazebo): a Collada
   // <up_axis> must not rotate them.
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-  // Bake node transforms into the vertices (DAE files carry them).
-  const aiScene* scene = importer.ReadFile(path, aiProcess_PreTransformVertices);
+  // Bake node transforms into the vertices (DAE files carry them); triangles only.
+  const aiScene* scene = importer.ReadFile(path, aiProcess_PreTransformVertices | aiProcess_Triangulate);
   if (scene == nullptr || scene->mNumMeshes == 0) {
     throw MeshError("mesh '" + path + "': cannot read it (" + importer.GetErrorString() + ")");
   }
-  std::vector<core::Vec3> vertices;
+  std::vector<core::Vec3> raw;
+  std::vector<std::array<int, 3>> raw_triangles;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
     const aiMesh* mesh = scene->mMeshes[m];
+    const int base = static_cast<int>(raw.size());
     for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
       const aiVector3D& p = mesh->mVertices[v];
-      vertices.emplace_back(p.x * scale.x(), p.y * scale.y(), p.z * scale.z());
+      raw.emplace_back(p.x * scale.x(), p.y * scale.y(), p.z * scale.z());
+    }
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const aiFace& face = mesh->mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines: no surface
+      raw_triangles.push_back({base + static_cast<int>(face.mIndices[0]), base + static_cast<int>(face.mIndices[1]),
+                               base + static_cast<int>(face.mIndices[2])});
     }
   }
-  // Formats repeat a vertex per face (STL) or per normal: keep each position once.
-  const auto less = [](const core::Vec3& a, const core::Vec3& b) {
-    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
-  };
-  std::sort(vertices.begin(), vertices.end(), less);
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  if (vertices.empty()) throw MeshError("mesh '" + path + "': no vertices");
-  for (const core::Vec3& v : vertices) {
+  for (const core::Vec3& v : raw) {
     if (!v.allFinite()) throw MeshError("mesh '" + path + "': a vertex is not finite");
   }
-  return vertices;
+  // Formats repeat a vertex per face (STL) or per normal: keep each position
+  // once, in a fixed order, and renumber the triangles.
+  std::vector<int> order(raw.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  const auto less = [&](int a, int b) {
+    return std::lexicographical_compare(raw[a].data(), raw[a].data() + 3, raw[b].data(), raw[b].data() + 3);
+  };
+  std::stable_sort(order.begin(), order.end(), less);
+  core::TriangleMesh out;
+  std::vector<int> index(raw.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    if (k == 0 || raw[order[k]] != raw[order[k - 1]]) out.vertices.push_back(raw[order[k]]);
+    index[order[k]] = static_cast<int>(out.vertices.size()) - 1;
+  }
+  for (const auto& t : raw_triangles) out.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
+  if (out.vertices.empty()) throw MeshError("mesh '" + path + "': no vertices");
+  return out;
 }
 
 }  // namespace rigid_body_sim::io

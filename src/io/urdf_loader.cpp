@@ -132,7 +132,7 @@ class Lumper {
           if (!scale.allFinite() || (scale.array() == 0.0).any())
             fail(where + ": mesh scale must be finite and non-zero");
           try {
-            shape.points_S = loadMeshVertices(resolveMeshUri(mesh.filename, base_dir_), scale);
+            shape.mesh = loadMesh(resolveMeshUri(mesh.filename, base_dir_), scale);
           } catch (const MeshError& e) {
             fail(where + ": " + e.what());
           }

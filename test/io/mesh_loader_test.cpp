@@ -57,7 +57,7 @@ TEST(MeshLoader, ReadsStlAndObjVerticesOnceEachAndScales) {
   writeTetrahedronStl(dir / "tet.stl");
   writeTetrahedronObj(dir / "tet.obj");
   for (const char* file : {"tet.stl", "tet.obj"}) {
-    const auto v = io::loadMeshVertices((dir / file).string(), Vec3(2, 3, 4));
+    const auto v = io::loadMesh((dir / file).string(), Vec3(2, 3, 4)).vertices;
     ASSERT_EQ(v.size(), 4u) << file;
     for (const Vec3& t : kTet) {
       const Vec3 scaled = t.cwiseProduct(Vec3(2, 3, 4));
@@ -65,9 +65,9 @@ TEST(MeshLoader, ReadsStlAndObjVerticesOnceEachAndScales) {
           << file << ": " << scaled.transpose();
     }
   }
-  EXPECT_THROW(io::loadMeshVertices((dir / "missing.stl").string(), Vec3::Ones()), io::MeshError);
+  EXPECT_THROW(io::loadMesh((dir / "missing.stl").string(), Vec3::Ones()), io::MeshError);
   std::ofstream(dir / "garbage.obj") << "this is not a mesh\n";
-  EXPECT_THROW(io::loadMeshVertices((dir / "garbage.obj").string(), Vec3::Ones()), io::MeshError);
+  EXPECT_THROW(io::loadMesh((dir / "garbage.obj").string(), Vec3::Ones()), io::MeshError);
 }
 
 TEST(MeshLoader, ReadsColladaAsRosDoesWhateverItsUpAxis) {
@@ -86,7 +86,7 @@ TEST(MeshLoader, ReadsColladaAsRosDoesWhateverItsUpAxis) {
   ASSERT_NE(at, std::string::npos);
   std::ofstream(dir / "tet_z_up.dae") << text.replace(at, 4, "Z_UP");
   for (const char* file : {"tet.dae", "tet_z_up.dae"}) {
-    const auto v = io::loadMeshVertices((dir / file).string(), Vec3::Ones());
+    const auto v = io::loadMesh((dir / file).string(), Vec3::Ones()).vertices;
     ASSERT_EQ(v.size(), 4u) << file;
     for (const Vec3& t : kTet) {
       EXPECT_TRUE(std::any_of(v.begin(), v.end(), [&](const Vec3& x) { return (x - t).norm() < 1e-6; }))
@@ -162,7 +162,7 @@ TEST(Bunny, LoadsWithoutRosAndRestsOnTheGround) {
   ::unsetenv("ROS_PACKAGE_PATH");
   const core::BodySpec bunny = io::loadUrdfFile(std::string(RBS_SOURCE_DIR) + "/urdf/bunny.urdf");
   ASSERT_EQ(bunny.collision.size(), 1u);
-  EXPECT_EQ(bunny.collision[0].points_S.size(), 162u);
+  EXPECT_EQ(bunny.collision[0].mesh.vertices.size(), 162u);
   io::SimConfig config = io::parseConfig(YAML::Load("initial: {position: [0, 0, 0.5], rpy: [0.5, 0.2, 0]}"));
   const core::Model model = io::buildModel(config, bunny);
   EXPECT_FALSE(model.body(0).q_LB.isApprox(Quat::Identity()));  // ixz ≠ 0: turned principal axes

@@ -1,5 +1,6 @@
-// Contacts with the static scene: detection by signed distance, and the
-// notes' responses (impulse, penalty). Shape matching is in shape_matching.h.
+// Contacts with the static scene and between bodies: detection by signed
+// distance, and the notes' responses (impulse, penalty). Shape matching is in
+// shape_matching.h.
 #pragma once
 
 #include <vector>
@@ -10,13 +11,17 @@
 
 namespace rigid_body_sim::core {
 
-/// One contact point of a body against one scene item.
+/// One contact point of a body against a scene item or another body: the
+/// point is one of `body`'s contact points, tested against the signed
+/// distance of the item or of the other body's solid.
 struct Contact {
   int body = 0;                   ///< index in the model
-  int item = 0;                   ///< index in model.scene()
-  int point = 0;                  ///< index in the body's contact points
-  Vec3 normal_W = Vec3::UnitZ();  ///< unit, out of the scene toward the body (∇φ)
-  Vec3 r_W = Vec3::Zero();        ///< contact point relative to the centre of mass, world axes (m)
+  int other = -1;                 ///< the other body, or -1 for a scene item
+  int item = -1;                  ///< index in model.scene(), or -1 for a body
+  int point = 0;                  ///< index in `body`'s contact points
+  Vec3 normal_W = Vec3::UnitZ();  ///< unit, out of the item (or other body) toward `body` (∇φ)
+  Vec3 r_W = Vec3::Zero();        ///< contact point relative to `body`'s centre of mass, world axes (m)
+  Vec3 r_other_W = Vec3::Zero();  ///< the same point relative to the other body's centre of mass (m)
   double separation = 0.0;        ///< φ − radius (m): < 0 penetrating, > 0 not yet touching
 
   // Impulse solver data (set by solveContactImpulses). With K the notes'
@@ -24,9 +29,14 @@ struct Contact {
   // angular velocity an impulse along n, t₁, t₂ gives: I⁻¹ (r × n) etc.
   Vec3 tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();
   Vec3 turn_n = Vec3::Zero(), turn_t1 = Vec3::Zero(), turn_t2 = Vec3::Zero();  ///< I⁻¹ (r × ·), 1/(kg·m)
+  Vec3 other_turn_n = Vec3::Zero(), other_turn_t1 = Vec3::Zero(), other_turn_t2 = Vec3::Zero();  ///< the other body's
+  double inv_mass = 0.0, other_inv_mass = 0.0;  ///< 1/kg; 0 for the scene and for a sleeping other body
   double normal_mass = 0.0;                                                    ///< 1 / (nᵀ K n), kg
   Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();                      ///< (Tᵀ K T)⁻¹, kg
-  double target_normal_velocity = 0.0;                                         ///< m/s
+  double target_normal_velocity = 0.0;  ///< m/s, for the main solve
+  double impact_target = 0.0;           ///< m/s: e × approach speed, in an impact pass
+  double impact_normal = 0.0;           ///< N·s, this impact pass's λ_N
+  Eigen::Vector2d impact_tangent = Eigen::Vector2d::Zero();  ///< N·s, this impact pass's λ_T
   double predicted_separation = 0.0;                          ///< m after the step, from the solved velocity (linear)
   double normal_impulse = 0.0;                                ///< accumulated λ_N ≥ 0, N·s
   Eigen::Vector2d tangent_impulse = Eigen::Vector2d::Zero();  ///< accumulated, |λ_T| ≤ μ λ_N, N·s
@@ -34,7 +44,8 @@ struct Contact {
 
 /// A contact point found by the detection, before the reduction.
 struct ContactCandidate {
-  int item = 0;
+  int other = -1;
+  int item = -1;
   int point = 0;
   int region = 0;
   double separation = 0.0;        ///< m
@@ -49,6 +60,11 @@ struct Workspace {
   std::vector<int> region_members;
   std::vector<Vec3> region_points;
   std::vector<double> separations;
+  /// Broad phase: bodies ordered along x, and the pairs whose boxes overlap.
+  std::vector<int> sweep_order;
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<double> margins;
+  std::vector<int> impact_contacts;
   /// Deepest penetration seen in this step's detection (m, ≥ 0).
   double deepest_penetration = 0.0;
   /// Per body: touched the scene this step (only bodies in contact may sleep).
@@ -59,21 +75,33 @@ struct Workspace {
   std::vector<Vec3> positions;
 };
 
-/// Contacts of the awake bodies against the scene at the current state:
-/// every contact point with φ − radius < margin, where the margin is the
-/// distance the body can travel in h (speculative contacts: a fast body is
-/// caught before it passes through a thin shape) or the penalty buffer.
-/// For the impulse method the points of one region (one scene item, one
-/// normal direction) are reduced to at most four that span it; separate
-/// regions (the three walls of a room's corner) stay separate.
+/// Contacts of the awake bodies, at the current state, against the scene and
+/// against each other: every contact point with φ − radius < margin, where
+/// the margin is the distance the bodies can travel in h (speculative
+/// contacts: a fast body is caught before it passes through a thin shape) or
+/// the penalty buffer. Between two bodies both ways are tested: the points
+/// of each against the other's solid (analytic for boxes, spheres and
+/// cylinders, a sampled grid for meshes); only pairs whose bounding boxes
+/// overlap are tested (sweep and prune). For the impulse method the points
+/// of one region (one item or body, one normal direction) are reduced to at
+/// most four that span it; separate regions (the three walls of a room's
+/// corner) stay separate. A sleeping body hit by an awake one wakes up.
 void detectContacts(const Model& model, const State& state, double h, Workspace& ws);
 
+/// Wakes the sleeping bodies an awake body comes at (faster than a resting
+/// contact) or presses into (deeper than the slop). Returns whether any woke.
+bool wakeTouchedSleepers(const Model& model, State& state, const Workspace& ws, double h);
+
 /// The notes' impulse response, for all contacts together: per contact the
-/// 3×3 K = M⁻¹𝐈 − (r)* I⁻¹ (r)* of the notes; normal and friction impulses
-/// solved by projected Gauss-Seidel with accumulated clamping, λ_N ≥ 0 and
-/// |λ_T| ≤ μ λ_N (Coulomb's law on the impulse, which is the notes'
-/// a = max(1 − μ_T(1+μ_N)|v_N|/|v_T|, 0) when K is isotropic); restitution
-/// from the approach speed before the solve, zero below the threshold.
+/// 3×3 K = M⁻¹𝐈 − (r)* I⁻¹ (r)* of the notes (with the other body's terms
+/// added); normal and friction impulses solved by projected Gauss-Seidel
+/// with accumulated clamping, λ_N ≥ 0 and |λ_T| ≤ μ λ_N (Coulomb's law on the
+/// impulse, which is the notes' a = max(1 − μ_T(1+μ_N)|v_N|/|v_T|, 0) when K
+/// is isotropic). Restitution first, in impact passes: the contacts arriving
+/// faster than the threshold separate at e × the approach speed they had
+/// before the solve; contacts set approaching by that collide in the next
+/// pass (a row of touching balls passes the impulse along). Warm-started
+/// from the last step's impulses.
 /// Updates v_WB and w_B of the bodies in contact.
 void solveContactImpulses(const Model& model, State& state, double h, Workspace& ws);
 
@@ -89,7 +117,7 @@ void accumulatePenaltyForces(const Model& model, const State& state, const Works
                              Vec3& torque_W);
 
 /// The smallest φ − radius of any contact point of `body` within `margin`
-/// of the scene (+infinity if none is that close).
+/// of the scene (+infinity if none is that close; other bodies not counted).
 double minSeparation(const Model& model, const BodyState& s, int body, double margin);
 
 }  // namespace rigid_body_sim::core

@@ -112,6 +112,9 @@ struct BodyModel {
     double radius = 0.0;             ///< m, includes the points' own radii
   };
   std::vector<PointGroup> extreme_groups;
+  /// The body's solid in B (the union of its collision shapes), which other
+  /// bodies' points are tested against; only built when there are several bodies.
+  std::vector<Sdf> solid_B;
   double bound_radius = 0.0;  ///< m: every contact point lies within it of the centre of mass
   /// Shape matching: the mean of the contact points (B) and (Σ r̄ r̄ᵀ)⁻¹ of
   /// the points about it; empty when the points do not span three dimensions.

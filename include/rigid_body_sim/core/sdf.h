@@ -10,12 +10,15 @@
 // the contact stage uses this to skip shapes far from a body.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "rigid_body_sim/core/types.h"
 
 namespace rigid_body_sim::core {
+
+class SdfGrid;
 
 /// A rigid transform: the pose of frame S in frame W.
 struct Pose {
@@ -29,7 +32,7 @@ struct Pose {
 
 class Sdf {
  public:
-  enum class Kind { kPlane, kSphere, kBox, kCapsule, kCylinder, kUnion, kIntersection, kDifference };
+  enum class Kind { kPlane, kSphere, kBox, kCapsule, kCylinder, kGrid, kUnion, kIntersection, kDifference };
 
   /// The half-space below the plane through `point` with outward `normal`.
   static Sdf plane(const Vec3& normal, const Vec3& point = Vec3::Zero());
@@ -41,6 +44,8 @@ class Sdf {
   static Sdf capsule(double radius, double length);
   /// A cylinder of `radius` and `length` (m) along z, centred.
   static Sdf cylinder(double radius, double length);
+  /// A sampled signed distance (a mesh's), in the shape frame.
+  static Sdf grid(std::shared_ptr<const SdfGrid> grid);
   static Sdf unite(std::vector<Sdf> shapes);
   static Sdf intersect(std::vector<Sdf> shapes);
   /// shapes[0] with every other shape cut out of it.
@@ -59,6 +64,7 @@ class Sdf {
   /// Sphere: (radius, 0, 0). Capsule, cylinder: (radius, length, 0).
   const Vec3& params() const { return params_; }
   const std::vector<Sdf>& children() const { return children_; }
+  const SdfGrid* samples() const { return grid_.get(); }
   bool isComposite() const { return kind_ >= Kind::kUnion; }
 
  private:
@@ -70,6 +76,7 @@ class Sdf {
   Pose X_WS_;
   Pose X_SW_;  // cached inverse
   std::vector<Sdf> children_;
+  std::shared_ptr<const SdfGrid> grid_;
 };
 
 }  // namespace rigid_body_sim::core

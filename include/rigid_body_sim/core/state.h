@@ -32,20 +32,22 @@ struct BodyState {
 /// contacts then converge in one sweep instead of fifteen.
 struct ContactImpulse {
   int body = 0;                   ///< the body
-  int item = 0;                   ///< the scene item it touched
+  int other = -1;                 ///< the other body it touched, or -1
+  int item = -1;                  ///< the scene item it touched, or -1
   int point = 0;                  ///< the body's contact point
   double normal = 0.0;            ///< λ_N, N·s
   Vec3 tangent_W = Vec3::Zero();  ///< λ_T, N·s, world frame
 
   bool operator==(const ContactImpulse& o) const {
-    return body == o.body && item == o.item && point == o.point && normal == o.normal && tangent_W == o.tangent_W;
+    return body == o.body && other == o.other && item == o.item && point == o.point && normal == o.normal &&
+           tangent_W == o.tangent_W;
   }
 };
 
 struct State {
   double time = 0.0;  ///< s
   std::vector<BodyState> bodies;
-  /// Last step's contact impulses, sorted by (body, item, point).
+  /// Last step's contact impulses, sorted by (body, other, item, point).
   std::vector<ContactImpulse> contact_impulses;
 
   bool operator==(const State& o) const {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/types.h"
+#include "rigid_body_sim/core/collision.h"
 
 namespace rigid_body_sim::io {
 
@@ -23,8 +23,9 @@ class MeshError : public std::runtime_error {
 /// Throws MeshError naming the URI when nothing is found.
 std::string resolveMeshUri(const std::string& uri, const std::string& base_dir);
 
-/// The distinct vertices of every mesh in the file, node transforms applied,
-/// multiplied by `scale` (m). Throws MeshError naming the file.
-std::vector<core::Vec3> loadMeshVertices(const std::string& path, const core::Vec3& scale);
+/// Every mesh in the file as one: distinct vertices (node transforms applied,
+/// multiplied by `scale`, m) and the triangles over them. Throws MeshError
+/// naming the file.
+core::TriangleMesh loadMesh(const std::string& path, const core::Vec3& scale);
 
 }  // namespace rigid_body_sim::io

@@ -1,0 +1,42 @@
+// A signed distance sampled on a grid, for meshes (body-body contact needs
+// the distance to the other body, and a mesh has no closed form).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "rigid_body_sim/core/collision.h"
+#include "rigid_body_sim/core/types.h"
+
+namespace rigid_body_sim::core {
+
+class SdfGrid {
+ public:
+  /// Samples a closed mesh's signed distance on a grid covering it with two
+  /// cells to spare, `resolution` cells along its longest side: the distance
+  /// to the nearest triangle, negative where the generalized winding number
+  /// says inside (robust to small holes and flipped triangles).
+  static std::shared_ptr<const SdfGrid> fromMesh(const TriangleMesh& mesh, int resolution);
+
+  /// φ at p (grid frame, m), trilinear between the samples, and its gradient
+  /// (normalized). Beyond the grid: the value at the nearest grid point plus
+  /// the distance to it.
+  double eval(const Vec3& p, Vec3* gradient) const;
+
+  const Vec3& lo() const { return lo_; }
+  Vec3 hi() const { return lo_ + cell_ * Vec3(n_[0] - 1, n_[1] - 1, n_[2] - 1); }
+  double cell() const { return cell_; }
+
+ private:
+  double at(int i, int j, int k) const { return values_[(static_cast<std::size_t>(k) * n_[1] + j) * n_[0] + i]; }
+
+  Vec3 lo_ = Vec3::Zero();  ///< the first sample (m)
+  double cell_ = 1.0;       ///< m between samples
+  int n_[3] = {0, 0, 0};    ///< samples along x, y, z
+  std::vector<double> values_;
+};
+
+/// Distance from p to the triangle (a, b, c) (m).
+double pointTriangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
+}  // namespace rigid_body_sim::core

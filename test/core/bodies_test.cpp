@@ -1,0 +1,182 @@
+// Many bodies: body-body contact against closed forms (momentum, restitution,
+// Newton's cradle), a stack standing still, a room full of boxes, determinism,
+// and the sampled signed distance of a mesh.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "rigid_body_sim/core/contact.h"
+#include "rigid_body_sim/core/diagnostics.h"
+#include "rigid_body_sim/core/sdf_grid.h"
+#include "rigid_body_sim/core/step.h"
+#include "../test_util.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+core::BodySpec named(core::BodySpec b, const std::string& name) {
+  b.name = name;
+  return b;
+}
+
+core::ModelSpec world(std::vector<core::BodySpec> bodies, const Vec3& gravity, double restitution,
+                      std::vector<core::Sdf> scene = {}) {
+  core::ModelSpec s;
+  s.bodies = std::move(bodies);
+  s.gravity_W = gravity;
+  s.scene = std::move(scene);
+  s.contact.restitution = restitution;
+  s.contact.friction = 0.5;
+  return s;
+}
+
+core::BodyState at(const core::Model& model, int i, const Vec3& p, const Vec3& v = Vec3::Zero(),
+                   const Quat& q = Quat::Identity()) {
+  core::LinkState link;
+  link.p_WL = p;
+  link.v_WL = v;
+  link.q_WL = q;
+  return core::bodyStateFromLink(model.body(i), link);
+}
+
+Vec3 momentum(const core::Model& model, const core::State& s) {
+  Vec3 p = Vec3::Zero();
+  for (std::size_t i = 0; i < model.bodyCount(); ++i) p += model.body(i).mass * s.bodies[i].v_WB;
+  return p;
+}
+
+TEST(TwoSpheres, HeadOnConservesMomentumWithRestitution) {
+  const double e = 0.8;
+  const core::Model model(
+      world({named(ballBody(0.1, 1.0), "a"), named(ballBody(0.1, 2.0), "b")}, Vec3::Zero(), e));
+  core::State s;
+  s.bodies = {at(model, 0, Vec3(-0.5, 0, 0), Vec3(2, 0, 0)), at(model, 1, Vec3(0.5, 0, 0), Vec3(-1, 0, 0))};
+  const Vec3 p0 = momentum(model, s);
+  const double closing = 3.0;
+  for (int n = 0; n < 1000; ++n) core::step(model, s);
+  EXPECT_LT((momentum(model, s) - p0).norm(), 1e-12);
+  const double separating = s.bodies[1].v_WB.x() - s.bodies[0].v_WB.x();
+  EXPECT_NEAR(separating, e * closing, 0.01 * e * closing);
+  EXPECT_GT(s.bodies[1].p_WB.x() - s.bodies[0].p_WB.x(), 0.2);  // apart again, not through each other
+  EXPECT_LT(s.bodies[0].v_WB.tail<2>().norm() + s.bodies[1].v_WB.tail<2>().norm(), 1e-12);  // stays on the line
+}
+
+TEST(NewtonsCradle, ARowOfTouchingBallsPassesTheImpulseAlong) {
+  const int n = 5;
+  std::vector<core::BodySpec> balls;
+  for (int i = 0; i <= n; ++i) balls.push_back(named(ballBody(0.1), "ball" + std::to_string(i)));
+  const core::Model model(world(balls, Vec3::Zero(), 1.0));
+  core::State s;
+  s.bodies.push_back(at(model, 0, Vec3(-0.6, 0, 0), Vec3(1, 0, 0)));  // the striker
+  for (int i = 1; i <= n; ++i) s.bodies.push_back(at(model, i, Vec3(0.2 * (i - 1), 0, 0)));  // touching
+  const double e0 = core::totalEnergy(model, s);
+  for (int k = 0; k < 1000; ++k) core::step(model, s);
+  EXPECT_NEAR(s.bodies[n].v_WB.x(), 1.0, 0.02);  // the last ball leaves with the striker's speed
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(s.bodies[i].v_WB.x(), 0.0, 0.02) << "ball " << i;
+  EXPECT_NEAR(momentum(model, s).x(), 1.0, 1e-12);
+  EXPECT_NEAR(core::totalEnergy(model, s), e0, 0.02 * e0);
+}
+
+core::ModelSpec stack(bool sleep) {
+  std::vector<core::BodySpec> boxes;
+  for (int i = 0; i < 5; ++i) boxes.push_back(named(boxBody(Vec3(0.1, 0.1, 0.1)), "box" + std::to_string(i)));
+  core::ModelSpec spec = world(boxes, Vec3(0, 0, -9.81), 0.0, {core::Sdf::plane(Vec3::UnitZ())});
+  spec.sleep.enabled = sleep;
+  return spec;
+}
+
+TEST(Stack, FiveBoxesStandStillForTenSeconds) {
+  for (bool sleep : {false, true}) {
+    const core::Model model(stack(sleep));
+    core::State s;
+    for (int i = 0; i < 5; ++i) s.bodies.push_back(at(model, i, Vec3(0, 0, 0.1 + 0.2 * i)));
+    const core::State start = s;
+    core::Workspace ws;
+    double deepest = 0.0, drift = 0.0;
+    for (int k = 0; k < 10000; ++k) {
+      core::step(model, s, {}, &ws);
+      deepest = std::max(deepest, ws.deepest_penetration);
+      for (int i = 0; i < 5; ++i) drift = std::max(drift, (s.bodies[i].p_WB - start.bodies[i].p_WB).norm());
+    }
+    EXPECT_LT(drift, 1e-3) << "sleep " << sleep;
+    EXPECT_LT(deepest, 1e-3) << "sleep " << sleep;
+    if (sleep) {
+      for (int i = 0; i < 5; ++i) EXPECT_TRUE(s.bodies[i].asleep) << "box " << i;
+    }
+  }
+}
+
+/// 100 boxes (10 cm cubes) over a 2 × 2 m room, turned every way, dropped.
+struct Room {
+  core::Model model;
+  core::State start;
+};
+
+Room roomOfBoxes() {
+  const core::Sdf room =
+      core::Sdf::subtract({core::Sdf::box(Vec3(2.2, 2.2, 1.2)).transformed({Quat::Identity(), Vec3(0, 0, 0.5)}),
+                           core::Sdf::box(Vec3(2.0, 2.0, 1.5)).transformed({Quat::Identity(), Vec3(0, 0, 0.75)})});
+  std::vector<core::BodySpec> boxes;
+  for (int i = 0; i < 100; ++i) boxes.push_back(named(boxBody(Vec3(0.05, 0.05, 0.05), 0.5), "box" + std::to_string(i)));
+  core::ModelSpec spec = world(boxes, Vec3(0, 0, -9.81), 0.2, {room});
+  Room r{core::Model(spec), {}};
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI);
+  for (int i = 0; i < 100; ++i) {
+    const Vec3 p(-0.8 + 0.4 * (i % 5), -0.8 + 0.4 * ((i / 5) % 5), 0.3 + 0.25 * (i / 25));
+    const Quat q(Eigen::AngleAxisd(angle(rng), Vec3(angle(rng), angle(rng), angle(rng)).normalized()));
+    r.start.bodies.push_back(at(r.model, i, p, Vec3::Zero(), q));
+  }
+  return r;
+}
+
+TEST(Room, HundredBoxesStayInsideDoNotSinkAndRest) {
+  const Room room = roomOfBoxes();
+  core::State s = room.start;
+  core::Workspace ws;
+  double deepest = 0.0;
+  for (int k = 0; k < 10000; ++k) {  // the last few settle on each other after 7 s
+    core::step(room.model, s, {}, &ws);
+    deepest = std::max(deepest, ws.deepest_penetration);
+  }
+  EXPECT_LT(deepest, 2e-3);
+  int resting = 0;
+  for (const core::BodyState& b : s.bodies) {
+    EXPECT_LT(b.p_WB.head<2>().cwiseAbs().maxCoeff(), 1.0);  // inside the walls
+    EXPECT_GT(b.p_WB.z(), 0.0);                              // above the floor
+    resting += core::atRest(room.model, b);
+  }
+  EXPECT_EQ(resting, 100);
+}
+
+TEST(Determinism, ARoomOfBoxesIsBitIdenticalRunToRun) {
+  const Room room = roomOfBoxes();
+  auto run = [&] {
+    core::State s = room.start;
+    for (int k = 0; k < 1500; ++k) core::step(room.model, s);
+    return s;
+  };
+  EXPECT_TRUE(bitIdentical(run(), run()));
+}
+
+TEST(SdfGrid, AMeshCubeMatchesTheBoxDistanceWithinTwoCells) {
+  // A 0.2 m cube as 12 triangles.
+  core::TriangleMesh cube;
+  for (int i = 0; i < 8; ++i) cube.vertices.emplace_back(i & 1 ? 0.1 : -0.1, i & 2 ? 0.1 : -0.1, i & 4 ? 0.1 : -0.1);
+  cube.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                    {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  const auto grid = core::SdfGrid::fromMesh(cube, 32);
+  const core::Sdf exact = core::Sdf::box(Vec3(0.2, 0.2, 0.2));
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  for (int i = 0; i < 500; ++i) {
+    const Vec3 p(u(rng), u(rng), u(rng));
+    EXPECT_NEAR(grid->eval(p, nullptr), exact.eval(p), 2 * grid->cell()) << p.transpose();  // trilinear near edges
+  }
+  EXPECT_LT(grid->eval(Vec3::Zero(), nullptr), -0.09);  // inside is negative
+  EXPECT_NEAR(grid->eval(Vec3(1, 0, 0), nullptr), 0.9, 1e-9);  // beyond the grid: plus the distance
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
