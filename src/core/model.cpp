@@ -124,6 +124,7 @@ BodyModel buildBody(const BodySpec& spec) {
 
   BodyModel b;
   b.name = spec.name;
+  b.link = spec.link.empty() ? spec.name : spec.link;
   b.mass = spec.mass;
   b.inv_mass = 1.0 / spec.mass;
   b.p_LB = spec.p_LC;

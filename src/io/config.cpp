@@ -6,6 +6,9 @@
 #include <sstream>
 #include <vector>
 
+#include "rigid_body_sim/io/mesh_loader.h"
+#include "rigid_body_sim/io/urdf_loader.h"
+
 namespace rigid_body_sim::io {
 namespace {
 
@@ -207,21 +210,50 @@ void parseDamping(const YAML::Node& node, core::Damping& d) {
   if (node["angular_drag"]) d.angular_drag = number(node["angular_drag"], "damping.angular_drag");
 }
 
-void parseInitial(const YAML::Node& node, core::LinkState& s) {
-  requireKnownKeys(node, "initial", {"position", "rpy", "quaternion", "linear_velocity", "angular_velocity"});
-  if (node["position"]) s.p_WL = vec3(node["position"], "initial.position");
-  s.q_WL = orientation(node, "initial");
-  if (node["linear_velocity"]) s.v_WL = vec3(node["linear_velocity"], "initial.linear_velocity");
-  if (node["angular_velocity"]) s.w_W = vec3(node["angular_velocity"], "initial.angular_velocity");
+void parseInitial(const YAML::Node& node, core::LinkState& s, const std::string& path = "initial") {
+  requireKnownKeys(node, path, {"position", "rpy", "quaternion", "linear_velocity", "angular_velocity"});
+  if (node["position"]) s.p_WL = vec3(node["position"], path + ".position");
+  s.q_WL = orientation(node, path);
+  if (node["linear_velocity"]) s.v_WL = vec3(node["linear_velocity"], path + ".linear_velocity");
+  if (node["angular_velocity"]) s.w_W = vec3(node["angular_velocity"], path + ".angular_velocity");
+}
+
+std::string text(const YAML::Node& node, const std::string& key) {
+  if (!node.IsScalar() || node.as<std::string>().empty()) fail(key, "expected a non-empty string, got " + show(node));
+  return node.as<std::string>();
+}
+
+std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& base_dir) {
+  if (!node.IsSequence() || node.size() == 0) fail("bodies", "expected a non-empty list of {name, urdf, initial}");
+  std::vector<BodyEntry> bodies;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string path = "bodies[" + std::to_string(i) + "]";
+    const YAML::Node entry = node[i];
+    requireKnownKeys(entry, path, {"name", "urdf", "initial"});
+    if (!entry["name"]) fail(path + ".name", "every body needs a name");
+    if (!entry["urdf"]) fail(path + ".urdf", "every body needs a urdf (a file, or for the node a parameter)");
+    BodyEntry b;
+    b.name = text(entry["name"], path + ".name");
+    for (const BodyEntry& other : bodies) {
+      if (other.name == b.name) fail(path + ".name", "'" + b.name + "' is already the name of another body");
+    }
+    b.urdf = text(entry["urdf"], path + ".urdf");
+    const bool relative = b.urdf.front() != '/' && b.urdf.rfind("package://", 0) != 0 && b.urdf.rfind("file://", 0) != 0;
+    if (relative && !base_dir.empty()) b.urdf = base_dir + "/" + b.urdf;
+    if (entry["initial"]) parseInitial(entry["initial"], b.initial, path + ".initial");
+    bodies.push_back(b);
+  }
+  return bodies;
 }
 
 }  // namespace
 
-SimConfig parseConfig(const YAML::Node& root) {
+SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
   SimConfig c;
   c.model.scene = {core::Sdf::plane(Vec3::UnitZ())};  // the ground, z = 0
   if (!root || root.IsNull()) return c;
-  requireKnownKeys(root, "", {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep"});
+  requireKnownKeys(root, "",
+                   {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "bodies"});
   if (root["dt"]) c.model.dt = number(root["dt"], "dt");
   if (root["gravity"]) c.model.gravity_W = vec3(root["gravity"], "gravity");
   if (root["gyroscopic"]) c.model.gyroscopic = boolean(root["gyroscopic"], "gyroscopic");
@@ -230,6 +262,10 @@ SimConfig parseConfig(const YAML::Node& root) {
   if (root["scene"]) c.model.scene = parseScene(root["scene"]);
   if (root["contact"]) parseContact(root["contact"], c.model.contact);
   if (root["sleep"]) parseSleep(root["sleep"], c.model.sleep);
+  if (root["bodies"]) {
+    if (root["initial"]) fail("initial", "with a bodies list, give each body its own bodies[i].initial");
+    c.bodies = parseBodies(root["bodies"], base_dir);
+  }
   return c;
 }
 
@@ -273,6 +309,21 @@ void applyOverride(YAML::Node& root, const std::string& assignment) {
   }
   if (!node.IsMap()) fail(key, "cannot set '" + parts.back() + "' inside a value that is not a map");
   node[parts.back()] = value;
+}
+
+World buildWorld(const SimConfig& config, const std::function<core::BodySpec(const BodyEntry&)>& load_urdf) {
+  core::ModelSpec spec = config.model;
+  spec.bodies.clear();
+  for (const BodyEntry& entry : config.bodies) {
+    core::BodySpec body = load_urdf ? load_urdf(entry) : loadUrdfFile(resolveMeshUri(entry.urdf, ""));
+    body.name = entry.name;
+    spec.bodies.push_back(body);
+  }
+  World world{core::Model(spec), {}};
+  for (std::size_t i = 0; i < config.bodies.size(); ++i) {
+    world.state.bodies.push_back(core::bodyStateFromLink(world.model.body(i), config.bodies[i].initial));
+  }
+  return world;
 }
 
 core::Model buildModel(const SimConfig& config, const core::BodySpec& body) {

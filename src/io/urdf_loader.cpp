@@ -186,6 +186,7 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
   }
   core::BodySpec spec;
   spec.name = root->name;
+  spec.link = root->name;
   spec.mass = total.mass;
   spec.p_LC = total.p_FC;
   spec.I_C_L = total.I_C_F;

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -35,9 +36,11 @@ namespace io = rigid_body_sim::io;
 constexpr const char* kUsage =
     "usage: rbsim --urdf FILE [--config FILE.yaml] [--set KEY=VALUE ...] --duration S\n"
     "             [--dt S] [--csv OUT.csv] [--every N] [--quiet]\n"
+    "       rbsim --config WORLD.yaml [--set KEY=VALUE ...] --duration S [...]\n"
     "\n"
-    "Simulates the rigid body of a URDF (its root link and every link fixed to it)\n"
-    "and prints one JSON line of results on stdout.\n"
+    "Simulates the rigid body of a URDF (its root link and every link fixed to it),\n"
+    "or the bodies listed under `bodies` in the config, and prints one JSON line of\n"
+    "results on stdout.\n"
     "\n"
     "  --urdf FILE        the body (URDF with <inertial> on every link)\n"
     "  --config FILE      YAML settings; keys and defaults in config/default.yaml\n"
@@ -45,7 +48,8 @@ constexpr const char* kUsage =
     "                     --set gravity=[0,0,0] --set initial.angular_velocity=[0.01,3,0]\n"
     "  --duration S       simulated time, seconds\n"
     "  --dt S             time step, seconds (overrides the config's dt)\n"
-    "  --csv OUT.csv      trajectory: t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz (world frame)\n"
+    "  --csv OUT.csv      trajectory: t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz (world frame;\n"
+    "                     with several bodies a body column follows t)\n"
     "  --every N          one CSV row every N steps (default 1), plus the final state\n"
     "  --quiet            no summary on stderr\n";
 
@@ -105,7 +109,6 @@ Args parseArgs(int argc, char** argv) {
       throw UsageError("unknown argument '" + flag + "' (see rbsim --help)");
     }
   }
-  if (a.urdf.empty()) throw UsageError("--urdf FILE is required (see rbsim --help)");
   if (a.duration < 0.0) throw UsageError("--duration S is required (see rbsim --help)");
   return a;
 }
@@ -135,18 +138,24 @@ Vec3 rpy(const Quat& q) {
 
 class CsvWriter {
  public:
-  explicit CsvWriter(const std::string& path) : file_(std::fopen(path.c_str(), "w"), &std::fclose) {
+  /// With `with_body`, a body column after t (a world of several bodies).
+  CsvWriter(const std::string& path, bool with_body)
+      : file_(std::fopen(path.c_str(), "w"), &std::fclose), with_body_(with_body) {
     if (!file_) throw UsageError("--csv: cannot write '" + path + "': " + std::strerror(errno));
-    std::fputs("t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz\n", file_.get());
+    std::fputs(with_body_ ? "t,body,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz\n" : "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz\n",
+               file_.get());
   }
-  void row(double t, const core::LinkState& s) {
-    std::fprintf(file_.get(), "%.9g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g\n", t,
+  void row(double t, const std::string& body, const core::LinkState& s) {
+    std::fprintf(file_.get(), "%.9g,", t);
+    if (with_body_) std::fprintf(file_.get(), "%s,", body.c_str());
+    std::fprintf(file_.get(), "%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g\n",
                  s.p_WL.x(), s.p_WL.y(), s.p_WL.z(), s.q_WL.x(), s.q_WL.y(), s.q_WL.z(), s.q_WL.w(), s.v_WL.x(),
                  s.v_WL.y(), s.v_WL.z(), s.w_W.x(), s.w_W.y(), s.w_W.z());
   }
 
  private:
   std::unique_ptr<FILE, int (*)(FILE*)> file_;
+  bool with_body_;
 };
 
 class ProgressBar {
@@ -169,29 +178,59 @@ class ProgressBar {
 
 // ---------------------------------------------------------------- run
 
+/// Angular momentum of the world: one body's about its centre of mass; with
+/// several, the total about the world origin (Σ I ω + r × m v).
+Vec3 angularMomentum(const core::Model& model, const core::State& state) {
+  if (model.bodyCount() == 1) return core::angularMomentumWorld(model.body(0), state.bodies[0]);
+  Vec3 total = Vec3::Zero();
+  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
+    const core::BodyState& s = state.bodies[i];
+    total += core::angularMomentumWorld(model.body(i), s) + model.body(i).mass * s.p_WB.cross(s.v_WB);
+  }
+  return total;
+}
+
+std::string finalJson(const core::LinkState& link) {
+  return "{\"position\":" + vec(link.p_WL) + ",\"quaternion\":" + quat(link.q_WL) +
+         ",\"linear_velocity\":" + vec(link.v_WL) + ",\"angular_velocity\":" + vec(link.w_W) + "}";
+}
+
 int run(const Args& args) {
   YAML::Node tree = args.config.empty() ? YAML::Node() : io::loadYamlFile(args.config);
   for (const std::string& s : args.sets) io::applyOverride(tree, s);
   if (!args.dt.empty()) io::applyOverride(tree, "dt=" + args.dt);
-  const io::SimConfig config = io::parseConfig(tree);
-  const core::BodySpec body = io::loadUrdfFile(args.urdf);
-  const core::Model model = io::buildModel(config, body);
-  const core::BodyModel& bm = model.body(0);
+  const std::string config_dir = args.config.empty() ? "" : std::filesystem::path(args.config).parent_path().string();
+  const io::SimConfig config = io::parseConfig(tree, config_dir.empty() ? "." : config_dir);
+  // One body from --urdf, or the config's bodies list: a world.
+  if (config.bodies.empty() && args.urdf.empty()) {
+    throw UsageError("--urdf FILE is required (or a --config with a bodies list; see rbsim --help)");
+  }
+  if (!config.bodies.empty() && !args.urdf.empty()) {
+    throw UsageError("--urdf and a config with a bodies list: give one or the other");
+  }
+  const bool world_config = !config.bodies.empty();
+  io::World world = world_config ? io::buildWorld(config)
+                                 : io::World{io::buildModel(config, io::loadUrdfFile(args.urdf)), {}};
+  if (!world_config) world.state.bodies = {core::bodyStateFromLink(world.model.body(0), config.initial)};
+  const core::Model& model = world.model;
+  core::State& state = world.state;
+  const std::size_t n = model.bodyCount();
 
   const double dt = model.dt();
   const long long steps = std::llround(args.duration / dt);
-  if (steps < 1)
+  if (steps < 1) {
     throw UsageError("--duration " + num(args.duration) + " is shorter than one step of " + num(dt) + " s");
-
-  core::State state;
-  state.bodies = {core::bodyStateFromLink(bm, config.initial)};
+  }
   const double energy_start = core::totalEnergy(model, state);
-  const Vec3 momentum_start = core::angularMomentumWorld(bm, state.bodies[0]);
+  const Vec3 momentum_start = angularMomentum(model, state);
 
   std::unique_ptr<CsvWriter> csv;
-  if (!args.csv.empty()) csv = std::make_unique<CsvWriter>(args.csv);
+  if (!args.csv.empty()) csv = std::make_unique<CsvWriter>(args.csv, world_config);
+  const auto write_rows = [&](double t) {
+    for (std::size_t i = 0; i < n; ++i) csv->row(t, model.body(i).name, core::linkState(model.body(i), state.bodies[i]));
+  };
   // Progress bar only for runs that take a while (about a second or more).
-  ProgressBar progress(steps, isatty(STDERR_FILENO) && steps >= 2'000'000);
+  ProgressBar progress(steps, isatty(STDERR_FILENO) && steps * static_cast<long long>(n) >= 2'000'000);
   const long long progress_every = std::max(1LL, steps / 100);
 
   // Steps run in blocks between outputs; only the blocks are timed, so
@@ -199,7 +238,7 @@ int run(const Args& args) {
   using Clock = std::chrono::steady_clock;
   const auto wall_start = Clock::now();
   Clock::duration stepping{0};
-  if (csv) csv->row(0.0, core::linkState(bm, state.bodies[0]));
+  if (csv) write_rows(0.0);
   core::Workspace workspace;
   double max_penetration = 0.0;  // m, over the states at the start of every step
   long long done = 0;
@@ -214,7 +253,7 @@ int run(const Args& args) {
     }
     stepping += Clock::now() - t0;
     done += block;
-    if (csv && (done % args.every == 0 || done == steps)) csv->row(done * dt, core::linkState(bm, state.bodies[0]));
+    if (csv && (done % args.every == 0 || done == steps)) write_rows(done * dt);
     if (done % progress_every == 0 || done == steps) progress.show(done);
   }
   const double wall_s = std::chrono::duration<double>(Clock::now() - wall_start).count();
@@ -222,37 +261,55 @@ int run(const Args& args) {
 
   // Reported as steps × Δt: state.time accumulates Δt and carries its rounding.
   const double sim_time = static_cast<double>(steps) * dt;
-  const core::LinkState final_link = core::linkState(bm, state.bodies[0]);
   const double energy_end = core::totalEnergy(model, state);
-  const Vec3 momentum_end = core::angularMomentumWorld(bm, state.bodies[0]);
-  // The final state's penetration (the loop saw every earlier state).
-  max_penetration = std::max(max_penetration, -std::min(0.0, core::minSeparation(model, state.bodies[0], 0, 0.0)));
-  const bool at_rest = core::atRest(model, state.bodies[0]);
+  const Vec3 momentum_end = angularMomentum(model, state);
+  // The final state (the loop saw every earlier state), and rest of all bodies.
+  bool at_rest = true;
+  int resting = 0;
+  std::string bodies_json;
+  for (std::size_t i = 0; i < n; ++i) {
+    max_penetration =
+        std::max(max_penetration, -std::min(0.0, core::minSeparation(model, state.bodies[i], static_cast<int>(i), 0.0)));
+    const bool rest = core::atRest(model, state.bodies[i]);
+    at_rest = at_rest && rest;
+    resting += rest;
+    bodies_json += std::string(i ? "," : "") + "{\"name\":\"" + model.body(i).name +
+                   "\",\"final\":" + finalJson(core::linkState(model.body(i), state.bodies[i])) + "}";
+  }
+  const std::string single_final =
+      world_config ? "" : "\"final\":" + finalJson(core::linkState(model.body(0), state.bodies[0])) + ",";
 
   std::printf(
-      "{\"steps\":%lld,\"sim_time\":%s,\"wall_s\":%s,\"ns_per_step\":%s,"
-      "\"final\":{\"position\":%s,\"quaternion\":%s,\"linear_velocity\":%s,\"angular_velocity\":%s},"
+      "{\"steps\":%lld,\"sim_time\":%s,\"wall_s\":%s,\"ns_per_step\":%s,%s"
       "\"energy\":{\"start\":%s,\"end\":%s},\"angular_momentum\":{\"start\":%s,\"end\":%s},"
-      "\"max_penetration\":%s,\"at_rest\":%s}\n",
-      steps, num(sim_time).c_str(), num(wall_s).c_str(), num(ns_per_step).c_str(), vec(final_link.p_WL).c_str(),
-      quat(final_link.q_WL).c_str(), vec(final_link.v_WL).c_str(), vec(final_link.w_W).c_str(),
+      "\"max_penetration\":%s,\"at_rest\":%s,\"bodies\":[%s]}\n",
+      steps, num(sim_time).c_str(), num(wall_s).c_str(), num(ns_per_step).c_str(), single_final.c_str(),
       num(energy_start).c_str(), num(energy_end).c_str(), vec(momentum_start).c_str(), vec(momentum_end).c_str(),
-      num(max_penetration).c_str(), at_rest ? "true" : "false");
+      num(max_penetration).c_str(), at_rest ? "true" : "false", bodies_json.c_str());
 
   if (!args.quiet) {
     const auto rel = [](double a, double b) { return a == 0.0 ? std::abs(b) : (b - a) / std::abs(a); };
-    const Vec3 angles = rpy(final_link.q_WL);
-    std::fprintf(stderr, "rbsim: '%s' (%.6g kg) for %.6g s: %lld steps of %.6g s, %.3g s wall, %.1f ns/step\n",
-                 bm.name.c_str(), bm.mass, sim_time, steps, dt, wall_s, ns_per_step);
-    std::fprintf(stderr, "  final position    [%.6g, %.6g, %.6g] m, rpy [%.6g, %.6g, %.6g] rad\n", final_link.p_WL.x(),
-                 final_link.p_WL.y(), final_link.p_WL.z(), angles.x(), angles.y(), angles.z());
-    std::fprintf(stderr, "  final velocity    [%.6g, %.6g, %.6g] m/s, angular [%.6g, %.6g, %.6g] rad/s\n",
-                 final_link.v_WL.x(), final_link.v_WL.y(), final_link.v_WL.z(), final_link.w_W.x(), final_link.w_W.y(),
-                 final_link.w_W.z());
+    if (world_config) {
+      std::fprintf(stderr, "rbsim: %zu bodies for %.6g s: %lld steps of %.6g s, %.3g s wall, %.1f ns/step (%.1f per body)\n",
+                   n, sim_time, steps, dt, wall_s, ns_per_step, ns_per_step / n);
+      std::fprintf(stderr, "  at rest           %d of %zu\n", resting, n);
+    } else {
+      const core::BodyModel& bm = model.body(0);
+      const core::LinkState final_link = core::linkState(bm, state.bodies[0]);
+      const Vec3 angles = rpy(final_link.q_WL);
+      std::fprintf(stderr, "rbsim: '%s' (%.6g kg) for %.6g s: %lld steps of %.6g s, %.3g s wall, %.1f ns/step\n",
+                   bm.name.c_str(), bm.mass, sim_time, steps, dt, wall_s, ns_per_step);
+      std::fprintf(stderr, "  final position    [%.6g, %.6g, %.6g] m, rpy [%.6g, %.6g, %.6g] rad\n",
+                   final_link.p_WL.x(), final_link.p_WL.y(), final_link.p_WL.z(), angles.x(), angles.y(), angles.z());
+      std::fprintf(stderr, "  final velocity    [%.6g, %.6g, %.6g] m/s, angular [%.6g, %.6g, %.6g] rad/s\n",
+                   final_link.v_WL.x(), final_link.v_WL.y(), final_link.v_WL.z(), final_link.w_W.x(),
+                   final_link.w_W.y(), final_link.w_W.z());
+    }
     std::fprintf(stderr, "  energy            %.9g J -> %.9g J (relative change %.2e)\n", energy_start, energy_end,
                  rel(energy_start, energy_end));
-    std::fprintf(stderr, "  |L| about the CoM %.9g -> %.9g kg m^2/s (relative change %.2e)\n", momentum_start.norm(),
-                 momentum_end.norm(), rel(momentum_start.norm(), momentum_end.norm()));
+    std::fprintf(stderr, "  |L| %s %.9g -> %.9g kg m^2/s (relative change %.2e)\n",
+                 world_config ? "about 0  " : "about CoM", momentum_start.norm(), momentum_end.norm(),
+                 rel(momentum_start.norm(), momentum_end.norm()));
     std::fprintf(stderr, "  contacts          deepest penetration %.3g mm, %s at the end\n", 1e3 * max_penetration,
                  at_rest ? "at rest" : "moving");
   }

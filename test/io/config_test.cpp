@@ -207,6 +207,50 @@ TEST(Config, RefusalsNameTheKeyAndTheValue) {
   expectRefused("[1, 2]", {"expected a map"});
 }
 
+TEST(Config, BodiesListNamesUrdfsAndInitialStates) {
+  const io::SimConfig c = io::parseConfig(YAML::Load(R"(
+bodies:
+  - {name: a, urdf: box.urdf, initial: {position: [0, 0, 1], rpy: [0, 0, 1.5707963267948966]}}
+  - {name: b, urdf: /abs/ball.urdf}
+  - {name: c, urdf: package://rigid_body_sim/urdf/bunny.urdf, initial: {linear_velocity: [1, 0, 0]}}
+)"),
+                                          "/worlds");
+  ASSERT_EQ(c.bodies.size(), 3u);
+  EXPECT_EQ(c.bodies[0].name, "a");
+  EXPECT_EQ(c.bodies[0].urdf, "/worlds/box.urdf");  // relative to the config's folder
+  EXPECT_EQ(c.bodies[0].initial.p_WL, Vec3(0, 0, 1));
+  EXPECT_LT((c.bodies[0].initial.q_WL * Vec3::UnitX() - Vec3::UnitY()).norm(), 1e-15);
+  EXPECT_EQ(c.bodies[1].urdf, "/abs/ball.urdf");
+  EXPECT_EQ(c.bodies[2].urdf, "package://rigid_body_sim/urdf/bunny.urdf");
+  EXPECT_EQ(c.bodies[2].initial.v_WL, Vec3(1, 0, 0));
+  EXPECT_TRUE(parse("").bodies.empty());
+}
+
+TEST(Config, BadBodiesAreRefusedByKey) {
+  expectRefused("bodies: []", {"'bodies'", "non-empty list"});
+  expectRefused("bodies: [{urdf: a.urdf}]", {"'bodies[0].name'", "needs a name"});
+  expectRefused("bodies: [{name: a}]", {"'bodies[0].urdf'", "needs a urdf"});
+  expectRefused("bodies: [{name: a, urdf: x.urdf}, {name: a, urdf: y.urdf}]", {"'bodies[1].name'", "already"});
+  expectRefused("bodies: [{name: a, urdf: x.urdf, colour: red}]", {"'bodies[0].colour'", "unknown key"});
+  expectRefused("bodies: [{name: a, urdf: x.urdf, initial: {position: [0, 0]}}]",
+                {"'bodies[0].initial.position'", "[x, y, z]"});
+  expectRefused("initial: {position: [0, 0, 1]}\nbodies: [{name: a, urdf: x.urdf}]", {"'initial'", "bodies[i].initial"});
+}
+
+TEST(Config, AWorldLoadsEveryBodyUnderItsName) {
+  const io::SimConfig c = io::parseConfig(io::loadYamlFile(std::string(RBS_SOURCE_DIR) + "/config/world.yaml"),
+                                          std::string(RBS_SOURCE_DIR) + "/config");
+  const io::World w = io::buildWorld(c);
+  ASSERT_EQ(w.model.bodyCount(), 4u);
+  EXPECT_EQ(w.model.body(0).name, "box");
+  EXPECT_EQ(w.model.body(0).link, "base_link");
+  EXPECT_EQ(w.model.body(2).name, "bunny");
+  EXPECT_EQ(w.model.body(2).link, "bunny");
+  ASSERT_EQ(w.state.bodies.size(), 4u);
+  EXPECT_NEAR(core::linkState(w.model.body(1), w.state.bodies[1]).p_WL.z(), 1.0, 1e-15);
+  EXPECT_FALSE(w.model.body(2).solid_B.empty());  // the bunny's mesh, sampled, for the others to hit
+}
+
 TEST(Config, ModelValidationNamesTheField) {
   const io::SimConfig c = parse("dt: -0.001\nscene: []");
   expectThrowsWith<std::invalid_argument>([&] { io::buildModel(c, issueBox()); }, {"dt = -0.001", "> 0 s"});

@@ -45,6 +45,8 @@ Result rbsim(const std::string& args) {
 
 const std::string kBox = std::string(RBS_SOURCE_DIR) + "/urdf/box.urdf";
 
+void expectUsageError(const std::string& args, const std::string& message);
+
 std::vector<double> seq(const YAML::Node& n) { return n.as<std::vector<double>>(); }
 
 TEST(Rbsim, PrintsOneJsonLineWithTheRunsFigures) {
@@ -96,6 +98,30 @@ TEST(Rbsim, ReportsPenetrationAndRestOfADroppedBox) {
   const YAML::Node a = YAML::Load(air.out);
   EXPECT_FALSE(a["at_rest"].as<bool>());
   EXPECT_EQ(a["max_penetration"].as<double>(), 0.0);
+}
+
+TEST(Rbsim, RunsAWorldOfBodiesFromTheConfig) {
+  const std::string csv = tempPath("world.csv");
+  const Result r = rbsim("--config " + std::string(RBS_SOURCE_DIR) + "/config/world.yaml --duration 5 --every 1000 --csv " +
+                         csv + " --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const YAML::Node j = YAML::Load(r.out);
+  ASSERT_EQ(j["bodies"].size(), 4u);
+  EXPECT_EQ(j["bodies"][1]["name"].as<std::string>(), "ball");
+  EXPECT_FALSE(j["final"]);  // per body, under bodies
+  EXPECT_TRUE(j["at_rest"].as<bool>());
+  EXPECT_LT(j["max_penetration"].as<double>(), 2e-3);
+  // The ball came down on the box: it rests on its top face, 0.1 + 0.1 m up.
+  EXPECT_NEAR(seq(j["bodies"][1]["final"]["position"])[2], 0.2, 1e-3);
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "t,body,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz");
+  int rows = 0;
+  while (std::getline(in, line)) ++rows;
+  EXPECT_EQ(rows, 6 * 4);  // t = 0, 1, ..., 5 s for four bodies
+  expectUsageError("--urdf " + kBox + " --config " + std::string(RBS_SOURCE_DIR) + "/config/world.yaml --duration 1",
+                   "give one or the other");
 }
 
 TEST(Rbsim, WritesTheCsvEveryNStepsAndTheFinalState) {

@@ -63,7 +63,8 @@ struct SleepSettings {
 
 /// Creation settings of one rigid body (what a URDF provides).
 struct BodySpec {
-  std::string name = "body";  ///< the URDF root link name
+  std::string name = "body";  ///< the body's name in the world (by default its URDF root link's)
+  std::string link = "";      ///< its URDF root link name ("" = name): the frame users see
   double mass = 1.0;          ///< kg
   Vec3 p_LC = Vec3::Zero();   ///< centre of mass in the link frame L (m)
   /// Inertia about the centre of mass, axes of L (kg·m²).
@@ -90,7 +91,8 @@ struct ModelSpec {
 
 /// One body as the integrator uses it: derived and validated quantities.
 struct BodyModel {
-  std::string name;
+  std::string name;  ///< the body's name in the world
+  std::string link;  ///< its URDF root link name
   double mass = 1.0;                         ///< kg
   double inv_mass = 1.0;                     ///< 1/kg
   Vec3 inertia_B = Vec3::Ones();             ///< principal moments, kg·m²

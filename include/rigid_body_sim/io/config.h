@@ -6,7 +6,9 @@
 #include <yaml-cpp/yaml.h>
 
 #include <stdexcept>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/state.h"
@@ -19,16 +21,28 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// One entry of the `bodies` list: a body of the world.
+struct BodyEntry {
+  std::string name;       ///< unique in the world
+  std::string urdf;       ///< a URDF file (relative to the config's folder, or package://), or for
+                          ///< the node the name of a parameter holding the URDF
+  core::LinkState initial;
+};
+
 struct SimConfig {
   /// dt, gravity, damping, gyroscopic, scene, contact, sleep (bodies come from URDF).
   core::ModelSpec model;
-  /// Initial pose and twist of the root link frame, world frame.
+  /// Initial pose and twist of the root link frame, world frame (one body).
   core::LinkState initial;
+  /// The world's bodies, when the config lists them (`bodies`); empty for
+  /// one body given separately (rbsim --urdf, the node's robot_description).
+  std::vector<BodyEntry> bodies;
 };
 
 /// Parses a config tree. Missing keys keep the defaults documented in
 /// config/default.yaml; unknown keys and bad values throw ConfigError.
-SimConfig parseConfig(const YAML::Node& root);
+/// Relative URDF paths in `bodies` resolve against `base_dir`.
+SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir = "");
 
 /// Reads a YAML file (ConfigError if unreadable or not YAML).
 YAML::Node loadYamlFile(const std::string& path);
@@ -40,5 +54,17 @@ void applyOverride(YAML::Node& root, const std::string& assignment);
 /// Builds the model of one body with the config's settings (std::invalid_argument
 /// from the model's validation names the field).
 core::Model buildModel(const SimConfig& config, const core::BodySpec& body);
+
+/// A world: the model of the config's `bodies` and their initial state.
+struct World {
+  core::Model model;
+  core::State state;
+};
+
+/// Loads every body of config.bodies, each named by its entry, through
+/// `load_urdf` (which turns an entry's `urdf` into a BodySpec; the default
+/// reads files), and builds the model and the initial state.
+World buildWorld(const SimConfig& config,
+                 const std::function<core::BodySpec(const BodyEntry&)>& load_urdf = {});
 
 }  // namespace rigid_body_sim::io
