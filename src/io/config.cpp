@@ -250,6 +250,7 @@ std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& ba
 
 SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
   SimConfig c;
+  c.base_dir = base_dir;
   c.model.scene = {core::Sdf::plane(Vec3::UnitZ())};  // the ground, z = 0
   if (!root || root.IsNull()) return c;
   requireKnownKeys(root, "",
@@ -315,7 +316,7 @@ World buildWorld(const SimConfig& config, const std::function<core::BodySpec(con
   core::ModelSpec spec = config.model;
   spec.bodies.clear();
   for (const BodyEntry& entry : config.bodies) {
-    core::BodySpec body = load_urdf ? load_urdf(entry) : loadUrdfFile(resolveMeshUri(entry.urdf, ""));
+    core::BodySpec body = load_urdf ? load_urdf(entry) : loadUrdfFile(resolveMeshUri(entry.urdf, config.base_dir));
     body.name = entry.name;
     spec.bodies.push_back(body);
   }

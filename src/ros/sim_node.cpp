@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "rigid_body_sim/core/sdf_surface.h"
+#include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/ros/conversions.h"
 
@@ -50,28 +51,53 @@ std::string firstProblem(std::initializer_list<std::string> problems) {
   return {};
 }
 
-core::Model buildModel(const NodeParams& params, const ros::NodeHandle& nh) {
-  std::string xml;
-  if (!nh.getParam("robot_description", xml)) {
-    throw std::runtime_error("parameter '" + nh.resolveName("robot_description") +
-                             "' is not set: load the body's URDF there (launch/sim.launch does)");
+/// The bodies: robot_description for one body, or the config's `bodies`,
+/// each urdf naming a parameter that holds a URDF or else a file
+/// (absolute, or package://).
+io::World loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
+  if (params.sim.bodies.empty()) {
+    std::string xml;
+    if (!nh.getParam("robot_description", xml)) {
+      throw std::runtime_error("parameter '" + nh.resolveName("robot_description") +
+                               "' is not set: load the body's URDF there (launch/sim.launch does), or list "
+                               "bodies in ~bodies");
+    }
+    io::World world{io::buildModel(params.sim, io::loadUrdfString(xml, nh.resolveName("robot_description"))), {}};
+    world.state.bodies = {core::bodyStateFromLink(world.model.body(0), params.sim.initial)};
+    return world;
   }
-  const core::BodySpec body = io::loadUrdfString(xml, nh.resolveName("robot_description"));
-  return io::buildModel(params.sim, body);
+  return io::buildWorld(params.sim, [&](const io::BodyEntry& entry) {
+    std::string xml;
+    try {
+      if (nh.getParam(entry.urdf, xml)) return io::loadUrdfString(xml, nh.resolveName(entry.urdf));
+    } catch (const ros::InvalidNameException&) {
+      // Not a parameter name (package://..., a path with dots): a file.
+    }
+    return io::loadUrdfFile(io::resolveMeshUri(entry.urdf, ""));
+  });
 }
 
 }  // namespace
 
 SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
-    : nh_(nh), pnh_(private_nh), params_(readParams(private_nh)), model_(buildModel(params_, nh_)) {
-  const core::BodyModel& body = model_.body(0);
-  state_.bodies = {core::bodyStateFromLink(body, params_.sim.initial)};
+    : nh_(nh), pnh_(private_nh), params_(readParams(private_nh)), world_(loadWorld(params_, nh_)) {
   initial_ = state_;
   use_sim_time_ = ros::param::param("/use_sim_time", false);
   publish_every_ = std::max(1LL, std::llround(1.0 / (settings_.publish_rate * model_.dt())));
-
-  ROS_INFO("sim_node: body '%s', %.6g kg, %zu collision points", body.name.c_str(), body.mass,
-           body.contact_points.size());
+  // One body keeps the single-body names; several get theirs under their name.
+  const bool several = model_.bodyCount() > 1;
+  held_wrenches_.resize(model_.bodyCount());
+  for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
+    const core::BodyModel& body = model_.body(i);
+    const std::string prefix = several ? body.name + "/" : "";
+    frames_.push_back(prefix + body.link);
+    odom_pubs_.push_back(nh_.advertise<nav_msgs::Odometry>(prefix + "odom", 10));
+    const int index = static_cast<int>(i);
+    wrench_subs_.push_back(pnh_.subscribe<geometry_msgs::WrenchStamped>(
+        prefix + "wrench", 10, [this, index](const geometry_msgs::WrenchStamped::ConstPtr& m) { onWrench(index, m); }));
+    ROS_INFO("sim_node: body '%s' (frame '%s'), %.6g kg, %zu collision points", body.name.c_str(),
+             frames_.back().c_str(), body.mass, body.contact_points.size());
+  }
   ROS_INFO("sim_node: ~rate %g Hz, ~dt %g s, ~realtime_factor %g, ~publish_rate %g Hz (every %lld steps)",
            settings_.rate, model_.dt(), settings_.realtime_factor, settings_.publish_rate, publish_every_);
   ROS_INFO("sim_node: ~world_frame '%s', ~wrench_timeout %g s, ~covariance %g, /use_sim_time %s",
@@ -81,10 +107,8 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   sim << YAML::Flow << params_.sim_yaml;
   ROS_INFO("sim_node: simulation keys given: %s (others at config/default.yaml's defaults)", sim.c_str());
 
-  odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", 10);
   scene_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, /*latch=*/true);
   if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-  wrench_sub_ = pnh_.subscribe("wrench", 10, &SimNode::onWrench, this);
   services_ = {pnh_.advertiseService("apply_wrench", &SimNode::applyWrench, this),
                pnh_.advertiseService("apply_impulse", &SimNode::applyImpulse, this),
                pnh_.advertiseService("clear_wrenches", &SimNode::clearWrenches, this),
@@ -110,12 +134,14 @@ ros::Time SimNode::stamp() const {
 void SimNode::stepOnce() {
   const double t = simTime(), h = model_.dt();
   schedule_.loadsFor(model_, t, h, loads_);
-  if (held_wrench_) {
-    if (settings_.wrench_timeout > 0.0 && t - held_wrench_->received > settings_.wrench_timeout) {
-      held_wrench_.reset();
+  for (std::size_t i = 0; i < held_wrenches_.size(); ++i) {
+    std::optional<HeldWrench>& held = held_wrenches_[i];
+    if (!held) continue;
+    if (settings_.wrench_timeout > 0.0 && t - held->received > settings_.wrench_timeout) {
+      held.reset();
     } else {
       if (loads_.empty()) loads_.resize(model_.bodyCount());
-      core::addWrench(model_.body(held_wrench_->body), loads_[held_wrench_->body], held_wrench_->wrench);
+      core::addWrench(model_.body(i), loads_[i], held->wrench);
     }
   }
   core::step(model_, state_, loads_, &workspace_);
@@ -147,13 +173,13 @@ void SimNode::publish() {
     geometry_msgs::TransformStamped tf;
     tf.header.stamp = now;
     tf.header.frame_id = settings_.world_frame;
-    tf.child_frame_id = body.name;
+    tf.child_frame_id = frames_[i];
     tf.transform = toTransform(link.p_WL, link.q_WL);
     tf_.sendTransform(tf);
 
     nav_msgs::Odometry odom;
     odom.header = tf.header;
-    odom.child_frame_id = body.name;  // the twist is in this frame (nav_msgs/Odometry)
+    odom.child_frame_id = frames_[i];  // the twist is in this frame (nav_msgs/Odometry)
     odom.pose.pose = toPose(link.p_WL, link.q_WL);
     const Quat q_LW = link.q_WL.conjugate();
     odom.twist.twist.linear = toVector3(q_LW * link.v_WL);
@@ -162,7 +188,7 @@ void SimNode::publish() {
       odom.pose.covariance[k * 7] = settings_.covariance;
       odom.twist.covariance[k * 7] = settings_.covariance;
     }
-    odom_pub_.publish(odom);
+    odom_pubs_[i].publish(odom);
   }
 }
 
@@ -234,19 +260,22 @@ void SimNode::run() {
 // ------------------------------------------------------------------ requests
 
 std::optional<int> SimNode::findBody(const std::string& name, std::string& error) const {
-  if (name.empty()) return 0;
+  if (name.empty() && model_.bodyCount() == 1) return 0;
+  std::string names;
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
     if (model_.body(i).name == name) return static_cast<int>(i);
+    names += (i ? ", '" : "'") + model_.body(i).name + "'";
   }
-  error = "unknown body '" + name + "' (the body is '" + model_.body(0).name + "')";
+  error = name.empty() ? "there are several bodies: give body (" + names + ")"
+                       : "unknown body '" + name + "' (the bodies: " + names + ")";
   return std::nullopt;
 }
 
 std::optional<core::Frame> SimNode::findFrame(const std::string& frame, int body, std::string& error) const {
   if (frame.empty() || frame == settings_.world_frame || frame == "world") return core::Frame::kWorld;
-  if (frame == model_.body(body).name) return core::Frame::kBody;
-  error = "unknown frame '" + frame + "' (use '" + settings_.world_frame + "' or the body's link '" +
-          model_.body(body).name + "')";
+  if (frame == frames_[body] || frame == model_.body(body).link) return core::Frame::kBody;
+  error = "unknown frame '" + frame + "' (use '" + settings_.world_frame + "' or the body's frame '" + frames_[body] +
+          "')";
   return std::nullopt;
 }
 
@@ -257,7 +286,7 @@ BodyState SimNode::bodyState(int body, bool twist_in_body) const {
   msg.body = b.name;
   msg.stamp = stamp();
   msg.pose = toPose(link.p_WL, link.q_WL);
-  msg.twist_frame = twist_in_body ? b.name : settings_.world_frame;
+  msg.twist_frame = twist_in_body ? frames_[body] : settings_.world_frame;
   const Quat q = twist_in_body ? link.q_WL.conjugate() : Quat::Identity();
   msg.twist.linear = toVector3(q * link.v_WL);
   msg.twist.angular = toVector3(q * link.w_W);
@@ -329,7 +358,9 @@ bool SimNode::clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response
     body = *found;
   }
   schedule_.clear(body);
-  if (held_wrench_ && (body < 0 || held_wrench_->body == body)) held_wrench_.reset();
+  for (std::size_t i = 0; i < held_wrenches_.size(); ++i) {
+    if (body < 0 || static_cast<int>(i) == body) held_wrenches_[i].reset();
+  }
   res.success = true;
   res.message = "wrenches cleared";
   return true;
@@ -385,7 +416,7 @@ bool SimNode::reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& re
   state_ = initial_;
   state_.time = simTime();
   schedule_.clear(-1);
-  held_wrench_.reset();
+  for (auto& held : held_wrenches_) held.reset();
   rebaseClock();
   publish();
   res.success = true;
@@ -428,17 +459,17 @@ bool SimNode::step(Step::Request& req, Step::Response& res) {
   return true;
 }
 
-void SimNode::onWrench(const geometry_msgs::WrenchStamped::ConstPtr& msg) {
+void SimNode::onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& msg) {
   std::string why;
-  const auto frame = findFrame(msg->header.frame_id, 0, why);
+  const auto frame = findFrame(msg->header.frame_id, body, why);
   const Vec3 force = fromVector3(msg->wrench.force), torque = fromVector3(msg->wrench.torque);
   if (why.empty()) why = checkVector(force, kMaxForce, "force", "N");
   if (why.empty()) why = checkVector(torque, kMaxTorque, "torque", "N·m");
   if (!why.empty()) {
-    ROS_WARN_THROTTLE(1.0, "sim_node: ~wrench ignored: %s", why.c_str());
+    ROS_WARN_THROTTLE(1.0, "sim_node: wrench for '%s' ignored: %s", model_.body(body).name.c_str(), why.c_str());
     return;
   }
-  held_wrench_ = HeldWrench{0, {force, torque, Vec3::Zero(), *frame}, simTime()};
+  held_wrenches_[body] = HeldWrench{{force, torque, Vec3::Zero(), *frame}, simTime()};
 }
 
 // ------------------------------------------------------------------ scene

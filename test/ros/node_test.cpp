@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -379,6 +380,53 @@ TEST_F(SetGetState, RoundTripInEitherFrame) {
   set.request.state.twist.angular = vec(0, 0, 0);
   ASSERT_TRUE(call("set_state", set).response.success);
   EXPECT_NEAR(state().twist.linear.y, 1.0, 1e-12);
+}
+
+// ------------------------------------------------------------------ several bodies
+
+class World : public Node {};
+
+TEST_F(World, EachBodyHasItsFrameTopicAndName) {
+  ASSERT_TRUE(trigger("pause"));
+  rigid_body_sim::GetState get;
+  get = call("get_state", get);  // no body named: refused, listing them
+  EXPECT_FALSE(get.response.success);
+  EXPECT_NE(get.response.message.find("'crate', 'ball'"), std::string::npos) << get.response.message;
+  get.request.body = "ball";
+  get = call("get_state", get);
+  ASSERT_TRUE(get.response.success) << get.response.message;
+  EXPECT_EQ(get.response.state.body, "ball");
+  EXPECT_EQ(get.response.state.pose.position.x, 2.0);
+  // An impulse on the ball moves the ball only (M = 1 kg each).
+  rigid_body_sim::ApplyImpulse kick;
+  kick.request.body = "ball";
+  kick.request.frame = "ball/ball";  // the ball's frame, under its name
+  kick.request.linear = vec(0, 0.5, 0);
+  ASSERT_TRUE(call("apply_impulse", kick).response.success);
+  ASSERT_TRUE(step(100).success);
+  rigid_body_sim::GetState crate;
+  crate.request.body = "crate";
+  crate = call("get_state", crate);
+  get = call("get_state", get);
+  EXPECT_NEAR(get.response.state.twist.linear.y, 0.5, 1e-12);
+  EXPECT_NEAR(get.response.state.pose.position.y, 0.05, 1e-12);
+  EXPECT_EQ(crate.response.state.twist.linear.y, 0.0);
+  // Each has its odometry topic and its tf frame.
+  std::map<std::string, nav_msgs::Odometry> odom;
+  const ros::Subscriber a = nh_.subscribe<nav_msgs::Odometry>(
+      "/crate/odom", 10, [&](const nav_msgs::Odometry::ConstPtr& m) { odom["crate"] = *m; });
+  const ros::Subscriber b = nh_.subscribe<nav_msgs::Odometry>(
+      "/ball/odom", 10, [&](const nav_msgs::Odometry::ConstPtr& m) { odom["ball"] = *m; });
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  ASSERT_TRUE(spinUntil([&] { return a.getNumPublishers() > 0 && b.getNumPublishers() > 0; }, 10.0));
+  ros::WallDuration(0.3).sleep();
+  ASSERT_TRUE(trigger("unpause"));
+  ASSERT_TRUE(spinUntil([&] { return odom.size() == 2; }, 10.0));
+  EXPECT_EQ(odom["crate"].child_frame_id, "crate/base_link");
+  EXPECT_EQ(odom["ball"].child_frame_id, "ball/ball");
+  ASSERT_TRUE(spinUntil([&] { return buffer.canTransform("world", "ball/ball", ros::Time(0)); }, 10.0));
+  EXPECT_NEAR(buffer.lookupTransform("world", "ball/ball", ros::Time(0)).transform.translation.x, 2.0, 1e-12);
 }
 
 // ------------------------------------------------------------------ refusals

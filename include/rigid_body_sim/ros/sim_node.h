@@ -55,9 +55,9 @@ class SimNode {
   bool pause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool unpause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool step(Step::Request& req, Step::Response& res);
-  void onWrench(const geometry_msgs::WrenchStamped::ConstPtr& msg);
+  void onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& msg);
 
-  /// The body named `name` ("" = the first), or an error message.
+  /// The body named `name` ("" = the only body), or an error message.
   std::optional<int> findBody(const std::string& name, std::string& error) const;
   /// `frame` as a core frame for `body`: "" or the world frame → world, the
   /// body's root link → body; anything else is an error.
@@ -68,18 +68,21 @@ class SimNode {
   ros::NodeHandle nh_, pnh_;
   NodeParams params_;
   const NodeSettings& settings_ = params_.node;
-  core::Model model_;
-  core::State state_, initial_;
+  io::World world_;
+  const core::Model& model_ = world_.model;
+  core::State& state_ = world_.state;
+  core::State initial_;
+  /// Per body: its tf frame (the root link; "<name>/<link>" with several bodies).
+  std::vector<std::string> frames_;
   core::Workspace workspace_;
   core::WrenchSchedule schedule_;
   core::Loads loads_;
 
   struct HeldWrench {
-    int body;
     core::Wrench wrench;
     double received;  ///< sim time
   };
-  std::optional<HeldWrench> held_wrench_;  ///< from the ~wrench topic
+  std::vector<std::optional<HeldWrench>> held_wrenches_;  ///< per body, from its ~wrench topic
 
   bool paused_ = false;
   bool use_sim_time_ = false;
@@ -92,9 +95,10 @@ class SimNode {
   double ref_sim_ = 0.0;
   std::vector<double> tick_periods_;  ///< s, when ~report_timing
 
-  ros::Publisher odom_pub_, clock_pub_, scene_pub_;
+  std::vector<ros::Publisher> odom_pubs_;  ///< per body
+  ros::Publisher clock_pub_, scene_pub_;
   tf2_ros::TransformBroadcaster tf_;
-  ros::Subscriber wrench_sub_;
+  std::vector<ros::Subscriber> wrench_subs_;  ///< per body
   std::vector<ros::ServiceServer> services_;
 };
 
