@@ -186,8 +186,10 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
 }
 
 /// Sweep and prune along x: the pairs of bodies (i < j, at least one awake)
-/// whose boxes, grown by their margins, overlap. Sorted, so the result does
-/// not depend on the order the workspace kept from the last step.
+/// whose boxes, grown by their margins, overlap. The boxes go into flat
+/// arrays in sweep order first, so the inner loop only compares numbers.
+/// Sorted, so the result does not depend on the order the workspace kept
+/// from the last step.
 void broadPhase(const Model& model, const State& state, Workspace& ws) {
   const int n = static_cast<int>(model.bodyCount());
   std::vector<int>& order = ws.sweep_order;
@@ -195,31 +197,50 @@ void broadPhase(const Model& model, const State& state, Workspace& ws) {
     order.resize(n);
     for (int i = 0; i < n; ++i) order[i] = i;
   }
-  const auto extent = [&](int i) { return model.body(i).bound_radius + ws.margins[i]; };
-  const auto lo_x = [&](int i) { return state.bodies[i].p_WB.x() - extent(i); };
-  // Insertion sort: the bodies barely move between steps, so this is nearly linear.
+  std::vector<double>& lo = ws.box_lo;  // 3 per body, by body index
+  std::vector<double>& hi = ws.box_hi;
+  lo.resize(3 * n);
+  hi.resize(3 * n);
+  for (int i = 0; i < n; ++i) {
+    const double e = model.body(i).bound_radius + ws.margins[i];
+    for (int a = 0; a < 3; ++a) {
+      lo[3 * i + a] = state.bodies[i].p_WB(a) - e;
+      hi[3 * i + a] = state.bodies[i].p_WB(a) + e;
+    }
+  }
+  // Insertion sort on x: the bodies barely move between steps, so this is nearly linear.
   for (int k = 1; k < n; ++k) {
     const int v = order[k];
-    const double key = lo_x(v);
+    const double key = lo[3 * v];
     int m = k - 1;
-    while (m >= 0 && lo_x(order[m]) > key) {
+    while (m >= 0 && lo[3 * order[m]] > key) {
       order[m + 1] = order[m];
       --m;
     }
     order[m + 1] = v;
   }
-  ws.pairs.clear();
+  ws.sorted_boxes.resize(7 * n);  // lo x, hi x, lo y, hi y, lo z, hi z, asleep: in sweep order
   for (int k = 0; k < n; ++k) {
     const int i = order[k];
-    const Vec3& pi = state.bodies[i].p_WB;
-    const double ei = extent(i), hi_x = pi.x() + ei;
+    double* b = &ws.sorted_boxes[7 * k];
+    b[0] = lo[3 * i];
+    b[1] = hi[3 * i];
+    b[2] = lo[3 * i + 1];
+    b[3] = hi[3 * i + 1];
+    b[4] = lo[3 * i + 2];
+    b[5] = hi[3 * i + 2];
+    b[6] = state.bodies[i].asleep ? 1.0 : 0.0;
+  }
+  ws.pairs.clear();
+  const double* box = ws.sorted_boxes.data();
+  for (int k = 0; k < n; ++k) {
+    const double* a = box + 7 * k;
     for (int m = k + 1; m < n; ++m) {
-      const int j = order[m];
-      if (lo_x(j) > hi_x) break;
-      if (state.bodies[i].asleep && state.bodies[j].asleep) continue;
-      const Vec3 d = (state.bodies[j].p_WB - pi).cwiseAbs();
-      const double e = ei + extent(j);
-      if (d.y() <= e && d.z() <= e && d.norm() <= e) ws.pairs.emplace_back(std::min(i, j), std::max(i, j));
+      const double* b = box + 7 * m;
+      if (b[0] > a[1]) break;
+      if (b[2] > a[3] || a[2] > b[3] || b[4] > a[5] || a[4] > b[5] || (a[6] != 0.0 && b[6] != 0.0)) continue;
+      const int i = order[k], j = order[m];
+      ws.pairs.emplace_back(std::min(i, j), std::max(i, j));
     }
   }
   std::sort(ws.pairs.begin(), ws.pairs.end());
@@ -308,6 +329,91 @@ double sweepContact(Contact& c, double& normal, Eigen::Vector2d& tangent, double
 Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
   const Mat3 R = q_WB.toRotationMatrix();
   return R * b.inv_inertia_B.asDiagonal() * R.transpose();
+}
+
+/// Sorts the contacts into islands: bodies joined by contacts (through
+/// awake bodies only). Fills ws.island_contacts (contact indices, island by
+/// island, each island in contact order) and ws.island_starts (offsets).
+void groupIslands(const Model& model, const State& state, Workspace& ws) {
+  std::vector<int>& parent = ws.island_parent;
+  parent.resize(model.bodyCount());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+  const auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const Contact& c : ws.contacts) {
+    if (c.other < 0 || state.bodies[c.other].asleep) continue;
+    const int a = find(c.body), b = find(c.other);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the island's smallest body
+  }
+  const int n_contacts = static_cast<int>(ws.contacts.size());
+  ws.island_contacts.resize(n_contacts);
+  for (int k = 0; k < n_contacts; ++k) ws.island_contacts[k] = k;
+  std::vector<int>& island = ws.island_of;
+  island.resize(n_contacts);
+  for (int k = 0; k < n_contacts; ++k) island[k] = find(ws.contacts[k].body);
+  std::stable_sort(ws.island_contacts.begin(), ws.island_contacts.end(),
+                   [&](int x, int y) { return island[x] < island[y]; });
+  ws.island_starts.clear();
+  for (int k = 0; k < n_contacts; ++k) {
+    if (k == 0 || island[ws.island_contacts[k]] != island[ws.island_contacts[k - 1]]) ws.island_starts.push_back(k);
+  }
+  ws.island_starts.push_back(n_contacts);
+}
+
+/// Restitution (impact passes) then projected Gauss-Seidel for the contacts
+/// [first, last) of one island.
+void solveIsland(const int* first, const int* last, const ContactSettings& cs, double threshold, double h,
+                 State& state, std::vector<Vec3>& w_W, Workspace& ws) {
+  std::vector<Contact>& contacts = ws.contacts;
+  constexpr double kTolerance = 1e-8;  // m/s of velocity change in a sweep: 1e-11 m of drift per step
+  // Impacts first, as a sequence of simultaneous collisions: the contacts
+  // arriving faster than the threshold are solved together to separate at
+  // e × their approach speed (the pre-solve speed, for the first pass).
+  // If that sets other contacts approaching (an impulse passed along a row
+  // of touching bodies), they collide in the next pass: Newton's cradle.
+  // Each pass has its own impulses, so a collision, once resolved, does not
+  // keep pushing.
+  if (cs.restitution > 0.0) {
+    const int max_passes = 2 * static_cast<int>(last - first) + 2;
+    std::vector<int>& hit = ws.impact_contacts;
+    for (int pass = 0; pass < max_passes; ++pass) {
+      hit.clear();
+      for (const int* k = first; k != last; ++k) {
+        Contact& c = contacts[*k];
+        const double vn = c.normal_W.dot(relativeVelocity(c, state, w_W));
+        const bool arrives = c.separation <= 0.0 || vn * h < -c.separation;
+        if (arrives && vn < -threshold) {
+          c.impact_target = -cs.restitution * vn;
+          c.impact_normal = 0.0;
+          c.impact_tangent.setZero();
+          hit.push_back(*k);
+        }
+      }
+      if (hit.empty()) break;
+      for (int sweep = 0; sweep < cs.iterations; ++sweep) {
+        double largest = 0.0;
+        for (int k : hit) {
+          Contact& c = contacts[k];
+          largest = std::max(largest, sweepContact(c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction,
+                                                   state, w_W));
+        }
+        if (largest < kTolerance) break;
+      }
+    }
+  }
+  // Then projected Gauss-Seidel over every contact: no penetration, Coulomb
+  // friction; a speculative contact may close its gap, no more.
+  for (int sweep = 0; sweep < cs.iterations; ++sweep) {
+    double largest = 0.0;
+    for (const int* k = first; k != last; ++k) {
+      Contact& c = contacts[*k];
+      largest = std::max(largest, sweepContact(c, c.normal_impulse, c.tangent_impulse, c.target_normal_velocity,
+                                               cs.friction, state, w_W));
+    }
+    if (largest < kTolerance) break;
+  }
 }
 
 }  // namespace
@@ -444,51 +550,14 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
   }
   warmStart(model, state, w_W, ws.contacts);
 
-  // Impacts first, as a sequence of simultaneous collisions: the contacts
-  // arriving faster than the threshold are solved together to separate at
-  // e × their approach speed (the pre-solve speed, for the first pass).
-  // If that sets other contacts approaching (an impulse passed along a row
-  // of touching bodies), they collide in the next pass: Newton's cradle.
-  // Each pass has its own impulses, so a collision, once resolved, does not
-  // keep pushing.
-  constexpr double kTolerance = 1e-8;  // m/s of velocity change in a sweep: 1e-11 m of drift per step
-  if (cs.restitution > 0.0) {
-    const int max_passes = 2 * static_cast<int>(ws.contacts.size()) + 2;
-    std::vector<int>& hit = ws.impact_contacts;
-    for (int pass = 0; pass < max_passes; ++pass) {
-      hit.clear();
-      for (int k = 0; k < static_cast<int>(ws.contacts.size()); ++k) {
-        Contact& c = ws.contacts[k];
-        const double vn = c.normal_W.dot(relativeVelocity(c, state, w_W));
-        const bool arrives = c.separation <= 0.0 || vn * h < -c.separation;
-        if (arrives && vn < -threshold) {
-          c.impact_target = -cs.restitution * vn;
-          c.impact_normal = 0.0;
-          c.impact_tangent.setZero();
-          hit.push_back(k);
-        }
-      }
-      if (hit.empty()) break;
-      for (int sweep = 0; sweep < cs.iterations; ++sweep) {
-        double largest = 0.0;
-        for (int k : hit) {
-          Contact& c = ws.contacts[k];
-          largest = std::max(largest, sweepContact(c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction,
-                                                   state, w_W));
-        }
-        if (largest < kTolerance) break;
-      }
-    }
-  }
-  // Then projected Gauss-Seidel over every contact: no penetration, Coulomb
-  // friction; a speculative contact may close its gap, no more.
-  for (int sweep = 0; sweep < cs.iterations; ++sweep) {
-    double largest = 0.0;
-    for (Contact& c : ws.contacts) {
-      largest = std::max(largest, sweepContact(c, c.normal_impulse, c.tangent_impulse, c.target_normal_velocity,
-                                               cs.friction, state, w_W));
-    }
-    if (largest < kTolerance) break;
+  // Islands: contacts only couple bodies they join (the scene and sleepers
+  // join nothing), so each island is solved on its own, to its own
+  // convergence: a box still bouncing does not keep the others sweeping.
+  groupIslands(model, state, ws);
+  for (std::size_t k = 0; k + 1 < ws.island_starts.size(); ++k) {
+    const int* first = ws.island_contacts.data() + ws.island_starts[k];
+    const int* last = ws.island_contacts.data() + ws.island_starts[k + 1];
+    solveIsland(first, last, cs, threshold, h, state, w_W, ws);
   }
   for (Contact& c : ws.contacts) {
     c.predicted_separation = c.separation + h * c.normal_W.dot(relativeVelocity(c, state, w_W));

@@ -63,8 +63,10 @@ struct Workspace {
   /// Broad phase: bodies ordered along x, and the pairs whose boxes overlap.
   std::vector<int> sweep_order;
   std::vector<std::pair<int, int>> pairs;
-  std::vector<double> margins;
+  std::vector<double> margins, box_lo, box_hi, sorted_boxes;
   std::vector<int> impact_contacts;
+  /// Islands of the impulse solve: contact indices island by island, and offsets.
+  std::vector<int> island_contacts, island_starts, island_parent, island_of;
   /// Deepest penetration seen in this step's detection (m, ≥ 0).
   double deepest_penetration = 0.0;
   /// Per body: touched the scene this step (only bodies in contact may sleep).
