@@ -3,7 +3,7 @@
 // ground, 2 s at Δt = 1 ms. Prints, per N, the median over R runs of ns per
 // step and per body-step, and (from the last run) the share at rest at the
 // end, the deepest penetration and the lowest centre of mass.
-// Usage: world_bench [runs] [N ...]
+// Usage: world_bench [runs] [N ...]; RBS_THREADS=k limits the step to k threads.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
     for (int r = 0; r < runs; ++r) {
       s = scene.start;
       Workspace ws;
+      if (const char* t = std::getenv("RBS_THREADS")) ws.threads = std::atoi(t);
       deepest = 0.0;
       const auto t0 = std::chrono::steady_clock::now();
       for (int k = 0; k < 2000; ++k) {

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <thread>
+
+#include "rigid_body_sim/core/parallel.h"
 
 namespace rigid_body_sim::core {
 namespace {
@@ -77,8 +81,14 @@ void scanBody(const Model& model, const State& state, int a, int o, double margi
   const Mat3 R_WO = so.q_WB.toRotationMatrix();
   for (int i = 0; i < static_cast<int>(ba.contact_points.size()); ++i) {
     const ContactPoint& p = ba.contact_points[i];
+    const Vec3 p_O = centre_O + R_OA * p.r_B;
+    // Outside the box around o's solid, grown by the margin: too far to touch.
+    const double reach = margin + p.radius;
+    if ((p_O.array() < bo.solid_lo_B.array() - reach).any() || (p_O.array() > bo.solid_hi_B.array() + reach).any()) {
+      continue;
+    }
     Vec3 n_O;
-    const double separation = solid.eval(centre_O + R_OA * p.r_B, &n_O) - p.radius;
+    const double separation = solid.eval(p_O, &n_O) - p.radius;
     if (separation < margin) visit(i, separation, Vec3(R_WO * n_O));
   }
 }
@@ -132,7 +142,7 @@ void reduceRegion(const std::vector<ContactCandidate>& cands, const BodyModel& b
 /// Turns one body's candidates into contacts: regions by item (or other
 /// body) and normal direction (within about 20°; a plane is one region),
 /// each reduced to at most four points for the impulse method.
-void emitContacts(const Model& model, const State& state, int body, bool reduce, Workspace& ws) {
+void emitContacts(const Model& model, const State& state, int body, bool reduce, StepScratch& ws) {
   constexpr double kSameRegionCos = 0.94;
   const BodyModel& b = model.body(body);
   const BodyState& s = state.bodies[body];
@@ -159,6 +169,7 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
     cands[i].region = r;
   }
   const Quat q_BW = s.q_WB.conjugate();
+  const std::size_t first = ws.contacts.size();
   std::size_t start = 0;
   for (int r = 0; r < regions; ++r) {
     ws.region_members.clear();
@@ -183,6 +194,12 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
       c.separation = cand.separation;
     }
   }
+  // In key order (item, then point) within the batch: the contacts of a
+  // step come out sorted by (body, other, item, point), which warm starting
+  // looks them up by.
+  const auto batch = ws.contacts.end() - static_cast<std::ptrdiff_t>(ws.contacts.size() - first);
+  std::sort(batch, ws.contacts.end(),
+            [](const Contact& x, const Contact& y) { return x.item != y.item ? x.item < y.item : x.point < y.point; });
 }
 
 /// Sweep and prune along x: the pairs of bodies (i < j, at least one awake)
@@ -273,31 +290,34 @@ void applyImpulse(const Contact& c, double ln, double l1, double l2, State& stat
   }
 }
 
-/// Starts every contact from the impulse it carried last step (if it
-/// existed), applied to the bodies before the first sweep. The last step's
-/// list is sorted by key.
-void warmStart(const Model& model, State& state, std::vector<Vec3>& w_W, std::vector<Contact>& contacts) {
+/// Starts a contact from the impulse it carried last step (if it existed),
+/// applied to the bodies before the first sweep. The last step's list is
+/// sorted by key.
+void warmStart(const Model& model, State& state, std::vector<Vec3>& w_W, Contact& c) {
   const std::vector<ContactImpulse>& last = state.contact_impulses;
-  for (Contact& c : contacts) {
-    const auto it = std::lower_bound(last.begin(), last.end(), c, [](const ContactImpulse& x, const Contact& y) {
-      return keyLess(x.body, x.other, x.item, x.point, y.body, y.other, y.item, y.point);
-    });
-    if (it == last.end() || it->body != c.body || it->other != c.other || it->item != c.item || it->point != c.point) {
-      continue;
-    }
-    c.normal_impulse = it->normal;
-    c.tangent_impulse = Eigen::Vector2d(c.tangent1_W.dot(it->tangent_W), c.tangent2_W.dot(it->tangent_W));
-    const double limit = model.contact().friction * c.normal_impulse;
-    if (c.tangent_impulse.norm() > limit) c.tangent_impulse *= limit / c.tangent_impulse.norm();
-    applyImpulse(c, c.normal_impulse, c.tangent_impulse.x(), c.tangent_impulse.y(), state, w_W);
+  const auto it = std::lower_bound(last.begin(), last.end(), c, [](const ContactImpulse& x, const Contact& y) {
+    return keyLess(x.body, x.other, x.item, x.point, y.body, y.other, y.item, y.point);
+  });
+  if (it == last.end() || it->body != c.body || it->other != c.other || it->item != c.item || it->point != c.point) {
+    return;
   }
+  c.normal_impulse = it->normal;
+  c.tangent_impulse = Eigen::Vector2d(c.tangent1_W.dot(it->tangent_W), c.tangent2_W.dot(it->tangent_W));
+  const double limit = model.contact().friction * c.normal_impulse;
+  if (c.tangent_impulse.norm() > limit) c.tangent_impulse *= limit / c.tangent_impulse.norm();
+  applyImpulse(c, c.normal_impulse, c.tangent_impulse.x(), c.tangent_impulse.y(), state, w_W);
+}
+
+Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
+  const Mat3 R = q_WB.toRotationMatrix();
+  return R * b.inv_inertia_B.asDiagonal() * R.transpose();
 }
 
 /// One Gauss-Seidel update of one contact, on the accumulated impulses given:
 /// friction first (it matters less than not sinking), then the normal to
 /// reach `target` (m/s). Returns the velocity change it made (m/s).
-double sweepContact(Contact& c, double& normal, Eigen::Vector2d& tangent, double target, double friction,
-                    State& state, std::vector<Vec3>& w_W) {
+double sweepContact(Contact& c, double& normal, Eigen::Vector2d& tangent, double target, double friction, State& state,
+                    std::vector<Vec3>& w_W) {
   // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows. Otherwise
   // slide: a point that is clearly slipping gets the full μ λ_N against its
   // slip (Coulomb's sliding friction opposes the slip, whatever K's
@@ -324,11 +344,6 @@ double sweepContact(Contact& c, double& normal, Eigen::Vector2d& tangent, double
   normal = ln;
   applyImpulse(c, dln, 0.0, 0.0, state, w_W);
   return (std::abs(dln) + dlt.norm()) / c.normal_mass;
-}
-
-Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
-  const Mat3 R = q_WB.toRotationMatrix();
-  return R * b.inv_inertia_B.asDiagonal() * R.transpose();
 }
 
 /// Sorts the contacts into islands: bodies joined by contacts (through
@@ -362,11 +377,57 @@ void groupIslands(const Model& model, const State& state, Workspace& ws) {
   ws.island_starts.push_back(n_contacts);
 }
 
-/// Restitution (impact passes) then projected Gauss-Seidel for the contacts
-/// [first, last) of one island.
-void solveIsland(const int* first, const int* last, const ContactSettings& cs, double threshold, double h,
-                 State& state, std::vector<Vec3>& w_W, Workspace& ws) {
+/// The entries of the notes' K = M⁻¹𝐈 − r* I⁻¹ r* a contact's solve needs
+/// (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n), and TᵀKT likewise, with the other body's
+/// terms added), and its target normal velocity. A sleeping body is part of
+/// the ground: no mass terms.
+void prepareContact(const Model& model, const State& state, double h, Contact& c) {
+  const Vec3& n = c.normal_W;
+  c.tangent1_W = (std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
+  c.tangent2_W = n.cross(c.tangent1_W);
+  const BodyModel& b = model.body(c.body);
+  const Mat3 inv_I = worldInverseInertia(b, state.bodies[c.body].q_WB);
+  const Vec3 rn = c.r_W.cross(n), r1 = c.r_W.cross(c.tangent1_W), r2 = c.r_W.cross(c.tangent2_W);
+  c.inv_mass = b.inv_mass;
+  c.turn_n = inv_I * rn;
+  c.turn_t1 = inv_I * r1;
+  c.turn_t2 = inv_I * r2;
+  double knn = c.inv_mass + rn.dot(c.turn_n);
+  Eigen::Matrix2d k;
+  k << c.inv_mass + r1.dot(c.turn_t1), r1.dot(c.turn_t2),  //
+      r2.dot(c.turn_t1), c.inv_mass + r2.dot(c.turn_t2);
+  c.other_inv_mass = 0.0;
+  c.other_turn_n = c.other_turn_t1 = c.other_turn_t2 = Vec3::Zero();
+  if (c.other >= 0 && !state.bodies[c.other].asleep) {
+    const BodyModel& o = model.body(c.other);
+    const Mat3 inv_I_o = worldInverseInertia(o, state.bodies[c.other].q_WB);
+    const Vec3 on = c.r_other_W.cross(n), o1 = c.r_other_W.cross(c.tangent1_W), o2 = c.r_other_W.cross(c.tangent2_W);
+    c.other_inv_mass = o.inv_mass;
+    c.other_turn_n = inv_I_o * on;
+    c.other_turn_t1 = inv_I_o * o1;
+    c.other_turn_t2 = inv_I_o * o2;
+    knn += o.inv_mass + on.dot(c.other_turn_n);
+    Eigen::Matrix2d ko;
+    ko << o.inv_mass + o1.dot(c.other_turn_t1), o1.dot(c.other_turn_t2),  //
+        o2.dot(c.other_turn_t1), o.inv_mass + o2.dot(c.other_turn_t2);
+    k += ko;
+  }
+  c.normal_mass = 1.0 / knn;
+  c.tangent_mass = k.inverse();
+  c.target_normal_velocity = c.separation > 0.0 ? -c.separation / h : 0.0;
+  c.normal_impulse = 0.0;
+  c.tangent_impulse.setZero();
+}
+
+/// For the contacts [first, last) of one island: prepare, warm start,
+/// restitution (impact passes), then projected Gauss-Seidel.
+void solveIsland(const Model& model, const int* first, const int* last, double h, State& state, std::vector<Vec3>& w_W,
+                 Workspace& ws, StepScratch& scratch) {
+  const ContactSettings& cs = model.contact();
+  const double threshold = model.restitutionThreshold();
   std::vector<Contact>& contacts = ws.contacts;
+  for (const int* k = first; k != last; ++k) prepareContact(model, state, h, contacts[*k]);
+  for (const int* k = first; k != last; ++k) warmStart(model, state, w_W, contacts[*k]);
   constexpr double kTolerance = 1e-8;  // m/s of velocity change in a sweep: 1e-11 m of drift per step
   // Impacts first, as a sequence of simultaneous collisions: the contacts
   // arriving faster than the threshold are solved together to separate at
@@ -377,7 +438,7 @@ void solveIsland(const int* first, const int* last, const ContactSettings& cs, d
   // keep pushing.
   if (cs.restitution > 0.0) {
     const int max_passes = 2 * static_cast<int>(last - first) + 2;
-    std::vector<int>& hit = ws.impact_contacts;
+    std::vector<int>& hit = scratch.impact_contacts;
     for (int pass = 0; pass < max_passes; ++pass) {
       hit.clear();
       for (const int* k = first; k != last; ++k) {
@@ -396,8 +457,8 @@ void solveIsland(const int* first, const int* last, const ContactSettings& cs, d
         double largest = 0.0;
         for (int k : hit) {
           Contact& c = contacts[k];
-          largest = std::max(largest, sweepContact(c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction,
-                                                   state, w_W));
+          largest = std::max(
+              largest, sweepContact(c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction, state, w_W));
         }
         if (largest < kTolerance) break;
       }
@@ -418,11 +479,31 @@ void solveIsland(const int* first, const int* last, const ContactSettings& cs, d
 
 }  // namespace
 
+/// How many parts to split `work` units into: one unless there is enough
+/// work for a second core to pay (and a pool to run it on).
+int partsFor(Workspace& ws, std::size_t work) {
+  static const int cores = static_cast<int>(std::thread::hardware_concurrency());  // a system call: once
+  int threads = ws.threads > 0 ? ws.threads : cores;
+  threads = std::max(1, std::min(threads, 8));
+  if (threads == 1 || work < ws.min_parallel_work) return 1;  // the hand-over would cost more than it saves
+  if (!ws.pool || ws.pool->threads() != threads) ws.pool = std::make_shared<WorkerPool>(threads);
+  return threads;
+}
+
+/// Runs part(k) for k < parts, in parallel when parts > 1.
+void runParts(Workspace& ws, int parts, const std::function<void(int)>& part) {
+  if (parts == 1) {
+    part(0);
+  } else {
+    ws.pool->run(part);
+  }
+}
+
 void detectContacts(const Model& model, const State& state, double h, Workspace& ws) {
   ws.contacts.clear();
   ws.deepest_penetration = 0.0;
   const int n = static_cast<int>(model.bodyCount());
-  const bool multi = n > 1;
+  const bool multi = n > 1 && model.contact().method != ContactMethod::kShapeMatching;
   if (model.scene().empty() && !multi) {
     ws.in_contact.clear();  // no scene, no other body: no contact (and no allocation)
     return;
@@ -431,45 +512,67 @@ void detectContacts(const Model& model, const State& state, double h, Workspace&
   const ContactSettings& cs = model.contact();
   const bool impulse = cs.method == ContactMethod::kImpulse;
   const auto margin = [&](int body) {
+    if (state.bodies[body].asleep) return std::max(cs.position_slop, 1e-4);
     if (cs.method == ContactMethod::kPenaltyQuadratic) return cs.penalty_buffer;
     if (cs.method == ContactMethod::kPenaltyLogBarrier) return cs.barrier_buffer;
     return speculativeMargin(model.body(body), state.bodies[body], h, cs.position_slop);
   };
-  const auto note = [&](int body, double separation) {
-    ws.in_contact[body] = 1;
-    ws.deepest_penetration = std::max(ws.deepest_penetration, -separation);
-  };
-  // Body against body (both ways). A sleeping body that an awake one comes
-  // at, or presses into, wakes up; the state is const here, so the pair's
-  // contacts keep the sleeper as static this step and wake() runs in step().
-  if (multi && cs.method != ContactMethod::kShapeMatching) {
+  // Body against body, both ways: a's points against o's solid for every
+  // pair the broad phase keeps, as directions (a, o) sorted by a then o.
+  ws.directions.clear();
+  if (multi) {
     ws.margins.resize(n);
-    for (int i = 0; i < n; ++i) ws.margins[i] = state.bodies[i].asleep ? std::max(cs.position_slop, 1e-4) : margin(i);
+    for (int i = 0; i < n; ++i) ws.margins[i] = margin(i);
     broadPhase(model, state, ws);
     for (const auto& [i, j] : ws.pairs) {
-      const double m = ws.margins[i] + ws.margins[j];
-      for (const auto& [a, o] : {std::make_pair(i, j), std::make_pair(j, i)}) {
-        ws.candidates.clear();
-        scanBody(model, state, a, o, m, [&](int point, double separation, const Vec3& normal) {
-          ws.candidates.push_back({o, -1, point, 0, separation, normal});
-          note(a, separation);
-          ws.in_contact[o] = 1;
-        });
-        if (!ws.candidates.empty()) emitContacts(model, state, a, impulse, ws);
+      ws.directions.emplace_back(i, j);
+      ws.directions.emplace_back(j, i);
+    }
+    std::sort(ws.directions.begin(), ws.directions.end());
+  }
+  // Body by body (each against the scene, then against the others in
+  // order), so contacts come out sorted by key; split over the cores in
+  // contiguous ranges of bodies, merged in order.
+  std::size_t awake = 0;
+  for (const BodyState& b : state.bodies) awake += !b.asleep;
+  const int parts = partsFor(ws, awake);
+  ws.parts.resize(std::max<std::size_t>(ws.parts.size(), parts));
+  runParts(ws, parts, [&](int k) {
+    StepScratch& out = ws.parts[k];
+    out.contacts.clear();
+    out.deepest = 0.0;
+    const int begin = n * k / parts, end = n * (k + 1) / parts;
+    auto dir = std::lower_bound(ws.directions.begin(), ws.directions.end(), std::make_pair(begin, -1));
+    for (int body = begin; body < end; ++body) {
+      const BodyState& s = state.bodies[body];
+      if (!s.asleep && !model.scene().empty()) {
+        out.candidates.clear();
+        scanScene(model, s, body, margin(body), out.separations,
+                  [&](int item, int point, double separation, const Vec3& normal) {
+                    out.candidates.push_back({-1, item, point, 0, separation, normal});
+                    out.deepest = std::max(out.deepest, -separation);
+                  });
+        if (!out.candidates.empty()) emitContacts(model, state, body, impulse, out);
+      }
+      for (; dir != ws.directions.end() && dir->first == body; ++dir) {
+        const int o = dir->second;
+        out.candidates.clear();
+        scanBody(model, state, body, o, ws.margins[body] + ws.margins[o],
+                 [&](int point, double separation, const Vec3& normal) {
+                   out.candidates.push_back({o, -1, point, 0, separation, normal});
+                   out.deepest = std::max(out.deepest, -separation);
+                 });
+        if (!out.candidates.empty()) emitContacts(model, state, body, impulse, out);
       }
     }
+  });
+  for (int k = 0; k < parts; ++k) {
+    ws.contacts.insert(ws.contacts.end(), ws.parts[k].contacts.begin(), ws.parts[k].contacts.end());
+    ws.deepest_penetration = std::max(ws.deepest_penetration, ws.parts[k].deepest);
   }
-  if (model.scene().empty()) return;
-  for (int body = 0; body < n; ++body) {
-    const BodyState& s = state.bodies[body];
-    if (s.asleep) continue;
-    ws.candidates.clear();
-    scanScene(model, s, body, margin(body), ws.separations,
-              [&](int item, int point, double separation, const Vec3& normal) {
-                ws.candidates.push_back({-1, item, point, 0, separation, normal});
-                note(body, separation);
-              });
-    if (!ws.candidates.empty()) emitContacts(model, state, body, impulse, ws);
+  for (const Contact& c : ws.contacts) {
+    ws.in_contact[c.body] = 1;
+    if (c.other >= 0) ws.in_contact[c.other] = 1;
   }
 }
 
@@ -501,79 +604,41 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
     state.contact_impulses.clear();
     return;
   }
-  const ContactSettings& cs = model.contact();
-  const double threshold = model.restitutionThreshold();
-  // Work in world axes: ω_W = R w_B for the bodies in contact.
+  // Work in world axes: ω_W = R w_B.
   std::vector<Vec3>& w_W = ws.angular_velocities;
   w_W.resize(model.bodyCount());
   for (std::size_t i = 0; i < model.bodyCount(); ++i) w_W[i] = state.bodies[i].q_WB * state.bodies[i].w_B;
-  // Prepare each contact: the entries of the notes' K = M⁻¹𝐈 − r* I⁻¹ r*
-  // the solver needs (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n), and TᵀKT likewise, with
-  // the other body's terms added), and the target normal velocity. A
-  // sleeping body is part of the ground: no mass terms.
-  for (Contact& c : ws.contacts) {
-    const Vec3& n = c.normal_W;
-    c.tangent1_W = (std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
-    c.tangent2_W = n.cross(c.tangent1_W);
-    const BodyModel& b = model.body(c.body);
-    const Mat3 inv_I = worldInverseInertia(b, state.bodies[c.body].q_WB);
-    const Vec3 rn = c.r_W.cross(n), r1 = c.r_W.cross(c.tangent1_W), r2 = c.r_W.cross(c.tangent2_W);
-    c.inv_mass = b.inv_mass;
-    c.turn_n = inv_I * rn;
-    c.turn_t1 = inv_I * r1;
-    c.turn_t2 = inv_I * r2;
-    double knn = c.inv_mass + rn.dot(c.turn_n);
-    Eigen::Matrix2d k;
-    k << c.inv_mass + r1.dot(c.turn_t1), r1.dot(c.turn_t2),  //
-        r2.dot(c.turn_t1), c.inv_mass + r2.dot(c.turn_t2);
-    c.other_inv_mass = 0.0;
-    c.other_turn_n = c.other_turn_t1 = c.other_turn_t2 = Vec3::Zero();
-    if (c.other >= 0 && !state.bodies[c.other].asleep) {
-      const BodyModel& o = model.body(c.other);
-      const Mat3 inv_I_o = worldInverseInertia(o, state.bodies[c.other].q_WB);
-      const Vec3 on = c.r_other_W.cross(n), o1 = c.r_other_W.cross(c.tangent1_W), o2 = c.r_other_W.cross(c.tangent2_W);
-      c.other_inv_mass = o.inv_mass;
-      c.other_turn_n = inv_I_o * on;
-      c.other_turn_t1 = inv_I_o * o1;
-      c.other_turn_t2 = inv_I_o * o2;
-      knn += o.inv_mass + on.dot(c.other_turn_n);
-      Eigen::Matrix2d ko;
-      ko << o.inv_mass + o1.dot(c.other_turn_t1), o1.dot(c.other_turn_t2),  //
-          o2.dot(c.other_turn_t1), o.inv_mass + o2.dot(c.other_turn_t2);
-      k += ko;
-    }
-    c.normal_mass = 1.0 / knn;
-    c.tangent_mass = k.inverse();
-    c.target_normal_velocity = c.separation > 0.0 ? -c.separation / h : 0.0;
-    c.normal_impulse = 0.0;
-    c.tangent_impulse.setZero();
-  }
-  warmStart(model, state, w_W, ws.contacts);
-
   // Islands: contacts only couple bodies they join (the scene and sleepers
   // join nothing), so each island is solved on its own, to its own
   // convergence: a box still bouncing does not keep the others sweeping.
+  // Islands share no body, so they split over the cores with the same result.
   groupIslands(model, state, ws);
-  for (std::size_t k = 0; k + 1 < ws.island_starts.size(); ++k) {
-    const int* first = ws.island_contacts.data() + ws.island_starts[k];
-    const int* last = ws.island_contacts.data() + ws.island_starts[k + 1];
-    solveIsland(first, last, cs, threshold, h, state, w_W, ws);
-  }
+  const int islands = static_cast<int>(ws.island_starts.size()) - 1;
+  const int parts = islands > 1 ? partsFor(ws, ws.contacts.size() / 4) : 1;
+  ws.parts.resize(std::max<std::size_t>(ws.parts.size(), parts));
+  runParts(ws, parts, [&](int part) {
+    // Contiguous runs of islands holding about equal numbers of contacts.
+    const std::size_t total = ws.contacts.size();
+    for (int k = 0; k < islands; ++k) {
+      const std::size_t at = static_cast<std::size_t>(ws.island_starts[k]);
+      if (static_cast<int>(at * parts / total) != part) continue;
+      const int* first = ws.island_contacts.data() + ws.island_starts[k];
+      const int* last = ws.island_contacts.data() + ws.island_starts[k + 1];
+      solveIsland(model, first, last, h, state, w_W, ws, ws.parts[part]);
+    }
+  });
   for (Contact& c : ws.contacts) {
     c.predicted_separation = c.separation + h * c.normal_W.dot(relativeVelocity(c, state, w_W));
   }
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     state.bodies[i].w_B = state.bodies[i].q_WB.conjugate() * w_W[i];
   }
+  // The contacts come sorted by key (see detectContacts), and so do these.
   state.contact_impulses.clear();
   for (const Contact& c : ws.contacts) {
     const Vec3 tangent = c.tangent1_W * c.tangent_impulse.x() + c.tangent2_W * c.tangent_impulse.y();
     state.contact_impulses.push_back({c.body, c.other, c.item, c.point, c.normal_impulse, tangent});
   }
-  std::sort(state.contact_impulses.begin(), state.contact_impulses.end(),
-            [](const ContactImpulse& x, const ContactImpulse& y) {
-              return keyLess(x.body, x.other, x.item, x.point, y.body, y.other, y.item, y.point);
-            });
 }
 
 void correctPositions(const Model& model, State& state, Workspace& ws) {

@@ -6,6 +6,7 @@
 
 #include "rigid_body_sim/core/inertia.h"
 #include "rigid_body_sim/core/sdf_grid.h"
+#include "rigid_body_sim/core/sdf_surface.h"
 #include "validate.h"
 
 namespace rigid_body_sim::core {
@@ -96,8 +97,12 @@ void buildSolid(const BodySpec& spec, BodyModel& b) {
   for (const CollisionShape& shape : spec.collision) {
     const Pose X_BS = X_BL * shape.X_LS;
     switch (shape.kind) {
-      case CollisionShape::Kind::kBox: parts.push_back(Sdf::box(shape.size).transformed(X_BS)); break;
-      case CollisionShape::Kind::kSphere: parts.push_back(Sdf::sphere(shape.size.x()).transformed(X_BS)); break;
+      case CollisionShape::Kind::kBox:
+        parts.push_back(Sdf::box(shape.size).transformed(X_BS));
+        break;
+      case CollisionShape::Kind::kSphere:
+        parts.push_back(Sdf::sphere(shape.size.x()).transformed(X_BS));
+        break;
       case CollisionShape::Kind::kCylinder:
         parts.push_back(Sdf::cylinder(shape.size.x(), shape.size.y()).transformed(X_BS));
         break;
@@ -113,6 +118,11 @@ void buildSolid(const BodySpec& spec, BodyModel& b) {
     b.solid_B.push_back(parts.front());
   } else if (!parts.empty()) {
     b.solid_B.push_back(Sdf::unite(std::move(parts)));
+  }
+  if (!b.solid_B.empty()) {
+    const auto bounds = solidBounds(b.solid_B.front());
+    b.solid_lo_B = bounds ? bounds->lo : Vec3::Constant(-INFINITY);
+    b.solid_hi_B = bounds ? bounds->hi : Vec3::Constant(INFINITY);
   }
 }
 

@@ -1,10 +1,10 @@
 #include "rigid_body_sim/core/sdf.h"
 
-#include "rigid_body_sim/core/sdf_grid.h"
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "rigid_body_sim/core/sdf_grid.h"
 
 namespace rigid_body_sim::core {
 namespace {
@@ -88,11 +88,17 @@ double Sdf::evalLocal(const Vec3& p, Vec3* g) const {
         if (g) *g = Vec3(signOf(p.x()), signOf(p.y()), signOf(p.z())).cwiseProduct(outside) / out;
         return out;
       }
-      int k = 0;
-      const double in = q.maxCoeff(&k);
+      const double in = q.maxCoeff();
       if (g) {
+        // The nearest face's normal; on an edge or a corner (faces equally
+        // near, as where two equal boxes stand aligned), their mean, so no
+        // face is preferred by the order of the axes.
+        const double tie = 1e-9 * params_.maxCoeff();
         *g = Vec3::Zero();
-        (*g)(k) = signOf(p(k));
+        for (int a = 0; a < 3; ++a) {
+          if (q(a) >= in - tie) (*g)(a) = signOf(p(a));
+        }
+        g->normalize();
       }
       return in;
     }

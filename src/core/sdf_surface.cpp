@@ -1,9 +1,9 @@
 #include "rigid_body_sim/core/sdf_surface.h"
 
-#include "rigid_body_sim/core/sdf_grid.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "rigid_body_sim/core/sdf_grid.h"
 
 namespace rigid_body_sim::core {
 namespace {

@@ -238,7 +238,8 @@ std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& ba
       if (other.name == b.name) fail(path + ".name", "'" + b.name + "' is already the name of another body");
     }
     b.urdf = text(entry["urdf"], path + ".urdf");
-    const bool relative = b.urdf.front() != '/' && b.urdf.rfind("package://", 0) != 0 && b.urdf.rfind("file://", 0) != 0;
+    const bool relative =
+        b.urdf.front() != '/' && b.urdf.rfind("package://", 0) != 0 && b.urdf.rfind("file://", 0) != 0;
     if (relative && !base_dir.empty()) b.urdf = base_dir + "/" + b.urdf;
     if (entry["initial"]) parseInitial(entry["initial"], b.initial, path + ".initial");
     bodies.push_back(b);

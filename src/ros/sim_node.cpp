@@ -274,8 +274,8 @@ std::optional<int> SimNode::findBody(const std::string& name, std::string& error
 std::optional<core::Frame> SimNode::findFrame(const std::string& frame, int body, std::string& error) const {
   if (frame.empty() || frame == settings_.world_frame || frame == "world") return core::Frame::kWorld;
   if (frame == frames_[body] || frame == model_.body(body).link) return core::Frame::kBody;
-  error = "unknown frame '" + frame + "' (use '" + settings_.world_frame + "' or the body's frame '" + frames_[body] +
-          "')";
+  error =
+      "unknown frame '" + frame + "' (use '" + settings_.world_frame + "' or the body's frame '" + frames_[body] + "')";
   return std::nullopt;
 }
 

@@ -209,8 +209,8 @@ int run(const Args& args) {
     throw UsageError("--urdf and a config with a bodies list: give one or the other");
   }
   const bool world_config = !config.bodies.empty();
-  io::World world = world_config ? io::buildWorld(config)
-                                 : io::World{io::buildModel(config, io::loadUrdfFile(args.urdf)), {}};
+  io::World world =
+      world_config ? io::buildWorld(config) : io::World{io::buildModel(config, io::loadUrdfFile(args.urdf)), {}};
   if (!world_config) world.state.bodies = {core::bodyStateFromLink(world.model.body(0), config.initial)};
   const core::Model& model = world.model;
   core::State& state = world.state;
@@ -227,7 +227,8 @@ int run(const Args& args) {
   std::unique_ptr<CsvWriter> csv;
   if (!args.csv.empty()) csv = std::make_unique<CsvWriter>(args.csv, world_config);
   const auto write_rows = [&](double t) {
-    for (std::size_t i = 0; i < n; ++i) csv->row(t, model.body(i).name, core::linkState(model.body(i), state.bodies[i]));
+    for (std::size_t i = 0; i < n; ++i)
+      csv->row(t, model.body(i).name, core::linkState(model.body(i), state.bodies[i]));
   };
   // Progress bar only for runs that take a while (about a second or more).
   ProgressBar progress(steps, isatty(STDERR_FILENO) && steps * static_cast<long long>(n) >= 2'000'000);
@@ -268,8 +269,8 @@ int run(const Args& args) {
   int resting = 0;
   std::string bodies_json;
   for (std::size_t i = 0; i < n; ++i) {
-    max_penetration =
-        std::max(max_penetration, -std::min(0.0, core::minSeparation(model, state.bodies[i], static_cast<int>(i), 0.0)));
+    max_penetration = std::max(max_penetration,
+                               -std::min(0.0, core::minSeparation(model, state.bodies[i], static_cast<int>(i), 0.0)));
     const bool rest = core::atRest(model, state.bodies[i]);
     at_rest = at_rest && rest;
     resting += rest;
@@ -290,8 +291,9 @@ int run(const Args& args) {
   if (!args.quiet) {
     const auto rel = [](double a, double b) { return a == 0.0 ? std::abs(b) : (b - a) / std::abs(a); };
     if (world_config) {
-      std::fprintf(stderr, "rbsim: %zu bodies for %.6g s: %lld steps of %.6g s, %.3g s wall, %.1f ns/step (%.1f per body)\n",
-                   n, sim_time, steps, dt, wall_s, ns_per_step, ns_per_step / n);
+      std::fprintf(stderr,
+                   "rbsim: %zu bodies for %.6g s: %lld steps of %.6g s, %.3g s wall, %.1f ns/step (%.1f per body)\n", n,
+                   sim_time, steps, dt, wall_s, ns_per_step, ns_per_step / n);
       std::fprintf(stderr, "  at rest           %d of %zu\n", resting, n);
     } else {
       const core::BodyModel& bm = model.body(0);

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <random>
 
+#include "../test_util.h"
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/diagnostics.h"
 #include "rigid_body_sim/core/sdf_grid.h"
 #include "rigid_body_sim/core/step.h"
-#include "../test_util.h"
 
 namespace rigid_body_sim::test {
 namespace {
@@ -48,8 +48,7 @@ Vec3 momentum(const core::Model& model, const core::State& s) {
 
 TEST(TwoSpheres, HeadOnConservesMomentumWithRestitution) {
   const double e = 0.8;
-  const core::Model model(
-      world({named(ballBody(0.1, 1.0), "a"), named(ballBody(0.1, 2.0), "b")}, Vec3::Zero(), e));
+  const core::Model model(world({named(ballBody(0.1, 1.0), "a"), named(ballBody(0.1, 2.0), "b")}, Vec3::Zero(), e));
   core::State s;
   s.bodies = {at(model, 0, Vec3(-0.5, 0, 0), Vec3(2, 0, 0)), at(model, 1, Vec3(0.5, 0, 0), Vec3(-1, 0, 0))};
   const Vec3 p0 = momentum(model, s);
@@ -68,7 +67,7 @@ TEST(NewtonsCradle, ARowOfTouchingBallsPassesTheImpulseAlong) {
   for (int i = 0; i <= n; ++i) balls.push_back(named(ballBody(0.1), "ball" + std::to_string(i)));
   const core::Model model(world(balls, Vec3::Zero(), 1.0));
   core::State s;
-  s.bodies.push_back(at(model, 0, Vec3(-0.6, 0, 0), Vec3(1, 0, 0)));  // the striker
+  s.bodies.push_back(at(model, 0, Vec3(-0.6, 0, 0), Vec3(1, 0, 0)));                         // the striker
   for (int i = 1; i <= n; ++i) s.bodies.push_back(at(model, i, Vec3(0.2 * (i - 1), 0, 0)));  // touching
   const double e0 = core::totalEnergy(model, s);
   for (int k = 0; k < 1000; ++k) core::step(model, s);
@@ -160,6 +159,19 @@ TEST(Determinism, ARoomOfBoxesIsBitIdenticalRunToRun) {
   EXPECT_TRUE(bitIdentical(run(), run()));
 }
 
+TEST(Determinism, OneThreadOrTwoGiveTheSameBits) {
+  const Room room = roomOfBoxes();
+  auto run = [&](int threads) {
+    core::State s = room.start;
+    core::Workspace ws;
+    ws.threads = threads;
+    ws.min_parallel_work = 1;  // split even this small world
+    for (int k = 0; k < 1500; ++k) core::step(room.model, s, {}, &ws);
+    return s;
+  };
+  EXPECT_TRUE(bitIdentical(run(1), run(2)));
+}
+
 TEST(SdfGrid, AMeshCubeMatchesTheBoxDistanceWithinTwoCells) {
   // A 0.2 m cube as 12 triangles.
   core::TriangleMesh cube;
@@ -174,7 +186,7 @@ TEST(SdfGrid, AMeshCubeMatchesTheBoxDistanceWithinTwoCells) {
     const Vec3 p(u(rng), u(rng), u(rng));
     EXPECT_NEAR(grid->eval(p, nullptr), exact.eval(p), 2 * grid->cell()) << p.transpose();  // trilinear near edges
   }
-  EXPECT_LT(grid->eval(Vec3::Zero(), nullptr), -0.09);  // inside is negative
+  EXPECT_LT(grid->eval(Vec3::Zero(), nullptr), -0.09);         // inside is negative
   EXPECT_NEAR(grid->eval(Vec3(1, 0, 0), nullptr), 0.9, 1e-9);  // beyond the grid: plus the distance
 }
 

@@ -234,7 +234,8 @@ TEST(Config, BadBodiesAreRefusedByKey) {
   expectRefused("bodies: [{name: a, urdf: x.urdf, colour: red}]", {"'bodies[0].colour'", "unknown key"});
   expectRefused("bodies: [{name: a, urdf: x.urdf, initial: {position: [0, 0]}}]",
                 {"'bodies[0].initial.position'", "[x, y, z]"});
-  expectRefused("initial: {position: [0, 0, 1]}\nbodies: [{name: a, urdf: x.urdf}]", {"'initial'", "bodies[i].initial"});
+  expectRefused("initial: {position: [0, 0, 1]}\nbodies: [{name: a, urdf: x.urdf}]",
+                {"'initial'", "bodies[i].initial"});
 }
 
 TEST(Config, AWorldLoadsEveryBodyUnderItsName) {

@@ -102,8 +102,8 @@ TEST(Rbsim, ReportsPenetrationAndRestOfADroppedBox) {
 
 TEST(Rbsim, RunsAWorldOfBodiesFromTheConfig) {
   const std::string csv = tempPath("world.csv");
-  const Result r = rbsim("--config " + std::string(RBS_SOURCE_DIR) + "/config/world.yaml --duration 5 --every 1000 --csv " +
-                         csv + " --quiet");
+  const Result r = rbsim("--config " + std::string(RBS_SOURCE_DIR) +
+                         "/config/world.yaml --duration 5 --every 1000 --csv " + csv + " --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
   const YAML::Node j = YAML::Load(r.out);
   ASSERT_EQ(j["bodies"].size(), 4u);

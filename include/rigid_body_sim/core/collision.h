@@ -12,18 +12,18 @@ namespace rigid_body_sim::core {
 
 /// A triangle mesh: vertices and the triangles over them (indices).
 struct TriangleMesh {
-  std::vector<Vec3> vertices;                  ///< m
-  std::vector<std::array<int, 3>> triangles;   ///< counter-clockwise seen from outside
+  std::vector<Vec3> vertices;                 ///< m
+  std::vector<std::array<int, 3>> triangles;  ///< counter-clockwise seen from outside
 };
 
 /// One <collision> element, posed in the link frame L.
 struct CollisionShape {
   enum class Kind { kBox, kSphere, kCylinder, kPoints };
   Kind kind = Kind::kBox;
-  Pose X_LS;                   ///< pose of the shape in the link frame
-  Vec3 size = Vec3::Zero();    ///< box: full size; sphere: (radius, ·, ·); cylinder: (radius, length, ·) (m)
-  TriangleMesh mesh;           ///< kPoints: the mesh, scaled, in the shape frame (m)
-  std::string name;            ///< where it came from, for messages
+  Pose X_LS;                 ///< pose of the shape in the link frame
+  Vec3 size = Vec3::Zero();  ///< box: full size; sphere: (radius, ·, ·); cylinder: (radius, length, ·) (m)
+  TriangleMesh mesh;         ///< kPoints: the mesh, scaled, in the shape frame (m)
+  std::string name;          ///< where it came from, for messages
 };
 
 /// A point the contact stage tests against the scene: a vertex (radius 0)

@@ -3,6 +3,7 @@
 // shape_matching.h.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "rigid_body_sim/core/model.h"
@@ -30,17 +31,19 @@ struct Contact {
   Vec3 tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();
   Vec3 turn_n = Vec3::Zero(), turn_t1 = Vec3::Zero(), turn_t2 = Vec3::Zero();  ///< I⁻¹ (r × ·), 1/(kg·m)
   Vec3 other_turn_n = Vec3::Zero(), other_turn_t1 = Vec3::Zero(), other_turn_t2 = Vec3::Zero();  ///< the other body's
-  double inv_mass = 0.0, other_inv_mass = 0.0;  ///< 1/kg; 0 for the scene and for a sleeping other body
-  double normal_mass = 0.0;                                                    ///< 1 / (nᵀ K n), kg
-  Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();                      ///< (Tᵀ K T)⁻¹, kg
-  double target_normal_velocity = 0.0;  ///< m/s, for the main solve
-  double impact_target = 0.0;           ///< m/s: e × approach speed, in an impact pass
-  double impact_normal = 0.0;           ///< N·s, this impact pass's λ_N
-  Eigen::Vector2d impact_tangent = Eigen::Vector2d::Zero();  ///< N·s, this impact pass's λ_T
+  double inv_mass = 0.0, other_inv_mass = 0.0;                ///< 1/kg; 0 for the scene and for a sleeping other body
+  double normal_mass = 0.0;                                   ///< 1 / (nᵀ K n), kg
+  Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();     ///< (Tᵀ K T)⁻¹, kg
+  double target_normal_velocity = 0.0;                        ///< m/s, for the main solve
+  double impact_target = 0.0;                                 ///< m/s: e × approach speed, in an impact pass
+  double impact_normal = 0.0;                                 ///< N·s, this impact pass's λ_N
+  Eigen::Vector2d impact_tangent = Eigen::Vector2d::Zero();   ///< N·s, this impact pass's λ_T
   double predicted_separation = 0.0;                          ///< m after the step, from the solved velocity (linear)
   double normal_impulse = 0.0;                                ///< accumulated λ_N ≥ 0, N·s
   Eigen::Vector2d tangent_impulse = Eigen::Vector2d::Zero();  ///< accumulated, |λ_T| ≤ μ λ_N, N·s
 };
+
+class WorkerPool;
 
 /// A contact point found by the detection, before the reduction.
 struct ContactCandidate {
@@ -52,29 +55,47 @@ struct ContactCandidate {
   Vec3 normal_W = Vec3::UnitZ();  ///< ∇φ at the point
 };
 
-/// Scratch memory of a step (MuJoCo keeps it in mjData; here it is passed in).
-struct Workspace {
-  std::vector<Contact> contacts;
+/// Scratch memory of one part of a step (one thread's share).
+struct StepScratch {
   std::vector<ContactCandidate> candidates;
   std::vector<Vec3> region_normals;
   std::vector<int> region_members;
   std::vector<Vec3> region_points;
   std::vector<double> separations;
-  /// Broad phase: bodies ordered along x, and the pairs whose boxes overlap.
-  std::vector<int> sweep_order;
-  std::vector<std::pair<int, int>> pairs;
-  std::vector<double> margins, box_lo, box_hi, sorted_boxes;
   std::vector<int> impact_contacts;
-  /// Islands of the impulse solve: contact indices island by island, and offsets.
-  std::vector<int> island_contacts, island_starts, island_parent, island_of;
+  std::vector<Contact> contacts;  ///< this part's contacts, before they are merged
+  double deepest = 0.0;           ///< m
+};
+
+/// Scratch memory of a step (MuJoCo keeps it in mjData; here it is passed
+/// in). Results do not depend on it: a fresh workspace or a reused one, one
+/// thread or two, give bit-identical steps.
+struct Workspace {
+  /// Threads the step may use, the caller's included: 0 = every core. The
+  /// step only splits work when enough bodies are awake for it to pay.
+  int threads = 0;
+  /// Awake bodies (or contacts) below which a stage runs on one thread.
+  std::size_t min_parallel_work = 256;
+
+  std::vector<Contact> contacts;
   /// Deepest penetration seen in this step's detection (m, ≥ 0).
   double deepest_penetration = 0.0;
-  /// Per body: touched the scene this step (only bodies in contact may sleep).
+  /// Per body: touched the scene or another body this step (only bodies in contact may sleep).
   std::vector<char> in_contact;
   /// Impulse solver: the bodies' angular velocities in world axes (rad/s).
   std::vector<Vec3> angular_velocities;
   /// Shape matching: where each vertex of the current body went (m, world).
   std::vector<Vec3> positions;
+  /// Broad phase: bodies ordered along x, their boxes, and the pairs whose boxes overlap.
+  std::vector<int> sweep_order;
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<double> margins, box_lo, box_hi, sorted_boxes;
+  /// Both directions of every pair, (a, o) sorted: a's points against o's solid.
+  std::vector<std::pair<int, int>> directions;
+  /// Islands of the impulse solve: contact indices island by island, and offsets.
+  std::vector<int> island_contacts, island_starts, island_parent, island_of;
+  std::vector<StepScratch> parts;
+  std::shared_ptr<WorkerPool> pool;
 };
 
 /// Contacts of the awake bodies, at the current state, against the scene and

@@ -42,7 +42,7 @@ struct ContactSettings {
   /// body does not jitter; never below 2|g|Δt (ERRATA.md), whatever is set.
   double restitution_threshold = 0.1;
   double sample_spacing = 0.1;     ///< m between collision samples on boxes and cylinders
-  int iterations = 30;             ///< impulse solver: most Gauss-Seidel sweeps per step
+  int iterations = 50;             ///< impulse solver: most Gauss-Seidel sweeps per step (a stack needs them)
   double position_slop = 1e-4;     ///< m of penetration left alone by the position correction
   double penalty_stiffness = 1e4;  ///< k, N/m per contact point
   double penalty_damping = 50.0;   ///< N·s/m per contact point (both penalty methods)
@@ -91,8 +91,8 @@ struct ModelSpec {
 
 /// One body as the integrator uses it: derived and validated quantities.
 struct BodyModel {
-  std::string name;  ///< the body's name in the world
-  std::string link;  ///< its URDF root link name
+  std::string name;                          ///< the body's name in the world
+  std::string link;                          ///< its URDF root link name
   double mass = 1.0;                         ///< kg
   double inv_mass = 1.0;                     ///< 1/kg
   Vec3 inertia_B = Vec3::Ones();             ///< principal moments, kg·m²
@@ -117,6 +117,7 @@ struct BodyModel {
   /// The body's solid in B (the union of its collision shapes), which other
   /// bodies' points are tested against; only built when there are several bodies.
   std::vector<Sdf> solid_B;
+  Vec3 solid_lo_B = Vec3::Zero(), solid_hi_B = Vec3::Zero();  ///< a box around solid_B, in B (m)
   double bound_radius = 0.0;  ///< m: every contact point lies within it of the centre of mass
   /// Shape matching: the mean of the contact points (B) and (Σ r̄ r̄ᵀ)⁻¹ of
   /// the points about it; empty when the points do not span three dimensions.

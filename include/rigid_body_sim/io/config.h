@@ -5,8 +5,8 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <stdexcept>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,9 +23,9 @@ class ConfigError : public std::runtime_error {
 
 /// One entry of the `bodies` list: a body of the world.
 struct BodyEntry {
-  std::string name;       ///< unique in the world
-  std::string urdf;       ///< a URDF file (relative to the config's folder, or package://), or for
-                          ///< the node the name of a parameter holding the URDF
+  std::string name;  ///< unique in the world
+  std::string urdf;  ///< a URDF file (relative to the config's folder, or package://), or for
+                     ///< the node the name of a parameter holding the URDF
   core::LinkState initial;
 };
 
@@ -67,7 +67,6 @@ struct World {
 /// Loads every body of config.bodies, each named by its entry, through
 /// `load_urdf` (which turns an entry's `urdf` into a BodySpec; the default
 /// reads files), and builds the model and the initial state.
-World buildWorld(const SimConfig& config,
-                 const std::function<core::BodySpec(const BodyEntry&)>& load_urdf = {});
+World buildWorld(const SimConfig& config, const std::function<core::BodySpec(const BodyEntry&)>& load_urdf = {});
 
 }  // namespace rigid_body_sim::io
