@@ -30,5 +30,9 @@ echo "== contacts: box drop (10 s) and mesh bodies against their vertex count (m
 "$BIN/bench_contact" --benchmark_repetitions="$REPS" --benchmark_report_aggregates_only=true 2>/dev/null |
   grep -E '_median|^Benchmark'
 
+echo "== many bodies: N boxes dropped on a grid, 2 s (median of 3 runs; one thread, then every core)"
+RBS_THREADS=1 "$BIN/world_bench" 3
+"$BIN/world_bench" 3
+
 echo "== gyroscopic integrator study (one run; ns/step is indicative only)"
 "$BIN/gyroscopic_study"
