@@ -346,35 +346,30 @@ double sweepContact(Contact& c, double& normal, Eigen::Vector2d& tangent, double
   return (std::abs(dln) + dlt.norm()) / c.normal_mass;
 }
 
-/// Sorts the contacts into islands: bodies joined by contacts (through
-/// awake bodies only). Fills ws.island_contacts (contact indices, island by
-/// island, each island in contact order) and ws.island_starts (offsets).
+/// Sorts the contacts into islands (findIslands). Fills ws.island_contacts
+/// (contact indices, island by island, each island in contact order) and
+/// ws.island_starts (offsets).
 void groupIslands(const Model& model, const State& state, Workspace& ws) {
-  std::vector<int>& parent = ws.island_parent;
-  parent.resize(model.bodyCount());
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
-  const auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (const Contact& c : ws.contacts) {
-    if (c.other < 0 || state.bodies[c.other].asleep) continue;
-    const int a = find(c.body), b = find(c.other);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the island's smallest body
-  }
-  const int n_contacts = static_cast<int>(ws.contacts.size());
-  ws.island_contacts.resize(n_contacts);
-  for (int k = 0; k < n_contacts; ++k) ws.island_contacts[k] = k;
-  std::vector<int>& island = ws.island_of;
-  island.resize(n_contacts);
-  for (int k = 0; k < n_contacts; ++k) island[k] = find(ws.contacts[k].body);
-  std::stable_sort(ws.island_contacts.begin(), ws.island_contacts.end(),
-                   [&](int x, int y) { return island[x] < island[y]; });
+  findIslands(model, state, ws);
+  // A counting sort by island root: islands in root order, each island's
+  // contacts in contact order.
+  const std::vector<int>& root = ws.island_root;
+  std::vector<int>& next = ws.island_of;  // per root: where its island's next contact goes
+  next.assign(model.bodyCount(), 0);
+  for (const Contact& c : ws.contacts) ++next[root[c.body]];
   ws.island_starts.clear();
-  for (int k = 0; k < n_contacts; ++k) {
-    if (k == 0 || island[ws.island_contacts[k]] != island[ws.island_contacts[k - 1]]) ws.island_starts.push_back(k);
+  int at = 0;
+  for (int& slot : next) {
+    const int count = slot;
+    slot = at;
+    if (count > 0) ws.island_starts.push_back(at);
+    at += count;
   }
-  ws.island_starts.push_back(n_contacts);
+  ws.island_starts.push_back(at);
+  ws.island_contacts.resize(ws.contacts.size());
+  for (std::size_t k = 0; k < ws.contacts.size(); ++k) {
+    ws.island_contacts[next[root[ws.contacts[k].body]]++] = static_cast<int>(k);
+  }
 }
 
 /// The entries of the notes' K = M⁻¹𝐈 − r* I⁻¹ r* a contact's solve needs
@@ -574,6 +569,22 @@ void detectContacts(const Model& model, const State& state, double h, Workspace&
     ws.in_contact[c.body] = 1;
     if (c.other >= 0) ws.in_contact[c.other] = 1;
   }
+}
+
+void findIslands(const Model& model, const State& state, Workspace& ws) {
+  std::vector<int>& parent = ws.island_root;
+  parent.resize(model.bodyCount());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+  const auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const Contact& c : ws.contacts) {
+    if (c.other < 0 || state.bodies[c.other].asleep || state.bodies[c.body].asleep) continue;
+    const int a = find(c.body), b = find(c.other);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the island's smallest body
+  }
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = find(static_cast<int>(i));
 }
 
 bool wakeTouchedSleepers(const Model& model, State& state, const Workspace& ws, double h) {

@@ -136,6 +136,27 @@ void integrateOrientation(const Quat& increment, BodyState& s) {
   s.q_WB.coeffs() *= 1.0 / std::sqrt(s.q_WB.squaredNorm());
 }
 
+/// Sleep by islands, as Box2D does: bodies joined by contacts fall asleep
+/// together, once every one of them has been still for the sleep time while
+/// touching something. A body alone would otherwise fall asleep under a
+/// neighbour still settling on it, and the neighbour's next jolt would wake
+/// it again, over and over. The islands are those of the impulse solve when
+/// it ran (no body has changed sleep state since).
+void sleepIslands(const Model& model, State& state, Workspace& ws, bool islands_known) {
+  if (!model.sleep().enabled || ws.in_contact.empty()) return;  // nothing touches: nothing sleeps
+  if (!islands_known) findIslands(model, state, ws);
+  std::vector<char>& ready = ws.island_ready;  // per root: every body of the island may sleep
+  ready.assign(model.bodyCount(), 1);
+  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
+    const BodyState& s = state.bodies[i];
+    if (!s.asleep && !readyToSleep(model, ws.in_contact[i] != 0, s)) ready[ws.island_root[i]] = 0;
+  }
+  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
+    BodyState& s = state.bodies[i];
+    if (!s.asleep && ready[ws.island_root[i]]) fallAsleep(s);
+  }
+}
+
 /// One step of length h of every awake body: the stages in order.
 void advance(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
   const std::size_t n = model.bodyCount();
@@ -175,9 +196,10 @@ void advance(const Model& model, State& state, const Loads& loads, double h, Wor
     const Quat rotation = gyroscopicRotation(model, model.body(i), h, s);
     integratePosition(h, s);
     integrateOrientation(rotation, s);
-    updateSleep(model, i < ws.in_contact.size() && ws.in_contact[i], h, s);
+    updateStillTime(model, h, s);
   }
   if (impulse) correctPositions(model, state, ws);
+  sleepIslands(model, state, ws, impulse);
 }
 
 /// The log-barrier method needs φ > 0 at every contact point at all times,

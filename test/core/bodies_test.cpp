@@ -106,6 +106,33 @@ TEST(Stack, FiveBoxesStandStillForTenSeconds) {
   }
 }
 
+// Sleep goes by islands: a box resting on the ground under a box still
+// sliding to a stop must not fall asleep before the top one (it would be
+// jolted awake again). Both have been still for the sleep time only once
+// the top one has stopped; they fall asleep in the same step and stay so.
+TEST(Sleep, TouchingBodiesFallAsleepTogetherAndStayAsleep) {
+  const core::Model model(stack(true));
+  core::State s;
+  s.bodies = {at(model, 0, Vec3(0, 0, 0.1)), at(model, 1, Vec3(0, 0, 0.3), Vec3(0.3, 0, 0))};
+  for (int i = 2; i < 5; ++i) s.bodies.push_back(at(model, i, Vec3(2.0 * i, 0, 0.1)));  // elsewhere, on the ground
+  core::Workspace ws;
+  int asleep_at[2] = {-1, -1};
+  for (int k = 0; k < 3000; ++k) {
+    core::step(model, s, {}, &ws);
+    for (int i = 0; i < 2; ++i) {
+      if (asleep_at[i] < 0 && s.bodies[i].asleep) asleep_at[i] = k;
+      if (asleep_at[i] >= 0) ASSERT_TRUE(s.bodies[i].asleep) << "box " << i << " woke at step " << k;
+    }
+  }
+  ASSERT_GE(asleep_at[1], 0);
+  EXPECT_EQ(asleep_at[0], asleep_at[1]);
+  // The top box slides for v/(μ g) = 0.06 s and settles; then the sleep time.
+  EXPECT_GE(asleep_at[1] * model.dt(), 0.06 + model.sleep().time - 0.005);
+  EXPECT_LT(asleep_at[1] * model.dt(), 1.0);
+  EXPECT_GT(s.bodies[1].p_WB.x(), 0.0);  // it slid, on top of the other
+  EXPECT_NEAR(s.bodies[1].p_WB.z(), 0.3, 1e-3);
+}
+
 /// 100 boxes (10 cm cubes) over a 2 × 2 m room, turned every way, dropped.
 struct Room {
   core::Model model;

@@ -93,7 +93,10 @@ struct Workspace {
   /// Both directions of every pair, (a, o) sorted: a's points against o's solid.
   std::vector<std::pair<int, int>> directions;
   /// Islands of the impulse solve: contact indices island by island, and offsets.
-  std::vector<int> island_contacts, island_starts, island_parent, island_of;
+  std::vector<int> island_contacts, island_starts, island_of;
+  /// Per body: its island's root, the island's smallest body index (findIslands).
+  std::vector<int> island_root;
+  std::vector<char> island_ready;  ///< per island root, for sleeping
   std::vector<StepScratch> parts;
   std::shared_ptr<WorkerPool> pool;
 };
@@ -114,6 +117,11 @@ void detectContacts(const Model& model, const State& state, double h, Workspace&
 /// Wakes the sleeping bodies an awake body comes at (faster than a resting
 /// contact) or presses into (deeper than the slop). Returns whether any woke.
 bool wakeTouchedSleepers(const Model& model, State& state, const Workspace& ws, double h);
+
+/// Islands: bodies joined by contacts between awake bodies (the scene and
+/// sleepers join nothing). Fills ws.island_root, per body the smallest body
+/// index of its island.
+void findIslands(const Model& model, const State& state, Workspace& ws);
 
 /// The notes' impulse response, for all contacts together: per contact the
 /// 3×3 K = M⁻¹𝐈 − (r)* I⁻¹ (r)* of the notes (with the other body's terms

@@ -76,20 +76,33 @@ State restState(const Model& model);
 /// (whether or not sleeping is enabled).
 bool atRest(const Model& model, const BodyState& s);
 
-/// After a step of h: counts the time a body stays below the sleep speeds,
-/// and puts it to sleep (velocities zeroed, no longer integrated, so it stays
-/// exactly put) once it has been still for the sleep time while `touching`
-/// the scene. A body in free flight never sleeps.
-inline void updateSleep(const Model& model, bool touching, double h, BodyState& s) {
+/// After a step of h: counts the time a body stays below the sleep speeds.
+inline void updateStillTime(const Model& model, double h, BodyState& s) {
   const SleepSettings& sleep = model.sleep();
   const bool still = s.v_WB.squaredNorm() < sleep.linear_velocity * sleep.linear_velocity &&
                      s.w_B.squaredNorm() < sleep.angular_velocity * sleep.angular_velocity;
   s.still_time = still ? s.still_time + h : 0.0;
-  if (sleep.enabled && touching && still && s.still_time >= sleep.time) {
-    s.asleep = true;
-    s.v_WB.setZero();
-    s.w_B.setZero();
-  }
+}
+
+/// Whether a body may fall asleep now: sleeping is on, the body has been
+/// still for the sleep time, and it is `touching` something (a body in free
+/// flight never sleeps).
+inline bool readyToSleep(const Model& model, bool touching, const BodyState& s) {
+  return model.sleep().enabled && touching && s.still_time > 0.0 && s.still_time >= model.sleep().time;
+}
+
+/// Puts a body to sleep: velocities zeroed, no longer integrated, so it
+/// stays exactly put until something wakes it.
+inline void fallAsleep(BodyState& s) {
+  s.asleep = true;
+  s.v_WB.setZero();
+  s.w_B.setZero();
+}
+
+/// updateStillTime, then sleep for a body on its own (one body, no islands).
+inline void updateSleep(const Model& model, bool touching, double h, BodyState& s) {
+  updateStillTime(model, h, s);
+  if (readyToSleep(model, touching, s)) fallAsleep(s);
 }
 
 /// Angular velocity in the world frame: ω_W = R_WB w_B (rad/s).
