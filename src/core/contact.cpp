@@ -168,8 +168,12 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
     }
     cands[i].region = r;
   }
+  // Reduce each region, then emit the kept candidates in key order (item,
+  // then point): the contacts of a step come out sorted by (body, other,
+  // item, point), which warm starting looks them up by.
   const Quat q_BW = s.q_WB.conjugate();
-  const std::size_t first = ws.contacts.size();
+  std::vector<int>& kept = ws.kept;
+  kept.clear();
   std::size_t start = 0;
   for (int r = 0; r < regions; ++r) {
     ws.region_members.clear();
@@ -180,26 +184,24 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
     if (reduce) {
       reduceRegion(cands, b, q_BW * cands[ws.region_members.front()].normal_W, ws.region_members, ws.region_points);
     }
-    for (int m : ws.region_members) {
-      const ContactCandidate& cand = cands[m];
-      const ContactPoint& p = b.contact_points[cand.point];
-      Contact& c = ws.contacts.emplace_back();
-      c.body = body;
-      c.other = cand.other;
-      c.item = cand.item;
-      c.point = cand.point;
-      c.normal_W = cand.normal_W;
-      c.r_W = s.q_WB * p.r_B - p.radius * cand.normal_W;
-      if (c.other >= 0) c.r_other_W = s.p_WB + c.r_W - state.bodies[c.other].p_WB;
-      c.separation = cand.separation;
-    }
+    kept.insert(kept.end(), ws.region_members.begin(), ws.region_members.end());
   }
-  // In key order (item, then point) within the batch: the contacts of a
-  // step come out sorted by (body, other, item, point), which warm starting
-  // looks them up by.
-  const auto batch = ws.contacts.end() - static_cast<std::ptrdiff_t>(ws.contacts.size() - first);
-  std::sort(batch, ws.contacts.end(),
-            [](const Contact& x, const Contact& y) { return x.item != y.item ? x.item < y.item : x.point < y.point; });
+  std::sort(kept.begin(), kept.end(), [&](int x, int y) {
+    return cands[x].item != cands[y].item ? cands[x].item < cands[y].item : cands[x].point < cands[y].point;
+  });
+  for (int m : kept) {
+    const ContactCandidate& cand = cands[m];
+    const ContactPoint& p = b.contact_points[cand.point];
+    Contact& c = ws.contacts.emplace_back();
+    c.body = body;
+    c.other = cand.other;
+    c.item = cand.item;
+    c.point = cand.point;
+    c.normal_W = cand.normal_W;
+    c.r_W = s.q_WB * p.r_B - p.radius * cand.normal_W;
+    if (c.other >= 0) c.r_other_W = s.p_WB + c.r_W - state.bodies[c.other].p_WB;
+    c.separation = cand.separation;
+  }
 }
 
 /// Sweep and prune along x: the pairs of bodies (i < j, at least one awake)
@@ -290,22 +292,32 @@ void applyImpulse(const Contact& c, double ln, double l1, double l2, State& stat
   }
 }
 
-/// Starts a contact from the impulse it carried last step (if it existed),
-/// applied to the bodies before the first sweep. The last step's list is
-/// sorted by key.
+/// Starts a contact from the impulse it carried last step (if it existed,
+/// see matchLastImpulses), applied to the bodies before the first sweep.
 void warmStart(const Model& model, State& state, std::vector<Vec3>& w_W, Contact& c) {
-  const std::vector<ContactImpulse>& last = state.contact_impulses;
-  const auto it = std::lower_bound(last.begin(), last.end(), c, [](const ContactImpulse& x, const Contact& y) {
-    return keyLess(x.body, x.other, x.item, x.point, y.body, y.other, y.item, y.point);
-  });
-  if (it == last.end() || it->body != c.body || it->other != c.other || it->item != c.item || it->point != c.point) {
-    return;
-  }
-  c.normal_impulse = it->normal;
-  c.tangent_impulse = Eigen::Vector2d(c.tangent1_W.dot(it->tangent_W), c.tangent2_W.dot(it->tangent_W));
+  if (c.last_impulse < 0) return;
+  const ContactImpulse last = state.contact_impulses[c.last_impulse];
+  c.normal_impulse = last.normal;
+  c.tangent_impulse = Eigen::Vector2d(c.tangent1_W.dot(last.tangent_W), c.tangent2_W.dot(last.tangent_W));
   const double limit = model.contact().friction * c.normal_impulse;
   if (c.tangent_impulse.norm() > limit) c.tangent_impulse *= limit / c.tangent_impulse.norm();
   applyImpulse(c, c.normal_impulse, c.tangent_impulse.x(), c.tangent_impulse.y(), state, w_W);
+}
+
+/// Finds each contact's impulse of the last step: both lists are sorted by
+/// key, so one merge walk does it.
+void matchLastImpulses(const State& state, std::vector<Contact>& contacts) {
+  const std::vector<ContactImpulse>& last = state.contact_impulses;
+  std::size_t k = 0;
+  for (Contact& c : contacts) {
+    while (k < last.size() &&
+           keyLess(last[k].body, last[k].other, last[k].item, last[k].point, c.body, c.other, c.item, c.point)) {
+      ++k;
+    }
+    const bool same = k < last.size() && last[k].body == c.body && last[k].other == c.other &&
+                      last[k].item == c.item && last[k].point == c.point;
+    c.last_impulse = same ? static_cast<int>(k) : -1;
+  }
 }
 
 Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
@@ -324,8 +336,17 @@ double sweepContact(Contact& c, double& normal, Eigen::Vector2d& tangent, double
   // rotational coupling makes of the sticking impulse); near sticking, the
   // sticking impulse is scaled into the cone.
   constexpr double kSlipSpeed = 1e-3;  // m/s
-  Vec3 u = relativeVelocity(c, state, w_W);
-  const Eigen::Vector2d vt(c.tangent1_W.dot(u), c.tangent2_W.dot(u));
+  Vec3& v = state.bodies[c.body].v_WB;
+  Vec3& w = w_W[c.body];
+  Vec3* v_o = c.other >= 0 ? &state.bodies[c.other].v_WB : nullptr;
+  Vec3* w_o = c.other >= 0 ? &w_W[c.other] : nullptr;
+  // The contact velocity along n, t₁, t₂ through the Jacobian rows:
+  // d·(v + ω × r) = d·v + ω·(r × d), minus the other body's.
+  Eigen::Vector2d vt(c.tangent1_W.dot(v) + c.rt1_W.dot(w), c.tangent2_W.dot(v) + c.rt2_W.dot(w));
+  if (v_o != nullptr) {
+    vt -= Eigen::Vector2d(c.tangent1_W.dot(*v_o) + c.other_rt1_W.dot(*w_o),
+                          c.tangent2_W.dot(*v_o) + c.other_rt2_W.dot(*w_o));
+  }
   Eigen::Vector2d lt = tangent - c.tangent_mass * vt;
   const double limit = friction * normal;
   const double stick = lt.norm();
@@ -335,14 +356,25 @@ double sweepContact(Contact& c, double& normal, Eigen::Vector2d& tangent, double
   }
   const Eigen::Vector2d dlt = lt - tangent;
   tangent = lt;
-  applyImpulse(c, 0.0, dlt.x(), dlt.y(), state, w_W);
+  const Vec3 P_t = dlt.x() * c.tangent1_W + dlt.y() * c.tangent2_W;
+  v += c.inv_mass * P_t;
+  w += dlt.x() * c.turn_t1 + dlt.y() * c.turn_t2;
+  if (v_o != nullptr) {
+    *v_o -= c.other_inv_mass * P_t;
+    *w_o -= dlt.x() * c.other_turn_t1 + dlt.y() * c.other_turn_t2;
+  }
   // Normal: reach the target velocity, never pull (λ_N ≥ 0).
-  u = relativeVelocity(c, state, w_W);
-  const double vn = c.normal_W.dot(u);
+  double vn = c.normal_W.dot(v) + c.rn_W.dot(w);
+  if (v_o != nullptr) vn -= c.normal_W.dot(*v_o) + c.other_rn_W.dot(*w_o);
   const double ln = std::max(normal - c.normal_mass * (vn - target), 0.0);
   const double dln = ln - normal;
   normal = ln;
-  applyImpulse(c, dln, 0.0, 0.0, state, w_W);
+  v += (c.inv_mass * dln) * c.normal_W;
+  w += dln * c.turn_n;
+  if (v_o != nullptr) {
+    *v_o -= (c.other_inv_mass * dln) * c.normal_W;
+    *w_o -= dln * c.other_turn_n;
+  }
   return (std::abs(dln) + dlt.norm()) / c.normal_mass;
 }
 
@@ -383,6 +415,9 @@ void prepareContact(const Model& model, const State& state, double h, Contact& c
   const BodyModel& b = model.body(c.body);
   const Mat3 inv_I = worldInverseInertia(b, state.bodies[c.body].q_WB);
   const Vec3 rn = c.r_W.cross(n), r1 = c.r_W.cross(c.tangent1_W), r2 = c.r_W.cross(c.tangent2_W);
+  c.rn_W = rn;
+  c.rt1_W = r1;
+  c.rt2_W = r2;
   c.inv_mass = b.inv_mass;
   c.turn_n = inv_I * rn;
   c.turn_t1 = inv_I * r1;
@@ -393,10 +428,14 @@ void prepareContact(const Model& model, const State& state, double h, Contact& c
       r2.dot(c.turn_t1), c.inv_mass + r2.dot(c.turn_t2);
   c.other_inv_mass = 0.0;
   c.other_turn_n = c.other_turn_t1 = c.other_turn_t2 = Vec3::Zero();
+  c.other_rn_W = c.other_rt1_W = c.other_rt2_W = Vec3::Zero();
   if (c.other >= 0 && !state.bodies[c.other].asleep) {
     const BodyModel& o = model.body(c.other);
     const Mat3 inv_I_o = worldInverseInertia(o, state.bodies[c.other].q_WB);
     const Vec3 on = c.r_other_W.cross(n), o1 = c.r_other_W.cross(c.tangent1_W), o2 = c.r_other_W.cross(c.tangent2_W);
+    c.other_rn_W = on;
+    c.other_rt1_W = o1;
+    c.other_rt2_W = o2;
     c.other_inv_mass = o.inv_mass;
     c.other_turn_n = inv_I_o * on;
     c.other_turn_t1 = inv_I_o * o1;
@@ -423,7 +462,7 @@ void solveIsland(const Model& model, const int* first, const int* last, double h
   std::vector<Contact>& contacts = ws.contacts;
   for (const int* k = first; k != last; ++k) prepareContact(model, state, h, contacts[*k]);
   for (const int* k = first; k != last; ++k) warmStart(model, state, w_W, contacts[*k]);
-  constexpr double kTolerance = 1e-8;  // m/s of velocity change in a sweep: 1e-11 m of drift per step
+  constexpr double kTolerance = 1e-7;  // m/s of velocity change in a sweep: 1e-11 m of drift per step
   // Impacts first, as a sequence of simultaneous collisions: the contacts
   // arriving faster than the threshold are solved together to separate at
   // e × their approach speed (the pre-solve speed, for the first pass).
@@ -561,10 +600,14 @@ void detectContacts(const Model& model, const State& state, double h, Workspace&
       }
     }
   });
-  for (int k = 0; k < parts; ++k) {
-    ws.contacts.insert(ws.contacts.end(), ws.parts[k].contacts.begin(), ws.parts[k].contacts.end());
-    ws.deepest_penetration = std::max(ws.deepest_penetration, ws.parts[k].deepest);
+  if (parts == 1) {
+    ws.contacts.swap(ws.parts[0].contacts);  // no copy; the old buffer is reused next time
+  } else {
+    for (int k = 0; k < parts; ++k) {
+      ws.contacts.insert(ws.contacts.end(), ws.parts[k].contacts.begin(), ws.parts[k].contacts.end());
+    }
   }
+  for (int k = 0; k < parts; ++k) ws.deepest_penetration = std::max(ws.deepest_penetration, ws.parts[k].deepest);
   for (const Contact& c : ws.contacts) {
     ws.in_contact[c.body] = 1;
     if (c.other >= 0) ws.in_contact[c.other] = 1;
@@ -623,6 +666,7 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
   // join nothing), so each island is solved on its own, to its own
   // convergence: a box still bouncing does not keep the others sweeping.
   // Islands share no body, so they split over the cores with the same result.
+  matchLastImpulses(state, ws.contacts);
   groupIslands(model, state, ws);
   const int islands = static_cast<int>(ws.island_starts.size()) - 1;
   const int parts = islands > 1 ? partsFor(ws, ws.contacts.size() / 4) : 1;
@@ -656,13 +700,25 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
   const double slop = model.contact().position_slop;
   // Resting contacts end the step where they began: nothing to correct.
   // (Linear prediction; rotation adds O(h²ω²r), far below the slop at rest.)
-  const bool all_clear = std::all_of(ws.contacts.begin(), ws.contacts.end(),
-                                     [&](const Contact& c) { return c.predicted_separation > -0.5 * slop; });
-  if (all_clear) return;
+  // Only the islands (of the impulse solve) with a contact predicted to end
+  // inside are corrected.
+  std::vector<char>& needs = ws.island_flags;  // per island root
+  needs.assign(model.bodyCount(), 0);
+  bool any = false;
+  for (const Contact& c : ws.contacts) {
+    if (c.predicted_separation <= -0.5 * slop) needs[ws.island_root[c.body]] = any = true;
+  }
+  if (!any) return;
+  std::vector<int>& todo = ws.correct_contacts;  // in contact order
+  todo.clear();
+  for (std::size_t k = 0; k < ws.contacts.size(); ++k) {
+    if (needs[ws.island_root[ws.contacts[k].body]]) todo.push_back(static_cast<int>(k));
+  }
   constexpr int kSweeps = 4;
   for (int sweep = 0; sweep < kSweeps; ++sweep) {
     double deepest = 0.0;
-    for (const Contact& c : ws.contacts) {
+    for (const int index : todo) {
+      const Contact& c = ws.contacts[index];
       const BodyModel& b = model.body(c.body);
       BodyState& s = state.bodies[c.body];
       const ContactPoint& p = b.contact_points[c.point];

@@ -145,7 +145,7 @@ void integrateOrientation(const Quat& increment, BodyState& s) {
 void sleepIslands(const Model& model, State& state, Workspace& ws, bool islands_known) {
   if (!model.sleep().enabled || ws.in_contact.empty()) return;  // nothing touches: nothing sleeps
   if (!islands_known) findIslands(model, state, ws);
-  std::vector<char>& ready = ws.island_ready;  // per root: every body of the island may sleep
+  std::vector<char>& ready = ws.island_flags;  // per root: every body of the island may sleep
   ready.assign(model.bodyCount(), 1);
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     const BodyState& s = state.bodies[i];

@@ -121,7 +121,9 @@ TEST(Sleep, TouchingBodiesFallAsleepTogetherAndStayAsleep) {
     core::step(model, s, {}, &ws);
     for (int i = 0; i < 2; ++i) {
       if (asleep_at[i] < 0 && s.bodies[i].asleep) asleep_at[i] = k;
-      if (asleep_at[i] >= 0) ASSERT_TRUE(s.bodies[i].asleep) << "box " << i << " woke at step " << k;
+      if (asleep_at[i] >= 0) {
+        ASSERT_TRUE(s.bodies[i].asleep) << "box " << i << " woke at step " << k;
+      }
     }
   }
   ASSERT_GE(asleep_at[1], 0);

@@ -29,6 +29,8 @@ struct Contact {
   // 3×3 matrix of the point, the solver needs nᵀKn and the 2×2 TᵀKT, and the
   // angular velocity an impulse along n, t₁, t₂ gives: I⁻¹ (r × n) etc.
   Vec3 tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();
+  Vec3 rn_W = Vec3::Zero(), rt1_W = Vec3::Zero(), rt2_W = Vec3::Zero();  ///< r × n, r × t₁, r × t₂ (m): Jacobian rows
+  Vec3 other_rn_W = Vec3::Zero(), other_rt1_W = Vec3::Zero(), other_rt2_W = Vec3::Zero();  ///< the other body's
   Vec3 turn_n = Vec3::Zero(), turn_t1 = Vec3::Zero(), turn_t2 = Vec3::Zero();  ///< I⁻¹ (r × ·), 1/(kg·m)
   Vec3 other_turn_n = Vec3::Zero(), other_turn_t1 = Vec3::Zero(), other_turn_t2 = Vec3::Zero();  ///< the other body's
   double inv_mass = 0.0, other_inv_mass = 0.0;                ///< 1/kg; 0 for the scene and for a sleeping other body
@@ -38,6 +40,7 @@ struct Contact {
   double impact_target = 0.0;                                 ///< m/s: e × approach speed, in an impact pass
   double impact_normal = 0.0;                                 ///< N·s, this impact pass's λ_N
   Eigen::Vector2d impact_tangent = Eigen::Vector2d::Zero();   ///< N·s, this impact pass's λ_T
+  int last_impulse = -1;                                      ///< index in state.contact_impulses, or -1 (new contact)
   double predicted_separation = 0.0;                          ///< m after the step, from the solved velocity (linear)
   double normal_impulse = 0.0;                                ///< accumulated λ_N ≥ 0, N·s
   Eigen::Vector2d tangent_impulse = Eigen::Vector2d::Zero();  ///< accumulated, |λ_T| ≤ μ λ_N, N·s
@@ -63,6 +66,7 @@ struct StepScratch {
   std::vector<Vec3> region_points;
   std::vector<double> separations;
   std::vector<int> impact_contacts;
+  std::vector<int> kept;  ///< candidates kept by the reduction
   std::vector<Contact> contacts;  ///< this part's contacts, before they are merged
   double deepest = 0.0;           ///< m
 };
@@ -96,7 +100,8 @@ struct Workspace {
   std::vector<int> island_contacts, island_starts, island_of;
   /// Per body: its island's root, the island's smallest body index (findIslands).
   std::vector<int> island_root;
-  std::vector<char> island_ready;  ///< per island root, for sleeping
+  std::vector<char> island_flags;  ///< per island root: scratch of the sleep and position stages
+  std::vector<int> correct_contacts;  ///< the contacts the position stage corrects
   std::vector<StepScratch> parts;
   std::shared_ptr<WorkerPool> pool;
 };
