@@ -408,12 +408,12 @@ void groupIslands(const Model& model, const State& state, Workspace& ws) {
 /// (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n), and TᵀKT likewise, with the other body's
 /// terms added), and its target normal velocity. A sleeping body is part of
 /// the ground: no mass terms.
-void prepareContact(const Model& model, const State& state, double h, Contact& c) {
+void prepareContact(const Model& model, const State& state, const std::vector<Mat3>& inv_I_W, double h, Contact& c) {
   const Vec3& n = c.normal_W;
   c.tangent1_W = (std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
   c.tangent2_W = n.cross(c.tangent1_W);
   const BodyModel& b = model.body(c.body);
-  const Mat3 inv_I = worldInverseInertia(b, state.bodies[c.body].q_WB);
+  const Mat3& inv_I = inv_I_W[c.body];
   const Vec3 rn = c.r_W.cross(n), r1 = c.r_W.cross(c.tangent1_W), r2 = c.r_W.cross(c.tangent2_W);
   c.rn_W = rn;
   c.rt1_W = r1;
@@ -431,7 +431,7 @@ void prepareContact(const Model& model, const State& state, double h, Contact& c
   c.other_rn_W = c.other_rt1_W = c.other_rt2_W = Vec3::Zero();
   if (c.other >= 0 && !state.bodies[c.other].asleep) {
     const BodyModel& o = model.body(c.other);
-    const Mat3 inv_I_o = worldInverseInertia(o, state.bodies[c.other].q_WB);
+    const Mat3& inv_I_o = inv_I_W[c.other];
     const Vec3 on = c.r_other_W.cross(n), o1 = c.r_other_W.cross(c.tangent1_W), o2 = c.r_other_W.cross(c.tangent2_W);
     c.other_rn_W = on;
     c.other_rt1_W = o1;
@@ -460,9 +460,9 @@ void solveIsland(const Model& model, const int* first, const int* last, double h
   const ContactSettings& cs = model.contact();
   const double threshold = model.restitutionThreshold();
   std::vector<Contact>& contacts = ws.contacts;
-  for (const int* k = first; k != last; ++k) prepareContact(model, state, h, contacts[*k]);
+  for (const int* k = first; k != last; ++k) prepareContact(model, state, ws.inverse_inertias, h, contacts[*k]);
   for (const int* k = first; k != last; ++k) warmStart(model, state, w_W, contacts[*k]);
-  constexpr double kTolerance = 1e-7;  // m/s of velocity change in a sweep: 1e-11 m of drift per step
+  constexpr double kTolerance = 1e-7;  // m/s of velocity change in a sweep: 1e-10 m of drift per step
   // Impacts first, as a sequence of simultaneous collisions: the contacts
   // arriving faster than the threshold are solved together to separate at
   // e × their approach speed (the pre-solve speed, for the first pass).
@@ -666,6 +666,13 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
   // join nothing), so each island is solved on its own, to its own
   // convergence: a box still bouncing does not keep the others sweeping.
   // Islands share no body, so they split over the cores with the same result.
+  // I⁻¹ in world axes, R I⁻¹ Rᵀ, once per awake body in contact.
+  ws.inverse_inertias.resize(model.bodyCount());
+  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
+    if (ws.in_contact[i] && !state.bodies[i].asleep) {
+      ws.inverse_inertias[i] = worldInverseInertia(model.body(i), state.bodies[i].q_WB);
+    }
+  }
   matchLastImpulses(state, ws.contacts);
   groupIslands(model, state, ws);
   const int islands = static_cast<int>(ws.island_starts.size()) - 1;
@@ -701,12 +708,12 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
   // Resting contacts end the step where they began: nothing to correct.
   // (Linear prediction; rotation adds O(h²ω²r), far below the slop at rest.)
   // Only the islands (of the impulse solve) with a contact predicted to end
-  // inside are corrected.
+  // deeper than the slop are corrected.
   std::vector<char>& needs = ws.island_flags;  // per island root
   needs.assign(model.bodyCount(), 0);
   bool any = false;
   for (const Contact& c : ws.contacts) {
-    if (c.predicted_separation <= -0.5 * slop) needs[ws.island_root[c.body]] = any = true;
+    if (c.predicted_separation < -slop) needs[ws.island_root[c.body]] = any = true;
   }
   if (!any) return;
   std::vector<int>& todo = ws.correct_contacts;  // in contact order

@@ -88,6 +88,8 @@ struct Workspace {
   std::vector<char> in_contact;
   /// Impulse solver: the bodies' angular velocities in world axes (rad/s).
   std::vector<Vec3> angular_velocities;
+  /// Impulse solver: the awake bodies' inverse inertia in world axes, R I⁻¹ Rᵀ (1/(kg·m²)).
+  std::vector<Mat3> inverse_inertias;
   /// Shape matching: where each vertex of the current body went (m, world).
   std::vector<Vec3> positions;
   /// Broad phase: bodies ordered along x, their boxes, and the pairs whose boxes overlap.
