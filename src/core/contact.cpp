@@ -708,12 +708,13 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
   // Resting contacts end the step where they began: nothing to correct.
   // (Linear prediction; rotation adds O(h²ω²r), far below the slop at rest.)
   // Only the islands (of the impulse solve) with a contact predicted to end
-  // deeper than the slop are corrected.
+  // deeper than half the slop are corrected (the prediction is linear: half
+  // the slop is its margin).
   std::vector<char>& needs = ws.island_flags;  // per island root
   needs.assign(model.bodyCount(), 0);
   bool any = false;
   for (const Contact& c : ws.contacts) {
-    if (c.predicted_separation < -slop) needs[ws.island_root[c.body]] = any = true;
+    if (c.predicted_separation <= -0.5 * slop) needs[ws.island_root[c.body]] = any = true;
   }
   if (!any) return;
   std::vector<int>& todo = ws.correct_contacts;  // in contact order
