@@ -274,15 +274,22 @@ bool keyLess(int body_a, int other_a, int item_a, int point_a, int body_b, int o
   return point_a < point_b;
 }
 
-/// The relative velocity at a contact: `body`'s point minus the other's.
-Vec3 relativeVelocity(const Contact& c, const State& state, const std::vector<Vec3>& w_W) {
-  Vec3 u = state.bodies[c.body].v_WB + w_W[c.body].cross(c.r_W);
-  if (c.other >= 0) u -= state.bodies[c.other].v_WB + w_W[c.other].cross(c.r_other_W);
+/// The velocity of `body`'s point relative to the other's along the
+/// direction whose Jacobian rows are (d, r × d, r_o × d).
+inline double rowVelocity(const SolverContact& c, const Vec3& d, const Vec3& row, const Vec3& other_row,
+                          const State& state, const std::vector<Vec3>& w_W) {
+  double u = d.dot(state.bodies[c.body].v_WB) + row.dot(w_W[c.body]);
+  if (c.other >= 0) u -= d.dot(state.bodies[c.other].v_WB) + other_row.dot(w_W[c.other]);
   return u;
 }
 
+inline double normalVelocity(const SolverContact& c, const State& state, const std::vector<Vec3>& w_W) {
+  return rowVelocity(c, c.normal_W, c.rn_W, c.other_rn_W, state, w_W);
+}
+
 /// Applies the impulse λ_N n + λ₁ t₁ + λ₂ t₂ at a contact: + to `body`, − to the other.
-void applyImpulse(const Contact& c, double ln, double l1, double l2, State& state, std::vector<Vec3>& w_W) {
+inline void applyImpulse(const SolverContact& c, double ln, double l1, double l2, State& state,
+                         std::vector<Vec3>& w_W) {
   const Vec3 P = ln * c.normal_W + l1 * c.tangent1_W + l2 * c.tangent2_W;
   state.bodies[c.body].v_WB += c.inv_mass * P;
   w_W[c.body] += ln * c.turn_n + l1 * c.turn_t1 + l2 * c.turn_t2;
@@ -294,9 +301,9 @@ void applyImpulse(const Contact& c, double ln, double l1, double l2, State& stat
 
 /// Starts a contact from the impulse it carried last step (if it existed,
 /// see matchLastImpulses), applied to the bodies before the first sweep.
-void warmStart(const Model& model, State& state, std::vector<Vec3>& w_W, Contact& c) {
-  if (c.last_impulse < 0) return;
-  const ContactImpulse last = state.contact_impulses[c.last_impulse];
+void warmStart(const Model& model, const Contact& contact, State& state, std::vector<Vec3>& w_W, SolverContact& c) {
+  if (contact.last_impulse < 0) return;
+  const ContactImpulse last = state.contact_impulses[contact.last_impulse];
   c.normal_impulse = last.normal;
   c.tangent_impulse = Eigen::Vector2d(c.tangent1_W.dot(last.tangent_W), c.tangent2_W.dot(last.tangent_W));
   const double limit = model.contact().friction * c.normal_impulse;
@@ -328,25 +335,16 @@ Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
 /// One Gauss-Seidel update of one contact, on the accumulated impulses given:
 /// friction first (it matters less than not sinking), then the normal to
 /// reach `target` (m/s). Returns the velocity change it made (m/s).
-double sweepContact(Contact& c, double& normal, Eigen::Vector2d& tangent, double target, double friction, State& state,
-                    std::vector<Vec3>& w_W) {
+double sweepContact(SolverContact& c, double& normal, Eigen::Vector2d& tangent, double target, double friction,
+                    State& state, std::vector<Vec3>& w_W) {
   // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows. Otherwise
   // slide: a point that is clearly slipping gets the full μ λ_N against its
   // slip (Coulomb's sliding friction opposes the slip, whatever K's
   // rotational coupling makes of the sticking impulse); near sticking, the
   // sticking impulse is scaled into the cone.
   constexpr double kSlipSpeed = 1e-3;  // m/s
-  Vec3& v = state.bodies[c.body].v_WB;
-  Vec3& w = w_W[c.body];
-  Vec3* v_o = c.other >= 0 ? &state.bodies[c.other].v_WB : nullptr;
-  Vec3* w_o = c.other >= 0 ? &w_W[c.other] : nullptr;
-  // The contact velocity along n, t₁, t₂ through the Jacobian rows:
-  // d·(v + ω × r) = d·v + ω·(r × d), minus the other body's.
-  Eigen::Vector2d vt(c.tangent1_W.dot(v) + c.rt1_W.dot(w), c.tangent2_W.dot(v) + c.rt2_W.dot(w));
-  if (v_o != nullptr) {
-    vt -= Eigen::Vector2d(c.tangent1_W.dot(*v_o) + c.other_rt1_W.dot(*w_o),
-                          c.tangent2_W.dot(*v_o) + c.other_rt2_W.dot(*w_o));
-  }
+  const Eigen::Vector2d vt(rowVelocity(c, c.tangent1_W, c.rt1_W, c.other_rt1_W, state, w_W),
+                           rowVelocity(c, c.tangent2_W, c.rt2_W, c.other_rt2_W, state, w_W));
   Eigen::Vector2d lt = tangent - c.tangent_mass * vt;
   const double limit = friction * normal;
   const double stick = lt.norm();
@@ -356,25 +354,13 @@ double sweepContact(Contact& c, double& normal, Eigen::Vector2d& tangent, double
   }
   const Eigen::Vector2d dlt = lt - tangent;
   tangent = lt;
-  const Vec3 P_t = dlt.x() * c.tangent1_W + dlt.y() * c.tangent2_W;
-  v += c.inv_mass * P_t;
-  w += dlt.x() * c.turn_t1 + dlt.y() * c.turn_t2;
-  if (v_o != nullptr) {
-    *v_o -= c.other_inv_mass * P_t;
-    *w_o -= dlt.x() * c.other_turn_t1 + dlt.y() * c.other_turn_t2;
-  }
+  applyImpulse(c, 0.0, dlt.x(), dlt.y(), state, w_W);
   // Normal: reach the target velocity, never pull (λ_N ≥ 0).
-  double vn = c.normal_W.dot(v) + c.rn_W.dot(w);
-  if (v_o != nullptr) vn -= c.normal_W.dot(*v_o) + c.other_rn_W.dot(*w_o);
+  const double vn = normalVelocity(c, state, w_W);
   const double ln = std::max(normal - c.normal_mass * (vn - target), 0.0);
   const double dln = ln - normal;
   normal = ln;
-  v += (c.inv_mass * dln) * c.normal_W;
-  w += dln * c.turn_n;
-  if (v_o != nullptr) {
-    *v_o -= (c.other_inv_mass * dln) * c.normal_W;
-    *w_o -= dln * c.other_turn_n;
-  }
+  applyImpulse(c, dln, 0.0, 0.0, state, w_W);
   return (std::abs(dln) + dlt.norm()) / c.normal_mass;
 }
 
@@ -408,60 +394,70 @@ void groupIslands(const Model& model, const State& state, Workspace& ws) {
 /// (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n), and TᵀKT likewise, with the other body's
 /// terms added), and its target normal velocity. A sleeping body is part of
 /// the ground: no mass terms.
-void prepareContact(const Model& model, const State& state, const std::vector<Mat3>& inv_I_W, double h, Contact& c) {
-  const Vec3& n = c.normal_W;
+void prepareContact(const Model& model, const State& state, const std::vector<Mat3>& inv_I_W, double h,
+                    const Contact& contact, SolverContact& c) {
+  const Vec3& n = contact.normal_W;
+  c.body = contact.body;
+  c.other = contact.other;
+  c.normal_W = n;
   c.tangent1_W = (std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
   c.tangent2_W = n.cross(c.tangent1_W);
   const BodyModel& b = model.body(c.body);
   const Mat3& inv_I = inv_I_W[c.body];
-  const Vec3 rn = c.r_W.cross(n), r1 = c.r_W.cross(c.tangent1_W), r2 = c.r_W.cross(c.tangent2_W);
-  c.rn_W = rn;
-  c.rt1_W = r1;
-  c.rt2_W = r2;
+  c.rn_W = contact.r_W.cross(n);
+  c.rt1_W = contact.r_W.cross(c.tangent1_W);
+  c.rt2_W = contact.r_W.cross(c.tangent2_W);
   c.inv_mass = b.inv_mass;
-  c.turn_n = inv_I * rn;
-  c.turn_t1 = inv_I * r1;
-  c.turn_t2 = inv_I * r2;
-  double knn = c.inv_mass + rn.dot(c.turn_n);
+  c.turn_n = inv_I * c.rn_W;
+  c.turn_t1 = inv_I * c.rt1_W;
+  c.turn_t2 = inv_I * c.rt2_W;
+  double knn = c.inv_mass + c.rn_W.dot(c.turn_n);
   Eigen::Matrix2d k;
-  k << c.inv_mass + r1.dot(c.turn_t1), r1.dot(c.turn_t2),  //
-      r2.dot(c.turn_t1), c.inv_mass + r2.dot(c.turn_t2);
+  k << c.inv_mass + c.rt1_W.dot(c.turn_t1), c.rt1_W.dot(c.turn_t2),  //
+      c.rt2_W.dot(c.turn_t1), c.inv_mass + c.rt2_W.dot(c.turn_t2);
   c.other_inv_mass = 0.0;
   c.other_turn_n = c.other_turn_t1 = c.other_turn_t2 = Vec3::Zero();
   c.other_rn_W = c.other_rt1_W = c.other_rt2_W = Vec3::Zero();
   if (c.other >= 0 && !state.bodies[c.other].asleep) {
     const BodyModel& o = model.body(c.other);
     const Mat3& inv_I_o = inv_I_W[c.other];
-    const Vec3 on = c.r_other_W.cross(n), o1 = c.r_other_W.cross(c.tangent1_W), o2 = c.r_other_W.cross(c.tangent2_W);
-    c.other_rn_W = on;
-    c.other_rt1_W = o1;
-    c.other_rt2_W = o2;
+    c.other_rn_W = contact.r_other_W.cross(n);
+    c.other_rt1_W = contact.r_other_W.cross(c.tangent1_W);
+    c.other_rt2_W = contact.r_other_W.cross(c.tangent2_W);
     c.other_inv_mass = o.inv_mass;
-    c.other_turn_n = inv_I_o * on;
-    c.other_turn_t1 = inv_I_o * o1;
-    c.other_turn_t2 = inv_I_o * o2;
-    knn += o.inv_mass + on.dot(c.other_turn_n);
+    c.other_turn_n = inv_I_o * c.other_rn_W;
+    c.other_turn_t1 = inv_I_o * c.other_rt1_W;
+    c.other_turn_t2 = inv_I_o * c.other_rt2_W;
+    knn += o.inv_mass + c.other_rn_W.dot(c.other_turn_n);
     Eigen::Matrix2d ko;
-    ko << o.inv_mass + o1.dot(c.other_turn_t1), o1.dot(c.other_turn_t2),  //
-        o2.dot(c.other_turn_t1), o.inv_mass + o2.dot(c.other_turn_t2);
+    ko << o.inv_mass + c.other_rt1_W.dot(c.other_turn_t1), c.other_rt1_W.dot(c.other_turn_t2),  //
+        c.other_rt2_W.dot(c.other_turn_t1), o.inv_mass + c.other_rt2_W.dot(c.other_turn_t2);
     k += ko;
   }
   c.normal_mass = 1.0 / knn;
   c.tangent_mass = k.inverse();
+  c.separation = contact.separation;
   c.target_normal_velocity = c.separation > 0.0 ? -c.separation / h : 0.0;
   c.normal_impulse = 0.0;
   c.tangent_impulse.setZero();
 }
 
-/// For the contacts [first, last) of one island: prepare, warm start,
-/// restitution (impact passes), then projected Gauss-Seidel.
-void solveIsland(const Model& model, const int* first, const int* last, double h, State& state, std::vector<Vec3>& w_W,
+/// For the solver contacts [first, last) of one island: prepare, warm
+/// start, restitution (impact passes), projected Gauss-Seidel; then the
+/// results go back to the contacts.
+void solveIsland(const Model& model, int first, int last, double h, State& state, std::vector<Vec3>& w_W,
                  Workspace& ws, StepScratch& scratch) {
   const ContactSettings& cs = model.contact();
   const double threshold = model.restitutionThreshold();
-  std::vector<Contact>& contacts = ws.contacts;
-  for (const int* k = first; k != last; ++k) prepareContact(model, state, ws.inverse_inertias, h, contacts[*k]);
-  for (const int* k = first; k != last; ++k) warmStart(model, state, w_W, contacts[*k]);
+  SolverContact* const begin = ws.solver_contacts.data() + first;
+  SolverContact* const end = ws.solver_contacts.data() + last;
+  for (int k = first; k < last; ++k) {
+    const Contact& contact = ws.contacts[ws.island_contacts[k]];
+    SolverContact& c = ws.solver_contacts[k];
+    c.contact = ws.island_contacts[k];
+    prepareContact(model, state, ws.inverse_inertias, h, contact, c);
+    warmStart(model, contact, state, w_W, c);
+  }
   constexpr double kTolerance = 1e-7;  // m/s of velocity change in a sweep: 1e-10 m of drift per step
   // Impacts first, as a sequence of simultaneous collisions: the contacts
   // arriving faster than the threshold are solved together to separate at
@@ -471,26 +467,25 @@ void solveIsland(const Model& model, const int* first, const int* last, double h
   // Each pass has its own impulses, so a collision, once resolved, does not
   // keep pushing.
   if (cs.restitution > 0.0) {
-    const int max_passes = 2 * static_cast<int>(last - first) + 2;
+    const int max_passes = 2 * (last - first) + 2;
     std::vector<int>& hit = scratch.impact_contacts;
     for (int pass = 0; pass < max_passes; ++pass) {
       hit.clear();
-      for (const int* k = first; k != last; ++k) {
-        Contact& c = contacts[*k];
-        const double vn = c.normal_W.dot(relativeVelocity(c, state, w_W));
-        const bool arrives = c.separation <= 0.0 || vn * h < -c.separation;
+      for (SolverContact* c = begin; c != end; ++c) {
+        const double vn = normalVelocity(*c, state, w_W);
+        const bool arrives = c->separation <= 0.0 || vn * h < -c->separation;
         if (arrives && vn < -threshold) {
-          c.impact_target = -cs.restitution * vn;
-          c.impact_normal = 0.0;
-          c.impact_tangent.setZero();
-          hit.push_back(*k);
+          c->impact_target = -cs.restitution * vn;
+          c->impact_normal = 0.0;
+          c->impact_tangent.setZero();
+          hit.push_back(static_cast<int>(c - begin));
         }
       }
       if (hit.empty()) break;
       for (int sweep = 0; sweep < cs.iterations; ++sweep) {
         double largest = 0.0;
         for (int k : hit) {
-          Contact& c = contacts[k];
+          SolverContact& c = begin[k];
           largest = std::max(
               largest, sweepContact(c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction, state, w_W));
         }
@@ -502,12 +497,17 @@ void solveIsland(const Model& model, const int* first, const int* last, double h
   // friction; a speculative contact may close its gap, no more.
   for (int sweep = 0; sweep < cs.iterations; ++sweep) {
     double largest = 0.0;
-    for (const int* k = first; k != last; ++k) {
-      Contact& c = contacts[*k];
-      largest = std::max(largest, sweepContact(c, c.normal_impulse, c.tangent_impulse, c.target_normal_velocity,
+    for (SolverContact* c = begin; c != end; ++c) {
+      largest = std::max(largest, sweepContact(*c, c->normal_impulse, c->tangent_impulse, c->target_normal_velocity,
                                                cs.friction, state, w_W));
     }
     if (largest < kTolerance) break;
+  }
+  for (const SolverContact* c = begin; c != end; ++c) {
+    Contact& contact = ws.contacts[c->contact];
+    contact.normal_impulse = c->normal_impulse;
+    contact.tangent_impulse_W = c->tangent_impulse.x() * c->tangent1_W + c->tangent_impulse.y() * c->tangent2_W;
+    contact.predicted_separation = c->separation + h * normalVelocity(*c, state, w_W);
   }
 }
 
@@ -658,48 +658,43 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
     state.contact_impulses.clear();
     return;
   }
-  // Work in world axes: ω_W = R w_B.
+  // The bodies in contact, in world axes: ω_W = R w_B and I⁻¹_W = R I⁻¹ Rᵀ
+  // (a sleeper's ω is zero and it has no inertia terms: it is ground).
   std::vector<Vec3>& w_W = ws.angular_velocities;
   w_W.resize(model.bodyCount());
-  for (std::size_t i = 0; i < model.bodyCount(); ++i) w_W[i] = state.bodies[i].q_WB * state.bodies[i].w_B;
+  ws.inverse_inertias.resize(model.bodyCount());
+  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
+    if (!ws.in_contact[i]) continue;
+    const BodyState& b = state.bodies[i];
+    w_W[i] = b.q_WB * b.w_B;
+    if (!b.asleep) ws.inverse_inertias[i] = worldInverseInertia(model.body(i), b.q_WB);
+  }
   // Islands: contacts only couple bodies they join (the scene and sleepers
   // join nothing), so each island is solved on its own, to its own
   // convergence: a box still bouncing does not keep the others sweeping.
   // Islands share no body, so they split over the cores with the same result.
-  // I⁻¹ in world axes, R I⁻¹ Rᵀ, once per awake body in contact.
-  ws.inverse_inertias.resize(model.bodyCount());
-  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
-    if (ws.in_contact[i] && !state.bodies[i].asleep) {
-      ws.inverse_inertias[i] = worldInverseInertia(model.body(i), state.bodies[i].q_WB);
-    }
-  }
   matchLastImpulses(state, ws.contacts);
   groupIslands(model, state, ws);
   const int islands = static_cast<int>(ws.island_starts.size()) - 1;
   const int parts = islands > 1 ? partsFor(ws, ws.contacts.size() / 4) : 1;
   ws.parts.resize(std::max<std::size_t>(ws.parts.size(), parts));
+  ws.solver_contacts.resize(ws.contacts.size());
   runParts(ws, parts, [&](int part) {
     // Contiguous runs of islands holding about equal numbers of contacts.
     const std::size_t total = ws.contacts.size();
     for (int k = 0; k < islands; ++k) {
       const std::size_t at = static_cast<std::size_t>(ws.island_starts[k]);
       if (static_cast<int>(at * parts / total) != part) continue;
-      const int* first = ws.island_contacts.data() + ws.island_starts[k];
-      const int* last = ws.island_contacts.data() + ws.island_starts[k + 1];
-      solveIsland(model, first, last, h, state, w_W, ws, ws.parts[part]);
+      solveIsland(model, ws.island_starts[k], ws.island_starts[k + 1], h, state, w_W, ws, ws.parts[part]);
     }
   });
-  for (Contact& c : ws.contacts) {
-    c.predicted_separation = c.separation + h * c.normal_W.dot(relativeVelocity(c, state, w_W));
-  }
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
-    state.bodies[i].w_B = state.bodies[i].q_WB.conjugate() * w_W[i];
+    if (ws.in_contact[i] && !state.bodies[i].asleep) state.bodies[i].w_B = state.bodies[i].q_WB.conjugate() * w_W[i];
   }
   // The contacts come sorted by key (see detectContacts), and so do these.
   state.contact_impulses.clear();
   for (const Contact& c : ws.contacts) {
-    const Vec3 tangent = c.tangent1_W * c.tangent_impulse.x() + c.tangent2_W * c.tangent_impulse.y();
-    state.contact_impulses.push_back({c.body, c.other, c.item, c.point, c.normal_impulse, tangent});
+    state.contact_impulses.push_back({c.body, c.other, c.item, c.point, c.normal_impulse, c.tangent_impulse_W});
   }
 }
 

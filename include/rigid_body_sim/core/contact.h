@@ -25,23 +25,35 @@ struct Contact {
   Vec3 r_other_W = Vec3::Zero();  ///< the same point relative to the other body's centre of mass (m)
   double separation = 0.0;        ///< φ − radius (m): < 0 penetrating, > 0 not yet touching
 
-  // Impulse solver data (set by solveContactImpulses). With K the notes'
-  // 3×3 matrix of the point, the solver needs nᵀKn and the 2×2 TᵀKT, and the
-  // angular velocity an impulse along n, t₁, t₂ gives: I⁻¹ (r × n) etc.
-  Vec3 tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();
-  Vec3 rn_W = Vec3::Zero(), rt1_W = Vec3::Zero(), rt2_W = Vec3::Zero();  ///< r × n, r × t₁, r × t₂ (m): Jacobian rows
+  // Results of the impulse solve.
+  int last_impulse = -1;                  ///< index in the last step's state.contact_impulses, or -1 (new)
+  double normal_impulse = 0.0;            ///< accumulated λ_N ≥ 0, N·s
+  Vec3 tangent_impulse_W = Vec3::Zero();  ///< accumulated λ_T, |λ_T| ≤ μ λ_N, world axes, N·s
+  double predicted_separation = 0.0;      ///< m after the step, from the solved velocity (linear)
+};
+
+/// A contact as the impulse solver sees it, built each step in island
+/// order. With K the notes' 3×3 matrix of the point, the solve needs nᵀKn,
+/// the 2×2 TᵀKT, the Jacobian rows (r × n etc.: d·(v + ω × r) = d·v +
+/// ω·(r × d)) and the angular velocity an impulse along n, t₁, t₂ gives
+/// (I⁻¹ (r × n) etc.), for both bodies.
+struct SolverContact {
+  int contact = 0;  ///< index in Workspace::contacts
+  int body = 0;
+  int other = -1;  ///< -1 for the scene; a sleeping other body has no mass terms (it is ground)
+  Vec3 normal_W = Vec3::UnitZ(), tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();
+  Vec3 rn_W = Vec3::Zero(), rt1_W = Vec3::Zero(), rt2_W = Vec3::Zero();  ///< r × n, r × t₁, r × t₂ (m)
   Vec3 other_rn_W = Vec3::Zero(), other_rt1_W = Vec3::Zero(), other_rt2_W = Vec3::Zero();  ///< the other body's
   Vec3 turn_n = Vec3::Zero(), turn_t1 = Vec3::Zero(), turn_t2 = Vec3::Zero();  ///< I⁻¹ (r × ·), 1/(kg·m)
   Vec3 other_turn_n = Vec3::Zero(), other_turn_t1 = Vec3::Zero(), other_turn_t2 = Vec3::Zero();  ///< the other body's
   double inv_mass = 0.0, other_inv_mass = 0.0;                ///< 1/kg; 0 for the scene and for a sleeping other body
   double normal_mass = 0.0;                                   ///< 1 / (nᵀ K n), kg
   Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();     ///< (Tᵀ K T)⁻¹, kg
+  double separation = 0.0;                                    ///< m, as detected
   double target_normal_velocity = 0.0;                        ///< m/s, for the main solve
   double impact_target = 0.0;                                 ///< m/s: e × approach speed, in an impact pass
   double impact_normal = 0.0;                                 ///< N·s, this impact pass's λ_N
   Eigen::Vector2d impact_tangent = Eigen::Vector2d::Zero();   ///< N·s, this impact pass's λ_T
-  int last_impulse = -1;                                      ///< index in state.contact_impulses, or -1 (new contact)
-  double predicted_separation = 0.0;                          ///< m after the step, from the solved velocity (linear)
   double normal_impulse = 0.0;                                ///< accumulated λ_N ≥ 0, N·s
   Eigen::Vector2d tangent_impulse = Eigen::Vector2d::Zero();  ///< accumulated, |λ_T| ≤ μ λ_N, N·s
 };
@@ -82,6 +94,8 @@ struct Workspace {
   std::size_t min_parallel_work = 256;
 
   std::vector<Contact> contacts;
+  /// Impulse solver: the contacts island by island (see island_starts).
+  std::vector<SolverContact> solver_contacts;
   /// Deepest penetration seen in this step's detection (m, ≥ 0).
   double deepest_penetration = 0.0;
   /// Per body: touched the scene or another body this step (only bodies in contact may sleep).
