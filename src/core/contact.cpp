@@ -332,26 +332,54 @@ Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
   return R * b.inv_inertia_B.asDiagonal() * R.transpose();
 }
 
+/// Coulomb friction on one contact by maximal dissipation: of the impulses
+/// |λ| ≤ limit, the one that leaves the least slip energy ½ vᵀK⁻¹v, i.e. the
+/// point of the disk nearest to the sticking impulse `stick` in K's metric
+/// (K = TᵀKT, the 2×2 tangent block). Inside the disk it is `stick`;
+/// outside, λ = (K + νI)⁻¹ K stick with ν > 0 such that |λ| = limit, and the
+/// slip left after it is −νλ: the friction opposes the slip it leaves, as
+/// Coulomb's law says, whatever K's rotational coupling. Being a projection
+/// onto a convex set, it lets Gauss-Seidel converge (taking the direction
+/// from the slip before the update instead can cycle). ν solves the secular
+/// equation 1/|λ(ν)| = 1/limit by Newton's method in K's eigenbasis, which
+/// approaches monotonically from ν = 0 (Moré and Sorensen's trust-region
+/// step).
+Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, const Eigen::Vector2d& stick, double limit) {
+  if (stick.squaredNorm() <= limit * limit) return stick;
+  if (limit <= 0.0) return Eigen::Vector2d::Zero();
+  // K = Q diag(k) Qᵀ, closed form for a symmetric 2×2.
+  const double mean = 0.5 * (K(0, 0) + K(1, 1)), half_gap = 0.5 * (K(0, 0) - K(1, 1));
+  const double radius = std::hypot(half_gap, K(0, 1));
+  if (radius <= 1e-12 * mean) return stick * (limit / stick.norm());  // isotropic: the plain projection
+  const Eigen::Vector2d k(mean + radius, mean - radius);
+  Eigen::Vector2d q1 = half_gap >= 0.0 ? Eigen::Vector2d(half_gap + radius, K(0, 1))
+                                       : Eigen::Vector2d(K(0, 1), radius - half_gap);
+  q1.normalize();
+  const Eigen::Vector2d q2(-q1.y(), q1.x());
+  const Eigen::Vector2d c(q1.dot(stick), q2.dot(stick));
+  double nu = 0.0;
+  Eigen::Vector2d l = c;  // λ in the eigenbasis
+  for (int i = 0; i < 30; ++i) {
+    l = Eigen::Vector2d(k.x() * c.x() / (k.x() + nu), k.y() * c.y() / (k.y() + nu));
+    const double size = l.norm();
+    if (std::abs(size - limit) <= 1e-12 * limit) break;
+    const double slope = -(l.x() * l.x() / (k.x() + nu) + l.y() * l.y() / (k.y() + nu)) / size;  // d|λ|/dν
+    nu += (1.0 / size - 1.0 / limit) * size * size / slope;
+  }
+  l *= limit / l.norm();  // exactly on the cone
+  return l.x() * q1 + l.y() * q2;
+}
+
 /// One Gauss-Seidel update of one contact, on the accumulated impulses given:
 /// friction first (it matters less than not sinking), then the normal to
 /// reach `target` (m/s). Returns the velocity change it made (m/s).
 double sweepContact(SolverContact& c, double& normal, Eigen::Vector2d& tangent, double target, double friction,
                     State& state, std::vector<Vec3>& w_W) {
-  // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows. Otherwise
-  // slide: a point that is clearly slipping gets the full μ λ_N against its
-  // slip (Coulomb's sliding friction opposes the slip, whatever K's
-  // rotational coupling makes of the sticking impulse); near sticking, the
-  // sticking impulse is scaled into the cone.
-  constexpr double kSlipSpeed = 1e-3;  // m/s
+  // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows; otherwise
+  // slide with maximal dissipation (frictionOnDisk).
   const Eigen::Vector2d vt(rowVelocity(c, c.tangent1_W, c.rt1_W, c.other_rt1_W, state, w_W),
                            rowVelocity(c, c.tangent2_W, c.rt2_W, c.other_rt2_W, state, w_W));
-  Eigen::Vector2d lt = tangent - c.tangent_mass * vt;
-  const double limit = friction * normal;
-  const double stick = lt.norm();
-  if (stick > limit) {
-    const double slip = vt.norm();
-    lt = slip > kSlipSpeed ? Eigen::Vector2d(-limit / slip * vt) : Eigen::Vector2d(lt * (limit / stick));
-  }
+  const Eigen::Vector2d lt = frictionOnDisk(c.tangent_k, tangent - c.tangent_mass * vt, friction * normal);
   const Eigen::Vector2d dlt = lt - tangent;
   tangent = lt;
   applyImpulse(c, 0.0, dlt.x(), dlt.y(), state, w_W);
@@ -435,6 +463,7 @@ void prepareContact(const Model& model, const State& state, const std::vector<Ma
     k += ko;
   }
   c.normal_mass = 1.0 / knn;
+  c.tangent_k = k;
   c.tangent_mass = k.inverse();
   c.separation = contact.separation;
   c.target_normal_velocity = c.separation > 0.0 ? -c.separation / h : 0.0;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "../test_util.h"
 #include "rigid_body_sim/core/diagnostics.h"
@@ -90,6 +91,46 @@ Drop drop(const core::Model& model, const Quat& q, const Vec3& w, double duratio
   d.end = s;
   EXPECT_LE(d.highest_energy, e0 + 1e-9) << "energy rose above the start";
   return d;
+}
+
+// Coulomb's sliding friction opposes the slip it leaves behind. A box
+// falling at 4 m/s lands on a corner: its one contact has a strongly
+// anisotropic tangent block TᵀKT, and the normal impulse itself sets the
+// corner sliding, so the friction that acts is not along any slip seen
+// before the impulse. After the step, wherever the corner still slides, the
+// friction impulse has the full μ λ_N and points against the slip left.
+TEST(Friction, ALandingCornerGetsTheFullImpulseAgainstTheSlipItLeaves) {
+  const double mu = 0.5;
+  // Without the gyroscopic term the velocities after the step are those the
+  // solve left (the notes' rotation turns the body about ω itself).
+  core::ModelSpec ms = onGround(boxBody(kHalf), impulse(0.0, mu));
+  ms.gyroscopic = false;
+  const core::Model model(ms);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI);
+  int sliding = 0;
+  for (int trial = 0; trial < 50; ++trial) {
+    const Quat q(Eigen::AngleAxisd(angle(rng), Vec3(angle(rng), angle(rng), angle(rng)).normalized()));
+    double lowest = 0.0;  // of the corners, relative to the centre
+    for (int k = 0; k < 8; ++k) {
+      const Vec3 corner((k & 1 ? 1 : -1) * kHalf.x(), (k & 2 ? 1 : -1) * kHalf.y(), (k & 4 ? 1 : -1) * kHalf.z());
+      lowest = std::min(lowest, (q * corner).z());
+    }
+    core::State s = at(model, Vec3(0, 0, -lowest + 1e-4), q, Vec3(0, 0, -4.0));
+    core::Workspace ws;
+    core::step(model, s, {}, &ws);
+    if (ws.contacts.size() != 1 || ws.contacts[0].normal_impulse <= 0.0) continue;  // an edge or a face
+    const core::Contact& c = ws.contacts[0];
+    const core::BodyState& b = s.bodies[0];
+    const Vec3 u = b.v_WB + (b.q_WB * b.w_B).cross(c.r_W);
+    const Vec3 slip = u - c.normal_W.dot(u) * c.normal_W;
+    if (slip.norm() < 1e-3) continue;  // it sticks
+    ++sliding;
+    // On the cone, to the solver's tolerance (its last sweep moves λ_N after the friction).
+    EXPECT_NEAR(c.tangent_impulse_W.norm(), mu * c.normal_impulse, 1e-6 * c.normal_impulse) << "trial " << trial;
+    EXPECT_LT(c.tangent_impulse_W.normalized().dot(slip.normalized()), -1.0 + 1e-9) << "trial " << trial;
+  }
+  EXPECT_GE(sliding, 10);
 }
 
 TEST(Tumbling, BoxComesToRestOnAFaceAtItsHalfHeight) {

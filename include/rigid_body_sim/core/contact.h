@@ -48,6 +48,7 @@ struct SolverContact {
   Vec3 other_turn_n = Vec3::Zero(), other_turn_t1 = Vec3::Zero(), other_turn_t2 = Vec3::Zero();  ///< the other body's
   double inv_mass = 0.0, other_inv_mass = 0.0;                ///< 1/kg; 0 for the scene and for a sleeping other body
   double normal_mass = 0.0;                                   ///< 1 / (nᵀ K n), kg
+  Eigen::Matrix2d tangent_k = Eigen::Matrix2d::Zero();        ///< Tᵀ K T, 1/kg
   Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();     ///< (Tᵀ K T)⁻¹, kg
   double separation = 0.0;                                    ///< m, as detected
   double target_normal_velocity = 0.0;                        ///< m/s, for the main solve
