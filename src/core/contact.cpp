@@ -349,7 +349,7 @@ Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, const Eigen::Vector2d& 
   if (limit <= 0.0) return Eigen::Vector2d::Zero();
   // K = Q diag(k) Qᵀ, closed form for a symmetric 2×2.
   const double mean = 0.5 * (K(0, 0) + K(1, 1)), half_gap = 0.5 * (K(0, 0) - K(1, 1));
-  const double radius = std::hypot(half_gap, K(0, 1));
+  const double radius = std::sqrt(half_gap * half_gap + K(0, 1) * K(0, 1));
   if (radius <= 1e-12 * mean) return stick * (limit / stick.norm());  // isotropic: the plain projection
   const Eigen::Vector2d k(mean + radius, mean - radius);
   Eigen::Vector2d q1 = half_gap >= 0.0 ? Eigen::Vector2d(half_gap + radius, K(0, 1))
