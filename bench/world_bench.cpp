@@ -2,7 +2,9 @@
 // grid 0.6 m apart, dropped from 0.5–1.5 m with varied orientations onto the
 // ground, 2 s at Δt = 1 ms. Prints, per N, the median over R runs of ns per
 // step and per body-step, and (from the last run) the share at rest at the
-// end, the deepest penetration and the lowest centre of mass.
+// end (asleep, or below the sleep speeds for the sleep time: core::atRest),
+// the share slower than the sleep speeds at the end, the deepest
+// penetration and the lowest centre of mass.
 // Usage: world_bench [runs] [N ...]; RBS_THREADS=k limits the step to k threads.
 #include <algorithm>
 #include <chrono>
@@ -57,7 +59,7 @@ int main(int argc, char** argv) {
   std::vector<int> sizes;
   for (int i = 2; i < argc; ++i) sizes.push_back(std::atoi(argv[i]));
   if (sizes.empty()) sizes = {1, 10, 100, 1000};
-  std::printf("%6s %14s %16s %10s %14s %12s\n", "N", "ns/step", "ns/body-step", "at rest", "deepest (mm)",
+  std::printf("%6s %14s %16s %10s %10s %14s %12s\n", "N", "ns/step", "ns/body-step", "at rest", "slow", "deepest (mm)",
               "lowest z (m)");
   for (int n : sizes) {
     const Scene scene = boxes(n);
@@ -77,13 +79,15 @@ int main(int argc, char** argv) {
       ns.push_back(std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / 2000);
     }
     std::sort(ns.begin(), ns.end());
-    int resting = 0;
+    int resting = 0, slow = 0;
     double lowest = 1e9;
+    const SleepSettings& sleep = scene.model.sleep();
     for (const BodyState& b : s.bodies) {
       resting += atRest(scene.model, b);
+      slow += b.v_WB.norm() < sleep.linear_velocity && b.w_B.norm() < sleep.angular_velocity;
       lowest = std::min(lowest, b.p_WB.z());
     }
-    std::printf("%6d %14.0f %16.1f %9.1f%% %14.4f %12.4f\n", n, ns[ns.size() / 2], ns[ns.size() / 2] / n,
-                100.0 * resting / n, 1e3 * deepest, lowest);
+    std::printf("%6d %14.0f %16.1f %9.1f%% %9.1f%% %14.4f %12.4f\n", n, ns[ns.size() / 2], ns[ns.size() / 2] / n,
+                100.0 * resting / n, 100.0 * slow / n, 1e3 * deepest, lowest);
   }
 }
