@@ -540,8 +540,6 @@ void solveIsland(const Model& model, int first, int last, double h, State& state
   }
 }
 
-}  // namespace
-
 /// How many parts to split `work` units into: one unless there is enough
 /// work for a second core to pay (and a pool to run it on).
 int partsFor(Workspace& ws, std::size_t work) {
@@ -553,14 +551,18 @@ int partsFor(Workspace& ws, std::size_t work) {
   return threads;
 }
 
-/// Runs part(k) for k < parts, in parallel when parts > 1.
-void runParts(Workspace& ws, int parts, const std::function<void(int)>& part) {
+/// Runs part(k) for k < parts, in parallel when parts > 1 (one part is a
+/// plain call: no std::function, no allocation).
+template <class Part>
+void runParts(Workspace& ws, int parts, Part&& part) {
   if (parts == 1) {
     part(0);
   } else {
-    ws.pool->run(part);
+    ws.pool->run(std::function<void(int)>(std::ref(part)));
   }
 }
+
+}  // namespace
 
 void detectContacts(const Model& model, const State& state, double h, Workspace& ws) {
   ws.contacts.clear();

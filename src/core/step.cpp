@@ -143,7 +143,7 @@ void integrateOrientation(const Quat& increment, BodyState& s) {
 /// it again, over and over. The islands are those of the impulse solve when
 /// it ran (no body has changed sleep state since).
 void sleepIslands(const Model& model, State& state, Workspace& ws, bool islands_known) {
-  if (!model.sleep().enabled || ws.in_contact.empty()) return;  // nothing touches: nothing sleeps
+  if (!model.sleep().enabled || ws.contacts.empty()) return;  // nothing touches: nothing sleeps
   if (!islands_known) findIslands(model, state, ws);
   std::vector<char>& ready = ws.island_flags;  // per root: every body of the island may sleep
   ready.assign(model.bodyCount(), 1);
