@@ -28,14 +28,15 @@ void scanScene(const Model& model, const BodyState& s, int body, double margin, 
   const int n_points = static_cast<int>(b.contact_points.size());
   for (int item = 0; item < static_cast<int>(scene.size()); ++item) {
     const Sdf& sdf = scene[item];
-    if (sdf.eval(s.p_WB) - b.bound_radius >= margin) continue;
+    const bool plane = sdf.kind() == Sdf::Kind::kPlane;
+    const Vec3 n_W = plane ? Vec3(sdf.pose().q_WS * sdf.params()) : Vec3::Zero();
+    const double phi_centre = plane ? n_W.dot(s.p_WB - sdf.pose().p_WS) : sdf.eval(s.p_WB);
+    if (phi_centre - b.bound_radius >= margin) continue;
     if (!have_R) {
       R = s.q_WB.toRotationMatrix();
       have_R = true;
     }
-    if (sdf.kind() == Sdf::Kind::kPlane) {
-      const Vec3 n_W = sdf.pose().q_WS * sdf.params();
-      const double phi_centre = n_W.dot(s.p_WB - sdf.pose().p_WS);
+    if (plane) {
       const Vec3 n_B = R.transpose() * n_W;
       // Only the extreme points can be deepest against a plane; groups whose
       // bounding sphere stays beyond the margin are skipped whole. Within a
@@ -59,9 +60,9 @@ void scanScene(const Model& model, const BodyState& s, int body, double margin, 
     for (int i = 0; i < n_points; ++i) {
       const ContactPoint& p = b.contact_points[i];
       const Vec3 r_W = R * p.r_B;
-      Vec3 n_W;
-      const double separation = sdf.eval(s.p_WB + r_W, &n_W) - p.radius;
-      if (separation < margin) visit(item, i, separation, n_W);
+      Vec3 normal_W;
+      const double separation = sdf.eval(s.p_WB + r_W, &normal_W) - p.radius;
+      if (separation < margin) visit(item, i, separation, normal_W);
     }
   }
 }
@@ -598,10 +599,13 @@ void detectContacts(const Model& model, const State& state, double h, Workspace&
   // Body by body (each against the scene, then against the others in
   // order), so contacts come out sorted by key; split over the cores in
   // contiguous ranges of bodies, merged in order.
-  std::size_t awake = 0;
-  for (const BodyState& b : state.bodies) awake += !b.asleep;
-  const int parts = partsFor(ws, awake);
-  ws.parts.resize(std::max<std::size_t>(ws.parts.size(), parts));
+  int parts = 1;
+  if (multi) {
+    std::size_t awake = 0;
+    for (const BodyState& b : state.bodies) awake += !b.asleep;
+    parts = partsFor(ws, awake);
+  }
+  if (ws.parts.size() < static_cast<std::size_t>(parts)) ws.parts.resize(parts);
   runParts(ws, parts, [&](int k) {
     StepScratch& out = ws.parts[k];
     out.contacts.clear();
