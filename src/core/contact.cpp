@@ -285,18 +285,18 @@ inline double rowVelocity(const SolverContact& c, const Vec3& d, const Vec3& row
 }
 
 inline double normalVelocity(const SolverContact& c, const State& state, const std::vector<Vec3>& w_W) {
-  return rowVelocity(c, c.normal_W, c.rn_W, c.other_rn_W, state, w_W);
+  return rowVelocity(c, c.normal_W, c.a.rn, c.o.rn, state, w_W);
 }
 
 /// Applies the impulse λ_N n + λ₁ t₁ + λ₂ t₂ at a contact: + to `body`, − to the other.
 inline void applyImpulse(const SolverContact& c, double ln, double l1, double l2, State& state,
                          std::vector<Vec3>& w_W) {
   const Vec3 P = ln * c.normal_W + l1 * c.tangent1_W + l2 * c.tangent2_W;
-  state.bodies[c.body].v_WB += c.inv_mass * P;
-  w_W[c.body] += ln * c.turn_n + l1 * c.turn_t1 + l2 * c.turn_t2;
+  state.bodies[c.body].v_WB += c.a.inv_mass * P;
+  w_W[c.body] += ln * c.a.turn_n + l1 * c.a.turn_t1 + l2 * c.a.turn_t2;
   if (c.other >= 0) {
-    state.bodies[c.other].v_WB -= c.other_inv_mass * P;
-    w_W[c.other] -= ln * c.other_turn_n + l1 * c.other_turn_t1 + l2 * c.other_turn_t2;
+    state.bodies[c.other].v_WB -= c.o.inv_mass * P;
+    w_W[c.other] -= ln * c.o.turn_n + l1 * c.o.turn_t1 + l2 * c.o.turn_t2;
   }
 }
 
@@ -378,8 +378,8 @@ double sweepContact(SolverContact& c, double& normal, Eigen::Vector2d& tangent, 
                     State& state, std::vector<Vec3>& w_W) {
   // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows; otherwise
   // slide with maximal dissipation (frictionOnDisk).
-  const Eigen::Vector2d vt(rowVelocity(c, c.tangent1_W, c.rt1_W, c.other_rt1_W, state, w_W),
-                           rowVelocity(c, c.tangent2_W, c.rt2_W, c.other_rt2_W, state, w_W));
+  const Eigen::Vector2d vt(rowVelocity(c, c.tangent1_W, c.a.rt1, c.o.rt1, state, w_W),
+                           rowVelocity(c, c.tangent2_W, c.a.rt2, c.o.rt2, state, w_W));
   const Eigen::Vector2d lt = frictionOnDisk(c.tangent_k, tangent - c.tangent_mass * vt, friction * normal);
   const Eigen::Vector2d dlt = lt - tangent;
   tangent = lt;
@@ -423,6 +423,24 @@ void groupIslands(const Model& model, const State& state, Workspace& ws) {
 /// (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n), and TᵀKT likewise, with the other body's
 /// terms added), and its target normal velocity. A sleeping body is part of
 /// the ground: no mass terms.
+/// One body's side: its Jacobian rows and turns for the arm r, and its
+/// share of nᵀKn (returned) and of TᵀKT (added to k).
+double prepareSide(const Vec3& r, const SolverContact& c, double inv_mass, const Mat3& inv_I, SolverContact::Side& side,
+                   Eigen::Matrix2d& k) {
+  side.rn = r.cross(c.normal_W);
+  side.rt1 = r.cross(c.tangent1_W);
+  side.rt2 = r.cross(c.tangent2_W);
+  side.inv_mass = inv_mass;
+  side.turn_n = inv_I * side.rn;
+  side.turn_t1 = inv_I * side.rt1;
+  side.turn_t2 = inv_I * side.rt2;
+  Eigen::Matrix2d ks;
+  ks << inv_mass + side.rt1.dot(side.turn_t1), side.rt1.dot(side.turn_t2),  //
+      side.rt2.dot(side.turn_t1), inv_mass + side.rt2.dot(side.turn_t2);
+  k += ks;
+  return inv_mass + side.rn.dot(side.turn_n);
+}
+
 void prepareContact(const Model& model, const State& state, const std::vector<Mat3>& inv_I_W, double h,
                     const Contact& contact, SolverContact& c) {
   const Vec3& n = contact.normal_W;
@@ -431,37 +449,11 @@ void prepareContact(const Model& model, const State& state, const std::vector<Ma
   c.normal_W = n;
   c.tangent1_W = (std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
   c.tangent2_W = n.cross(c.tangent1_W);
-  const BodyModel& b = model.body(c.body);
-  const Mat3& inv_I = inv_I_W[c.body];
-  c.rn_W = contact.r_W.cross(n);
-  c.rt1_W = contact.r_W.cross(c.tangent1_W);
-  c.rt2_W = contact.r_W.cross(c.tangent2_W);
-  c.inv_mass = b.inv_mass;
-  c.turn_n = inv_I * c.rn_W;
-  c.turn_t1 = inv_I * c.rt1_W;
-  c.turn_t2 = inv_I * c.rt2_W;
-  double knn = c.inv_mass + c.rn_W.dot(c.turn_n);
-  Eigen::Matrix2d k;
-  k << c.inv_mass + c.rt1_W.dot(c.turn_t1), c.rt1_W.dot(c.turn_t2),  //
-      c.rt2_W.dot(c.turn_t1), c.inv_mass + c.rt2_W.dot(c.turn_t2);
-  c.other_inv_mass = 0.0;
-  c.other_turn_n = c.other_turn_t1 = c.other_turn_t2 = Vec3::Zero();
-  c.other_rn_W = c.other_rt1_W = c.other_rt2_W = Vec3::Zero();
+  Eigen::Matrix2d k = Eigen::Matrix2d::Zero();
+  double knn = prepareSide(contact.r_W, c, model.body(c.body).inv_mass, inv_I_W[c.body], c.a, k);
+  c.o = SolverContact::Side();
   if (c.other >= 0 && !state.bodies[c.other].asleep) {
-    const BodyModel& o = model.body(c.other);
-    const Mat3& inv_I_o = inv_I_W[c.other];
-    c.other_rn_W = contact.r_other_W.cross(n);
-    c.other_rt1_W = contact.r_other_W.cross(c.tangent1_W);
-    c.other_rt2_W = contact.r_other_W.cross(c.tangent2_W);
-    c.other_inv_mass = o.inv_mass;
-    c.other_turn_n = inv_I_o * c.other_rn_W;
-    c.other_turn_t1 = inv_I_o * c.other_rt1_W;
-    c.other_turn_t2 = inv_I_o * c.other_rt2_W;
-    knn += o.inv_mass + c.other_rn_W.dot(c.other_turn_n);
-    Eigen::Matrix2d ko;
-    ko << o.inv_mass + c.other_rt1_W.dot(c.other_turn_t1), c.other_rt1_W.dot(c.other_turn_t2),  //
-        c.other_rt2_W.dot(c.other_turn_t1), o.inv_mass + c.other_rt2_W.dot(c.other_turn_t2);
-    k += ko;
+    knn += prepareSide(contact.r_other_W, c, model.body(c.other).inv_mass, inv_I_W[c.other], c.o, k);
   }
   c.normal_mass = 1.0 / knn;
   c.tangent_k = k;

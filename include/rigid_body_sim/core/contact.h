@@ -38,15 +38,17 @@ struct Contact {
 /// ω·(r × d)) and the angular velocity an impulse along n, t₁, t₂ gives
 /// (I⁻¹ (r × n) etc.), for both bodies.
 struct SolverContact {
+  /// One body's side of the contact (zero for the scene and a sleeper).
+  struct Side {
+    Vec3 rn = Vec3::Zero(), rt1 = Vec3::Zero(), rt2 = Vec3::Zero();  ///< r × n, r × t₁, r × t₂ (m)
+    Vec3 turn_n = Vec3::Zero(), turn_t1 = Vec3::Zero(), turn_t2 = Vec3::Zero();  ///< I⁻¹ (r × ·), 1/(kg·m)
+    double inv_mass = 0.0;                                                      ///< 1/kg
+  };
   int contact = 0;  ///< index in Workspace::contacts
   int body = 0;
   int other = -1;  ///< -1 for the scene; a sleeping other body has no mass terms (it is ground)
   Vec3 normal_W = Vec3::UnitZ(), tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();
-  Vec3 rn_W = Vec3::Zero(), rt1_W = Vec3::Zero(), rt2_W = Vec3::Zero();  ///< r × n, r × t₁, r × t₂ (m)
-  Vec3 other_rn_W = Vec3::Zero(), other_rt1_W = Vec3::Zero(), other_rt2_W = Vec3::Zero();  ///< the other body's
-  Vec3 turn_n = Vec3::Zero(), turn_t1 = Vec3::Zero(), turn_t2 = Vec3::Zero();  ///< I⁻¹ (r × ·), 1/(kg·m)
-  Vec3 other_turn_n = Vec3::Zero(), other_turn_t1 = Vec3::Zero(), other_turn_t2 = Vec3::Zero();  ///< the other body's
-  double inv_mass = 0.0, other_inv_mass = 0.0;                ///< 1/kg; 0 for the scene and for a sleeping other body
+  Side a, o;  ///< `body`'s side and the other's
   double normal_mass = 0.0;                                   ///< 1 / (nᵀ K n), kg
   Eigen::Matrix2d tangent_k = Eigen::Matrix2d::Zero();        ///< Tᵀ K T, 1/kg
   Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();     ///< (Tᵀ K T)⁻¹, kg
