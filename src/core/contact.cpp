@@ -419,12 +419,8 @@ void groupIslands(const Model& model, const State& state, Workspace& ws) {
   }
 }
 
-/// The entries of the notes' K = M⁻¹𝐈 − r* I⁻¹ r* a contact's solve needs
-/// (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n), and TᵀKT likewise, with the other body's
-/// terms added), and its target normal velocity. A sleeping body is part of
-/// the ground: no mass terms.
-/// One body's side: its Jacobian rows and turns for the arm r, and its
-/// share of nᵀKn (returned) and of TᵀKT (added to k).
+/// One body's side of a contact: its Jacobian rows and turns for the arm r,
+/// and its share of nᵀKn (returned) and of TᵀKT (added to k).
 double prepareSide(const Vec3& r, const SolverContact& c, double inv_mass, const Mat3& inv_I, SolverContact::Side& side,
                    Eigen::Matrix2d& k) {
   side.rn = r.cross(c.normal_W);
@@ -441,6 +437,10 @@ double prepareSide(const Vec3& r, const SolverContact& c, double inv_mass, const
   return inv_mass + side.rn.dot(side.turn_n);
 }
 
+/// The entries of the notes' K = M⁻¹𝐈 − r* I⁻¹ r* a contact's solve needs
+/// (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n), and TᵀKT likewise, with the other body's
+/// terms added), and its target normal velocity. A sleeping body is part of
+/// the ground: no mass terms.
 void prepareContact(const Model& model, const State& state, const std::vector<Mat3>& inv_I_W, double h,
                     const Contact& contact, SolverContact& c) {
   const Vec3& n = contact.normal_W;
