@@ -293,12 +293,20 @@ BodyState SimNode::bodyState(int body, bool twist_in_body) const {
   return msg;
 }
 
+std::optional<SimNode::Target> SimNode::findTarget(const std::string& body_name, const std::string& frame_name,
+                                                   std::string& error) const {
+  const auto body = findBody(body_name, error);
+  if (!body) return std::nullopt;
+  const auto frame = findFrame(frame_name, *body, error);
+  if (!frame) return std::nullopt;
+  return Target{*body, *frame};
+}
+
 bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res) {
   res.success = false;
-  const auto body = findBody(req.body, res.message);
-  if (!body) return true;
-  const auto frame = findFrame(req.frame, *body, res.message);
-  if (!frame) return true;
+  const auto target = findTarget(req.body, req.frame, res.message);
+  if (!target) return true;
+  const auto [body, frame] = *target;
   const Vec3 force = fromVector3(req.force), torque = fromVector3(req.torque), point = fromPoint(req.point);
   res.message =
       firstProblem({checkVector(force, kMaxForce, "force", "N"), checkVector(torque, kMaxTorque, "torque", "N·m"),
@@ -313,10 +321,10 @@ bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res)
   }
   const double start = std::max(req.start_time.toSec(), simTime());  // 0 or the past: now
   const double end = duration > 0.0 ? start + duration : core::WrenchSchedule::kForever;
-  schedule_.add(*body, {force, torque, point, *frame}, start, end);
+  schedule_.add(body, {force, torque, point, frame}, start, end);
   res.success = true;
   std::ostringstream os;
-  os << "wrench on '" << model_.body(*body).name << "' from t = " << start << " s "
+  os << "wrench on '" << model_.body(body).name << "' from t = " << start << " s "
      << (duration > 0.0 ? "for " + std::to_string(duration) + " s" : std::string("until cleared"));
   res.message = os.str();
   return true;
@@ -324,26 +332,25 @@ bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res)
 
 bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& res) {
   res.success = false;
-  const auto body = findBody(req.body, res.message);
-  if (!body) return true;
-  const auto frame = findFrame(req.frame, *body, res.message);
-  if (!frame) return true;
+  const auto target = findTarget(req.body, req.frame, res.message);
+  if (!target) return true;
+  const auto [body, frame] = *target;
   const Vec3 linear = fromVector3(req.linear), angular = fromVector3(req.angular), point = fromPoint(req.point);
   res.message = firstProblem({checkVector(linear, kMaxImpulse, "linear", "N·s"),
                               checkVector(angular, kMaxImpulse, "angular", "N·m·s"),
                               checkVector(point, kMaxPosition, "point", "m")});
   if (!res.message.empty()) return true;
-  core::BodyState after = state_.bodies[*body];
-  core::applyImpulse(model_.body(*body), after, {linear, angular, point, *frame});
+  core::BodyState after = state_.bodies[body];
+  core::applyImpulse(model_.body(body), after, {linear, angular, point, frame});
   const std::string speed = checkVector(after.v_WB, kMaxSpeed, "resulting velocity", "m/s");
   const std::string spin = checkVector(after.w_B, kMaxAngularSpeed, "resulting angular velocity", "rad/s");
   if (!speed.empty() || !spin.empty()) {
     res.message = speed.empty() ? spin : speed;
     return true;
   }
-  state_.bodies[*body] = after;
+  state_.bodies[body] = after;
   res.success = true;
-  res.message = "impulse applied to '" + model_.body(*body).name + "'";
+  res.message = "impulse applied to '" + model_.body(body).name + "'";
   return true;
 }
 
@@ -368,21 +375,19 @@ bool SimNode::clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response
 
 bool SimNode::getState(GetState::Request& req, GetState::Response& res) {
   res.success = false;
-  const auto body = findBody(req.body, res.message);
-  if (!body) return true;
-  const auto frame = findFrame(req.frame, *body, res.message);
-  if (!frame) return true;
-  res.state = bodyState(*body, *frame == core::Frame::kBody);
+  const auto target = findTarget(req.body, req.frame, res.message);
+  if (!target) return true;
+  const auto [body, frame] = *target;
+  res.state = bodyState(body, frame == core::Frame::kBody);
   res.success = true;
   return true;
 }
 
 bool SimNode::setState(SetState::Request& req, SetState::Response& res) {
   res.success = false;
-  const auto body = findBody(req.body.empty() ? req.state.body : req.body, res.message);
-  if (!body) return true;
-  const auto frame = findFrame(req.state.twist_frame, *body, res.message);
-  if (!frame) return true;
+  const auto target = findTarget(req.body.empty() ? req.state.body : req.body, req.state.twist_frame, res.message);
+  if (!target) return true;
+  const auto [body, frame] = *target;
   const Vec3 p = fromPoint(req.state.pose.position);
   const Vec3 v = fromVector3(req.state.twist.linear), w = fromVector3(req.state.twist.angular);
   const geometry_msgs::Quaternion& mq = req.state.pose.orientation;
@@ -400,10 +405,10 @@ bool SimNode::setState(SetState::Request& req, SetState::Response& res) {
   core::LinkState link;
   link.p_WL = p;
   link.q_WL = q.normalized();
-  const Quat q_frame = *frame == core::Frame::kBody ? link.q_WL : Quat::Identity();
+  const Quat q_frame = frame == core::Frame::kBody ? link.q_WL : Quat::Identity();
   link.v_WL = q_frame * v;
   link.w_W = q_frame * w;
-  state_.bodies[*body] = core::bodyStateFromLink(model_.body(*body), link);
+  state_.bodies[body] = core::bodyStateFromLink(model_.body(body), link);
   state_.contact_impulses.clear();  // nothing carries over to a new pose
   res.success = true;
   res.message = "state set";

@@ -14,21 +14,17 @@ namespace rigid_body_sim::node {
 inline core::Vec3 fromVector3(const geometry_msgs::Vector3& v) { return {v.x, v.y, v.z}; }
 inline core::Vec3 fromPoint(const geometry_msgs::Point& p) { return {p.x, p.y, p.z}; }
 
-inline geometry_msgs::Vector3 toVector3(const core::Vec3& v) {
-  geometry_msgs::Vector3 m;
+/// A geometry_msgs type with fields x, y, z (Vector3, Point) from a vector.
+template <class Msg>
+Msg toXyz(const core::Vec3& v) {
+  Msg m;
   m.x = v.x();
   m.y = v.y();
   m.z = v.z();
   return m;
 }
-
-inline geometry_msgs::Point toPoint(const core::Vec3& v) {
-  geometry_msgs::Point m;
-  m.x = v.x();
-  m.y = v.y();
-  m.z = v.z();
-  return m;
-}
+inline geometry_msgs::Vector3 toVector3(const core::Vec3& v) { return toXyz<geometry_msgs::Vector3>(v); }
+inline geometry_msgs::Point toPoint(const core::Vec3& v) { return toXyz<geometry_msgs::Point>(v); }
 
 inline geometry_msgs::Quaternion toQuaternion(const core::Quat& q) {
   geometry_msgs::Quaternion m;

@@ -62,6 +62,12 @@ class SimNode {
   /// `frame` as a core frame for `body`: "" or the world frame → world, the
   /// body's root link → body; anything else is an error.
   std::optional<core::Frame> findFrame(const std::string& frame, int body, std::string& error) const;
+  /// What a request addresses: a body by name and a frame of it (both as above).
+  struct Target {
+    int body;
+    core::Frame frame;
+  };
+  std::optional<Target> findTarget(const std::string& body, const std::string& frame, std::string& error) const;
   BodyState bodyState(int body, bool twist_in_body) const;
   void rebaseClock();
 
