@@ -3,6 +3,9 @@
 # odometry at 100 Hz and at 1 kHz to a subscriber (CPU share of one core, step-period jitter
 # p50/p99 from ~report_timing), and with ~realtime_factor 0 the real-time
 # factor reached. Each run lasts SECONDS (default 10) on its own master.
+# Two floors, for comparison in the same run: a bare 1 kHz sleep loop
+# (jitter) and a roscpp node that only publishes the same two messages at
+# 1 kHz (CPU).
 # Usage: bench/node_bench.sh [SECONDS]
 set -euo pipefail
 source "$(dirname "$0")/../scripts/common.sh"
@@ -40,6 +43,8 @@ run() {  # name, then sim_node private parameters
 }
 
 printf "%-22s %s\n" "bare 1 kHz sleep loop" "$("$RBS_WS/devel/lib/rigid_body_sim/sleep_baseline" $((SECONDS_PER_RUN * 1000)))"
+printf "%-22s %s\n" "roscpp floor, 1 kHz" \
+  "$("$RBS_WS/devel/lib/rigid_body_sim/publish_baseline" $((SECONDS_PER_RUN * 1000)) 2>/dev/null | tail -1)"
 run rate1k_publish100 _rate:=1000.0 _dt:=0.001 _publish_rate:=100.0
 run rate1k_publish1k _rate:=1000.0 _dt:=0.001 _publish_rate:=1000.0
 run as_fast_publish100 _rate:=1000.0 _dt:=0.001 _publish_rate:=100.0 _realtime_factor:=0.0
