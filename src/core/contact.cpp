@@ -193,7 +193,9 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
   for (int m : kept) {
     const ContactCandidate& cand = cands[m];
     const ContactPoint& p = b.contact_points[cand.point];
-    Contact& c = ws.contacts.emplace_back();
+    // Filled on the stack, then copied: the compiler drops the default
+    // initialisation it overwrites (in place it zeroes the whole struct first).
+    Contact c;
     c.body = body;
     c.other = cand.other;
     c.item = cand.item;
@@ -202,6 +204,7 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
     c.r_W = s.q_WB * p.r_B - p.radius * cand.normal_W;
     if (c.other >= 0) c.r_other_W = s.p_WB + c.r_W - state.bodies[c.other].p_WB;
     c.separation = cand.separation;
+    ws.contacts.push_back(c);
   }
 }
 
@@ -275,41 +278,49 @@ bool keyLess(int body_a, int other_a, int item_a, int point_a, int body_b, int o
   return point_a < point_b;
 }
 
-/// The velocity of `body`'s point relative to the other's along the
-/// direction whose Jacobian rows are (d, r × d, r_o × d).
-inline double rowVelocity(const SolverContact& c, const Vec3& d, const Vec3& row, const Vec3& other_row,
-                          const State& state, const std::vector<Vec3>& w_W) {
-  double u = d.dot(state.bodies[c.body].v_WB) + row.dot(w_W[c.body]);
-  if (c.other >= 0) u -= d.dot(state.bodies[c.other].v_WB) + other_row.dot(w_W[c.other]);
+using Velocities = std::vector<Workspace::Velocity>;
+
+/// The velocity of `body`'s point relative to the other's along n, t₁ and
+/// t₂ (Jacobian rows (d, r × d) per body: d·(v + ω × r) = d·v + ω·(r × d)).
+inline Vec3 contactVelocity(const SolverContact& c, const Velocities& vel) {
+  const Workspace::Velocity& a = vel[c.body];
+  Vec3 u(c.normal_W.dot(a.v_W) + c.a.rn.dot(a.w_W), c.tangent1_W.dot(a.v_W) + c.a.rt1.dot(a.w_W),
+         c.tangent2_W.dot(a.v_W) + c.a.rt2.dot(a.w_W));
+  if (c.other >= 0) {
+    const Workspace::Velocity& o = vel[c.other];
+    u -= Vec3(c.normal_W.dot(o.v_W) + c.o.rn.dot(o.w_W), c.tangent1_W.dot(o.v_W) + c.o.rt1.dot(o.w_W),
+              c.tangent2_W.dot(o.v_W) + c.o.rt2.dot(o.w_W));
+  }
   return u;
 }
 
-inline double normalVelocity(const SolverContact& c, const State& state, const std::vector<Vec3>& w_W) {
-  return rowVelocity(c, c.normal_W, c.a.rn, c.o.rn, state, w_W);
+inline double normalVelocity(const SolverContact& c, const Velocities& vel) {
+  double u = c.normal_W.dot(vel[c.body].v_W) + c.a.rn.dot(vel[c.body].w_W);
+  if (c.other >= 0) u -= c.normal_W.dot(vel[c.other].v_W) + c.o.rn.dot(vel[c.other].w_W);
+  return u;
 }
 
 /// Applies the impulse λ_N n + λ₁ t₁ + λ₂ t₂ at a contact: + to `body`, − to the other.
-inline void applyImpulse(const SolverContact& c, double ln, double l1, double l2, State& state,
-                         std::vector<Vec3>& w_W) {
+inline void applyImpulse(const SolverContact& c, double ln, double l1, double l2, Velocities& vel) {
   const Vec3 P = ln * c.normal_W + l1 * c.tangent1_W + l2 * c.tangent2_W;
-  state.bodies[c.body].v_WB += c.a.inv_mass * P;
-  w_W[c.body] += ln * c.a.turn_n + l1 * c.a.turn_t1 + l2 * c.a.turn_t2;
+  vel[c.body].v_W += c.a.inv_mass * P;
+  vel[c.body].w_W += ln * c.a.turn_n + l1 * c.a.turn_t1 + l2 * c.a.turn_t2;
   if (c.other >= 0) {
-    state.bodies[c.other].v_WB -= c.o.inv_mass * P;
-    w_W[c.other] -= ln * c.o.turn_n + l1 * c.o.turn_t1 + l2 * c.o.turn_t2;
+    vel[c.other].v_W -= c.o.inv_mass * P;
+    vel[c.other].w_W -= ln * c.o.turn_n + l1 * c.o.turn_t1 + l2 * c.o.turn_t2;
   }
 }
 
 /// Starts a contact from the impulse it carried last step (if it existed,
 /// see matchLastImpulses), applied to the bodies before the first sweep.
-void warmStart(const Model& model, const Contact& contact, State& state, std::vector<Vec3>& w_W, SolverContact& c) {
+void warmStart(const Model& model, const Contact& contact, const State& state, Velocities& vel, SolverContact& c) {
   if (contact.last_impulse < 0) return;
   const ContactImpulse last = state.contact_impulses[contact.last_impulse];
   c.normal_impulse = last.normal;
   c.tangent_impulse = Eigen::Vector2d(c.tangent1_W.dot(last.tangent_W), c.tangent2_W.dot(last.tangent_W));
   const double limit = model.contact().friction * c.normal_impulse;
   if (c.tangent_impulse.norm() > limit) c.tangent_impulse *= limit / c.tangent_impulse.norm();
-  applyImpulse(c, c.normal_impulse, c.tangent_impulse.x(), c.tangent_impulse.y(), state, w_W);
+  applyImpulse(c, c.normal_impulse, c.tangent_impulse.x(), c.tangent_impulse.y(), vel);
 }
 
 /// Finds each contact's impulse of the last step: both lists are sorted by
@@ -373,23 +384,23 @@ Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, const Eigen::Vector2d& 
 
 /// One Gauss-Seidel update of one contact, on the accumulated impulses given:
 /// friction first (it matters less than not sinking), then the normal to
-/// reach `target` (m/s). Returns the velocity change it made (m/s).
+/// reach `target` (m/s). Returns the velocity change it made (m/s). The
+/// normal velocity after the friction update is u_N + nᵀKT Δλ_T, so the
+/// bodies are read once and written once.
 double sweepContact(SolverContact& c, double& normal, Eigen::Vector2d& tangent, double target, double friction,
-                    State& state, std::vector<Vec3>& w_W) {
+                    Velocities& vel) {
+  const Vec3 u = contactVelocity(c, vel);
   // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows; otherwise
   // slide with maximal dissipation (frictionOnDisk).
-  const Eigen::Vector2d vt(rowVelocity(c, c.tangent1_W, c.a.rt1, c.o.rt1, state, w_W),
-                           rowVelocity(c, c.tangent2_W, c.a.rt2, c.o.rt2, state, w_W));
-  const Eigen::Vector2d lt = frictionOnDisk(c.tangent_k, tangent - c.tangent_mass * vt, friction * normal);
+  const Eigen::Vector2d lt = frictionOnDisk(c.tangent_k, tangent - c.tangent_mass * u.tail<2>(), friction * normal);
   const Eigen::Vector2d dlt = lt - tangent;
   tangent = lt;
-  applyImpulse(c, 0.0, dlt.x(), dlt.y(), state, w_W);
   // Normal: reach the target velocity, never pull (λ_N ≥ 0).
-  const double vn = normalVelocity(c, state, w_W);
+  const double vn = u.x() + c.normal_tangent_k.dot(dlt);
   const double ln = std::max(normal - c.normal_mass * (vn - target), 0.0);
   const double dln = ln - normal;
   normal = ln;
-  applyImpulse(c, dln, 0.0, 0.0, state, w_W);
+  applyImpulse(c, dln, dlt.x(), dlt.y(), vel);
   return (std::abs(dln) + dlt.norm()) / c.normal_mass;
 }
 
@@ -420,9 +431,10 @@ void groupIslands(const Model& model, const State& state, Workspace& ws) {
 }
 
 /// One body's side of a contact: its Jacobian rows and turns for the arm r,
-/// and its share of nᵀKn (returned) and of TᵀKT (added to k).
+/// and its share of nᵀKn (returned), of TᵀKT (added to k) and of nᵀKT
+/// (added to k_nt; nᵀT = 0, so no mass term).
 double prepareSide(const Vec3& r, const SolverContact& c, double inv_mass, const Mat3& inv_I, SolverContact::Side& side,
-                   Eigen::Matrix2d& k) {
+                   Eigen::Matrix2d& k, Eigen::Vector2d& k_nt) {
   side.rn = r.cross(c.normal_W);
   side.rt1 = r.cross(c.tangent1_W);
   side.rt2 = r.cross(c.tangent2_W);
@@ -434,29 +446,39 @@ double prepareSide(const Vec3& r, const SolverContact& c, double inv_mass, const
   ks << inv_mass + side.rt1.dot(side.turn_t1), side.rt1.dot(side.turn_t2),  //
       side.rt2.dot(side.turn_t1), inv_mass + side.rt2.dot(side.turn_t2);
   k += ks;
+  k_nt += Eigen::Vector2d(side.rn.dot(side.turn_t1), side.rn.dot(side.turn_t2));
   return inv_mass + side.rn.dot(side.turn_n);
 }
 
 /// The entries of the notes' K = M⁻¹𝐈 − r* I⁻¹ r* a contact's solve needs
 /// (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n), and TᵀKT likewise, with the other body's
 /// terms added), and its target normal velocity. A sleeping body is part of
-/// the ground: no mass terms.
+/// the ground: no mass terms. `previous` is the solver contact before it
+/// in the island, if any.
 void prepareContact(const Model& model, const State& state, const std::vector<Mat3>& inv_I_W, double h,
-                    const Contact& contact, SolverContact& c) {
+                    const Contact& contact, const SolverContact* previous, SolverContact& c) {
   const Vec3& n = contact.normal_W;
   c.body = contact.body;
   c.other = contact.other;
-  c.normal_W = n;
-  c.tangent1_W = (std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
-  c.tangent2_W = n.cross(c.tangent1_W);
+  if (previous == nullptr || previous->normal_W != n) {  // the points of one region share n and its tangents
+    c.normal_W = n;
+    c.tangent1_W = (std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
+    c.tangent2_W = n.cross(c.tangent1_W);
+  } else {
+    c.normal_W = n;
+    c.tangent1_W = previous->tangent1_W;
+    c.tangent2_W = previous->tangent2_W;
+  }
   Eigen::Matrix2d k = Eigen::Matrix2d::Zero();
-  double knn = prepareSide(contact.r_W, c, model.body(c.body).inv_mass, inv_I_W[c.body], c.a, k);
+  Eigen::Vector2d k_nt = Eigen::Vector2d::Zero();
+  double knn = prepareSide(contact.r_W, c, model.body(c.body).inv_mass, inv_I_W[c.body], c.a, k, k_nt);
   c.o = SolverContact::Side();
   if (c.other >= 0 && !state.bodies[c.other].asleep) {
-    knn += prepareSide(contact.r_other_W, c, model.body(c.other).inv_mass, inv_I_W[c.other], c.o, k);
+    knn += prepareSide(contact.r_other_W, c, model.body(c.other).inv_mass, inv_I_W[c.other], c.o, k, k_nt);
   }
   c.normal_mass = 1.0 / knn;
   c.tangent_k = k;
+  c.normal_tangent_k = k_nt;
   c.tangent_mass = k.inverse();
   c.separation = contact.separation;
   c.target_normal_velocity = c.separation > 0.0 ? -c.separation / h : 0.0;
@@ -467,7 +489,7 @@ void prepareContact(const Model& model, const State& state, const std::vector<Ma
 /// For the solver contacts [first, last) of one island: prepare, warm
 /// start, restitution (impact passes), projected Gauss-Seidel; then the
 /// results go back to the contacts.
-void solveIsland(const Model& model, int first, int last, double h, State& state, std::vector<Vec3>& w_W,
+void solveIsland(const Model& model, int first, int last, double h, const State& state, Velocities& vel,
                  Workspace& ws, StepScratch& scratch) {
   const ContactSettings& cs = model.contact();
   const double threshold = model.restitutionThreshold();
@@ -477,8 +499,8 @@ void solveIsland(const Model& model, int first, int last, double h, State& state
     const Contact& contact = ws.contacts[ws.island_contacts[k]];
     SolverContact& c = ws.solver_contacts[k];
     c.contact = ws.island_contacts[k];
-    prepareContact(model, state, ws.inverse_inertias, h, contact, c);
-    warmStart(model, contact, state, w_W, c);
+    prepareContact(model, state, ws.inverse_inertias, h, contact, k > first ? &c - 1 : nullptr, c);
+    warmStart(model, contact, state, vel, c);
   }
   constexpr double kTolerance = 1e-7;  // m/s of velocity change in a sweep: 1e-10 m of drift per step
   // Impacts first, as a sequence of simultaneous collisions: the contacts
@@ -494,7 +516,7 @@ void solveIsland(const Model& model, int first, int last, double h, State& state
     for (int pass = 0; pass < max_passes; ++pass) {
       hit.clear();
       for (SolverContact* c = begin; c != end; ++c) {
-        const double vn = normalVelocity(*c, state, w_W);
+        const double vn = normalVelocity(*c, vel);
         const bool arrives = c->separation <= 0.0 || vn * h < -c->separation;
         if (arrives && vn < -threshold) {
           c->impact_target = -cs.restitution * vn;
@@ -509,7 +531,7 @@ void solveIsland(const Model& model, int first, int last, double h, State& state
         for (int k : hit) {
           SolverContact& c = begin[k];
           largest = std::max(
-              largest, sweepContact(c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction, state, w_W));
+              largest, sweepContact(c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction, vel));
         }
         if (largest < kTolerance) break;
       }
@@ -521,7 +543,7 @@ void solveIsland(const Model& model, int first, int last, double h, State& state
     double largest = 0.0;
     for (SolverContact* c = begin; c != end; ++c) {
       largest = std::max(largest, sweepContact(*c, c->normal_impulse, c->tangent_impulse, c->target_normal_velocity,
-                                               cs.friction, state, w_W));
+                                               cs.friction, vel));
     }
     if (largest < kTolerance) break;
   }
@@ -529,7 +551,7 @@ void solveIsland(const Model& model, int first, int last, double h, State& state
     Contact& contact = ws.contacts[c->contact];
     contact.normal_impulse = c->normal_impulse;
     contact.tangent_impulse_W = c->tangent_impulse.x() * c->tangent1_W + c->tangent_impulse.y() * c->tangent2_W;
-    contact.predicted_separation = c->separation + h * normalVelocity(*c, state, w_W);
+    contact.predicted_separation = c->separation + h * normalVelocity(*c, vel);
   }
 }
 
@@ -685,15 +707,16 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
     state.contact_impulses.clear();
     return;
   }
-  // The bodies in contact, in world axes: ω_W = R w_B and I⁻¹_W = R I⁻¹ Rᵀ
-  // (a sleeper's ω is zero and it has no inertia terms: it is ground).
-  std::vector<Vec3>& w_W = ws.angular_velocities;
-  w_W.resize(model.bodyCount());
+  // The bodies in contact, in world axes: v, ω_W = R w_B and I⁻¹_W = R I⁻¹ Rᵀ
+  // (a sleeper's velocities are zero and it has no inertia terms: it is ground).
+  Velocities& vel = ws.velocities;
+  vel.resize(model.bodyCount());
   ws.inverse_inertias.resize(model.bodyCount());
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     if (!ws.in_contact[i]) continue;
     const BodyState& b = state.bodies[i];
-    w_W[i] = b.q_WB * b.w_B;
+    vel[i].v_W = b.v_WB;
+    vel[i].w_W = b.q_WB * b.w_B;
     if (!b.asleep) ws.inverse_inertias[i] = worldInverseInertia(model.body(i), b.q_WB);
   }
   // Islands: contacts only couple bodies they join (the scene and sleepers
@@ -712,11 +735,14 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
     for (int k = 0; k < islands; ++k) {
       const std::size_t at = static_cast<std::size_t>(ws.island_starts[k]);
       if (static_cast<int>(at * parts / total) != part) continue;
-      solveIsland(model, ws.island_starts[k], ws.island_starts[k + 1], h, state, w_W, ws, ws.parts[part]);
+      solveIsland(model, ws.island_starts[k], ws.island_starts[k + 1], h, state, vel, ws, ws.parts[part]);
     }
   });
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
-    if (ws.in_contact[i] && !state.bodies[i].asleep) state.bodies[i].w_B = state.bodies[i].q_WB.conjugate() * w_W[i];
+    BodyState& b = state.bodies[i];
+    if (!ws.in_contact[i] || b.asleep) continue;
+    b.v_WB = vel[i].v_W;
+    b.w_B = b.q_WB.conjugate() * vel[i].w_W;
   }
   // The contacts come sorted by key (see detectContacts), and so do these.
   state.contact_impulses.clear();

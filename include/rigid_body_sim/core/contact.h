@@ -51,6 +51,7 @@ struct SolverContact {
   Side a, o;  ///< `body`'s side and the other's
   double normal_mass = 0.0;                                   ///< 1 / (nᵀ K n), kg
   Eigen::Matrix2d tangent_k = Eigen::Matrix2d::Zero();        ///< Tᵀ K T, 1/kg
+  Eigen::Vector2d normal_tangent_k = Eigen::Vector2d::Zero(); ///< nᵀ K T, 1/kg: a tangent impulse's normal velocity
   Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();     ///< (Tᵀ K T)⁻¹, kg
   double separation = 0.0;                                    ///< m, as detected
   double target_normal_velocity = 0.0;                        ///< m/s, for the main solve
@@ -103,8 +104,12 @@ struct Workspace {
   double deepest_penetration = 0.0;
   /// Per body: touched the scene or another body this step (only bodies in contact may sleep).
   std::vector<char> in_contact;
-  /// Impulse solver: the bodies' angular velocities in world axes (rad/s).
-  std::vector<Vec3> angular_velocities;
+  /// Impulse solver: the velocities of the bodies in contact, world axes, side by side (Box2D's solver bodies).
+  struct Velocity {
+    Vec3 v_W = Vec3::Zero();  ///< m/s, of the centre of mass
+    Vec3 w_W = Vec3::Zero();  ///< rad/s
+  };
+  std::vector<Velocity> velocities;
   /// Impulse solver: the awake bodies' inverse inertia in world axes, R I⁻¹ Rᵀ (1/(kg·m²)).
   std::vector<Mat3> inverse_inertias;
   /// Shape matching: where each vertex of the current body went (m, world).
