@@ -353,11 +353,17 @@ Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
 /// Coulomb's law says, whatever K's rotational coupling. Being a projection
 /// onto a convex set, it lets Gauss-Seidel converge (taking the direction
 /// from the slip before the update instead can cycle). ν solves the secular
-/// equation 1/|λ(ν)| = 1/limit by Newton's method in K's eigenbasis, which
-/// approaches monotonically from ν = 0 (Moré and Sorensen's trust-region
-/// step).
-Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, const Eigen::Vector2d& stick, double limit) {
-  if (stick.squaredNorm() <= limit * limit) return stick;
+/// equation 1/|λ(ν)| = 1/limit by Newton's method in K's eigenbasis (Moré
+/// and Sorensen's trust-region step). 1/|λ(ν)| is concave and increasing,
+/// so from any ν ≤ ν* Newton climbs to ν* without overshooting, and from
+/// ν > ν* its first step lands below ν*: `nu` (in: a guess, such as the
+/// contact's ν of the last sweep; out: the ν found, 0 inside the disk)
+/// saves most of the iterations of a converging Gauss-Seidel.
+Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, const Eigen::Vector2d& stick, double limit, double& nu) {
+  if (stick.squaredNorm() <= limit * limit) {
+    nu = 0.0;
+    return stick;
+  }
   if (limit <= 0.0) return Eigen::Vector2d::Zero();
   // K = Q diag(k) Qᵀ, closed form for a symmetric 2×2.
   const double mean = 0.5 * (K(0, 0) + K(1, 1)), half_gap = 0.5 * (K(0, 0) - K(1, 1));
@@ -369,14 +375,17 @@ Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, const Eigen::Vector2d& 
   q1.normalize();
   const Eigen::Vector2d q2(-q1.y(), q1.x());
   const Eigen::Vector2d c(q1.dot(stick), q2.dot(stick));
-  double nu = 0.0;
+  const Eigen::Vector2d kc = k.cwiseProduct(c);
+  const double inv_limit = 1.0 / limit;
+  nu = std::max(nu, 0.0);
   Eigen::Vector2d l = c;  // λ in the eigenbasis
   for (int i = 0; i < 30; ++i) {
-    l = Eigen::Vector2d(k.x() * c.x() / (k.x() + nu), k.y() * c.y() / (k.y() + nu));
-    const double size = l.norm();
-    if (std::abs(size - limit) <= 1e-12 * limit) break;
-    const double slope = -(l.x() * l.x() / (k.x() + nu) + l.y() * l.y() / (k.y() + nu)) / size;  // d|λ|/dν
-    nu += (1.0 / size - 1.0 / limit) * size * size / slope;
+    const Eigen::Vector2d d(1.0 / (k.x() + nu), 1.0 / (k.y() + nu));
+    l = kc.cwiseProduct(d);
+    const double size2 = l.squaredNorm(), size = std::sqrt(size2);
+    if (std::abs(size - limit) <= 1e-10 * limit) break;
+    // ν += φ/(−φ') for φ = 1/|λ| − 1/limit, with d|λ|/dν = −Σ λᵢ² dᵢ / |λ|.
+    nu = std::max(nu + (size2 * inv_limit - size) * size / (l.x() * l.x() * d.x() + l.y() * l.y() * d.y()), 0.0);
   }
   l *= limit / l.norm();  // exactly on the cone
   return l.x() * q1 + l.y() * q2;
@@ -392,7 +401,8 @@ double sweepContact(SolverContact& c, double& normal, Eigen::Vector2d& tangent, 
   const Vec3 u = contactVelocity(c, vel);
   // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows; otherwise
   // slide with maximal dissipation (frictionOnDisk).
-  const Eigen::Vector2d lt = frictionOnDisk(c.tangent_k, tangent - c.tangent_mass * u.tail<2>(), friction * normal);
+  const Eigen::Vector2d lt =
+      frictionOnDisk(c.tangent_k, tangent - c.tangent_mass * u.tail<2>(), friction * normal, c.friction_nu);
   const Eigen::Vector2d dlt = lt - tangent;
   tangent = lt;
   // Normal: reach the target velocity, never pull (λ_N ≥ 0).
@@ -484,6 +494,7 @@ void prepareContact(const Model& model, const State& state, const std::vector<Ma
   c.target_normal_velocity = c.separation > 0.0 ? -c.separation / h : 0.0;
   c.normal_impulse = 0.0;
   c.tangent_impulse.setZero();
+  c.friction_nu = 0.0;
 }
 
 /// For the solver contacts [first, last) of one island: prepare, warm

@@ -60,6 +60,7 @@ struct SolverContact {
   Eigen::Vector2d impact_tangent = Eigen::Vector2d::Zero();   ///< N·s, this impact pass's λ_T
   double normal_impulse = 0.0;                                ///< accumulated λ_N ≥ 0, N·s
   Eigen::Vector2d tangent_impulse = Eigen::Vector2d::Zero();  ///< accumulated, |λ_T| ≤ μ λ_N, N·s
+  double friction_nu = 0.0;  ///< 1/kg: the sliding friction's multiplier of the last sweep (the next one's guess)
 };
 
 class WorkerPool;
