@@ -208,12 +208,34 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
   }
 }
 
+/// How many parts to split `work` units into: one unless there is enough
+/// work for a second core to pay (and a pool to run it on).
+int partsFor(Workspace& ws, std::size_t work) {
+  static const int cores = static_cast<int>(std::thread::hardware_concurrency());  // a system call: once
+  int threads = ws.threads > 0 ? ws.threads : cores;
+  threads = std::max(1, std::min(threads, 8));
+  if (threads == 1 || work < ws.min_parallel_work) return 1;  // the hand-over would cost more than it saves
+  if (!ws.pool || ws.pool->threads() != threads) ws.pool = std::make_shared<WorkerPool>(threads);
+  return threads;
+}
+
+/// Runs part(k) for k < parts, in parallel when parts > 1 (one part is a
+/// plain call: no std::function, no allocation).
+template <class Part>
+void runParts(Workspace& ws, int parts, Part&& part) {
+  if (parts == 1) {
+    part(0);
+  } else {
+    ws.pool->run(std::function<void(int)>(std::ref(part)));
+  }
+}
+
 /// Sweep and prune along x: the pairs of bodies (i < j, at least one awake)
 /// whose boxes, grown by their margins, overlap. The boxes go into flat
 /// arrays in sweep order first, so the inner loop only compares numbers.
 /// Sorted, so the result does not depend on the order the workspace kept
-/// from the last step.
-void broadPhase(const Model& model, const State& state, Workspace& ws) {
+/// from the last step, nor on the number of parts.
+void broadPhase(const Model& model, const State& state, int parts, Workspace& ws) {
   const int n = static_cast<int>(model.bodyCount());
   std::vector<int>& order = ws.sweep_order;
   if (static_cast<int>(order.size()) != n) {
@@ -254,17 +276,28 @@ void broadPhase(const Model& model, const State& state, Workspace& ws) {
     b[5] = hi[3 * i + 2];
     b[6] = state.bodies[i].asleep ? 1.0 : 0.0;
   }
-  ws.pairs.clear();
+  // The sweep itself, in `parts` contiguous runs of the order (each run's
+  // pairs in its own list), then merged and sorted.
   const double* box = ws.sorted_boxes.data();
-  for (int k = 0; k < n; ++k) {
-    const double* a = box + 7 * k;
-    for (int m = k + 1; m < n; ++m) {
-      const double* b = box + 7 * m;
-      if (b[0] > a[1]) break;
-      if (b[2] > a[3] || a[2] > b[3] || b[4] > a[5] || a[4] > b[5] || (a[6] != 0.0 && b[6] != 0.0)) continue;
-      const int i = order[k], j = order[m];
-      ws.pairs.emplace_back(std::min(i, j), std::max(i, j));
+  runParts(ws, parts, [&](int part) {
+    std::vector<std::pair<int, int>>& pairs = ws.parts[part].pairs;
+    pairs.clear();
+    for (int k = n * part / parts; k < n * (part + 1) / parts; ++k) {
+      const double* a = box + 7 * k;
+      for (int m = k + 1; m < n; ++m) {
+        const double* b = box + 7 * m;
+        if (b[0] > a[1]) break;
+        if (b[2] > a[3] || a[2] > b[3] || b[4] > a[5] || a[4] > b[5] || (a[6] != 0.0 && b[6] != 0.0)) continue;
+        const int i = order[k], j = order[m];
+        pairs.emplace_back(std::min(i, j), std::max(i, j));
+      }
     }
+  });
+  if (parts == 1) {
+    ws.pairs.swap(ws.parts[0].pairs);
+  } else {
+    ws.pairs.clear();
+    for (int k = 0; k < parts; ++k) ws.pairs.insert(ws.pairs.end(), ws.parts[k].pairs.begin(), ws.parts[k].pairs.end());
   }
   std::sort(ws.pairs.begin(), ws.pairs.end());
 }
@@ -566,28 +599,6 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
   }
 }
 
-/// How many parts to split `work` units into: one unless there is enough
-/// work for a second core to pay (and a pool to run it on).
-int partsFor(Workspace& ws, std::size_t work) {
-  static const int cores = static_cast<int>(std::thread::hardware_concurrency());  // a system call: once
-  int threads = ws.threads > 0 ? ws.threads : cores;
-  threads = std::max(1, std::min(threads, 8));
-  if (threads == 1 || work < ws.min_parallel_work) return 1;  // the hand-over would cost more than it saves
-  if (!ws.pool || ws.pool->threads() != threads) ws.pool = std::make_shared<WorkerPool>(threads);
-  return threads;
-}
-
-/// Runs part(k) for k < parts, in parallel when parts > 1 (one part is a
-/// plain call: no std::function, no allocation).
-template <class Part>
-void runParts(Workspace& ws, int parts, Part&& part) {
-  if (parts == 1) {
-    part(0);
-  } else {
-    ws.pool->run(std::function<void(int)>(std::ref(part)));
-  }
-}
-
 }  // namespace
 
 void detectContacts(const Model& model, const State& state, double h, Workspace& ws) {
@@ -611,10 +622,15 @@ void detectContacts(const Model& model, const State& state, double h, Workspace&
   // Body against body, both ways: a's points against o's solid for every
   // pair the broad phase keeps, as directions (a, o) sorted by a then o.
   ws.directions.clear();
+  int parts = 1;
   if (multi) {
     ws.margins.resize(n);
     for (int i = 0; i < n; ++i) ws.margins[i] = margin(i);
-    broadPhase(model, state, ws);
+    std::size_t awake = 0;
+    for (const BodyState& b : state.bodies) awake += !b.asleep;
+    parts = partsFor(ws, awake);
+    if (ws.parts.size() < static_cast<std::size_t>(parts)) ws.parts.resize(parts);
+    broadPhase(model, state, parts, ws);
     for (const auto& [i, j] : ws.pairs) {
       ws.directions.emplace_back(i, j);
       ws.directions.emplace_back(j, i);
@@ -624,13 +640,7 @@ void detectContacts(const Model& model, const State& state, double h, Workspace&
   // Body by body (each against the scene, then against the others in
   // order), so contacts come out sorted by key; split over the cores in
   // contiguous ranges of bodies, merged in order.
-  int parts = 1;
-  if (multi) {
-    std::size_t awake = 0;
-    for (const BodyState& b : state.bodies) awake += !b.asleep;
-    parts = partsFor(ws, awake);
-  }
-  if (ws.parts.size() < static_cast<std::size_t>(parts)) ws.parts.resize(parts);
+  if (ws.parts.empty()) ws.parts.resize(1);
   runParts(ws, parts, [&](int k) {
     StepScratch& out = ws.parts[k];
     out.contacts.clear();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "rigid_body_sim/core/model.h"
@@ -85,6 +86,7 @@ struct StepScratch {
   std::vector<int> impact_contacts;
   std::vector<int> kept;  ///< candidates kept by the reduction
   std::vector<Contact> contacts;  ///< this part's contacts, before they are merged
+  std::vector<std::pair<int, int>> pairs;  ///< broad phase: this part's pairs, before they are merged
   double deepest = 0.0;           ///< m
 };
 
