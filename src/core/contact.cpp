@@ -264,32 +264,44 @@ void broadPhase(const Model& model, const State& state, int parts, Workspace& ws
     }
     order[m + 1] = v;
   }
-  ws.sorted_boxes.resize(7 * n);  // lo x, hi x, lo y, hi y, lo z, hi z, asleep: in sweep order
+  ws.sorted_boxes.resize(6 * n);  // lo x, hi x, lo y, hi y, lo z, hi z: in sweep order
+  std::vector<int>& awake = ws.awake_in_order;  // sweep positions of the awake bodies
+  awake.clear();
   for (int k = 0; k < n; ++k) {
     const int i = order[k];
-    double* b = &ws.sorted_boxes[7 * k];
+    double* b = &ws.sorted_boxes[6 * k];
     b[0] = lo[3 * i];
     b[1] = hi[3 * i];
     b[2] = lo[3 * i + 1];
     b[3] = hi[3 * i + 1];
     b[4] = lo[3 * i + 2];
     b[5] = hi[3 * i + 2];
-    b[6] = state.bodies[i].asleep ? 1.0 : 0.0;
+    if (!state.bodies[i].asleep) awake.push_back(k);
   }
-  // The sweep itself, in `parts` contiguous runs of the order (each run's
-  // pairs in its own list), then merged and sorted.
+  // The sweep itself: each box against the boxes after it in the order
+  // that start before it ends; an awake body against all of them, a
+  // sleeper only against the awake ones (two sleepers make no pair). In
+  // `parts` contiguous runs of the order, each run's pairs in its own list,
+  // then merged and sorted.
   const double* box = ws.sorted_boxes.data();
   runParts(ws, parts, [&](int part) {
     std::vector<std::pair<int, int>>& pairs = ws.parts[part].pairs;
     pairs.clear();
-    for (int k = n * part / parts; k < n * (part + 1) / parts; ++k) {
-      const double* a = box + 7 * k;
-      for (int m = k + 1; m < n; ++m) {
-        const double* b = box + 7 * m;
-        if (b[0] > a[1]) break;
-        if (b[2] > a[3] || a[2] > b[3] || b[4] > a[5] || a[4] > b[5] || (a[6] != 0.0 && b[6] != 0.0)) continue;
-        const int i = order[k], j = order[m];
-        pairs.emplace_back(std::min(i, j), std::max(i, j));
+    const int begin = n * part / parts, end = n * (part + 1) / parts;
+    auto next_awake = std::upper_bound(awake.begin(), awake.end(), begin);  // the first awake after k
+    const auto overlap = [&](int k, int m) {
+      const double *a = box + 6 * k, *b = box + 6 * m;
+      if ((b[2] <= a[3]) & (a[2] <= b[3]) & (b[4] <= a[5]) & (a[4] <= b[5])) {
+        pairs.emplace_back(std::min(order[k], order[m]), std::max(order[k], order[m]));
+      }
+    };
+    for (int k = begin; k < end; ++k) {
+      while (next_awake != awake.end() && *next_awake <= k) ++next_awake;
+      const double reach = box[6 * k + 1];
+      if (state.bodies[order[k]].asleep) {
+        for (auto m = next_awake; m != awake.end() && box[6 * *m] <= reach; ++m) overlap(k, *m);
+      } else {
+        for (int m = k + 1; m < n && box[6 * m] <= reach; ++m) overlap(k, m);
       }
     }
   });

@@ -121,6 +121,7 @@ struct Workspace {
   std::vector<int> sweep_order;
   std::vector<std::pair<int, int>> pairs;
   std::vector<double> margins, box_lo, box_hi, sorted_boxes;
+  std::vector<int> awake_in_order;  ///< broad phase: the awake bodies' places in the sweep order
   /// Both directions of every pair, (a, o) sorted: a's points against o's solid.
   std::vector<std::pair<int, int>> directions;
   /// Islands of the impulse solve: contact indices island by island, and offsets.
