@@ -208,28 +208,6 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
   }
 }
 
-/// How many parts to split `work` units into: one unless there is enough
-/// work for a second core to pay (and a pool to run it on).
-int partsFor(Workspace& ws, std::size_t work) {
-  static const int cores = static_cast<int>(std::thread::hardware_concurrency());  // a system call: once
-  int threads = ws.threads > 0 ? ws.threads : cores;
-  threads = std::max(1, std::min(threads, 8));
-  if (threads == 1 || work < ws.min_parallel_work) return 1;  // the hand-over would cost more than it saves
-  if (!ws.pool || ws.pool->threads() != threads) ws.pool = std::make_shared<WorkerPool>(threads);
-  return threads;
-}
-
-/// Runs part(k) for k < parts, in parallel when parts > 1 (one part is a
-/// plain call: no std::function, no allocation).
-template <class Part>
-void runParts(Workspace& ws, int parts, Part&& part) {
-  if (parts == 1) {
-    part(0);
-  } else {
-    ws.pool->run(std::function<void(int)>(std::ref(part)));
-  }
-}
-
 /// Sweep and prune along x: the pairs of bodies (i < j, at least one awake)
 /// whose boxes, grown by their margins, overlap. The boxes go into flat
 /// arrays in sweep order first, so the inner loop only compares numbers.
@@ -623,6 +601,17 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
 }
 
 }  // namespace
+
+/// How many parts to split `work` units into: one unless there is enough
+/// work for a second core to pay (and a pool to run it on).
+int partsFor(Workspace& ws, std::size_t work) {
+  static const int cores = static_cast<int>(std::thread::hardware_concurrency());  // a system call: once
+  int threads = ws.threads > 0 ? ws.threads : cores;
+  threads = std::max(1, std::min(threads, 8));
+  if (threads == 1 || work < ws.min_parallel_work) return 1;  // the hand-over would cost more than it saves
+  if (!ws.pool || ws.pool->threads() != threads) ws.pool = std::make_shared<WorkerPool>(threads);
+  return threads;
+}
 
 void detectContacts(const Model& model, const State& state, double h, Workspace& ws) {
   ws.contacts.clear();

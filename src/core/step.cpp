@@ -190,14 +190,20 @@ void advance(const Model& model, State& state, const Loads& loads, double h, Wor
   } else if (!state.contact_impulses.empty()) {
     state.contact_impulses.clear();  // nothing to warm-start from next time
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    BodyState& s = state.bodies[i];
-    if (s.asleep) continue;
-    const Quat rotation = gyroscopicRotation(model, model.body(i), h, s);
-    integratePosition(h, s);
-    integrateOrientation(rotation, s);
-    updateStillTime(model, h, s);
-  }
+  // Body by body, each on its own: split over the cores when enough are awake.
+  std::size_t awake = 0;
+  for (const BodyState& s : state.bodies) awake += !s.asleep;
+  const int parts = n > 1 ? partsFor(ws, awake) : 1;
+  runParts(ws, parts, [&](int part) {
+    for (std::size_t i = n * part / parts; i < n * (part + 1) / parts; ++i) {
+      BodyState& s = state.bodies[i];
+      if (s.asleep) continue;
+      const Quat rotation = gyroscopicRotation(model, model.body(i), h, s);
+      integratePosition(h, s);
+      integrateOrientation(rotation, s);
+      updateStillTime(model, h, s);
+    }
+  });
   if (impulse) correctPositions(model, state, ws);
   sleepIslands(model, state, ws, impulse);
 }

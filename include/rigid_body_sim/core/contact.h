@@ -3,11 +3,13 @@
 // shape_matching.h.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
 
 #include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/parallel.h"
 #include "rigid_body_sim/core/state.h"
 #include "rigid_body_sim/core/types.h"
 
@@ -63,8 +65,6 @@ struct SolverContact {
   Eigen::Vector2d tangent_impulse = Eigen::Vector2d::Zero();  ///< accumulated, |λ_T| ≤ μ λ_N, N·s
   double friction_nu = 0.0;  ///< 1/kg: the sliding friction's multiplier of the last sweep (the next one's guess)
 };
-
-class WorkerPool;
 
 /// A contact point found by the detection, before the reduction.
 struct ContactCandidate {
@@ -133,6 +133,22 @@ struct Workspace {
   std::vector<StepScratch> parts;
   std::shared_ptr<WorkerPool> pool;
 };
+
+/// How many parts a stage of `work` units (awake bodies, contacts) splits
+/// into: one unless there is enough for another core to pay.
+int partsFor(Workspace& ws, std::size_t work);
+
+/// Runs part(k) for k < parts, in parallel when parts > 1 (one part is a
+/// plain call: no std::function, no allocation). A part's result must not
+/// depend on the thread that runs it.
+template <class Part>
+void runParts(Workspace& ws, int parts, Part&& part) {
+  if (parts == 1) {
+    part(0);
+  } else {
+    ws.pool->run(std::function<void(int)>(std::ref(part)));
+  }
+}
 
 /// Contacts of the awake bodies, at the current state, against the scene and
 /// against each other: every contact point with φ − radius < margin, where
