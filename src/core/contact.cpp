@@ -242,7 +242,7 @@ void broadPhase(const Model& model, const State& state, int parts, Workspace& ws
     }
     order[m + 1] = v;
   }
-  ws.sorted_boxes.resize(6 * n);  // lo x, hi x, lo y, hi y, lo z, hi z: in sweep order
+  ws.sorted_boxes.resize(6 * n);                // lo x, hi x, lo y, hi y, lo z, hi z: in sweep order
   std::vector<int>& awake = ws.awake_in_order;  // sweep positions of the awake bodies
   awake.clear();
   for (int k = 0; k < n; ++k) {
@@ -356,8 +356,8 @@ void matchLastImpulses(const State& state, std::vector<Contact>& contacts) {
            keyLess(last[k].body, last[k].other, last[k].item, last[k].point, c.body, c.other, c.item, c.point)) {
       ++k;
     }
-    const bool same = k < last.size() && last[k].body == c.body && last[k].other == c.other &&
-                      last[k].item == c.item && last[k].point == c.point;
+    const bool same = k < last.size() && last[k].body == c.body && last[k].other == c.other && last[k].item == c.item &&
+                      last[k].point == c.point;
     c.last_impulse = same ? static_cast<int>(k) : -1;
   }
 }
@@ -382,20 +382,26 @@ Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
 /// ν > ν* its first step lands below ν*: `nu` (in: a guess, such as the
 /// contact's ν of the last sweep; out: the ν found, 0 inside the disk)
 /// saves most of the iterations of a converging Gauss-Seidel.
-Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, const Eigen::Vector2d& stick, double limit, double& nu) {
+Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, SolverContact::TangentEigen& eigen,
+                               const Eigen::Vector2d& stick, double limit, double& nu) {
   if (stick.squaredNorm() <= limit * limit) {
     nu = 0.0;
     return stick;
   }
   if (limit <= 0.0) return Eigen::Vector2d::Zero();
-  // K = Q diag(k) Qᵀ, closed form for a symmetric 2×2.
-  const double mean = 0.5 * (K(0, 0) + K(1, 1)), half_gap = 0.5 * (K(0, 0) - K(1, 1));
-  const double radius = std::sqrt(half_gap * half_gap + K(0, 1) * K(0, 1));
-  if (radius <= 1e-12 * mean) return stick * (limit / stick.norm());  // isotropic: the plain projection
-  const Eigen::Vector2d k(mean + radius, mean - radius);
-  Eigen::Vector2d q1 = half_gap >= 0.0 ? Eigen::Vector2d(half_gap + radius, K(0, 1))
-                                       : Eigen::Vector2d(K(0, 1), radius - half_gap);
-  q1.normalize();
+  if (!eigen.ready) {  // K = Q diag(k) Qᵀ, closed form for a symmetric 2×2; once per contact and step
+    const double mean = 0.5 * (K(0, 0) + K(1, 1)), half_gap = 0.5 * (K(0, 0) - K(1, 1));
+    const double radius = std::sqrt(half_gap * half_gap + K(0, 1) * K(0, 1));
+    eigen.isotropic = radius <= 1e-12 * mean;
+    eigen.k = Eigen::Vector2d(mean + radius, mean - radius);
+    eigen.q1 =
+        half_gap >= 0.0 ? Eigen::Vector2d(half_gap + radius, K(0, 1)) : Eigen::Vector2d(K(0, 1), radius - half_gap);
+    if (!eigen.isotropic) eigen.q1.normalize();
+    eigen.ready = true;
+  }
+  if (eigen.isotropic) return stick * (limit / stick.norm());  // the plain projection
+  const Eigen::Vector2d& k = eigen.k;
+  const Eigen::Vector2d& q1 = eigen.q1;
   const Eigen::Vector2d q2(-q1.y(), q1.x());
   const Eigen::Vector2d c(q1.dot(stick), q2.dot(stick));
   const Eigen::Vector2d kc = k.cwiseProduct(c);
@@ -424,8 +430,8 @@ double sweepContact(SolverContact& c, double& normal, Eigen::Vector2d& tangent, 
   const Vec3 u = contactVelocity(c, vel);
   // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows; otherwise
   // slide with maximal dissipation (frictionOnDisk).
-  const Eigen::Vector2d lt =
-      frictionOnDisk(c.tangent_k, tangent - c.tangent_mass * u.tail<2>(), friction * normal, c.friction_nu);
+  const Eigen::Vector2d lt = frictionOnDisk(c.tangent_k, c.tangent_eigen, tangent - c.tangent_mass * u.tail<2>(),
+                                            friction * normal, c.friction_nu);
   const Eigen::Vector2d dlt = lt - tangent;
   tangent = lt;
   // Normal: reach the target velocity, never pull (λ_N ≥ 0).
@@ -518,13 +524,14 @@ void prepareContact(const Model& model, const State& state, const std::vector<Ma
   c.normal_impulse = 0.0;
   c.tangent_impulse.setZero();
   c.friction_nu = 0.0;
+  c.tangent_eigen.ready = false;
 }
 
 /// For the solver contacts [first, last) of one island: prepare, warm
 /// start, restitution (impact passes), projected Gauss-Seidel; then the
 /// results go back to the contacts.
-void solveIsland(const Model& model, int first, int last, double h, const State& state, Velocities& vel,
-                 Workspace& ws, StepScratch& scratch) {
+void solveIsland(const Model& model, int first, int last, double h, const State& state, Velocities& vel, Workspace& ws,
+                 StepScratch& scratch) {
   const ContactSettings& cs = model.contact();
   const double threshold = model.restitutionThreshold();
   SolverContact* const begin = ws.solver_contacts.data() + first;
@@ -569,8 +576,8 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
         double largest = 0.0;
         for (int k : hit) {
           SolverContact& c = begin[k];
-          largest = std::max(
-              largest, sweepContact(c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction, vel));
+          largest =
+              std::max(largest, sweepContact(c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction, vel));
         }
         if (largest < kTolerance) break;
       }

@@ -43,26 +43,35 @@ struct Contact {
 struct SolverContact {
   /// One body's side of the contact (zero for the scene and a sleeper).
   struct Side {
-    Vec3 rn = Vec3::Zero(), rt1 = Vec3::Zero(), rt2 = Vec3::Zero();  ///< r × n, r × t₁, r × t₂ (m)
+    Vec3 rn = Vec3::Zero(), rt1 = Vec3::Zero(), rt2 = Vec3::Zero();              ///< r × n, r × t₁, r × t₂ (m)
     Vec3 turn_n = Vec3::Zero(), turn_t1 = Vec3::Zero(), turn_t2 = Vec3::Zero();  ///< I⁻¹ (r × ·), 1/(kg·m)
-    double inv_mass = 0.0;                                                      ///< 1/kg
+    double inv_mass = 0.0;                                                       ///< 1/kg
+  };
+  /// TᵀKT = Q diag(k) Qᵀ, which sliding friction works in; made the first
+  /// time the contact slides in a step.
+  struct TangentEigen {
+    Eigen::Vector2d k = Eigen::Vector2d::Zero();    ///< eigenvalues, 1/kg
+    Eigen::Vector2d q1 = Eigen::Vector2d::UnitX();  ///< unit eigenvector of k.x(); q2 is q1 turned by 90°
+    bool isotropic = false;                         ///< k.x() = k.y(): any basis
+    bool ready = false;
   };
   int contact = 0;  ///< index in Workspace::contacts
   int body = 0;
   int other = -1;  ///< -1 for the scene; a sleeping other body has no mass terms (it is ground)
   Vec3 normal_W = Vec3::UnitZ(), tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();
-  Side a, o;  ///< `body`'s side and the other's
-  double normal_mass = 0.0;                                   ///< 1 / (nᵀ K n), kg
-  Eigen::Matrix2d tangent_k = Eigen::Matrix2d::Zero();        ///< Tᵀ K T, 1/kg
-  Eigen::Vector2d normal_tangent_k = Eigen::Vector2d::Zero(); ///< nᵀ K T, 1/kg: a tangent impulse's normal velocity
-  Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();     ///< (Tᵀ K T)⁻¹, kg
-  double separation = 0.0;                                    ///< m, as detected
-  double target_normal_velocity = 0.0;                        ///< m/s, for the main solve
-  double impact_target = 0.0;                                 ///< m/s: e × approach speed, in an impact pass
-  double impact_normal = 0.0;                                 ///< N·s, this impact pass's λ_N
-  Eigen::Vector2d impact_tangent = Eigen::Vector2d::Zero();   ///< N·s, this impact pass's λ_T
-  double normal_impulse = 0.0;                                ///< accumulated λ_N ≥ 0, N·s
-  Eigen::Vector2d tangent_impulse = Eigen::Vector2d::Zero();  ///< accumulated, |λ_T| ≤ μ λ_N, N·s
+  Side a, o;                                                   ///< `body`'s side and the other's
+  double normal_mass = 0.0;                                    ///< 1 / (nᵀ K n), kg
+  Eigen::Matrix2d tangent_k = Eigen::Matrix2d::Zero();         ///< Tᵀ K T, 1/kg
+  Eigen::Vector2d normal_tangent_k = Eigen::Vector2d::Zero();  ///< nᵀ K T, 1/kg: a tangent impulse's normal velocity
+  Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();      ///< (Tᵀ K T)⁻¹, kg
+  double separation = 0.0;                                     ///< m, as detected
+  double target_normal_velocity = 0.0;                         ///< m/s, for the main solve
+  double impact_target = 0.0;                                  ///< m/s: e × approach speed, in an impact pass
+  double impact_normal = 0.0;                                  ///< N·s, this impact pass's λ_N
+  Eigen::Vector2d impact_tangent = Eigen::Vector2d::Zero();    ///< N·s, this impact pass's λ_T
+  double normal_impulse = 0.0;                                 ///< accumulated λ_N ≥ 0, N·s
+  Eigen::Vector2d tangent_impulse = Eigen::Vector2d::Zero();   ///< accumulated, |λ_T| ≤ μ λ_N, N·s
+  TangentEigen tangent_eigen;                                  ///< of tangent_k, for sliding friction
   double friction_nu = 0.0;  ///< 1/kg: the sliding friction's multiplier of the last sweep (the next one's guess)
 };
 
@@ -84,10 +93,10 @@ struct StepScratch {
   std::vector<Vec3> region_points;
   std::vector<double> separations;
   std::vector<int> impact_contacts;
-  std::vector<int> kept;  ///< candidates kept by the reduction
-  std::vector<Contact> contacts;  ///< this part's contacts, before they are merged
+  std::vector<int> kept;                   ///< candidates kept by the reduction
+  std::vector<Contact> contacts;           ///< this part's contacts, before they are merged
   std::vector<std::pair<int, int>> pairs;  ///< broad phase: this part's pairs, before they are merged
-  double deepest = 0.0;           ///< m
+  double deepest = 0.0;                    ///< m
 };
 
 /// Scratch memory of a step (MuJoCo keeps it in mjData; here it is passed
@@ -128,7 +137,7 @@ struct Workspace {
   std::vector<int> island_contacts, island_starts, island_of;
   /// Per body: its island's root, the island's smallest body index (findIslands).
   std::vector<int> island_root;
-  std::vector<char> island_flags;  ///< per island root: scratch of the sleep and position stages
+  std::vector<char> island_flags;     ///< per island root: scratch of the sleep and position stages
   std::vector<int> correct_contacts;  ///< the contacts the position stage corrects
   std::vector<StepScratch> parts;
   std::shared_ptr<WorkerPool> pool;
