@@ -93,10 +93,10 @@ struct StepScratch {
   std::vector<Vec3> region_points;
   std::vector<double> separations;
   std::vector<int> impact_contacts;
-  std::vector<int> kept;                   ///< candidates kept by the reduction
-  std::vector<Contact> contacts;           ///< this part's contacts, before they are merged
-  std::vector<std::pair<int, int>> pairs;  ///< broad phase: this part's pairs, before they are merged
-  double deepest = 0.0;                    ///< m
+  std::vector<int> kept;                        ///< candidates kept by the reduction
+  std::vector<Contact> contacts;                ///< this part's contacts, before they are merged
+  std::vector<std::pair<int, int>> directions;  ///< broad phase: this part's directions, before they are merged
+  double deepest = 0.0;                         ///< m
 };
 
 /// Scratch memory of a step (MuJoCo keeps it in mjData; here it is passed
@@ -126,12 +126,11 @@ struct Workspace {
   std::vector<Mat3> inverse_inertias;
   /// Shape matching: where each vertex of the current body went (m, world).
   std::vector<Vec3> positions;
-  /// Broad phase: bodies ordered along x, their boxes, and the pairs whose boxes overlap.
+  /// Broad phase: bodies ordered along x, and their boxes.
   std::vector<int> sweep_order;
-  std::vector<std::pair<int, int>> pairs;
   std::vector<double> margins, box_lo, box_hi, sorted_boxes;
   std::vector<int> awake_in_order;  ///< broad phase: the awake bodies' places in the sweep order
-  /// Both directions of every pair, (a, o) sorted: a's points against o's solid.
+  /// Both directions (a, o) of every pair whose boxes overlap, sorted: a's points against o's solid.
   std::vector<std::pair<int, int>> directions;
   /// Islands of the impulse solve: contact indices island by island, and offsets.
   std::vector<int> island_contacts, island_starts, island_of;
