@@ -6,6 +6,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -21,6 +22,70 @@ namespace {
 
 using core::Quat;
 using core::Vec3;
+
+/// A marker in `frame`, to be added, with unit scale, no offset and `rgba`.
+visualization_msgs::Marker newMarker(const std::string& frame, const std::string& ns,
+                                     const std::array<float, 4>& rgba) {
+  visualization_msgs::Marker m;
+  m.header.frame_id = frame;
+  m.ns = ns;
+  m.action = visualization_msgs::Marker::ADD;
+  m.pose.orientation.w = 1.0;
+  m.scale.x = m.scale.y = m.scale.z = 1.0;
+  m.color.r = rgba[0];
+  m.color.g = rgba[1];
+  m.color.b = rgba[2];
+  m.color.a = rgba[3];
+  return m;
+}
+
+/// Appends markers drawing the solid `sdf`, whose pose is given in a frame
+/// P placed at X_FP in the marker frame F: rviz's own box, sphere and
+/// cylinder for those shapes (through unions), and the surface φ = 0 as
+/// triangles for anything else (`fallback_size` m across when unbounded).
+void appendSolidMarkers(const core::Sdf& sdf, const core::Pose& X_FP, const visualization_msgs::Marker& base,
+                        double fallback_size, visualization_msgs::MarkerArray& out) {
+  using Kind = core::Sdf::Kind;
+  const core::Pose X_FS = X_FP * sdf.pose();
+  visualization_msgs::Marker m = base;
+  m.id = static_cast<int>(out.markers.size());
+  m.pose = toPose(X_FS.p_WS, X_FS.q_WS);
+  const Vec3& a = sdf.params();
+  switch (sdf.kind()) {
+    case Kind::kUnion:
+      for (const core::Sdf& child : sdf.children()) appendSolidMarkers(child, X_FS, base, fallback_size, out);
+      return;
+    case Kind::kBox:  // full size
+      m.type = visualization_msgs::Marker::CUBE;
+      m.scale = toVector3(a);
+      break;
+    case Kind::kSphere:  // radius
+      m.type = visualization_msgs::Marker::SPHERE;
+      m.scale.x = m.scale.y = m.scale.z = 2.0 * a.x();
+      break;
+    case Kind::kCylinder:  // radius, length along z
+      m.type = visualization_msgs::Marker::CYLINDER;
+      m.scale.x = m.scale.y = 2.0 * a.x();
+      m.scale.z = a.y();
+      break;
+    default: {
+      core::Bounds bounds;
+      if (const auto b = core::solidBounds(sdf)) {
+        bounds = *b;
+      } else {
+        bounds = {Vec3::Constant(-0.5 * fallback_size), Vec3::Constant(0.5 * fallback_size)};
+      }
+      const Vec3 margin = Vec3::Constant(1e-3 + 0.02 * (bounds.hi - bounds.lo).maxCoeff());
+      bounds.lo -= margin;
+      bounds.hi += margin;
+      const double cell = (bounds.hi - bounds.lo).maxCoeff() / 64.0;
+      m.type = visualization_msgs::Marker::TRIANGLE_LIST;
+      m.pose = toPose(X_FP.p_WS, X_FP.q_WS);  // the triangles are in P, where sdf's pose applies
+      for (const Vec3& p : core::surfaceTriangles(sdf, bounds, cell)) m.points.push_back(toPoint(p));
+    }
+  }
+  out.markers.push_back(m);
+}
 
 // What a request may ask for at most: beyond these it is refused as absurd.
 constexpr double kMaxForce = 1e6;         // N
@@ -108,6 +173,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   ROS_INFO("sim_node: simulation keys given: %s (others at config/default.yaml's defaults)", sim.c_str());
 
   scene_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, /*latch=*/true);
+  body_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("body_markers", 1, /*latch=*/true);
   if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
   services_ = {pnh_.advertiseService("apply_wrench", &SimNode::applyWrench, this),
                pnh_.advertiseService("apply_impulse", &SimNode::applyImpulse, this),
@@ -119,6 +185,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
                pnh_.advertiseService("unpause", &SimNode::unpause, this),
                pnh_.advertiseService("step", &SimNode::step, this)};
   publishScene();
+  publishBodies();
   publishClock();
   publish();
 }
@@ -481,27 +548,13 @@ void SimNode::onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& m
 
 void SimNode::publishScene() {
   visualization_msgs::MarkerArray markers;
-  int id = 0;
-  const auto base = [&](int type) {
-    visualization_msgs::Marker m;
-    m.header.frame_id = settings_.world_frame;
-    m.ns = "scene";
-    m.id = id++;
-    m.type = type;
-    m.action = visualization_msgs::Marker::ADD;
-    m.pose.orientation.w = 1.0;
-    m.scale.x = m.scale.y = m.scale.z = 1.0;
-    m.color.r = 0.6f;
-    m.color.g = 0.6f;
-    m.color.b = 0.65f;
-    m.color.a = 0.8f;
-    m.frame_locked = false;
-    return m;
-  };
+  visualization_msgs::Marker base = newMarker(settings_.world_frame, "scene", {0.6f, 0.6f, 0.65f, 0.8f});
   for (const core::Sdf& item : model_.scene()) {
     if (item.kind() == core::Sdf::Kind::kPlane) {
       // A thin square slab standing for the half-space's surface.
-      visualization_msgs::Marker m = base(visualization_msgs::Marker::CUBE);
+      visualization_msgs::Marker m = base;
+      m.id = static_cast<int>(markers.markers.size());
+      m.type = visualization_msgs::Marker::CUBE;
       const Vec3 n = item.pose().q_WS * item.params();
       m.pose = toPose(item.pose().p_WS - 0.0005 * n, Quat::FromTwoVectors(Vec3::UnitZ(), n));
       m.scale.x = m.scale.y = settings_.scene_size;
@@ -509,22 +562,27 @@ void SimNode::publishScene() {
       markers.markers.push_back(m);
       continue;
     }
-    // Anything else is drawn as its surface φ = 0 (exact compositions too).
-    core::Bounds bounds;
-    if (const auto b = core::solidBounds(item)) {
-      bounds = *b;
-    } else {
-      bounds = {Vec3::Constant(-0.5 * settings_.scene_size), Vec3::Constant(0.5 * settings_.scene_size)};
-    }
-    const Vec3 margin = Vec3::Constant(1e-3 + 0.02 * (bounds.hi - bounds.lo).maxCoeff());
-    bounds.lo -= margin;
-    bounds.hi += margin;
-    const double cell = (bounds.hi - bounds.lo).maxCoeff() / 64.0;
-    visualization_msgs::Marker m = base(visualization_msgs::Marker::TRIANGLE_LIST);
-    for (const Vec3& p : core::surfaceTriangles(item, bounds, cell)) m.points.push_back(toPoint(p));
-    markers.markers.push_back(m);
+    appendSolidMarkers(item, core::Pose{}, base, settings_.scene_size, markers);
   }
   scene_pub_.publish(markers);
+}
+
+void SimNode::publishBodies() {
+  // A few distinct colours, in turn (rviz draws each body in its own frame,
+  // which tf moves: frame_locked).
+  static const std::array<std::array<float, 4>, 4> kColours = {
+      {{0.85f, 0.45f, 0.2f, 1.0f}, {0.25f, 0.55f, 0.85f, 1.0f}, {0.4f, 0.7f, 0.3f, 1.0f}, {0.75f, 0.3f, 0.6f, 1.0f}}};
+  visualization_msgs::MarkerArray markers;
+  for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
+    const core::BodyModel& b = model_.body(i);
+    if (b.solid_B.empty()) continue;  // points only: nothing solid to draw
+    visualization_msgs::Marker base = newMarker(frames_[i], b.name, kColours[i % kColours.size()]);
+    base.frame_locked = true;
+    visualization_msgs::MarkerArray mine;
+    appendSolidMarkers(b.solid_B.front(), core::Pose{b.q_LB, b.p_LB}, base, settings_.scene_size, mine);
+    markers.markers.insert(markers.markers.end(), mine.markers.begin(), mine.markers.end());
+  }
+  body_pub_.publish(markers);
 }
 
 }  // namespace rigid_body_sim::node

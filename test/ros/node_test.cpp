@@ -429,6 +429,37 @@ TEST_F(World, EachBodyHasItsFrameTopicAndName) {
   EXPECT_NEAR(buffer.lookupTransform("world", "ball/ball", ros::Time(0)).transform.translation.x, 2.0, 1e-12);
 }
 
+TEST_F(World, MarkersDrawEachBodyInItsOwnFrame) {
+  visualization_msgs::MarkerArray markers;
+  bool got = false;
+  const ros::Subscriber sub = nh_.subscribe<visualization_msgs::MarkerArray>(
+      "/sim_node/body_markers", 1, [&](const visualization_msgs::MarkerArray::ConstPtr& m) {
+        markers = *m;
+        got = true;
+      });
+  ASSERT_TRUE(spinUntil([&] { return got; }, 10.0));  // latched
+  ASSERT_EQ(markers.markers.size(), 2u);
+  // The crate's <collision> box, 0.4 × 0.2 × 0.1 m at its link's origin, drawn
+  // in its frame; rviz moves it with tf.
+  const auto& crate = markers.markers[0];
+  EXPECT_EQ(crate.ns, "crate");
+  EXPECT_EQ(crate.header.frame_id, "crate/base_link");
+  EXPECT_TRUE(crate.frame_locked);
+  EXPECT_EQ(crate.type, visualization_msgs::Marker::CUBE);
+  EXPECT_NEAR(crate.scale.x, 0.4, 1e-12);
+  EXPECT_NEAR(crate.scale.y, 0.2, 1e-12);
+  EXPECT_NEAR(crate.scale.z, 0.1, 1e-12);
+  EXPECT_NEAR(crate.pose.position.x, 0.0, 1e-12);
+  EXPECT_NEAR(crate.pose.position.z, 0.0, 1e-12);
+  EXPECT_NEAR(std::abs(crate.pose.orientation.w), 1.0, 1e-12);
+  const auto& ball = markers.markers[1];
+  EXPECT_EQ(ball.ns, "ball");
+  EXPECT_EQ(ball.header.frame_id, "ball/ball");
+  EXPECT_EQ(ball.type, visualization_msgs::Marker::SPHERE);
+  EXPECT_NEAR(ball.scale.x, 0.2, 1e-12);  // radius 0.1 m
+  EXPECT_NEAR(ball.scale.z, 0.2, 1e-12);
+}
+
 // ------------------------------------------------------------------ refusals
 
 class BadRequests : public Node {};

@@ -44,6 +44,7 @@ class SimNode {
   void publish();
   void publishClock();
   void publishScene();
+  void publishBodies();  ///< each body's solid, in its frame (latched)
 
   // Requests. Each validates first: a refused request changes nothing.
   bool applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res);
@@ -102,7 +103,7 @@ class SimNode {
   std::vector<double> tick_periods_;  ///< s, when ~report_timing
 
   std::vector<ros::Publisher> odom_pubs_;  ///< per body
-  ros::Publisher clock_pub_, scene_pub_;
+  ros::Publisher clock_pub_, scene_pub_, body_pub_;
   tf2_ros::TransformBroadcaster tf_;
   std::vector<ros::Subscriber> wrench_subs_;  ///< per body
   std::vector<ros::ServiceServer> services_;
