@@ -136,6 +136,19 @@ void integrateOrientation(const Quat& increment, BodyState& s) {
   s.q_WB.coeffs() *= 1.0 / std::sqrt(s.q_WB.squaredNorm());
 }
 
+/// The awake bodies in [begin, end): rotation (with the gyroscopic term),
+/// position, orientation, and the time they have been still.
+void integrateBodies(const Model& model, State& state, double h, std::size_t begin, std::size_t end) {
+  for (std::size_t i = begin; i < end; ++i) {
+    BodyState& s = state.bodies[i];
+    if (s.asleep) continue;
+    const Quat rotation = gyroscopicRotation(model, model.body(i), h, s);
+    integratePosition(h, s);
+    integrateOrientation(rotation, s);
+    updateStillTime(model, h, s);
+  }
+}
+
 /// Sleep by islands, as Box2D does: bodies joined by contacts fall asleep
 /// together, once every one of them has been still for the sleep time while
 /// touching something. A body alone would otherwise fall asleep under a
@@ -191,19 +204,16 @@ void advance(const Model& model, State& state, const Loads& loads, double h, Wor
     state.contact_impulses.clear();  // nothing to warm-start from next time
   }
   // Body by body, each on its own: split over the cores when enough are awake.
-  std::size_t awake = 0;
-  for (const BodyState& s : state.bodies) awake += !s.asleep;
+  std::size_t awake = n;
+  if (n > 1) {
+    for (const BodyState& s : state.bodies) awake -= s.asleep;
+  }
   const int parts = n > 1 ? partsFor(ws, awake) : 1;
-  runParts(ws, parts, [&](int part) {
-    for (std::size_t i = n * part / parts; i < n * (part + 1) / parts; ++i) {
-      BodyState& s = state.bodies[i];
-      if (s.asleep) continue;
-      const Quat rotation = gyroscopicRotation(model, model.body(i), h, s);
-      integratePosition(h, s);
-      integrateOrientation(rotation, s);
-      updateStillTime(model, h, s);
-    }
-  });
+  if (parts == 1) {
+    integrateBodies(model, state, h, 0, n);
+  } else {
+    runParts(ws, parts, [&](int part) { integrateBodies(model, state, h, n * part / parts, n * (part + 1) / parts); });
+  }
   if (impulse) correctPositions(model, state, ws);
   sleepIslands(model, state, ws, impulse);
 }
