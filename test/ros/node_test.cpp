@@ -83,6 +83,19 @@ class Node : public ::testing::Test {
     return s.response.state;
   }
 
+  /// The message a latched MarkerArray topic holds (empty if none came in 10 s).
+  visualization_msgs::MarkerArray latchedMarkers(const std::string& topic) {
+    visualization_msgs::MarkerArray markers;
+    bool got = false;
+    const ros::Subscriber sub = nh_.subscribe<visualization_msgs::MarkerArray>(
+        topic, 1, [&](const visualization_msgs::MarkerArray::ConstPtr& m) {
+          markers = *m;
+          got = true;
+        });
+    EXPECT_TRUE(spinUntil([&] { return got; }, 10.0)) << topic;  // latched: no need to wait for a change
+    return markers;
+  }
+
   rigid_body_sim::Step::Response step(int n) {
     rigid_body_sim::Step s;
     s.request.steps = n;
@@ -260,14 +273,7 @@ TEST_F(WrenchTopic, IsHeldUntilItsTimeout) {
 class Scene : public Node {};
 
 TEST_F(Scene, MarkersShowTheGroundAndTheRoom) {
-  visualization_msgs::MarkerArray markers;
-  bool got = false;
-  const ros::Subscriber sub = nh_.subscribe<visualization_msgs::MarkerArray>(
-      "/sim_node/scene_markers", 1, [&](const visualization_msgs::MarkerArray::ConstPtr& m) {
-        markers = *m;
-        got = true;
-      });
-  ASSERT_TRUE(spinUntil([&] { return got; }, 10.0));  // latched: arrives without waiting for a change
+  const visualization_msgs::MarkerArray markers = latchedMarkers("/sim_node/scene_markers");
   ASSERT_EQ(markers.markers.size(), 2u);
   const auto& ground = markers.markers[0];
   EXPECT_EQ(ground.type, visualization_msgs::Marker::CUBE);
@@ -430,14 +436,7 @@ TEST_F(World, EachBodyHasItsFrameTopicAndName) {
 }
 
 TEST_F(World, MarkersDrawEachBodyInItsOwnFrame) {
-  visualization_msgs::MarkerArray markers;
-  bool got = false;
-  const ros::Subscriber sub = nh_.subscribe<visualization_msgs::MarkerArray>(
-      "/sim_node/body_markers", 1, [&](const visualization_msgs::MarkerArray::ConstPtr& m) {
-        markers = *m;
-        got = true;
-      });
-  ASSERT_TRUE(spinUntil([&] { return got; }, 10.0));  // latched
+  const visualization_msgs::MarkerArray markers = latchedMarkers("/sim_node/body_markers");
   ASSERT_EQ(markers.markers.size(), 2u);
   // The crate's <collision> box, 0.4 × 0.2 × 0.1 m at its link's origin, drawn
   // in its frame; rviz moves it with tf.
