@@ -504,14 +504,13 @@ void prepareContact(const Model& model, const State& state, const std::vector<Ma
   const Vec3& n = contact.normal_W;
   c.body = contact.body;
   c.other = contact.other;
-  if (previous == nullptr || previous->normal_W != n) {  // the points of one region share n and its tangents
-    c.normal_W = n;
-    c.tangent1_W = (std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
-    c.tangent2_W = n.cross(c.tangent1_W);
-  } else {
-    c.normal_W = n;
+  c.normal_W = n;
+  if (previous != nullptr && previous->normal_W == n) {  // the points of one region share n and its tangents
     c.tangent1_W = previous->tangent1_W;
     c.tangent2_W = previous->tangent2_W;
+  } else {
+    c.tangent1_W = (std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
+    c.tangent2_W = n.cross(c.tangent1_W);
   }
   Eigen::Matrix2d k = Eigen::Matrix2d::Zero();
   Eigen::Vector2d k_nt = Eigen::Vector2d::Zero();
@@ -553,7 +552,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
   // Sweeps stop once none changes a velocity by more than 1e-7 m/s (1e-10 m
   // of drift a step: what a resting stack needs), or by more than 1e-6 of
   // the fastest contact's speed when the island moves (a relative residual).
-  const double kTolerance = std::max(1e-7, 1e-6 * std::sqrt(fastest));
+  const double tolerance = std::max(1e-7, 1e-6 * std::sqrt(fastest));
   // Impacts first, as a sequence of simultaneous collisions: the contacts
   // arriving faster than the threshold are solved together to separate at
   // e × their approach speed (the pre-solve speed, for the first pass).
@@ -584,7 +583,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
           largest =
               std::max(largest, sweepContact(c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction, vel));
         }
-        if (largest < kTolerance) break;
+        if (largest < tolerance) break;
       }
     }
   }
@@ -597,7 +596,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
       largest = std::max(largest, sweepContact(*c, c->normal_impulse, c->tangent_impulse, c->target_normal_velocity,
                                                cs.friction, vel));
     }
-    if (largest < kTolerance) break;
+    if (largest < tolerance) break;
     // Stalled: four sweeps took off less than a tenth. Gauss-Seidel on
     // friction whose limit moves with the normal impulse can settle into a
     // small cycle instead of converging; more sweeps would not change it.
