@@ -135,6 +135,26 @@ TEST(Sleep, TouchingBodiesFallAsleepTogetherAndStayAsleep) {
   EXPECT_NEAR(s.bodies[1].p_WB.z(), 0.3, 1e-3);
 }
 
+// The broad phase sweeps a sleeper only against the awake boxes after it in
+// x, and an awake box against all after it: a box dropped onto a sleeper
+// must find it whichever of the two comes first in x.
+TEST(Sleep, ABoxDroppedOnASleeperLandsOnItFromEitherSide) {
+  const core::Model model(stack(true));
+  core::State s;
+  for (int i = 0; i < 3; ++i) {  // three 0.2 m cubes asleep on the ground
+    s.bodies.push_back(at(model, i, Vec3(2.0 * i, 0, 0.1)));
+    s.bodies.back().asleep = true;
+  }
+  s.bodies.push_back(at(model, 3, Vec3(0.05, 0, 0.5)));        // after sleeper 0 in x
+  s.bodies.push_back(at(model, 4, Vec3(2.0 - 0.05, 0, 0.5)));  // before sleeper 1 in x
+  core::Workspace ws;
+  for (int k = 0; k < 1500; ++k) core::step(model, s, {}, &ws);
+  EXPECT_NEAR(s.bodies[3].p_WB.z(), 0.3, 1e-3);  // on top of its sleeper, not through it
+  EXPECT_NEAR(s.bodies[4].p_WB.z(), 0.3, 1e-3);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(s.bodies[i].p_WB.z(), 0.1, 1e-3) << "box " << i;
+  EXPECT_TRUE(s.bodies[2].asleep);  // nothing came near it
+}
+
 /// 100 boxes (10 cm cubes) over a 2 × 2 m room, turned every way, dropped.
 struct Room {
   core::Model model;
