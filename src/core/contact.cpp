@@ -515,9 +515,10 @@ void prepareContact(const Model& model, const State& state, const std::vector<Ma
   Eigen::Matrix2d k = Eigen::Matrix2d::Zero();
   Eigen::Vector2d k_nt = Eigen::Vector2d::Zero();
   double knn = prepareSide(contact.r_W, c, model.body(c.body).inv_mass, inv_I_W[c.body], c.a, k, k_nt);
-  c.o = SolverContact::Side();
   if (c.other >= 0 && !state.bodies[c.other].asleep) {
     knn += prepareSide(contact.r_other_W, c, model.body(c.other).inv_mass, inv_I_W[c.other], c.o, k, k_nt);
+  } else if (c.other >= 0) {
+    c.o = SolverContact::Side();  // a sleeper: ground, no terms (for the scene, other < 0, o is never read)
   }
   c.normal_mass = 1.0 / knn;
   c.tangent_k = k;
