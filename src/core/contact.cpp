@@ -11,6 +11,18 @@
 namespace rigid_body_sim::core {
 namespace {
 
+/// m/s: a contact velocity error below this is the rounding of the impulses
+/// that hold a body still (about 1e-18 m/s, the last bits of h g left over).
+/// The solver leaves such a contact alone; otherwise rounding would walk its
+/// impulse in the last bits at every step.
+constexpr double kRoundingSpeed = 1e-15;
+/// m/s and rad/s: a body the solve leaves slower than this (every contact
+/// held to kRoundingSpeed gives ω below about kRoundingSpeed / 1 mm) ends
+/// the solve at exactly zero, so that it rests exactly: far below any motion
+/// (3e-5 m a year), and a resting body becomes a fixed point of the step
+/// (Workspace::FixedPoint) instead of moving the last bits of its pose.
+constexpr double kRestingSpeed = 1e-12;
+
 // ---------------------------------------------------------------- detection
 
 /// Calls visit(item, point, separation, normal_W) for every contact point of
@@ -433,6 +445,9 @@ Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, SolverContact::TangentE
 double sweepContact(SolverContact& c, double& normal, Eigen::Vector2d& tangent, double target, double friction,
                     Velocities& vel) {
   const Vec3 u = contactVelocity(c, vel);
+  if (std::abs(u.x() - target) < kRoundingSpeed && u.tail<2>().squaredNorm() < kRoundingSpeed * kRoundingSpeed) {
+    return 0.0;  // the contact holds to rounding: an impulse now would only move λ's last bits
+  }
   // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows; otherwise
   // slide with maximal dissipation (frictionOnDisk).
   const Eigen::Vector2d lt = frictionOnDisk(c.tangent_k, c.tangent_eigen, tangent - c.tangent_mass * u.tail<2>(),
@@ -778,9 +793,16 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
       solveIsland(model, ws.island_starts[k], ws.island_starts[k + 1], h, state, vel, ws, ws.parts[part]);
     }
   });
+  // Velocities below kRestingSpeed are rounding: zero, so that the body rests exactly.
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     BodyState& b = state.bodies[i];
     if (!ws.in_contact[i] || b.asleep) continue;
+    if (vel[i].v_W.squaredNorm() < kRestingSpeed * kRestingSpeed &&
+        vel[i].w_W.squaredNorm() < kRestingSpeed * kRestingSpeed) {
+      b.v_WB.setZero();
+      b.w_B.setZero();
+      continue;
+    }
     b.v_WB = vel[i].v_W;
     b.w_B = b.q_WB.conjugate() * vel[i].w_W;
   }

@@ -142,9 +142,13 @@ void integrateBodies(const Model& model, State& state, double h, std::size_t beg
   for (std::size_t i = begin; i < end; ++i) {
     BodyState& s = state.bodies[i];
     if (s.asleep) continue;
-    const Quat rotation = gyroscopicRotation(model, model.body(i), h, s);
-    integratePosition(h, s);
-    integrateOrientation(rotation, s);
+    if (s.w_B.isZero(0.0)) {  // no rotation: q stays as it is (normalizing it again would move its last bits)
+      integratePosition(h, s);
+    } else {
+      const Quat rotation = gyroscopicRotation(model, model.body(i), h, s);
+      integratePosition(h, s);
+      integrateOrientation(rotation, s);
+    }
     updateStillTime(model, h, s);
   }
 }
