@@ -83,7 +83,8 @@ inline core::State stateOf(const core::Model& model, const core::LinkState& link
   return s;
 }
 
-/// Bit-for-bit equality of two states (== would call −0 equal to +0).
+/// Bit-for-bit equality of two states, the warm-start impulses included
+/// (== would call −0 equal to +0).
 inline bool bitIdentical(const core::State& a, const core::State& b) {
   auto same = [](const double* x, const double* y, int n) { return std::memcmp(x, y, n * sizeof(double)) == 0; };
   if (a.bodies.size() != b.bodies.size() || !same(&a.time, &b.time, 1)) return false;
@@ -92,6 +93,14 @@ inline bool bitIdentical(const core::State& a, const core::State& b) {
     if (!same(x.p_WB.data(), y.p_WB.data(), 3) || !same(x.v_WB.data(), y.v_WB.data(), 3) ||
         !same(x.q_WB.coeffs().data(), y.q_WB.coeffs().data(), 4) || !same(x.w_B.data(), y.w_B.data(), 3) ||
         x.asleep != y.asleep || !same(&x.still_time, &y.still_time, 1)) {
+      return false;
+    }
+  }
+  if (a.contact_impulses.size() != b.contact_impulses.size()) return false;
+  for (std::size_t i = 0; i < a.contact_impulses.size(); ++i) {
+    const core::ContactImpulse &x = a.contact_impulses[i], &y = b.contact_impulses[i];
+    if (x.body != y.body || x.other != y.other || x.item != y.item || x.point != y.point ||
+        !same(&x.normal, &y.normal, 1) || !same(x.tangent_W.data(), y.tangent_W.data(), 3)) {
       return false;
     }
   }

@@ -4,6 +4,7 @@
 #include "rigid_body_sim/core/step.h"
 
 #include <cmath>
+#include <cstring>
 #include <optional>
 
 #include "rigid_body_sim/core/contact.h"
@@ -174,8 +175,9 @@ void sleepIslands(const Model& model, State& state, Workspace& ws, bool islands_
   }
 }
 
-/// One step of length h of every awake body: the stages in order.
-void advance(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
+/// One step of length h of every awake body: the stages in order. Returns
+/// whether the impulse solve ran (its islands are then in the workspace).
+bool advance(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
   const std::size_t n = model.bodyCount();
   if (!model.scene().empty() || n > 1) {
     detectContacts(model, state, h, ws);
@@ -220,6 +222,7 @@ void advance(const Model& model, State& state, const Loads& loads, double h, Wor
   }
   if (impulse) correctPositions(model, state, ws);
   sleepIslands(model, state, ws, impulse);
+  return impulse;
 }
 
 /// The log-barrier method needs φ > 0 at every contact point at all times,
@@ -247,6 +250,76 @@ void advanceKeepingBarrier(const Model& model, State& state, const Loads& loads,
   advanceKeepingBarrier(model, state, loads, 0.5 * h, ws, depth + 1);
 }
 
+// A step that returns its input unchanged (Workspace::FixedPoint). Compared
+// bit for bit, not with ==, which would take −0.0 for +0.0.
+template <class T>
+bool sameBits(const T& a, const T& b) {
+  return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+/// Everything a body brings into the step but its still time.
+bool sameMotion(const BodyState& a, const BodyState& b) {
+  return sameBits(a.p_WB, b.p_WB) && sameBits(a.v_WB, b.v_WB) && sameBits(a.q_WB.coeffs(), b.q_WB.coeffs()) &&
+         sameBits(a.w_B, b.w_B) && a.asleep == b.asleep;
+}
+
+bool sameImpulse(const ContactImpulse& a, const ContactImpulse& b) {
+  return a.body == b.body && a.other == b.other && a.item == b.item && a.point == b.point &&
+         sameBits(a.normal, b.normal) && sameBits(a.tangent_W, b.tangent_W);
+}
+
+/// The step's whole input but the time and the still times (which only
+/// decide sleep, and which the repeated step updates as a computed one would).
+bool sameInput(const Workspace::FixedPoint& f, const Model& model, const State& state, const Loads& loads) {
+  if (f.model != &model || f.bodies.size() != state.bodies.size() ||
+      f.impulses.size() != state.contact_impulses.size() || f.loads.size() != loads.size()) {
+    return false;
+  }
+  for (std::size_t i = 0; i < f.bodies.size(); ++i) {
+    if (!sameMotion(f.bodies[i], state.bodies[i])) return false;
+  }
+  for (std::size_t i = 0; i < f.impulses.size(); ++i) {
+    if (!sameImpulse(f.impulses[i], state.contact_impulses[i])) return false;
+  }
+  for (std::size_t i = 0; i < f.loads.size(); ++i) {
+    if (!sameBits(f.loads[i], loads[i])) return false;
+  }
+  return true;
+}
+
+/// Below the sleep speeds after the last step: the only worlds that can be
+/// at a fixed point, and the only ones worth keeping the input for.
+bool everyAwakeBodyStill(const State& state) {
+  for (const BodyState& s : state.bodies) {
+    if (!s.asleep && !(s.still_time > 0.0)) return false;
+  }
+  return true;
+}
+
+/// advance(), or, when the last step returned this same input unchanged,
+/// what advance() would do again: nothing but the still times and sleep.
+void advanceOrRepeat(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
+  Workspace::FixedPoint& f = ws.fixed_point;
+  if (ws.skip_fixed_points && f.holds && sameInput(f, model, state, loads)) {
+    for (BodyState& s : state.bodies) {
+      if (!s.asleep) updateStillTime(model, h, s);
+    }
+    sleepIslands(model, state, ws, f.islands_known);
+    ++ws.skipped_steps;
+    return;
+  }
+  const bool keep = ws.skip_fixed_points && everyAwakeBodyStill(state);
+  f.holds = false;
+  if (keep) {
+    f.model = &model;
+    f.bodies = state.bodies;
+    f.impulses = state.contact_impulses;
+    f.loads = loads;
+  }
+  f.islands_known = advance(model, state, loads, h, ws);
+  f.holds = keep && sameInput(f, model, state, loads);
+}
+
 }  // namespace
 
 void step(const Model& model, State& state, const Loads& loads, Workspace* workspace) {
@@ -262,7 +335,7 @@ void step(const Model& model, State& state, const Loads& loads, Workspace* works
       advanceKeepingBarrier(model, state, loads, h, ws, 0);
       break;
     default:
-      advance(model, state, loads, h, ws);
+      advanceOrRepeat(model, state, loads, h, ws);
       break;
   }
   state.time += h;

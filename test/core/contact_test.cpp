@@ -307,6 +307,50 @@ TEST(Rest, ARestingBodyStaysExactlyPutAndWakesOnLoadsAndImpulses) {
   EXPECT_GT(kicked.bodies[0].p_WB.y(), asleep.p_WB.y());
 }
 
+// A box resting exactly is a fixed point of the step, and step() does not
+// compute a step from the same input again (Workspace::FixedPoint). Run
+// beside a workspace that computes every step, it must give the same bits
+// at every step, through the landing, the rest, a push and a kick, with
+// sleep off and on; and it must have skipped steps, or this proves nothing.
+TEST(Rest, SkippingAFixedPointGivesTheStepsComputedInFull) {
+  for (bool sleep : {false, true}) {
+    core::ModelSpec spec = onGround(boxBody(kHalf), impulse(0.0, 0.5));
+    spec.sleep.enabled = sleep;
+    const core::Model model(spec);
+    core::State a = at(model, Vec3(0, 0, 0.5), Quat(Eigen::AngleAxisd(0.5, Vec3(1, 2, 0.3).normalized())),
+                       Vec3(0.5, 0, 0), Vec3(1, 2, 3));
+    core::State b = a;
+    core::Workspace skipping, computing;
+    computing.skip_fixed_points = false;
+    core::Loads push(1);
+    core::addWrench(model.body(0), push[0], {Vec3(20, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld});
+    double x_before_push = 0.0, y_before_kick = 0.0;
+    std::size_t skipped_before_push = 0;
+    for (int n = 0; n < 6000; ++n) {
+      if (n == 3000) {
+        x_before_push = a.bodies[0].p_WB.x();
+        skipped_before_push = skipping.skipped_steps;
+      }
+      if (n == 4500) {
+        y_before_kick = a.bodies[0].p_WB.y();
+        for (core::State* s : {&a, &b}) core::applyImpulse(model.body(0), s->bodies[0], {Vec3(0, 1, 0), Vec3::Zero(), Vec3::Zero()});
+      }
+      const core::Loads& loads = n >= 3000 && n < 3010 ? push : core::Loads{};
+      core::step(model, a, loads, &skipping);
+      core::step(model, b, loads, &computing);
+      ASSERT_TRUE(bitIdentical(a, b)) << "sleep " << sleep << " step " << n;
+      ASSERT_EQ(skipping.contacts.size(), computing.contacts.size()) << "step " << n;
+      ASSERT_EQ(skipping.deepest_penetration, computing.deepest_penetration) << "step " << n;
+    }
+    EXPECT_GT(skipped_before_push, 1000u) << "sleep " << sleep;      // it rested, and was not computed again
+    EXPECT_GT(skipping.skipped_steps, skipped_before_push + 1000u);  // and again after each wake
+    EXPECT_EQ(computing.skipped_steps, 0u);
+    EXPECT_GT(a.bodies[0].p_WB.x(), x_before_push + 1e-3);  // the push moved it
+    EXPECT_GT(a.bodies[0].p_WB.y(), y_before_kick + 1e-3);  // and so did the kick
+    EXPECT_TRUE(core::atRest(model, a.bodies[0]));
+  }
+}
+
 TEST(Determinism, EveryMethodIsBitIdenticalRunToRun) {
   for (core::ContactMethod method : {core::ContactMethod::kImpulse, core::ContactMethod::kPenaltyQuadratic,
                                      core::ContactMethod::kPenaltyLogBarrier, core::ContactMethod::kShapeMatching}) {

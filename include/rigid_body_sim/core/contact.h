@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "rigid_body_sim/core/loads.h"
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/parallel.h"
 #include "rigid_body_sim/core/state.h"
@@ -140,6 +141,29 @@ struct Workspace {
   std::vector<int> correct_contacts;  ///< the contacts the position stage corrects
   std::vector<StepScratch> parts;
   std::shared_ptr<WorkerPool> pool;
+
+  /// A step that changed nothing but the time and the still times, bit for
+  /// bit (bodies resting exactly: the contact impulses cancel gravity and
+  /// leave v so small that x + Δt v = x). The step is a function of its
+  /// input, so the next step from the same input, under the same loads,
+  /// changes nothing again: step() then only counts the time (step.cpp).
+  /// The input is kept only while every awake body is below the sleep
+  /// speeds, so moving worlds do not pay for the copy. A repeated step takes
+  /// the contacts and islands the last step left here: run nothing else on
+  /// this workspace between steps, or set holds = false.
+  struct FixedPoint {
+    /// The last step returned its input, kept below, unchanged.
+    bool holds = false;
+    const Model* model = nullptr;          ///< the model the input was stepped with
+    std::vector<BodyState> bodies;         ///< still times aside
+    std::vector<ContactImpulse> impulses;  ///< the warm start
+    Loads loads;
+    bool islands_known = false;  ///< the last step's islands are in island_root
+  } fixed_point;
+  /// false: compute every step (the tests compare the two, state for state).
+  bool skip_fixed_points = true;
+  /// Steps found to be a fixed point and not computed again (a count for tests and benchmarks).
+  std::size_t skipped_steps = 0;
 };
 
 /// How many parts a stage of `work` units (awake bodies, contacts) splits
