@@ -793,7 +793,20 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
       solveIsland(model, ws.island_starts[k], ws.island_starts[k + 1], h, state, vel, ws, ws.parts[part]);
     }
   });
-  // Velocities below kRestingSpeed are rounding: zero, so that the body rests exactly.
+  // The contacts come sorted by key (see detectContacts), and so do these.
+  // A body a contact pushes (λ_N > 0) is held up, not merely touching.
+  std::vector<char>& held = ws.held_still;
+  held.assign(model.bodyCount(), 0);
+  state.contact_impulses.clear();
+  for (const Contact& c : ws.contacts) {
+    state.contact_impulses.push_back({c.body, c.other, c.item, c.point, c.normal_impulse, c.tangent_impulse_W});
+    if (c.normal_impulse > 0.0) {
+      held[c.body] = 1;
+      if (c.other >= 0) held[c.other] = 1;
+    }
+  }
+  // Velocities below kRestingSpeed are rounding: zero, so that the body rests
+  // exactly. A body held up and left exactly still is in equilibrium.
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     BodyState& b = state.bodies[i];
     if (!ws.in_contact[i] || b.asleep) continue;
@@ -803,13 +816,9 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
       b.w_B.setZero();
       continue;
     }
+    held[i] = 0;
     b.v_WB = vel[i].v_W;
     b.w_B = b.q_WB.conjugate() * vel[i].w_W;
-  }
-  // The contacts come sorted by key (see detectContacts), and so do these.
-  state.contact_impulses.clear();
-  for (const Contact& c : ws.contacts) {
-    state.contact_impulses.push_back({c.body, c.other, c.item, c.point, c.normal_impulse, c.tangent_impulse_W});
   }
 }
 

@@ -156,10 +156,13 @@ void integrateBodies(const Model& model, State& state, double h, std::size_t beg
 
 /// Sleep by islands, as Box2D does: bodies joined by contacts fall asleep
 /// together, once every one of them has been still for the sleep time while
-/// touching something. A body alone would otherwise fall asleep under a
-/// neighbour still settling on it, and the neighbour's next jolt would wake
-/// it again, over and over. The islands are those of the impulse solve when
-/// it ran (no body has changed sleep state since).
+/// touching something, or is held exactly still (Workspace::held_still: the
+/// sleep time only guards the loose sleep speeds, and exactly zero is
+/// equilibrium, not the turning point of a bounce). A body alone would
+/// otherwise fall asleep under a neighbour still settling on it, and the
+/// neighbour's next jolt would wake it again, over and over. The islands are
+/// those of the impulse solve when it ran (no body has changed sleep state
+/// since).
 void sleepIslands(const Model& model, State& state, Workspace& ws, bool islands_known) {
   if (!model.sleep().enabled || ws.contacts.empty()) return;  // nothing touches: nothing sleeps
   if (!islands_known) findIslands(model, state, ws);
@@ -167,7 +170,8 @@ void sleepIslands(const Model& model, State& state, Workspace& ws, bool islands_
   ready.assign(model.bodyCount(), 1);
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     const BodyState& s = state.bodies[i];
-    if (!s.asleep && !readyToSleep(model, ws.in_contact[i] != 0, s)) ready[ws.island_root[i]] = 0;
+    const bool held = islands_known && ws.held_still[i];
+    if (!s.asleep && !held && !readyToSleep(model, ws.in_contact[i] != 0, s)) ready[ws.island_root[i]] = 0;
   }
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     BodyState& s = state.bodies[i];

@@ -108,8 +108,9 @@ TEST(Stack, FiveBoxesStandStillForTenSeconds) {
 
 // Sleep goes by islands: a box resting on the ground under a box still
 // sliding to a stop must not fall asleep before the top one (it would be
-// jolted awake again). Both have been still for the sleep time only once
-// the top one has stopped; they fall asleep in the same step and stay so.
+// jolted awake again). Both are still (for the sleep time, or held exactly
+// still) only once the top one has stopped; they fall asleep in the same
+// step and stay so.
 TEST(Sleep, TouchingBodiesFallAsleepTogetherAndStayAsleep) {
   const core::Model model(stack(true));
   core::State s;
@@ -128,11 +129,42 @@ TEST(Sleep, TouchingBodiesFallAsleepTogetherAndStayAsleep) {
   }
   ASSERT_GE(asleep_at[1], 0);
   EXPECT_EQ(asleep_at[0], asleep_at[1]);
-  // The top box slides for v/(μ g) = 0.06 s and settles; then the sleep time.
-  EXPECT_GE(asleep_at[1] * model.dt(), 0.06 + model.sleep().time - 0.005);
+  // The top box slides for v/(μ g) = 0.06 s and settles.
+  EXPECT_GE(asleep_at[1] * model.dt(), 0.06);
   EXPECT_LT(asleep_at[1] * model.dt(), 1.0);
   EXPECT_GT(s.bodies[1].p_WB.x(), 0.0);  // it slid, on top of the other
   EXPECT_NEAR(s.bodies[1].p_WB.z(), 0.3, 1e-3);
+}
+
+// A body its contacts hold exactly still (pushed, v = ω = 0 to the last bit)
+// is in equilibrium and sleeps without waiting for the sleep time. Bodies
+// that only touch, at rest in zero gravity, are not held: they wait.
+TEST(Sleep, ABodyHeldExactlyStillSleepsAtOnceOneMerelyTouchingWaits) {
+  const core::Model held(stack(true));
+  core::State s;
+  s.bodies = {at(held, 0, Vec3(0, 0, 0.11))};  // dropped 1 cm
+  for (int i = 1; i < 5; ++i) s.bodies.push_back(at(held, i, Vec3(2.0 * i, 0, 0.1 + 0.05 * i)));
+  core::Workspace ws;
+  int asleep_at = -1, exact_awake = 0;
+  for (int k = 0; k < 1000 && asleep_at < 0; ++k) {
+    core::step(held, s, {}, &ws);
+    const core::BodyState& b = s.bodies[0];
+    if (b.asleep) asleep_at = k;
+    exact_awake += !b.asleep && b.v_WB.isZero(0.0) && b.w_B.isZero(0.0);
+  }
+  ASSERT_GE(asleep_at, 0);
+  EXPECT_EQ(exact_awake, 0);                             // asleep in the first step it was exactly still
+  EXPECT_LT(s.bodies[0].still_time, held.sleep().time);  // without waiting for the sleep time
+
+  core::ModelSpec floating = stack(true);
+  floating.gravity_W = Vec3::Zero();
+  const core::Model touching(floating);
+  core::State t;
+  for (int i = 0; i < 5; ++i) t.bodies.push_back(at(touching, i, Vec3(0, 0, 0.1 + 0.2 * i)));  // faces touching
+  for (int k = 0; k < 400; ++k) core::step(touching, t);
+  for (const core::BodyState& b : t.bodies) EXPECT_FALSE(b.asleep);
+  for (int k = 0; k < 200; ++k) core::step(touching, t);
+  for (const core::BodyState& b : t.bodies) EXPECT_TRUE(b.asleep);  // after the sleep time
 }
 
 // The broad phase sweeps a sleeper only against the awake boxes after it in

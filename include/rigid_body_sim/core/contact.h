@@ -138,6 +138,9 @@ struct Workspace {
   /// Per body: its island's root, the island's smallest body index (findIslands).
   std::vector<int> island_root;
   std::vector<char> island_flags;     ///< per island root: scratch of the sleep and position stages
+  /// Per body: pushed by a contact (λ_N > 0) and left exactly still (v = ω = 0)
+  /// by this step's impulse solve: in equilibrium, so it may sleep at once.
+  std::vector<char> held_still;
   std::vector<int> correct_contacts;  ///< the contacts the position stage corrects
   std::vector<StepScratch> parts;
   std::shared_ptr<WorkerPool> pool;
