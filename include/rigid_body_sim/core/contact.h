@@ -127,10 +127,9 @@ struct Workspace {
   std::vector<Mat3> inverse_inertias;
   /// Shape matching: where each vertex of the current body went (m, world).
   std::vector<Vec3> positions;
-  /// Broad phase: bodies ordered along x, and their boxes.
-  std::vector<int> sweep_order;
-  std::vector<double> margins, box_lo, box_hi, sorted_boxes;
-  std::vector<int> awake_in_order;  ///< broad phase: the awake bodies' places in the sweep order
+  /// Broad phase: bodies in sweep order, and their boxes.
+  std::vector<int> sweep_order;  ///< by (strip along y, lo x)
+  std::vector<double> margins, box_lo, box_hi, box_strip, sorted_boxes;
   /// Both directions (a, o) of every pair whose boxes overlap, sorted: a's points against o's solid.
   std::vector<std::pair<int, int>> directions;
   /// Islands of the impulse solve: contact indices island by island, and offsets.
