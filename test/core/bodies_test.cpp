@@ -46,19 +46,31 @@ Vec3 momentum(const core::Model& model, const core::State& s) {
   return p;
 }
 
+// Along x, along y and slanted: the broad phase sweeps along x in strips
+// along y, and a pair must be found whichever way the bodies meet.
 TEST(TwoSpheres, HeadOnConservesMomentumWithRestitution) {
   const double e = 0.8;
   const core::Model model(world({named(ballBody(0.1, 1.0), "a"), named(ballBody(0.1, 2.0), "b")}, Vec3::Zero(), e));
-  core::State s;
-  s.bodies = {at(model, 0, Vec3(-0.5, 0, 0), Vec3(2, 0, 0)), at(model, 1, Vec3(0.5, 0, 0), Vec3(-1, 0, 0))};
-  const Vec3 p0 = momentum(model, s);
-  const double closing = 3.0;
-  for (int n = 0; n < 1000; ++n) core::step(model, s);
-  EXPECT_LT((momentum(model, s) - p0).norm(), 1e-12);
-  const double separating = s.bodies[1].v_WB.x() - s.bodies[0].v_WB.x();
-  EXPECT_NEAR(separating, e * closing, 0.01 * e * closing);
-  EXPECT_GT(s.bodies[1].p_WB.x() - s.bodies[0].p_WB.x(), 0.2);  // apart again, not through each other
-  EXPECT_LT(s.bodies[0].v_WB.tail<2>().norm() + s.bodies[1].v_WB.tail<2>().norm(), 1e-12);  // stays on the line
+  for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0.3, -0.9, 0.3).normalized()}) {
+    core::State s;
+    s.bodies = {at(model, 0, -0.5 * d, 2.0 * d), at(model, 1, 0.5 * d, -1.0 * d)};
+    const Vec3 p0 = momentum(model, s);
+    const double closing = 3.0;
+    core::Workspace ws;
+    double deepest = 0.0;
+    for (int n = 0; n < 1000; ++n) {
+      core::step(model, s, {}, &ws);
+      deepest = std::max(deepest, ws.deepest_penetration);
+    }
+    EXPECT_LT(deepest, 1e-3) << d.transpose();  // met in time, not found once overlapping
+    EXPECT_LT((momentum(model, s) - p0).norm(), 1e-12) << d.transpose();
+    const double separating = (s.bodies[1].v_WB - s.bodies[0].v_WB).dot(d);
+    EXPECT_NEAR(separating, e * closing, 0.01 * e * closing) << d.transpose();
+    EXPECT_GT((s.bodies[1].p_WB - s.bodies[0].p_WB).dot(d), 0.2);  // apart again, not through each other
+    for (const core::BodyState& b : s.bodies) {
+      EXPECT_LT((b.v_WB - b.v_WB.dot(d) * d).norm(), 1e-12) << d.transpose();  // stays on the line
+    }
+  }
 }
 
 TEST(NewtonsCradle, ARowOfTouchingBallsPassesTheImpulseAlong) {
