@@ -802,7 +802,7 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
   matchLastImpulses(state, ws.contacts);
   groupIslands(model, state, ws);
   const int islands = static_cast<int>(ws.island_starts.size()) - 1;
-  const int parts = islands > 1 ? partsFor(ws, ws.contacts.size() / 4) : 1;
+  const int parts = islands > 1 ? partsFor(ws, ws.contacts.size()) : 1;
   ws.parts.resize(std::max<std::size_t>(ws.parts.size(), parts));
   ws.solver_contacts.resize(ws.contacts.size());
   runParts(ws, parts, [&](int part) {

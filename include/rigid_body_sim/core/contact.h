@@ -107,8 +107,10 @@ struct Workspace {
   /// Threads the step may use, the caller's included: 0 = every core. The
   /// step only splits work when enough bodies are awake for it to pay.
   int threads = 0;
-  /// Awake bodies (or contacts) below which a stage runs on one thread.
-  std::size_t min_parallel_work = 256;
+  /// Awake bodies (or contacts) below which a stage runs on one thread: a
+  /// hand-over to the other core costs about 1–1.5 µs, and an awake body's
+  /// step 0.5–1.5 µs (bench/README.md).
+  std::size_t min_parallel_work = 32;
 
   std::vector<Contact> contacts;
   /// Impulse solver: the contacts island by island (see island_starts).
