@@ -333,9 +333,11 @@ void step(const Model& model, State& state, const Loads& loads, Workspace* works
   wakeLoadedBodies(state, loads);
   switch (model.contact().method) {
     case ContactMethod::kShapeMatching:
+      ws.fixed_point.holds = false;  // these leave other contents in the workspace
       stepShapeMatching(model, state, loads, h, ws);
       break;
     case ContactMethod::kPenaltyLogBarrier:
+      ws.fixed_point.holds = false;
       advanceKeepingBarrier(model, state, loads, h, ws, 0);
       break;
     default:
