@@ -5,7 +5,7 @@
 
 #include <cmath>
 #include <cstring>
-#include <optional>
+#include <memory>
 
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/shape_matching.h"
@@ -327,8 +327,9 @@ void advanceOrRepeat(const Model& model, State& state, const Loads& loads, doubl
 }  // namespace
 
 void step(const Model& model, State& state, const Loads& loads, Workspace* workspace) {
-  std::optional<Workspace> local;  // only built when the caller brings none
-  Workspace& ws = workspace != nullptr ? *workspace : local.emplace();
+  std::unique_ptr<Workspace> local;  // only built when the caller brings none (not on the stack: it is large)
+  if (workspace == nullptr) local = std::make_unique<Workspace>();
+  Workspace& ws = workspace != nullptr ? *workspace : *local;
   const double h = model.dt();
   wakeLoadedBodies(state, loads);
   switch (model.contact().method) {
