@@ -706,7 +706,7 @@ void detectContacts(const Model& model, const State& state, double h, Workspace&
       const BodyState& s = state.bodies[body];
       if (!s.asleep && !model.scene().empty()) {
         out.candidates.clear();
-        scanScene(model, s, body, margin(body), out.separations,
+        scanScene(model, s, body, multi ? ws.margins[body] : margin(body), out.separations,
                   [&](int item, int point, double separation, const Vec3& normal) {
                     out.candidates.push_back({-1, item, point, 0, separation, normal});
                     out.deepest = std::max(out.deepest, -separation);
