@@ -4,7 +4,6 @@
 
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
@@ -12,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../scratch_dir.h"
 #include "../test_util.h"
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/step.h"
@@ -23,9 +23,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A fresh temporary folder for one test.
+/// A fresh folder for one test, inside the process's scratch folder.
 fs::path tempDir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / ("rbs_mesh_" + std::to_string(::getpid()) + "_" + name);
+  const fs::path dir = scratch("rbs_mesh_").path() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -1,7 +1,6 @@
 // rbsim end to end: what a user running the binary gets (JSON, CSV, exit codes).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -12,6 +11,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "../scratch_dir.h"
 
 namespace rigid_body_sim::test {
 namespace {
@@ -28,9 +29,7 @@ std::string slurp(const std::string& path) {
   return s.str();
 }
 
-std::string tempPath(const std::string& name) {
-  return ::testing::TempDir() + "rbsim_test_" + std::to_string(::getpid()) + "_" + name;
-}
+std::string tempPath(const std::string& name) { return (scratch("rbsim_test_").path() / name).string(); }
 
 Result rbsim(const std::string& args) {
   const std::string out = tempPath("out"), err = tempPath("err");
