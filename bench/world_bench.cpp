@@ -11,48 +11,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <vector>
 
-#include "rigid_body_sim/core/step.h"
-
-namespace {
+#include "box_grid.h"
 
 using namespace rigid_body_sim::core;
-
-struct Scene {
-  Model model;
-  State start;
-};
-
-Scene boxes(int n) {
-  ModelSpec spec;
-  BodySpec box;
-  box.mass = 1.0;
-  box.I_C_L = Vec3(0.0125 / 3.0, 0.0425 / 3.0, 0.05 / 3.0).asDiagonal();
-  CollisionShape shape;
-  shape.kind = CollisionShape::Kind::kBox;
-  shape.size = Vec3(0.4, 0.2, 0.1);
-  box.collision = {shape};
-  for (int i = 0; i < n; ++i) {
-    box.name = "box" + std::to_string(i);
-    spec.bodies.push_back(box);
-  }
-  spec.scene = {Sdf::plane(Vec3::UnitZ())};
-  Scene s{Model(spec), {}};
-  const int side = static_cast<int>(std::ceil(std::sqrt(n)));
-  std::mt19937 rng(42);
-  std::uniform_real_distribution<double> height(0.5, 1.5), angle(-M_PI, M_PI);
-  for (int i = 0; i < n; ++i) {
-    LinkState link;
-    link.p_WL = Vec3(0.6 * (i % side), 0.6 * (i / side), height(rng));
-    link.q_WL = Quat(Eigen::AngleAxisd(angle(rng), Vec3(angle(rng), angle(rng), angle(rng)).normalized()));
-    s.start.bodies.push_back(bodyStateFromLink(s.model.body(i), link));
-  }
-  return s;
-}
-
-}  // namespace
+using rigid_body_sim::bench::boxGrid;
 
 int main(int argc, char** argv) {
   const int runs = argc > 1 ? std::atoi(argv[1]) : 3;
@@ -62,7 +26,7 @@ int main(int argc, char** argv) {
   std::printf("%6s %14s %16s %10s %10s %14s %12s\n", "N", "ns/step", "ns/body-step", "at rest", "slow", "deepest (mm)",
               "lowest z (m)");
   for (int n : sizes) {
-    const Scene scene = boxes(n);
+    const auto scene = boxGrid(n);
     std::vector<double> ns;
     State s;
     double deepest = 0.0;
