@@ -34,5 +34,8 @@ echo "== many bodies: N boxes dropped on a grid, 2 s (median of 3 runs; one thre
 RBS_THREADS=1 "$BIN/world_bench" 3
 "$BIN/world_bench" 3
 
+echo "== many bodies: which boxes still move at 2 s, and why (N = 1000, one run)"
+"$BIN/rest_census"
+
 echo "== gyroscopic integrator study (one run; ns/step is indicative only)"
 "$BIN/gyroscopic_study"
