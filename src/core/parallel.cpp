@@ -1,6 +1,9 @@
 #include "rigid_body_sim/core/parallel.h"
 
+#include <algorithm>
 #include <chrono>
+
+#include "rigid_body_sim/core/contact.h"
 
 namespace rigid_body_sim::core {
 
@@ -49,6 +52,17 @@ void WorkerPool::helper(int index) {
     (*job)(index);
     pending_.fetch_sub(1, std::memory_order_acq_rel);
   }
+}
+
+/// How many parts to split `work` units into: one unless there is enough
+/// work for a second core to pay (and a pool to run it on).
+int partsFor(Workspace& ws, std::size_t work) {
+  static const int cores = static_cast<int>(std::thread::hardware_concurrency());  // a system call: once
+  int threads = ws.threads > 0 ? ws.threads : cores;
+  threads = std::max(1, std::min(threads, 8));
+  if (threads == 1 || work < ws.min_parallel_work) return 1;  // the hand-over would cost more than it saves
+  if (!ws.pool || ws.pool->threads() != threads) ws.pool = std::make_shared<WorkerPool>(threads);
+  return threads;
 }
 
 }  // namespace rigid_body_sim::core

@@ -1,5 +1,7 @@
 // Contacts with the static scene and between bodies: detection by signed
-// distance, and the notes' responses (impulse, penalty). Shape matching is in
+// distance (detection.cpp), and the notes' responses: impulses and the
+// position correction (contact_solver.cpp), penalties (penalty.cpp). Also
+// the step's scratch memory (Workspace). Shape matching is in
 // shape_matching.h.
 #pragma once
 

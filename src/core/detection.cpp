@@ -1,0 +1,431 @@
+// Contact detection (the step's first stage): the broad phase (sweep and
+// prune between bodies), each awake body's points against the scene's and
+// the other bodies' signed distances, and the reduction of each region to
+// the points that span it. The responses are in contact_solver.cpp (impulses)
+// and penalty.cpp.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "rigid_body_sim/core/contact.h"
+
+namespace rigid_body_sim::core {
+namespace {
+
+/// Calls visit(item, point, separation, normal_W) for every contact point of
+/// a body with φ − radius < margin against the scene. Scene items farther
+/// than the body's bounding radius are skipped: φ is 1-Lipschitz, so
+/// φ(point) ≥ φ(centre) − bound_radius. Planes take a fast path: with the
+/// normal turned into the body frame, φ is one dot product per point.
+template <class Visit>
+void scanScene(const Model& model, const BodyState& s, int body, double margin, std::vector<double>& scratch,
+               Visit&& visit) {
+  const BodyModel& b = model.body(body);
+  const std::vector<Sdf>& scene = model.scene();
+  Mat3 R = Mat3::Zero();
+  bool have_R = false;
+  const int n_points = static_cast<int>(b.contact_points.size());
+  for (int item = 0; item < static_cast<int>(scene.size()); ++item) {
+    const Sdf& sdf = scene[item];
+    const bool plane = sdf.kind() == Sdf::Kind::kPlane;
+    const Vec3 n_W = plane ? Vec3(sdf.pose().q_WS * sdf.params()) : Vec3::Zero();
+    const double phi_centre = plane ? n_W.dot(s.p_WB - sdf.pose().p_WS) : sdf.eval(s.p_WB);
+    if (phi_centre - b.bound_radius >= margin) continue;
+    if (!have_R) {
+      R = s.q_WB.toRotationMatrix();
+      have_R = true;
+    }
+    if (plane) {
+      const Vec3 n_B = R.transpose() * n_W;
+      // Only the extreme points can be deepest against a plane; groups whose
+      // bounding sphere stays beyond the margin are skipped whole. Within a
+      // group, two passes: all separations (vectorizable), then the few
+      // within the margin.
+      scratch.resize(b.extreme_points);
+      double* sep = scratch.data();
+      const double *x = b.extreme_x.data(), *y = b.extreme_y.data(), *z = b.extreme_z.data(),
+                   *rad = b.extreme_radius.data();
+      const double nx = n_B.x(), ny = n_B.y(), nz = n_B.z();
+      for (const BodyModel::PointGroup& g : b.extreme_groups) {
+        if (phi_centre + n_B.dot(g.centre_B) - g.radius >= margin) continue;
+        const int begin = static_cast<int>(g.begin), end = static_cast<int>(g.end);
+        for (int i = begin; i < end; ++i) sep[i] = phi_centre + nx * x[i] + ny * y[i] + nz * z[i] - rad[i];
+        for (int i = begin; i < end; ++i) {
+          if (sep[i] < margin) visit(item, i, sep[i], n_W);
+        }
+      }
+      continue;
+    }
+    for (int i = 0; i < n_points; ++i) {
+      const ContactPoint& p = b.contact_points[i];
+      const Vec3 r_W = R * p.r_B;
+      Vec3 normal_W;
+      const double separation = sdf.eval(s.p_WB + r_W, &normal_W) - p.radius;
+      if (separation < margin) visit(item, i, separation, normal_W);
+    }
+  }
+}
+
+/// The same for the points of body a against the solid of body o: each
+/// point is taken into o's frame, where the solid is.
+template <class Visit>
+void scanBody(const Model& model, const State& state, int a, int o, double margin, Visit&& visit) {
+  const BodyModel &ba = model.body(a), &bo = model.body(o);
+  if (bo.solid_B.empty()) return;
+  const Sdf& solid = bo.solid_B.front();
+  const BodyState &sa = state.bodies[a], &so = state.bodies[o];
+  const Quat q_OW = so.q_WB.conjugate();
+  const Vec3 centre_O = q_OW * (sa.p_WB - so.p_WB);
+  if (solid.eval(centre_O) - ba.bound_radius >= margin) return;
+  const Mat3 R_OA = (q_OW * sa.q_WB).toRotationMatrix();  // a's frame into o's
+  const Mat3 R_WO = so.q_WB.toRotationMatrix();
+  for (int i = 0; i < static_cast<int>(ba.contact_points.size()); ++i) {
+    const ContactPoint& p = ba.contact_points[i];
+    const Vec3 p_O = centre_O + R_OA * p.r_B;
+    // Outside the box around o's solid, grown by the margin: too far to touch.
+    const double reach = margin + p.radius;
+    if ((p_O.array() < bo.solid_lo_B.array() - reach).any() || (p_O.array() > bo.solid_hi_B.array() + reach).any()) {
+      continue;
+    }
+    Vec3 n_O;
+    const double separation = solid.eval(p_O, &n_O) - p.radius;
+    if (separation < margin) visit(i, separation, Vec3(R_WO * n_O));
+  }
+}
+
+/// How far a body can move in h, plus a small constant so resting contacts persist (m).
+double speculativeMargin(const BodyModel& b, const BodyState& s, double h, double slop) {
+  return (s.v_WB.norm() + s.w_B.norm() * b.bound_radius) * h + std::max(slop, 1e-4);
+}
+
+/// Of the candidates listed in `members` (one region), keeps at most four
+/// that span its area (the usual contact-manifold reduction): the deepest
+/// point, the farthest from it, the farthest from the line through both,
+/// and the farthest on the other side of that line. Near-ties (within a
+/// nanometre, or 1e-9 relative) go to the lowest point index, so the same
+/// points are kept from step to step, which lets the solver warm-start.
+/// Distances are rigid, so it works on the body-frame points.
+void reduceRegion(const std::vector<ContactCandidate>& cands, const BodyModel& b, const Vec3& n_B,
+                  std::vector<int>& members, std::vector<Vec3>& at) {
+  const std::size_t n = members.size();
+  if (n <= 4) return;
+  at.resize(n);
+  for (std::size_t k = 0; k < n; ++k) at[k] = b.contact_points[cands[members[k]].point].r_B;
+  // The index of the largest score (the first one on near-ties).
+  const auto argmax = [n](auto score, double tie) {
+    std::size_t best = 0;
+    double best_score = score(0);
+    for (std::size_t k = 1; k < n; ++k) {
+      const double sc = score(k);
+      if (sc > best_score + tie + 1e-9 * std::abs(best_score)) {
+        best_score = sc;
+        best = k;
+      }
+    }
+    return std::make_pair(best, best_score);
+  };
+  const std::size_t a = argmax([&](std::size_t k) { return -cands[members[k]].separation; }, 1e-9).first;
+  const std::size_t b2 = argmax([&](std::size_t k) { return (at[k] - at[a]).squaredNorm(); }, 1e-18).first;
+  const Vec3 normal_of_ab = (at[b2] - at[a]).cross(n_B);  // in the plane, across the line ab
+  const auto side = [&](std::size_t k) { return normal_of_ab.dot(at[k] - at[a]); };
+  const auto [c, c_score] = argmax([&](std::size_t k) { return std::abs(side(k)); }, 1e-18);
+  const double sign = side(c) >= 0.0 ? 1.0 : -1.0;
+  const auto [d, d_score] = argmax([&](std::size_t k) { return -sign * side(k); }, 1e-18);
+  const int kept[4] = {members[a], members[b2], members[c], members[d]};
+  members.resize(2);
+  members[0] = kept[0];
+  members[1] = kept[1];
+  if (c_score > 0.0) members.push_back(kept[2]);
+  if (d_score > 0.0) members.push_back(kept[3]);
+}
+
+/// Turns one body's candidates into contacts: regions by item (or other
+/// body) and normal direction (within about 20°; a plane is one region),
+/// each reduced to at most four points for the impulse method.
+void emitContacts(const Model& model, const State& state, int body, bool reduce, StepScratch& ws) {
+  constexpr double kSameRegionCos = 0.94;
+  const BodyModel& b = model.body(body);
+  const BodyState& s = state.bodies[body];
+  std::vector<ContactCandidate>& cands = ws.candidates;
+  // Region ids; candidates arrive grouped by item (or other body).
+  int regions = 0, group_first_region = 0;
+  for (std::size_t i = 0; i < cands.size(); ++i) {
+    const bool new_group = i == 0 || cands[i].item != cands[i - 1].item || cands[i].other != cands[i - 1].other;
+    if (new_group) {
+      ws.region_normals.clear();
+      group_first_region = regions;
+    } else if (cands[i].item >= 0 && model.scene()[cands[i].item].kind() == Sdf::Kind::kPlane) {
+      cands[i].region = cands[i - 1].region;  // one normal: one region
+      continue;
+    }
+    int r = -1;
+    for (std::size_t k = 0; k < ws.region_normals.size() && r < 0; ++k) {
+      if (ws.region_normals[k].dot(cands[i].normal_W) > kSameRegionCos) r = group_first_region + static_cast<int>(k);
+    }
+    if (r < 0) {
+      ws.region_normals.push_back(cands[i].normal_W);
+      r = regions++;
+    }
+    cands[i].region = r;
+  }
+  // Reduce each region, then emit the kept candidates in key order (item,
+  // then point): the contacts of a step come out sorted by (body, other,
+  // item, point), which warm starting looks them up by.
+  const Quat q_BW = s.q_WB.conjugate();
+  std::vector<int>& kept = ws.kept;
+  kept.clear();
+  std::size_t start = 0;
+  for (int r = 0; r < regions; ++r) {
+    ws.region_members.clear();
+    for (std::size_t i = start; i < cands.size(); ++i) {
+      if (cands[i].region == r) ws.region_members.push_back(static_cast<int>(i));
+    }
+    start = static_cast<std::size_t>(ws.region_members.front());  // regions begin in order
+    if (reduce) {
+      reduceRegion(cands, b, q_BW * cands[ws.region_members.front()].normal_W, ws.region_members, ws.region_points);
+    }
+    kept.insert(kept.end(), ws.region_members.begin(), ws.region_members.end());
+  }
+  std::sort(kept.begin(), kept.end(), [&](int x, int y) {
+    return cands[x].item != cands[y].item ? cands[x].item < cands[y].item : cands[x].point < cands[y].point;
+  });
+  const Mat3 R_WB = s.q_WB.toRotationMatrix();  // one matrix for all points: cheaper than q·r each
+  for (int m : kept) {
+    const ContactCandidate& cand = cands[m];
+    const ContactPoint& p = b.contact_points[cand.point];
+    // Filled on the stack, then copied: the compiler drops the default
+    // initialisation it overwrites (in place it zeroes the whole struct first).
+    Contact c;
+    c.body = body;
+    c.other = cand.other;
+    c.item = cand.item;
+    c.point = cand.point;
+    c.normal_W = cand.normal_W;
+    c.r_W = R_WB * p.r_B - p.radius * cand.normal_W;
+    if (c.other >= 0) c.r_other_W = s.p_WB + c.r_W - state.bodies[c.other].p_WB;
+    c.separation = cand.separation;
+    ws.contacts.push_back(c);
+  }
+}
+
+/// Sweep and prune along x in strips along y: the pairs of bodies (at least
+/// one awake) whose boxes, grown by their margins, overlap, both ways round,
+/// into ws.directions. One sweep along x over bodies spread over the ground
+/// meets every body of the same x, a whole column of a grid (about √N);
+/// strips as wide as the widest box hold the bodies of about one row, and
+/// two boxes overlapping in y lie in the same strip or in neighbouring ones,
+/// so each box is swept against its own strip and the next. The boxes go
+/// into flat arrays in (strip, x) order first, so the inner loops only
+/// compare numbers. Sorted, so the result does not depend on the order the
+/// workspace kept from the last step, nor on the number of parts.
+void broadPhase(const Model& model, const State& state, int parts, Workspace& ws) {
+  const int n = static_cast<int>(model.bodyCount());
+  std::vector<int>& order = ws.sweep_order;
+  if (static_cast<int>(order.size()) != n) {
+    order.resize(n);
+    for (int i = 0; i < n; ++i) order[i] = i;
+  }
+  std::vector<double>& lo = ws.box_lo;  // 3 per body, by body index
+  std::vector<double>& hi = ws.box_hi;
+  std::vector<double>& strip = ws.box_strip;  // per body
+  lo.resize(3 * n);
+  hi.resize(3 * n);
+  strip.resize(n);
+  double width = 0.0;  // m: of the widest box
+  for (int i = 0; i < n; ++i) {
+    const double e = model.body(i).bound_radius + ws.margins[i];
+    width = std::max(width, 2.0 * e);
+    for (int a = 0; a < 3; ++a) {
+      lo[3 * i + a] = state.bodies[i].p_WB(a) - e;
+      hi[3 * i + a] = state.bodies[i].p_WB(a) + e;
+    }
+  }
+  const double strip_width = width > 0.0 ? width : 1.0;  // m (no box has size: any width will do)
+  for (int i = 0; i < n; ++i) strip[i] = std::floor(state.bodies[i].p_WB.y() / strip_width);
+  // Insertion sort on (strip, lo x): the bodies barely move between steps, so this is nearly linear.
+  const auto before = [&](int a, int b) { return strip[a] < strip[b] || (strip[a] == strip[b] && lo[3 * a] < lo[3 * b]); };
+  for (int k = 1; k < n; ++k) {
+    const int v = order[k];
+    int m = k - 1;
+    while (m >= 0 && before(v, order[m])) {
+      order[m + 1] = order[m];
+      --m;
+    }
+    order[m + 1] = v;
+  }
+  // Per place in the order: lo x, hi x, lo y, hi y, lo z, hi z, strip, and
+  // where the next strip starts.
+  constexpr int kStride = 8;
+  ws.sorted_boxes.resize(kStride * n);
+  for (int k = 0; k < n; ++k) {
+    const int i = order[k];
+    double* b = &ws.sorted_boxes[kStride * k];
+    b[0] = lo[3 * i];
+    b[1] = hi[3 * i];
+    b[2] = lo[3 * i + 1];
+    b[3] = hi[3 * i + 1];
+    b[4] = lo[3 * i + 2];
+    b[5] = hi[3 * i + 2];
+    b[6] = strip[i];
+  }
+  for (int k = n - 1, next = n; k >= 0; --k) {
+    if (k + 1 < n && ws.sorted_boxes[kStride * (k + 1) + 6] != ws.sorted_boxes[kStride * k + 6]) next = k + 1;
+    ws.sorted_boxes[kStride * k + 7] = next;
+  }
+  // The sweep: each box against the boxes after it in its strip that start
+  // before it ends, and against the boxes of the next strip (if it is the
+  // neighbouring one) that overlap it in x; two sleepers make no pair. In
+  // `parts` contiguous runs of the order, each run's directions in its own
+  // list, then merged and sorted.
+  const double* box = ws.sorted_boxes.data();
+  runParts(ws, parts, [&](int part) {
+    std::vector<std::pair<int, int>>& pairs = ws.parts[part].directions;
+    pairs.clear();
+    const int begin = n * part / parts, end = n * (part + 1) / parts;
+    const auto overlap = [&](int k, int m, bool k_asleep) {
+      const double *a = box + kStride * k, *b = box + kStride * m;
+      if ((b[2] <= a[3]) & (a[2] <= b[3]) & (b[4] <= a[5]) & (a[4] <= b[5]) &
+          !(k_asleep && state.bodies[order[m]].asleep)) {
+        pairs.emplace_back(order[k], order[m]);  // both ways: each body's points against the other's solid
+        pairs.emplace_back(order[m], order[k]);
+      }
+    };
+    int next_from = -1;  // in the next strip: the first box that may still reach the current one
+    for (int k = begin; k < end; ++k) {
+      const double* a = box + kStride * k;
+      const bool asleep = state.bodies[order[k]].asleep;
+      const int strip_end = static_cast<int>(a[7]);
+      for (int m = k + 1; m < strip_end && box[kStride * m] <= a[1]; ++m) overlap(k, m, asleep);
+      if (strip_end == n || box[kStride * strip_end + 6] != a[6] + 1.0) continue;
+      // Boxes are at most `width` long: one starting before lo − width ends before lo.
+      if (next_from < strip_end) next_from = strip_end;
+      const int next_end = static_cast<int>(box[kStride * strip_end + 7]);
+      while (next_from < next_end && box[kStride * next_from] < a[0] - width) ++next_from;
+      for (int m = next_from; m < next_end && box[kStride * m] <= a[1]; ++m) {
+        if (a[0] <= box[kStride * m + 1]) overlap(k, m, asleep);
+      }
+    }
+  });
+  if (parts == 1) {
+    ws.directions.swap(ws.parts[0].directions);
+  } else {
+    ws.directions.clear();
+    for (int k = 0; k < parts; ++k) {
+      ws.directions.insert(ws.directions.end(), ws.parts[k].directions.begin(), ws.parts[k].directions.end());
+    }
+  }
+  std::sort(ws.directions.begin(), ws.directions.end());
+}
+
+}  // namespace
+
+void detectContacts(const Model& model, const State& state, double h, Workspace& ws) {
+  ws.contacts.clear();
+  ws.deepest_penetration = 0.0;
+  const int n = static_cast<int>(model.bodyCount());
+  const bool multi = n > 1 && model.contact().method != ContactMethod::kShapeMatching;
+  if (model.scene().empty() && !multi) {
+    ws.in_contact.clear();  // no scene, no other body: no contact (and no allocation)
+    return;
+  }
+  ws.in_contact.assign(model.bodyCount(), 0);
+  const ContactSettings& cs = model.contact();
+  const bool impulse = cs.method == ContactMethod::kImpulse;
+  const auto margin = [&](int body) {
+    if (state.bodies[body].asleep) return std::max(cs.position_slop, 1e-4);
+    if (cs.method == ContactMethod::kPenaltyQuadratic) return cs.penalty_buffer;
+    if (cs.method == ContactMethod::kPenaltyLogBarrier) return cs.barrier_buffer;
+    return speculativeMargin(model.body(body), state.bodies[body], h, cs.position_slop);
+  };
+  // Body against body, both ways: a's points against o's solid for every
+  // pair the broad phase keeps, as directions (a, o) sorted by a then o.
+  ws.directions.clear();
+  int parts = 1;
+  if (multi) {
+    ws.margins.resize(n);
+    for (int i = 0; i < n; ++i) ws.margins[i] = margin(i);
+    std::size_t awake = 0;
+    for (const BodyState& b : state.bodies) awake += !b.asleep;
+    parts = partsFor(ws, awake);
+    if (ws.parts.size() < static_cast<std::size_t>(parts)) ws.parts.resize(parts);
+    broadPhase(model, state, parts, ws);
+  }
+  // Body by body (each against the scene, then against the others in
+  // order), so contacts come out sorted by key; split over the cores in
+  // contiguous ranges of bodies, merged in order.
+  if (ws.parts.empty()) ws.parts.resize(1);
+  runParts(ws, parts, [&](int k) {
+    StepScratch& out = ws.parts[k];
+    out.contacts.clear();
+    out.deepest = 0.0;
+    const int begin = n * k / parts, end = n * (k + 1) / parts;
+    auto dir = std::lower_bound(ws.directions.begin(), ws.directions.end(), std::make_pair(begin, -1));
+    for (int body = begin; body < end; ++body) {
+      const BodyState& s = state.bodies[body];
+      if (!s.asleep && !model.scene().empty()) {
+        out.candidates.clear();
+        scanScene(model, s, body, multi ? ws.margins[body] : margin(body), out.separations,
+                  [&](int item, int point, double separation, const Vec3& normal) {
+                    out.candidates.push_back({-1, item, point, 0, separation, normal});
+                    out.deepest = std::max(out.deepest, -separation);
+                  });
+        if (!out.candidates.empty()) emitContacts(model, state, body, impulse, out);
+      }
+      for (; dir != ws.directions.end() && dir->first == body; ++dir) {
+        const int o = dir->second;
+        out.candidates.clear();
+        scanBody(model, state, body, o, ws.margins[body] + ws.margins[o],
+                 [&](int point, double separation, const Vec3& normal) {
+                   out.candidates.push_back({o, -1, point, 0, separation, normal});
+                   out.deepest = std::max(out.deepest, -separation);
+                 });
+        if (!out.candidates.empty()) emitContacts(model, state, body, impulse, out);
+      }
+    }
+  });
+  if (parts == 1) {
+    ws.contacts.swap(ws.parts[0].contacts);  // no copy; the old buffer is reused next time
+  } else {
+    for (int k = 0; k < parts; ++k) {
+      ws.contacts.insert(ws.contacts.end(), ws.parts[k].contacts.begin(), ws.parts[k].contacts.end());
+    }
+  }
+  for (int k = 0; k < parts; ++k) ws.deepest_penetration = std::max(ws.deepest_penetration, ws.parts[k].deepest);
+  for (const Contact& c : ws.contacts) {
+    ws.in_contact[c.body] = 1;
+    if (c.other >= 0) ws.in_contact[c.other] = 1;
+  }
+}
+
+bool wakeTouchedSleepers(const Model& model, State& state, const Workspace& ws, double h) {
+  // Wake a sleeper when an awake body comes at it faster than a resting
+  // contact would (gravity's one step), or presses in deeper than the slop.
+  const double still = model.sleep().linear_velocity + model.gravity().norm() * h;
+  bool woke = false;
+  for (const Contact& c : ws.contacts) {
+    if (c.other < 0) continue;
+    BodyState &a = state.bodies[c.body], &o = state.bodies[c.other];
+    if (a.asleep == o.asleep) continue;
+    const BodyState& awake = a.asleep ? o : a;
+    BodyState& sleeper = a.asleep ? a : o;
+    const Vec3 w = awake.q_WB * awake.w_B;
+    const Vec3 arm = a.asleep ? c.r_other_W : c.r_W;
+    const double approach = std::abs(c.normal_W.dot(awake.v_WB + w.cross(arm)));
+    if (approach > still || c.separation < -model.contact().position_slop) {
+      sleeper.asleep = false;
+      sleeper.still_time = 0.0;
+      woke = true;
+    }
+  }
+  return woke;
+}
+
+double minSeparation(const Model& model, const BodyState& s, int body, double margin) {
+  double smallest = std::numeric_limits<double>::infinity();
+  std::vector<double> scratch;
+  scanScene(model, s, body, margin, scratch,
+            [&](int, int, double separation, const Vec3&) { smallest = std::min(smallest, separation); });
+  return smallest;
+}
+
+}  // namespace rigid_body_sim::core

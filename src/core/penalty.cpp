@@ -1,0 +1,44 @@
+// The penalty responses: contact forces from the separations detection
+// found (quadratic with a buffer, or the log barrier).
+#include <algorithm>
+#include <cmath>
+
+#include "rigid_body_sim/core/contact.h"
+
+namespace rigid_body_sim::core {
+
+void accumulatePenaltyForces(const Model& model, const State& state, const Workspace& ws, int body, Vec3& force_W,
+                             Vec3& torque_W) {
+  const ContactSettings& cs = model.contact();
+  const bool barrier = cs.method == ContactMethod::kPenaltyLogBarrier;
+  constexpr double kStictionSpeed = 1e-3;  // m/s: friction is viscous below it (regularised Coulomb)
+  for (const Contact& c : ws.contacts) {
+    if (c.body != body && c.other != body) continue;
+    const double phi = c.separation;
+    double fn = 0.0;
+    if (barrier) {
+      if (phi >= cs.barrier_buffer) continue;
+      // The notes' ρ/φ, shifted to vanish at the buffer's edge; φ > 0 is kept by step control.
+      fn = cs.barrier_strength * (1.0 / std::max(phi, 1e-9) - 1.0 / cs.barrier_buffer);
+    } else {
+      if (phi >= cs.penalty_buffer) continue;
+      fn = cs.penalty_stiffness * (cs.penalty_buffer - phi);
+    }
+    const auto angular = [&](int i) { return state.bodies[i].q_WB * state.bodies[i].w_B; };
+    Vec3 u = state.bodies[c.body].v_WB + angular(c.body).cross(c.r_W);
+    if (c.other >= 0) u -= state.bodies[c.other].v_WB + angular(c.other).cross(c.r_other_W);
+    const double vn = c.normal_W.dot(u);
+    fn = std::max(fn - cs.penalty_damping * vn, 0.0);
+    const Vec3 vt = u - vn * c.normal_W;
+    const Vec3 f = fn * c.normal_W - (cs.friction * fn / std::max(vt.norm(), kStictionSpeed)) * vt;
+    if (c.body == body) {
+      force_W += f;
+      torque_W += c.r_W.cross(f);
+    } else {  // the other side of a body-body contact: equal and opposite
+      force_W -= f;
+      torque_W -= c.r_other_W.cross(f);
+    }
+  }
+}
+
+}  // namespace rigid_body_sim::core
