@@ -13,8 +13,8 @@ namespace rigid_body_sim::test {
 
 class ScratchDir {
  public:
-  explicit ScratchDir(const std::string& prefix)
-      : path_(std::filesystem::path(::testing::TempDir()) / (prefix + std::to_string(::getpid()))) {
+  ScratchDir()
+      : path_(std::filesystem::path(::testing::TempDir()) / ("rigid_body_sim_test_" + std::to_string(::getpid()))) {
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
@@ -32,8 +32,8 @@ class ScratchDir {
 };
 
 /// The process's scratch folder, removed at exit.
-inline const ScratchDir& scratch(const std::string& prefix) {
-  static const ScratchDir dir(prefix);
+inline const ScratchDir& scratch() {
+  static const ScratchDir dir;
   return dir;
 }
 

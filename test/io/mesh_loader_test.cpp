@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 /// A fresh folder for one test, inside the process's scratch folder.
 fs::path tempDir(const std::string& name) {
-  const fs::path dir = scratch("rbs_mesh_").path() / name;
+  const fs::path dir = scratch().path() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -29,7 +29,7 @@ std::string slurp(const std::string& path) {
   return s.str();
 }
 
-std::string tempPath(const std::string& name) { return (scratch("rbsim_test_").path() / name).string(); }
+std::string tempPath(const std::string& name) { return (scratch().path() / name).string(); }
 
 Result rbsim(const std::string& args) {
   const std::string out = tempPath("out"), err = tempPath("err");
