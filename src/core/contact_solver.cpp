@@ -136,15 +136,17 @@ Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, SolverContact::TangentE
   const double inv_limit = 1.0 / limit;
   nu = std::max(nu, 0.0);
   Eigen::Vector2d l = c;  // λ in the eigenbasis
+  double size = 0.0;      // |l|
   for (int i = 0; i < 30; ++i) {
     const Eigen::Vector2d d(1.0 / (k.x() + nu), 1.0 / (k.y() + nu));
     l = kc.cwiseProduct(d);
-    const double size2 = l.squaredNorm(), size = std::sqrt(size2);
+    const double size2 = l.squaredNorm();
+    size = std::sqrt(size2);
     if (std::abs(size - limit) <= 1e-10 * limit) break;
     // ν += φ/(−φ') for φ = 1/|λ| − 1/limit, with d|λ|/dν = −Σ λᵢ² dᵢ / |λ|.
     nu = std::max(nu + (size2 * inv_limit - size) * size / (l.x() * l.x() * d.x() + l.y() * l.y() * d.y()), 0.0);
   }
-  l *= limit / l.norm();  // exactly on the cone
+  l *= limit / size;  // exactly on the cone (size is l.norm(), computed the same way)
   return l.x() * q1 + l.y() * q2;
 }
 
