@@ -14,6 +14,14 @@ void addWrench(const BodyModel& body, BodyLoad& load, const Wrench& wrench) {
   }
 }
 
+Wrench inWorldAxes(const Wrench& wrench, const Quat& q_WF) {
+  return {q_WF * wrench.force, q_WF * wrench.torque, q_WF * wrench.point, Frame::kWorld};
+}
+
+Impulse inWorldAxes(const Impulse& impulse, const Quat& q_WF) {
+  return {q_WF * impulse.linear, q_WF * impulse.angular, q_WF * impulse.point, Frame::kWorld};
+}
+
 void applyImpulse(const BodyModel& body, BodyState& s, const Impulse& impulse) {
   const Vec3 dL = impulse.point.cross(impulse.linear) + impulse.angular;  // r × J + H
   Vec3 J_W, dL_B;

@@ -15,13 +15,14 @@ void WrenchSchedule::dropFinished(double t) {
                  entries_.end());
 }
 
-void WrenchSchedule::loadsFor(const Model& model, double t, double h, Loads& out) const {
+void WrenchSchedule::loadsFor(const Model& model, const State& state, double t, double h, Loads& out) const {
   out.clear();
   for (const Entry& e : entries_) {
     const double overlap = std::min(e.end, t + h) - std::max(e.start, t);
     if (!(overlap > 0.0)) continue;
     if (out.empty()) out.resize(model.bodyCount());
-    Wrench w = e.wrench;
+    Wrench w = e.axes_body < 0 ? e.wrench
+                               : inWorldAxes(e.wrench, linkState(model.body(e.axes_body), state.bodies[e.axes_body]).q_WL);
     const double fraction = std::min(overlap / h, 1.0);
     w.force *= fraction;
     w.torque *= fraction;

@@ -200,7 +200,7 @@ ros::Time SimNode::stamp() const {
 
 void SimNode::stepOnce() {
   const double t = simTime(), h = model_.dt();
-  schedule_.loadsFor(model_, t, h, loads_);
+  schedule_.loadsFor(model_, state_, t, h, loads_);
   for (std::size_t i = 0; i < held_wrenches_.size(); ++i) {
     std::optional<HeldWrench>& held = held_wrenches_[i];
     if (!held) continue;
@@ -208,7 +208,9 @@ void SimNode::stepOnce() {
       held.reset();
     } else {
       if (loads_.empty()) loads_.resize(model_.bodyCount());
-      core::addWrench(model_.body(i), loads_[i], held->wrench);
+      const core::Wrench& w = held->wrench;
+      core::addWrench(model_.body(i), loads_[i],
+                      held->axes_body < 0 ? w : core::inWorldAxes(w, orientationOf({w.frame, held->axes_body}, i)));
     }
   }
   core::step(model_, state_, loads_, &workspace_);
@@ -338,23 +340,34 @@ std::optional<int> SimNode::findBody(const std::string& name, std::string& error
   return std::nullopt;
 }
 
-std::optional<core::Frame> SimNode::findFrame(const std::string& frame, int body, std::string& error) const {
-  if (frame.empty() || frame == settings_.world_frame || frame == "world") return core::Frame::kWorld;
-  if (frame == frames_[body] || frame == model_.body(body).link) return core::Frame::kBody;
-  error =
-      "unknown frame '" + frame + "' (use '" + settings_.world_frame + "' or the body's frame '" + frames_[body] + "')";
+std::optional<SimNode::Axes> SimNode::findFrame(const std::string& frame, int body, std::string& error) const {
+  if (frame.empty() || frame == settings_.world_frame || frame == "world") return Axes{};
+  if (frame == frames_[body] || frame == model_.body(body).link) return Axes{core::Frame::kBody, -1};
+  for (std::size_t i = 0; i < frames_.size(); ++i) {
+    if (frame == frames_[i]) return Axes{core::Frame::kWorld, static_cast<int>(i)};
+  }
+  error = "unknown frame '" + frame + "' (use '" + settings_.world_frame + "', the body's frame '" + frames_[body] +
+          "'" + (frames_.size() > 1 ? " or another body's tf frame" : "") + ")";
   return std::nullopt;
 }
 
-BodyState SimNode::bodyState(int body, bool twist_in_body) const {
+core::Quat SimNode::orientationOf(const Axes& axes, int body) const {
+  const int owner = axes.other >= 0 ? axes.other : axes.frame == core::Frame::kBody ? body : -1;
+  if (owner < 0) return Quat::Identity();
+  return core::linkState(model_.body(owner), state_.bodies[owner]).q_WL;
+}
+
+BodyState SimNode::bodyState(int body, const Axes& axes) const {
   const core::BodyModel& b = model_.body(body);
   const core::LinkState link = core::linkState(b, state_.bodies[body]);
   BodyState msg;
   msg.body = b.name;
   msg.stamp = stamp();
   msg.pose = toPose(link.p_WL, link.q_WL);
-  msg.twist_frame = twist_in_body ? frames_[body] : settings_.world_frame;
-  const Quat q = twist_in_body ? link.q_WL.conjugate() : Quat::Identity();
+  msg.twist_frame = axes.other >= 0                     ? frames_[axes.other]
+                    : axes.frame == core::Frame::kBody ? frames_[body]
+                                                       : settings_.world_frame;
+  const Quat q = orientationOf(axes, body).conjugate();
   msg.twist.linear = toVector3(q * link.v_WL);
   msg.twist.angular = toVector3(q * link.w_W);
   return msg;
@@ -373,7 +386,7 @@ bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res)
   res.success = false;
   const auto target = findTarget(req.body, req.frame, res.message);
   if (!target) return true;
-  const auto [body, frame] = *target;
+  const auto [body, axes] = *target;
   const Vec3 force = fromVector3(req.force), torque = fromVector3(req.torque), point = fromPoint(req.point);
   res.message =
       firstProblem({checkVector(force, kMaxForce, "force", "N"), checkVector(torque, kMaxTorque, "torque", "N·m"),
@@ -388,7 +401,7 @@ bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res)
   }
   const double start = std::max(req.start_time.toSec(), simTime());  // 0 or the past: now
   const double end = duration > 0.0 ? start + duration : core::WrenchSchedule::kForever;
-  schedule_.add(body, {force, torque, point, frame}, start, end);
+  schedule_.add(body, {force, torque, point, axes.frame}, start, end, axes.other);
   res.success = true;
   std::ostringstream os;
   os << "wrench on '" << model_.body(body).name << "' from t = " << start << " s "
@@ -401,14 +414,16 @@ bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& r
   res.success = false;
   const auto target = findTarget(req.body, req.frame, res.message);
   if (!target) return true;
-  const auto [body, frame] = *target;
+  const auto [body, axes] = *target;
   const Vec3 linear = fromVector3(req.linear), angular = fromVector3(req.angular), point = fromPoint(req.point);
   res.message = firstProblem({checkVector(linear, kMaxImpulse, "linear", "N·s"),
                               checkVector(angular, kMaxImpulse, "angular", "N·m·s"),
                               checkVector(point, kMaxPosition, "point", "m")});
   if (!res.message.empty()) return true;
   core::BodyState after = state_.bodies[body];
-  core::applyImpulse(model_.body(body), after, {linear, angular, point, frame});
+  core::Impulse impulse{linear, angular, point, axes.frame};
+  if (axes.other >= 0) impulse = core::inWorldAxes(impulse, orientationOf(axes, body));
+  core::applyImpulse(model_.body(body), after, impulse);
   const std::string speed = checkVector(after.v_WB, kMaxSpeed, "resulting velocity", "m/s");
   const std::string spin = checkVector(after.w_B, kMaxAngularSpeed, "resulting angular velocity", "rad/s");
   if (!speed.empty() || !spin.empty()) {
@@ -444,8 +459,8 @@ bool SimNode::getState(GetState::Request& req, GetState::Response& res) {
   res.success = false;
   const auto target = findTarget(req.body, req.frame, res.message);
   if (!target) return true;
-  const auto [body, frame] = *target;
-  res.state = bodyState(body, frame == core::Frame::kBody);
+  const auto [body, axes] = *target;
+  res.state = bodyState(body, axes);
   res.success = true;
   return true;
 }
@@ -454,7 +469,7 @@ bool SimNode::setState(SetState::Request& req, SetState::Response& res) {
   res.success = false;
   const auto target = findTarget(req.body.empty() ? req.state.body : req.body, req.state.twist_frame, res.message);
   if (!target) return true;
-  const auto [body, frame] = *target;
+  const auto [body, axes] = *target;
   const Vec3 p = fromPoint(req.state.pose.position);
   const Vec3 v = fromVector3(req.state.twist.linear), w = fromVector3(req.state.twist.angular);
   const geometry_msgs::Quaternion& mq = req.state.pose.orientation;
@@ -472,7 +487,8 @@ bool SimNode::setState(SetState::Request& req, SetState::Response& res) {
   core::LinkState link;
   link.p_WL = p;
   link.q_WL = q.normalized();
-  const Quat q_frame = frame == core::Frame::kBody ? link.q_WL : Quat::Identity();
+  // The twist's axes: the new pose's own, or another body's as it is now.
+  const Quat q_frame = axes.frame == core::Frame::kBody ? link.q_WL : orientationOf(axes, body);
   link.v_WL = q_frame * v;
   link.w_W = q_frame * w;
   state_.bodies[body] = core::bodyStateFromLink(model_.body(body), link);
@@ -527,13 +543,13 @@ bool SimNode::step(Step::Request& req, Step::Response& res) {
   res.success = true;
   res.message = "stepped " + std::to_string(req.steps) + " steps";
   res.time = stamp();
-  for (std::size_t i = 0; i < model_.bodyCount(); ++i) res.states.push_back(bodyState(static_cast<int>(i), false));
+  for (std::size_t i = 0; i < model_.bodyCount(); ++i) res.states.push_back(bodyState(static_cast<int>(i), Axes{}));
   return true;
 }
 
 void SimNode::onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& msg) {
   std::string why;
-  const auto frame = findFrame(msg->header.frame_id, body, why);
+  const auto axes = findFrame(msg->header.frame_id, body, why);
   const Vec3 force = fromVector3(msg->wrench.force), torque = fromVector3(msg->wrench.torque);
   if (why.empty()) why = checkVector(force, kMaxForce, "force", "N");
   if (why.empty()) why = checkVector(torque, kMaxTorque, "torque", "N·m");
@@ -541,7 +557,7 @@ void SimNode::onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& m
     ROS_WARN_THROTTLE(1.0, "sim_node: wrench for '%s' ignored: %s", model_.body(body).name.c_str(), why.c_str());
     return;
   }
-  held_wrenches_[body] = HeldWrench{{force, torque, Vec3::Zero(), *frame}, simTime()};
+  held_wrenches_[body] = HeldWrench{{force, torque, Vec3::Zero(), axes->frame}, simTime(), axes->other};
 }
 
 // ------------------------------------------------------------------ scene

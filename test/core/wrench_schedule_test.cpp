@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <complex>
+
 #include "../test_util.h"
 #include "rigid_body_sim/core/sdf_surface.h"
 #include "rigid_body_sim/core/step.h"
@@ -19,7 +22,7 @@ TEST(WrenchSchedule, DeliversForceTimesDurationOffTheStepGrid) {
   core::State s = stateOf(model, core::LinkState{});
   core::Loads loads;
   for (int n = 0; n < 40; ++n) {
-    schedule.loadsFor(model, s.time, dt, loads);
+    schedule.loadsFor(model, s, s.time, dt, loads);
     core::step(model, s, loads);
     schedule.dropFinished(s.time);
   }
@@ -29,20 +32,55 @@ TEST(WrenchSchedule, DeliversForceTimesDurationOffTheStepGrid) {
 
 TEST(WrenchSchedule, WrenchesAddAndClearPerBody) {
   const core::Model model(spec(issueBox(), 1e-3, Vec3::Zero()));
+  const core::State rest = stateOf(model, core::LinkState{});
   core::WrenchSchedule schedule;
   const double forever = core::WrenchSchedule::kForever;
   schedule.add(0, {Vec3(1, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, 0.0, forever);
   schedule.add(0, {Vec3(0, 3, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, 0.0, forever);
   core::Loads loads;
-  schedule.loadsFor(model, 5.0, 1e-3, loads);
+  schedule.loadsFor(model, rest, 5.0, 1e-3, loads);
   ASSERT_EQ(loads.size(), 1u);
   EXPECT_EQ(loads[0].force_W, Vec3(1, 3, 0));
   schedule.add(0, {Vec3(0, 0, 7), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, 9.0, forever);  // later
-  schedule.loadsFor(model, 5.0, 1e-3, loads);
+  schedule.loadsFor(model, rest, 5.0, 1e-3, loads);
   EXPECT_EQ(loads[0].force_W, Vec3(1, 3, 0));
   schedule.clear(0);
-  schedule.loadsFor(model, 10.0, 1e-3, loads);
+  schedule.loadsFor(model, rest, 10.0, 1e-3, loads);
   EXPECT_TRUE(loads.empty());
+}
+
+TEST(WrenchSchedule, AWrenchInAnotherBodysAxesTurnsWithThatBody) {
+  // 2 N on body 0 (1 kg) along body 1's x axis, while body 1 spins about its
+  // z axis (a principal axis: ω stays constant). Each step holds the force
+  // where body 1 points at the step's start, and the step turns body 1 by
+  // θ = 2 atan(h ω / 2) (the quaternion update), so after n steps
+  // v = (h F / M) Σₖ (cos kθ, sin kθ) = (h F / M) (1 − e^{inθ}) / (1 − e^{iθ}).
+  const double dt = 1e-3, w = 3.0, F = 2.0;
+  core::ModelSpec two = spec(issueBox(), dt, Vec3::Zero());
+  two.bodies.push_back(issueBox());
+  two.bodies[1].name = "spinner";
+  const core::Model model(two);
+  core::State s;
+  core::LinkState spinning;
+  spinning.p_WL = Vec3(5, 0, 0);
+  spinning.w_W = Vec3(0, 0, w);
+  s.bodies = {core::bodyStateFromLink(model.body(0), core::LinkState{}), core::bodyStateFromLink(model.body(1), spinning)};
+  core::WrenchSchedule schedule;
+  schedule.add(0, {Vec3(F, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, 0.0,
+               core::WrenchSchedule::kForever, 1);
+  core::Loads loads;
+  const int n = 700;  // about a third of a turn
+  for (int k = 0; k < n; ++k) {
+    schedule.loadsFor(model, s, s.time, dt, loads);
+    core::step(model, s, loads);
+  }
+  const double theta = 2.0 * std::atan(0.5 * dt * w);
+  const std::complex<double> sum = (1.0 - std::polar(1.0, n * theta)) / (1.0 - std::polar(1.0, theta));
+  EXPECT_NEAR(s.bodies[0].v_WB.x(), dt * F * sum.real(), 1e-12);
+  EXPECT_NEAR(s.bodies[0].v_WB.y(), dt * F * sum.imag(), 1e-12);
+  EXPECT_GT(s.bodies[0].v_WB.y(), 0.1);  // it turned: a fixed world force would give none along y
+  EXPECT_EQ(s.bodies[0].w_B, Vec3::Zero());  // the force acts at the centre of mass
+  EXPECT_EQ(s.bodies[1].v_WB, Vec3::Zero());  // and on body 0 only
 }
 
 TEST(SdfSurface, TrianglesLieOnTheSurfaceOfAComposition) {

@@ -53,6 +53,14 @@ using Loads = std::vector<BodyLoad>;
 /// kept in the wrench's frame (the notes' τᵢ = (R rᵢ) × Fᵢ for a body frame).
 void addWrench(const BodyModel& body, BodyLoad& load, const Wrench& wrench);
 
+/// A wrench (or impulse) whose vectors are given in the axes of a frame F,
+/// such as another body's root link, re-expressed in world axes for F's
+/// orientation now (q_WF): force, torque and the point's offset from the
+/// centre of mass are rotated. A load that turns with F is re-expressed at
+/// every step (WrenchSchedule). `wrench.frame` must be kWorld ("F's axes").
+Wrench inWorldAxes(const Wrench& wrench, const Quat& q_WF);
+Impulse inWorldAxes(const Impulse& impulse, const Quat& q_WF);
+
 /// Applies an impulse now: Δv = J / M, Δω = I⁻¹ (r × J + H), with I and r in
 /// the current orientation (the notes' rigid-body impulse response). Wakes
 /// the body if it was asleep.

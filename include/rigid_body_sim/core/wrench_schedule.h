@@ -23,9 +23,15 @@ class WrenchSchedule {
     Wrench wrench;
     double start = 0.0;     ///< s, sim time
     double end = kForever;  ///< s, sim time; kForever: until cleared
+    /// ≥ 0: the wrench is given in the root link axes of this other body and
+    /// turns with it (re-expressed in world axes at the start of each step;
+    /// wrench.frame is then kWorld). −1: wrench.frame says.
+    int axes_body = -1;
   };
 
-  void add(int body, const Wrench& wrench, double start, double end) { entries_.push_back({body, wrench, start, end}); }
+  void add(int body, const Wrench& wrench, double start, double end, int axes_body = -1) {
+    entries_.push_back({body, wrench, start, end, axes_body});
+  }
 
   /// Removes the wrenches of `body` (every body if body < 0).
   void clear(int body);
@@ -33,9 +39,9 @@ class WrenchSchedule {
   /// Forgets wrenches whose window ended by time t.
   void dropFinished(double t);
 
-  /// The loads of the step [t, t + h), one per body of `model`; empty if no
-  /// wrench touches the step.
-  void loadsFor(const Model& model, double t, double h, Loads& out) const;
+  /// The loads of the step [t, t + h) from `state` (at t), one per body of
+  /// `model`; empty if no wrench touches the step.
+  void loadsFor(const Model& model, const State& state, double t, double h, Loads& out) const;
 
   const std::vector<Entry>& entries() const { return entries_; }
 

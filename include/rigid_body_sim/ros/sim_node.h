@@ -60,16 +60,25 @@ class SimNode {
 
   /// The body named `name` ("" = the only body), or an error message.
   std::optional<int> findBody(const std::string& name, std::string& error) const;
-  /// `frame` as a core frame for `body`: "" or the world frame → world, the
-  /// body's root link → body; anything else is an error.
-  std::optional<core::Frame> findFrame(const std::string& frame, int body, std::string& error) const;
-  /// What a request addresses: a body by name and a frame of it (both as above).
+  /// The axes a request's vectors are given in, for the body it addresses.
+  struct Axes {
+    core::Frame frame = core::Frame::kWorld;  ///< kBody: the body's own root link, turning with it
+    int other = -1;                           ///< ≥ 0: this other body's root link, turning with it
+  };
+  /// `frame` for `body`: "" or the world frame → world; the body's tf frame
+  /// (or root link name) → its own axes; another body's tf frame → that
+  /// body's axes; anything else is an error.
+  std::optional<Axes> findFrame(const std::string& frame, int body, std::string& error) const;
+  /// The orientation of `axes` now, for `body` (world: the identity).
+  core::Quat orientationOf(const Axes& axes, int body) const;
+  /// What a request addresses: a body by name and the axes of its vectors (both as above).
   struct Target {
     int body;
-    core::Frame frame;
+    Axes axes;
   };
   std::optional<Target> findTarget(const std::string& body, const std::string& frame, std::string& error) const;
-  BodyState bodyState(int body, bool twist_in_body) const;
+  /// `body`'s state for a message, its twist in `axes`.
+  BodyState bodyState(int body, const Axes& axes) const;
   void rebaseClock();
 
   ros::NodeHandle nh_, pnh_;
@@ -88,6 +97,7 @@ class SimNode {
   struct HeldWrench {
     core::Wrench wrench;
     double received;  ///< sim time
+    int axes_body;    ///< ≥ 0: the wrench is in this other body's axes (re-expressed each step)
   };
   std::vector<std::optional<HeldWrench>> held_wrenches_;  ///< per body, from its ~wrench topic
 
