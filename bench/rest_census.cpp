@@ -15,18 +15,14 @@
 #include <vector>
 
 #include "box_grid.h"
+#include "rigid_body_sim/core/diagnostics.h"
 
 using namespace rigid_body_sim::core;
 
 namespace {
 
-double kineticEnergy(const Model& model, int i, const BodyState& b) {  // J
-  const BodyModel& m = model.body(i);
-  return 0.5 * m.mass * b.v_WB.squaredNorm() + 0.5 * (m.inertia_B.array() * b.w_B.array().square()).sum();
-}
-
-double mechanicalEnergy(const Model& model, int i, const BodyState& b) {  // J, potential from z = 0
-  return kineticEnergy(model, i, b) - model.body(i).mass * model.gravity().dot(b.p_WB);
+double mechanicalEnergy(const Model& model, int i, const BodyState& b) {  // J, potential from the origin
+  return kineticEnergy(model.body(i), b) + potentialEnergy(model.body(i), b, model.gravity());
 }
 
 }  // namespace
@@ -95,7 +91,7 @@ int main(int argc, char** argv) {
       const char* face[] = {"an end, 0.2 x 0.1 m", "a long side, 0.4 x 0.1", "its broad face, 0.4 x 0.2"};
       std::printf("%5d  %-22s %9.2f %7d %7d %9.4f %9.4f %9.3f %8.2f\n", i, bodies[i] ? "touches a box" : face[up],
                   std::acos(std::min(1.0, std::abs(R(2, up)))) * 180.0 / M_PI, ground[i], bodies[i], b.v_WB.norm(),
-                  b.w_B.norm(), 1e3 * kineticEnergy(model, i, b), b.still_time);
+                  b.w_B.norm(), 1e3 * kineticEnergy(model.body(i), b), b.still_time);
     }
   }
   std::printf("share at rest (core::atRest), the run carried on:");
