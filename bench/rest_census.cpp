@@ -67,8 +67,9 @@ int main(int argc, char** argv) {
       for (const BodyState& b : s.bodies) slow += b.v_WB.norm() < v && b.w_B.norm() < w;
       std::printf(" %.2f m/s %.2f rad/s %.1f%%;", v, w, 100.0 * slow / n);
     }
-    std::printf("\nin 0-2 s, the most energy a body touching no other body gained in a step: %.2g J (%ld steps above 1e-9 J)\n",
-                worst_rise, rises);
+    std::printf(
+        "\nin 0-2 s, the most energy a body touching no other body gained in a step: %.2g J (%ld steps above 1e-9 J)\n",
+        worst_rise, rises);
     std::vector<int> ground(n, 0), bodies(n, 0);
     for (const Contact& c : ws.contacts) {
       if (c.other < 0) {

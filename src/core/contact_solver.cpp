@@ -9,7 +9,6 @@
 namespace rigid_body_sim::core {
 namespace {
 
-
 /// m/s: a contact velocity error below this is the rounding of the impulses
 /// that hold a body still (about 1e-18 m/s, the last bits of h g left over).
 /// The solver leaves such a contact alone; otherwise rounding would walk its

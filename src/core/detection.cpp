@@ -243,7 +243,9 @@ void broadPhase(const Model& model, const State& state, int parts, Workspace& ws
   const double strip_width = width > 0.0 ? width : 1.0;  // m (no box has size: any width will do)
   for (int i = 0; i < n; ++i) strip[i] = std::floor(state.bodies[i].p_WB.y() / strip_width);
   // Insertion sort on (strip, lo x): the bodies barely move between steps, so this is nearly linear.
-  const auto before = [&](int a, int b) { return strip[a] < strip[b] || (strip[a] == strip[b] && lo[3 * a] < lo[3 * b]); };
+  const auto before = [&](int a, int b) {
+    return strip[a] < strip[b] || (strip[a] == strip[b] && lo[3 * a] < lo[3 * b]);
+  };
   for (int k = 1; k < n; ++k) {
     const int v = order[k];
     int m = k - 1;

@@ -21,8 +21,9 @@ void WrenchSchedule::loadsFor(const Model& model, const State& state, double t, 
     const double overlap = std::min(e.end, t + h) - std::max(e.start, t);
     if (!(overlap > 0.0)) continue;
     if (out.empty()) out.resize(model.bodyCount());
-    Wrench w = e.axes_body < 0 ? e.wrench
-                               : inWorldAxes(e.wrench, linkState(model.body(e.axes_body), state.bodies[e.axes_body]).q_WL);
+    Wrench w = e.axes_body < 0
+                   ? e.wrench
+                   : inWorldAxes(e.wrench, linkState(model.body(e.axes_body), state.bodies[e.axes_body]).q_WL);
     const double fraction = std::min(overlap / h, 1.0);
     w.force *= fraction;
     w.torque *= fraction;

@@ -364,7 +364,7 @@ BodyState SimNode::bodyState(int body, const Axes& axes) const {
   msg.body = b.name;
   msg.stamp = stamp();
   msg.pose = toPose(link.p_WL, link.q_WL);
-  msg.twist_frame = axes.other >= 0                     ? frames_[axes.other]
+  msg.twist_frame = axes.other >= 0                    ? frames_[axes.other]
                     : axes.frame == core::Frame::kBody ? frames_[body]
                                                        : settings_.world_frame;
   const Quat q = orientationOf(axes, body).conjugate();

@@ -278,7 +278,8 @@ TEST(Determinism, SkippingAFixedPointGivesTheStepsComputedInFull) {
   core::State a;
   for (int i = 0; i < 5; ++i) {
     const Quat q(Eigen::AngleAxisd(0.4 * i, Vec3(1, 2, 0.3 * i).normalized()));
-    a.bodies.push_back(i < 2 ? at(model, i, Vec3(0, 0, 0.1 + 0.2 * i)) : at(model, i, Vec3(i, 0, 0.3), Vec3::Zero(), q));
+    a.bodies.push_back(i < 2 ? at(model, i, Vec3(0, 0, 0.1 + 0.2 * i))
+                             : at(model, i, Vec3(i, 0, 0.3), Vec3::Zero(), q));
   }
   core::State b = a;
   core::Workspace skipping, computing;

@@ -174,10 +174,10 @@ TEST(Rocking, ABlockKeepsHousnersShareOfItsSpinAtEachImpact) {
     Quat upright;  // the box standing, its thin half extent (body z) along world y
     double half_height;
   };
-  const Stance stances[] = {{Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitX())), kHalf.y()},
-                            {Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitX())) *
-                                 Quat(Eigen::AngleAxisd(-M_PI / 2, Vec3::UnitZ())),
-                             kHalf.x()}};
+  const Stance stances[] = {
+      {Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitX())), kHalf.y()},
+      {Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitX())) * Quat(Eigen::AngleAxisd(-M_PI / 2, Vec3::UnitZ())),
+       kHalf.x()}};
   for (const Stance& stance : stances) {
     const double alpha = std::atan(kHalf.z() / stance.half_height);
     const double r = 1.0 - 1.5 * std::pow(std::sin(alpha), 2);
@@ -190,7 +190,7 @@ TEST(Rocking, ABlockKeepsHousnersShareOfItsSpinAtEachImpact) {
     }
     core::State s = at(model, Vec3(0, 0, -lowest), q);
     ASSERT_NEAR(std::abs((stance.upright * Vec3::UnitZ()).y()), 1.0, 1e-12);  // the thin side across the rocking
-    std::vector<double> rise = {s.bodies[0].p_WB.z() - stance.half_height};  // at each turning point
+    std::vector<double> rise = {s.bodies[0].p_WB.z() - stance.half_height};   // at each turning point
     double z_before = s.bodies[0].p_WB.z(), z_earlier = z_before;
     for (int n = 0; n < 3000 && rise.size() < 4; ++n) {
       core::step(model, s);
@@ -383,7 +383,8 @@ TEST(Rest, SkippingAFixedPointGivesTheStepsComputedInFull) {
       }
       if (n == 4500) {
         y_before_kick = a.bodies[0].p_WB.y();
-        for (core::State* s : {&a, &b}) core::applyImpulse(model.body(0), s->bodies[0], {Vec3(0, 1, 0), Vec3::Zero(), Vec3::Zero()});
+        for (core::State* s : {&a, &b})
+          core::applyImpulse(model.body(0), s->bodies[0], {Vec3(0, 1, 0), Vec3::Zero(), Vec3::Zero()});
       }
       const core::Loads& loads = n >= 3000 && n < 3010 ? push : core::Loads{};
       core::step(model, a, loads, &skipping);

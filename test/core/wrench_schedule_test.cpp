@@ -64,10 +64,11 @@ TEST(WrenchSchedule, AWrenchInAnotherBodysAxesTurnsWithThatBody) {
   core::LinkState spinning;
   spinning.p_WL = Vec3(5, 0, 0);
   spinning.w_W = Vec3(0, 0, w);
-  s.bodies = {core::bodyStateFromLink(model.body(0), core::LinkState{}), core::bodyStateFromLink(model.body(1), spinning)};
+  s.bodies = {core::bodyStateFromLink(model.body(0), core::LinkState{}),
+              core::bodyStateFromLink(model.body(1), spinning)};
   core::WrenchSchedule schedule;
-  schedule.add(0, {Vec3(F, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, 0.0,
-               core::WrenchSchedule::kForever, 1);
+  schedule.add(0, {Vec3(F, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, 0.0, core::WrenchSchedule::kForever,
+               1);
   core::Loads loads;
   const int n = 700;  // about a third of a turn
   for (int k = 0; k < n; ++k) {
@@ -78,8 +79,8 @@ TEST(WrenchSchedule, AWrenchInAnotherBodysAxesTurnsWithThatBody) {
   const std::complex<double> sum = (1.0 - std::polar(1.0, n * theta)) / (1.0 - std::polar(1.0, theta));
   EXPECT_NEAR(s.bodies[0].v_WB.x(), dt * F * sum.real(), 1e-12);
   EXPECT_NEAR(s.bodies[0].v_WB.y(), dt * F * sum.imag(), 1e-12);
-  EXPECT_GT(s.bodies[0].v_WB.y(), 0.1);  // it turned: a fixed world force would give none along y
-  EXPECT_EQ(s.bodies[0].w_B, Vec3::Zero());  // the force acts at the centre of mass
+  EXPECT_GT(s.bodies[0].v_WB.y(), 0.1);       // it turned: a fixed world force would give none along y
+  EXPECT_EQ(s.bodies[0].w_B, Vec3::Zero());   // the force acts at the centre of mass
   EXPECT_EQ(s.bodies[1].v_WB, Vec3::Zero());  // and on body 0 only
 }
 
