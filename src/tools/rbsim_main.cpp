@@ -275,7 +275,8 @@ int run(const Args& args) {
     at_rest = at_rest && rest;
     resting += rest;
     bodies_json += std::string(i ? "," : "") + "{\"name\":\"" + model.body(i).name +
-                   "\",\"final\":" + finalJson(core::linkState(model.body(i), state.bodies[i])) + "}";
+                   "\",\"final\":" + finalJson(core::linkState(model.body(i), state.bodies[i])) +
+                   ",\"at_rest\":" + (rest ? "true" : "false") + "}";
   }
   const std::string single_final =
       world_config ? "" : "\"final\":" + finalJson(core::linkState(model.body(0), state.bodies[0])) + ",";

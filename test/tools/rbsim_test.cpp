@@ -112,6 +112,13 @@ TEST(Rbsim, RunsAWorldOfBodiesFromTheConfig) {
   EXPECT_LT(j["max_penetration"].as<double>(), 2e-3);
   // The ball came down on the box: it rests on its top face, 0.1 + 0.1 m up.
   EXPECT_NEAR(seq(j["bodies"][1]["final"]["position"])[2], 0.2, 1e-3);
+  for (const auto& body : j["bodies"]) EXPECT_TRUE(body["at_rest"].as<bool>()) << body["name"].as<std::string>();
+  // A tenth of a second in, the ball is still falling: it says so, and so does the whole.
+  const Result early = rbsim("--config " + std::string(RBS_SOURCE_DIR) + "/config/world.yaml --duration 0.1 --quiet");
+  ASSERT_EQ(early.code, 0) << early.err;
+  const YAML::Node e = YAML::Load(early.out);
+  EXPECT_FALSE(e["bodies"][1]["at_rest"].as<bool>());
+  EXPECT_FALSE(e["at_rest"].as<bool>());
   std::ifstream in(csv);
   std::string line;
   std::getline(in, line);
