@@ -210,7 +210,7 @@ void SimNode::stepOnce() {
       if (loads_.empty()) loads_.resize(model_.bodyCount());
       const core::Wrench& w = held->wrench;
       core::addWrench(model_.body(i), loads_[i],
-                      held->axes_body < 0 ? w : core::inWorldAxes(w, orientationOf({w.frame, held->axes_body}, i)));
+                      held->axes.other < 0 ? w : core::inWorldAxes(w, orientationOf(held->axes, i)));
     }
   }
   core::step(model_, state_, loads_, &workspace_);
@@ -557,7 +557,7 @@ void SimNode::onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& m
     ROS_WARN_THROTTLE(1.0, "sim_node: wrench for '%s' ignored: %s", model_.body(body).name.c_str(), why.c_str());
     return;
   }
-  held_wrenches_[body] = HeldWrench{{force, torque, Vec3::Zero(), axes->frame}, simTime(), axes->other};
+  held_wrenches_[body] = HeldWrench{{force, torque, Vec3::Zero(), axes->frame}, simTime(), *axes};
 }
 
 // ------------------------------------------------------------------ scene

@@ -97,7 +97,7 @@ class SimNode {
   struct HeldWrench {
     core::Wrench wrench;
     double received;  ///< sim time
-    int axes_body;    ///< ≥ 0: the wrench is in this other body's axes (re-expressed each step)
+    Axes axes;        ///< another body's axes are re-expressed at each step
   };
   std::vector<std::optional<HeldWrench>> held_wrenches_;  ///< per body, from its ~wrench topic
 
