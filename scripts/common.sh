@@ -13,6 +13,8 @@ export ROS_HOSTNAME=${ROS_HOSTNAME:-localhost}
 RBS_APT_PACKAGES=(
   build-essential cmake catkin
   libeigen3-dev liburdfdom-dev libyaml-cpp-dev libassimp-dev
+  # libassimp-dev's CMake config links libz.so but the package does not depend on zlib1g-dev
+  zlib1g-dev
   libgtest-dev libbenchmark-dev
   # ROS 1 (Debian's packages): build and test
   libroscpp-dev ros-message-generation ros-message-runtime
@@ -22,6 +24,7 @@ RBS_APT_PACKAGES=(
   # running and poking at the node (rosrun, roslaunch, rostopic, rosservice, the demo's printer)
   ros-robot-state-publisher rosbash python3-rospy python3-rostopic python3-rosservice python3-rosnode
   python3-nav-msgs python3-geometry-msgs python3-std-srvs python3-tf2-msgs python3-rosgraph-msgs
+  python3-visualization-msgs  # rostopic echo of the marker topics
 )
 
 rbs_install_packages() {
