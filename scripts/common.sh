@@ -1,11 +1,13 @@
 # Sourced by the scripts: environment and the workspace layout.
 # A pyenv python3 shadows /usr/bin/python3 on these machines and has no ROS
-# modules: put /usr/bin first and pass the python flags to catkin.
+# modules: put /usr/bin first and tell catkin which python to use
+# (PYTHON_EXECUTABLE is the one catkin reads; Python3_EXECUTABLE is read by
+# nothing this package finds, and CMake warned that it went unused).
 export PATH=/usr/bin:/bin:$PATH
 RBS_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 RBS_WS=${RBS_WS:-$RBS_ROOT/.ws}
 RBS_BUILD_TYPE=${RBS_BUILD_TYPE:-Release}
-RBS_PYFLAGS="-DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3"
+RBS_PYFLAGS="-DPYTHON_EXECUTABLE=/usr/bin/python3"
 export ROS_HOME=${ROS_HOME:-$RBS_WS/ros_home}
 export ROS_HOSTNAME=${ROS_HOSTNAME:-localhost}
 
@@ -22,26 +24,52 @@ RBS_APT_PACKAGES=(
   libvisualization-msgs-dev ros-visualization-msgs libros-rosgraph-msgs-dev ros-std-msgs libstd-msgs-dev
   libtf2-ros-dev libtf2-dev librostest-dev python3-rostest python3-roslaunch
   # running and poking at the node (rosrun, roslaunch, rostopic, rosservice, the demo's printer)
-  ros-robot-state-publisher rosbash python3-rospy python3-rostopic python3-rosservice python3-rosnode
+  rosbash python3-rospy python3-rostopic python3-rosservice python3-rosnode
   python3-nav-msgs python3-geometry-msgs python3-std-srvs python3-tf2-msgs python3-rosgraph-msgs
   python3-visualization-msgs  # rostopic echo of the marker topics
 )
+
+# Runs a phase: says what it does, keeps its output in .ws/LOG, says how
+# long it took, or shows the end of the log when it fails.
+rbs_phase() {
+  local what=$1 log=$RBS_WS/$2 start=$SECONDS status=0
+  shift 2
+  mkdir -p "$RBS_WS"
+  echo "setup: $what (log: ${log#"$PWD"/})" >&2
+  "$@" >"$log" 2>&1 || status=$?
+  if [ "$status" -ne 0 ]; then
+    echo "setup: failed ($status) after $((SECONDS - start)) s; the errors and the end of $log:" >&2
+    grep -E "error|Error|E: " "$log" | head -n 40 >&2 || true
+    echo "..." >&2
+    tail -n 40 "$log" >&2
+    return "$status"
+  fi
+  echo "setup: done in $((SECONDS - start)) s" >&2
+}
+
+rbs_apt() {
+  local sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get update -q &&
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${RBS_APT_PACKAGES[@]}"
+}
 
 rbs_install_packages() {
   local missing=()
   for p in "${RBS_APT_PACKAGES[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
-  if [ ${#missing[@]} -eq 0 ] && [ "${RBS_FORCE_APT:-0}" != 1 ]; then return 0; fi
-  local sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo="sudo"
-  echo "setup: installing ${missing[*]:-all packages}" >&2
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get update -q
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${RBS_APT_PACKAGES[@]}"
+  [ ${#missing[@]} -gt 0 ] || return 0
+  rbs_phase "installing the Debian packages it needs (${#missing[@]} missing; apt-get, a few minutes on a fresh machine)" apt.log rbs_apt
 }
 
+# Builds into .ws/ (catkin_make, $RBS_BUILD_TYPE); extra arguments are
+# catkin_make targets, e.g. `tests`.
 rbs_build() {
   mkdir -p "$RBS_WS/src"
   ln -sfn "$RBS_ROOT" "$RBS_WS/src/rigid_body_sim"
-  catkin_make -C "$RBS_WS" -j2 $RBS_PYFLAGS -DCMAKE_BUILD_TYPE="$RBS_BUILD_TYPE" "$@"
+  local what="building ${*:-the package} into ${RBS_WS#"$PWD"/} ($RBS_BUILD_TYPE; about 2-3 minutes the first time on 2 cores)"
+  [ -f "$RBS_WS/devel/lib/rigid_body_sim/sim_node" ] && what="building ${*:-the package} (only what changed)"
+  rbs_phase "$what" "build${1:+_$1}.log" \
+    catkin_make -C "$RBS_WS" -j2 $RBS_PYFLAGS -DCMAKE_BUILD_TYPE="$RBS_BUILD_TYPE" "$@"
 }

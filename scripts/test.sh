@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Sets up everything, builds the tests and runs them all (gtest suites and
-# build checks) through ctest: non-zero on any failure, ctest's summary last.
+# Sets up everything, builds the tests and runs them all (gtest suites,
+# rostests and build checks) through ctest: non-zero on any failure, ctest's
+# summary line last.
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 rbs_install_packages
 rbs_build
 rbs_build tests
+echo "test: running the tests (ctest, 2 at a time, about a minute)" >&2
 log="$RBS_WS/ctest.log"
 status=0
 ctest --test-dir "$RBS_WS/build" --output-on-failure -j2 2>&1 | tee "$log" || status=$?
