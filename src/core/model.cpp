@@ -135,6 +135,8 @@ BodyModel buildBody(const BodySpec& spec) {
   BodyModel b;
   b.name = spec.name;
   b.link = spec.link.empty() ? spec.name : spec.link;
+  b.collision = spec.collision;
+  b.fixed_links = spec.fixed_links;
   b.mass = spec.mass;
   b.inv_mass = 1.0 / spec.mass;
   b.p_LB = spec.p_LC;

@@ -146,9 +146,10 @@ class Lumper {
     }
   }
 
-  /// Adds `link` and, through fixed joints, everything below it.
+  /// Adds `link` and, through fixed joints, everything below it (its
+  /// frames to `frames`).
   void collect(const urdf::Link& link, const Pose& X_LK, std::vector<core::MassProperties>& parts,
-               std::vector<core::CollisionShape>& shapes) const {
+               std::vector<core::CollisionShape>& shapes, std::vector<core::FixedLink>& frames) const {
     parts.push_back(part(link, X_LK));
     collisions(link, X_LK, shapes);
     for (const auto& joint : link.child_joints) {
@@ -159,7 +160,9 @@ class Lumper {
       const auto child = std::find_if(link.child_links.begin(), link.child_links.end(),
                                       [&](const auto& l) { return l->name == joint->child_link_name; });
       if (child == link.child_links.end()) fail("joint '" + joint->name + "' has no child link");
-      collect(**child, X_LK * toPose(joint->parent_to_joint_origin_transform), parts, shapes);
+      const Pose X_KC = toPose(joint->parent_to_joint_origin_transform);
+      frames.push_back({(*child)->name, link.name, X_KC});
+      collect(**child, X_LK * X_KC, parts, shapes, frames);
     }
   }
 
@@ -179,7 +182,8 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
 
   std::vector<core::MassProperties> parts;
   std::vector<core::CollisionShape> shapes;
-  lumper.collect(*root, Pose{}, parts, shapes);
+  std::vector<core::FixedLink> frames;
+  lumper.collect(*root, Pose{}, parts, shapes, frames);
   const core::MassProperties total = core::combine(parts);
   if (!(total.mass > 0.0)) {
     lumper.fail("the body rooted at link '" + root->name + "' has a total mass of 0 kg");
@@ -191,6 +195,7 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
   spec.p_LC = total.p_FC;
   spec.I_C_L = total.I_C_F;
   spec.collision = std::move(shapes);
+  spec.fixed_links = std::move(frames);
   return spec;
 }
 

@@ -61,6 +61,14 @@ struct SleepSettings {
   double time = 0.5;               ///< s
 };
 
+/// A link joined to the body by a fixed joint: a frame users see (tf), not a
+/// separate body.
+struct FixedLink {
+  std::string name;    ///< its URDF link name
+  std::string parent;  ///< the link it hangs from (the root link or another fixed link)
+  Pose X_PK;           ///< its pose in the parent link's frame (the joint's origin)
+};
+
 /// Creation settings of one rigid body (what a URDF provides).
 struct BodySpec {
   std::string name = "body";  ///< the body's name in the world (by default its URDF root link's)
@@ -70,6 +78,7 @@ struct BodySpec {
   /// Inertia about the centre of mass, axes of L (kg·m²).
   Mat3 I_C_L = Mat3::Identity();
   std::vector<CollisionShape> collision;  ///< the URDF <collision> elements
+  std::vector<FixedLink> fixed_links;     ///< links lumped into the body, in URDF order
 };
 
 /// Creation settings of the whole model.
@@ -100,6 +109,8 @@ struct BodyModel {
   Vec3 p_LB = Vec3::Zero();                  ///< B's origin (the centre of mass) in L (m)
   Quat q_LB = Quat::Identity();              ///< principal axes B in L
   Mat3 I_C_L = Mat3::Identity();             ///< inertia about the centre of mass in L axes, as given
+  std::vector<CollisionShape> collision;     ///< the collision shapes in L, as given (for drawing)
+  std::vector<FixedLink> fixed_links;        ///< frames fixed to the body (for tf)
   std::vector<ContactPoint> contact_points;  ///< collision samples, body frame B, extreme ones first
   std::size_t extreme_points = 0;            ///< how many of contact_points are extreme (see ContactPoint)
   /// The extreme points again as columns (x, y, z, radius), so the plane
@@ -115,7 +126,8 @@ struct BodyModel {
   };
   std::vector<PointGroup> extreme_groups;
   /// The body's solid in B (the union of its collision shapes), which other
-  /// bodies' points are tested against; only built when there are several bodies.
+  /// bodies' points are tested against; only built when there are several bodies
+  /// (a mesh's distance grid costs time at start).
   std::vector<Sdf> solid_B;
   Vec3 solid_lo_B = Vec3::Zero(), solid_hi_B = Vec3::Zero();  ///< a box around solid_B, in B (m)
   double bound_radius = 0.0;  ///< m: every contact point lies within it of the centre of mass
