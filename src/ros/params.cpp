@@ -3,6 +3,7 @@
 #include <ros/console.h>
 #include <ros/param.h>
 
+#include <filesystem>
 #include <set>
 #include <sstream>
 
@@ -63,8 +64,8 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   }
   NodeParams p;
   NodeSettings& n = p.node;
-  const std::set<std::string> node_keys{"rate",           "realtime_factor", "publish_rate", "world_frame",
-                                        "wrench_timeout", "covariance",      "scene_size",   "report_timing"};
+  const std::set<std::string> node_keys{"rate",       "realtime_factor", "publish_rate",  "world_frame", "wrench_timeout",
+                                        "covariance", "scene_size",      "report_timing", "config_file"};
   if (all.hasMember("rate")) n.rate = positive(all["rate"], "rate", false);
   if (all.hasMember("realtime_factor")) n.realtime_factor = positive(all["realtime_factor"], "realtime_factor", true);
   if (all.hasMember("publish_rate")) n.publish_rate = positive(all["publish_rate"], "publish_rate", false);
@@ -88,12 +89,18 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
     }
     n.report_timing = static_cast<bool>(all["report_timing"]);
   }
+  if (all.hasMember("config_file")) {
+    if (all["config_file"].getType() != XmlRpc::XmlRpcValue::TypeString) {
+      throw io::ConfigError("parameter '~config_file': expected a file path");
+    }
+    n.config_file = static_cast<std::string>(all["config_file"]);
+  }
   // Everything else is a simulation key: the same parser as rbsim's config.
   YAML::Node sim(YAML::NodeType::Map);
   for (auto it = all.begin(); it != all.end(); ++it) {
     if (!node_keys.count(it->first)) sim[it->first] = toYaml(it->second);
   }
-  p.sim = io::parseConfig(sim);
+  p.sim = io::parseConfig(sim, std::filesystem::path(n.config_file).parent_path().string());
   p.sim_yaml = sim;
   return p;
 }

@@ -3,89 +3,25 @@
 #include <nav_msgs/Odometry.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sys/prctl.h>
-#include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 #include <thread>
 
-#include "rigid_body_sim/core/sdf_surface.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/ros/conversions.h"
+#include "rigid_body_sim/ros/markers.h"
 
 namespace rigid_body_sim::node {
 namespace {
 
 using core::Quat;
 using core::Vec3;
-
-/// A marker in `frame`, to be added, with unit scale, no offset and `rgba`.
-visualization_msgs::Marker newMarker(const std::string& frame, const std::string& ns,
-                                     const std::array<float, 4>& rgba) {
-  visualization_msgs::Marker m;
-  m.header.frame_id = frame;
-  m.ns = ns;
-  m.action = visualization_msgs::Marker::ADD;
-  m.pose.orientation.w = 1.0;
-  m.scale.x = m.scale.y = m.scale.z = 1.0;
-  m.color.r = rgba[0];
-  m.color.g = rgba[1];
-  m.color.b = rgba[2];
-  m.color.a = rgba[3];
-  return m;
-}
-
-/// Appends markers drawing the solid `sdf`, whose pose is given in a frame
-/// P placed at X_FP in the marker frame F: rviz's own box, sphere and
-/// cylinder for those shapes (through unions), and the surface φ = 0 as
-/// triangles for anything else (`fallback_size` m across when unbounded).
-void appendSolidMarkers(const core::Sdf& sdf, const core::Pose& X_FP, const visualization_msgs::Marker& base,
-                        double fallback_size, visualization_msgs::MarkerArray& out) {
-  using Kind = core::Sdf::Kind;
-  const core::Pose X_FS = X_FP * sdf.pose();
-  visualization_msgs::Marker m = base;
-  m.id = static_cast<int>(out.markers.size());
-  m.pose = toPose(X_FS.p_WS, X_FS.q_WS);
-  const Vec3& a = sdf.params();
-  switch (sdf.kind()) {
-    case Kind::kUnion:
-      for (const core::Sdf& child : sdf.children()) appendSolidMarkers(child, X_FS, base, fallback_size, out);
-      return;
-    case Kind::kBox:  // full size
-      m.type = visualization_msgs::Marker::CUBE;
-      m.scale = toVector3(a);
-      break;
-    case Kind::kSphere:  // radius
-      m.type = visualization_msgs::Marker::SPHERE;
-      m.scale.x = m.scale.y = m.scale.z = 2.0 * a.x();
-      break;
-    case Kind::kCylinder:  // radius, length along z
-      m.type = visualization_msgs::Marker::CYLINDER;
-      m.scale.x = m.scale.y = 2.0 * a.x();
-      m.scale.z = a.y();
-      break;
-    default: {
-      core::Bounds bounds;
-      if (const auto b = core::solidBounds(sdf)) {
-        bounds = *b;
-      } else {
-        bounds = {Vec3::Constant(-0.5 * fallback_size), Vec3::Constant(0.5 * fallback_size)};
-      }
-      const Vec3 margin = Vec3::Constant(1e-3 + 0.02 * (bounds.hi - bounds.lo).maxCoeff());
-      bounds.lo -= margin;
-      bounds.hi += margin;
-      const double cell = (bounds.hi - bounds.lo).maxCoeff() / 64.0;
-      m.type = visualization_msgs::Marker::TRIANGLE_LIST;
-      m.pose = toPose(X_FP.p_WS, X_FP.q_WS);  // the triangles are in P, where sdf's pose applies
-      for (const Vec3& p : core::surfaceTriangles(sdf, bounds, cell)) m.points.push_back(toPoint(p));
-    }
-  }
-  out.markers.push_back(m);
-}
 
 // What a request may ask for at most: beyond these it is refused as absurd.
 constexpr double kMaxForce = 1e6;         // N
@@ -95,6 +31,7 @@ constexpr double kMaxPosition = 1e6;      // m, also for points of application
 constexpr double kMaxSpeed = 1e4;         // m/s
 constexpr double kMaxAngularSpeed = 1e4;  // rad/s
 constexpr int kMaxSteps = 1000000;        // per ~step call
+constexpr double kMaxLeadTime = 1e6;      // s, how far ahead a start_time may be
 constexpr int kMaxStepsPerTick = 1000;    // beyond this the loop gives up catching up
 
 /// "" if v is finite and |v| ≤ limit, else why not.
@@ -118,7 +55,7 @@ std::string firstProblem(std::initializer_list<std::string> problems) {
 
 /// The bodies: robot_description for one body, or the config's `bodies`,
 /// each urdf naming a parameter that holds a URDF or else a file
-/// (absolute, or package://).
+/// (package://, absolute, or relative to ~config_file's folder).
 io::World loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
   if (params.sim.bodies.empty()) {
     std::string xml;
@@ -138,16 +75,29 @@ io::World loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
     } catch (const ros::InvalidNameException&) {
       // Not a parameter name (package://..., a path with dots): a file.
     }
-    return io::loadUrdfFile(io::resolveMeshUri(entry.urdf, ""));
+    const bool relative = entry.urdf.rfind("package://", 0) != 0 && entry.urdf.rfind("file://", 0) != 0 &&
+                          !std::filesystem::path(entry.urdf).is_absolute();
+    if (relative && !std::filesystem::path(params.node.config_file).is_absolute()) {
+      throw io::ConfigError("bodies '" + entry.name + "': urdf '" + entry.urdf +
+                            "' is a relative path, but ~config_file ('" + params.node.config_file +
+                            "') is no absolute path to the config, so its folder is unknown: launch with "
+                            "config:=$PWD/FILE.yaml, or give the urdf as package:// or an absolute path");
+    }
+    return io::loadUrdfFile(io::resolveMeshUri(entry.urdf, params.sim.base_dir));
   });
 }
 
 }  // namespace
 
 SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
-    : nh_(nh), pnh_(private_nh), params_(readParams(private_nh)), world_(loadWorld(params_, nh_)) {
+    : nh_(nh),
+      pnh_(private_nh),
+      params_(readParams(private_nh)),
+      world_(loadWorld(params_, nh_)),
+      use_sim_time_(ros::param::param("/use_sim_time", false)),
+      clock_(model_.dt(), !use_sim_time_) {
   initial_ = state_;
-  use_sim_time_ = ros::param::param("/use_sim_time", false);
+  clock_.anchor(0, static_cast<int64_t>(ros::WallTime::now().toNSec()));
   publish_every_ = std::max(1LL, std::llround(1.0 / (settings_.publish_rate * model_.dt())));
   // One body keeps the single-body names; several get theirs under their name.
   const bool several = model_.bodyCount() > 1;
@@ -172,8 +122,15 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   sim << YAML::Flow << params_.sim_yaml;
   ROS_INFO("sim_node: simulation keys given: %s (others at config/default.yaml's defaults)", sim.c_str());
 
-  scene_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, /*latch=*/true);
-  body_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("body_markers", 1, /*latch=*/true);
+  // Latched markers, sent again to late subscribers once they have seen tf
+  // for a while (resendMarkersIfDue).
+  const auto on_subscriber = [this](const ros::SingleSubscriberPublisher&) {
+    markers_resend_ = MarkersResend{ros::WallTime::now(), 0};
+  };
+  scene_markers_ = sceneMarkers(model_.scene(), settings_.world_frame, settings_.scene_size);
+  body_markers_ = bodyMarkers(model_, frames_);
+  scene_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, on_subscriber, {}, {}, true);
+  body_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("body_markers", 1, on_subscriber, {}, {}, true);
   if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
   services_ = {pnh_.advertiseService("apply_wrench", &SimNode::applyWrench, this),
                pnh_.advertiseService("apply_impulse", &SimNode::applyImpulse, this),
@@ -184,19 +141,14 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
                pnh_.advertiseService("pause", &SimNode::pause, this),
                pnh_.advertiseService("unpause", &SimNode::unpause, this),
                pnh_.advertiseService("step", &SimNode::step, this)};
-  publishScene();
-  publishBodies();
+  scene_pub_.publish(scene_markers_);
+  body_pub_.publish(body_markers_);
+  publishFixedFrames();
   publishClock();
   publish();
 }
 
 // ------------------------------------------------------------------ stepping
-
-ros::Time SimNode::stamp() const {
-  if (use_sim_time_) return ros::Time().fromNSec(static_cast<uint64_t>(std::llround(simTime() * 1e9)));
-  const ros::WallTime now = ros::WallTime::now();
-  return ros::Time(now.sec, now.nsec);
-}
 
 void SimNode::stepOnce() {
   const double t = simTime(), h = model_.dt();
@@ -259,11 +211,50 @@ void SimNode::publish() {
     }
     odom_pubs_[i].publish(odom);
   }
+  resendMarkersIfDue();
 }
 
-void SimNode::rebaseClock() {
-  ref_wall_ = std::chrono::steady_clock::now();
+void SimNode::resendMarkersIfDue() {
+  // rviz passes each marker through a tf2 MessageFilter. A marker stamped 0
+  // that arrives before its frame's first transform is failed for good when
+  // that transform is stamped more than the buffer's 10 s after 0 (always
+  // on the wall-anchored clock, after 10 s on sim time), and the latched
+  // copy a new subscriber gets on connecting can beat tf. So the markers go
+  // again once the subscriber has had tf for a second: by then rviz knows
+  // every frame, and a marker for a known frame passes at once.
+  if (!markers_resend_ || ++markers_resend_->publishes < 2 ||
+      (ros::WallTime::now() - markers_resend_->connected).toSec() < 1.0) {
+    return;
+  }
+  markers_resend_.reset();
+  scene_pub_.publish(scene_markers_);
+  body_pub_.publish(body_markers_);
+}
+
+void SimNode::publishFixedFrames() {
+  // Links fixed to a body: their frames under the body's prefix, as
+  // robot_state_publisher publishes them for one robot (static: they never move).
+  std::vector<geometry_msgs::TransformStamped> fixed;
+  for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
+    const core::BodyModel& body = model_.body(i);
+    const std::string prefix = frames_[i].substr(0, frames_[i].size() - body.link.size());
+    for (const core::FixedLink& link : body.fixed_links) {
+      geometry_msgs::TransformStamped tf;
+      tf.header.stamp = stamp();
+      tf.header.frame_id = prefix + link.parent;
+      tf.child_frame_id = prefix + link.name;
+      tf.transform = toTransform(link.X_PK.p_WS, link.X_PK.q_WS);
+      fixed.push_back(tf);
+    }
+  }
+  if (!fixed.empty()) static_tf_.sendTransform(fixed);
+}
+
+double SimNode::rebaseClock() {
+  const int64_t lead = paused_ ? 0 : clock_.anchor(steps_, static_cast<int64_t>(ros::WallTime::now().toNSec()));
+  ref_wall_ = std::chrono::steady_clock::now() + std::chrono::nanoseconds(lead);
   ref_sim_ = simTime();
+  return 1e-9 * static_cast<double>(lead);
 }
 
 void SimNode::run() {
@@ -275,7 +266,6 @@ void SimNode::run() {
   rebaseClock();
   auto next_tick = Clock::now();
   auto last_tick = next_tick;
-  auto last_paused_publish = next_tick;
   const double rtf = settings_.realtime_factor;
   if (settings_.report_timing) tick_periods_.reserve(1 << 20);
   while (ros::ok()) {
@@ -300,11 +290,6 @@ void SimNode::run() {
       do {
         for (int k = 0; k < 64; ++k) stepOnce();
       } while (Clock::now() < slice_end);
-    } else if (!use_sim_time_ && std::chrono::duration<double>(tick_start - last_paused_publish).count() >=
-                                     1.0 / settings_.publish_rate) {
-      // Paused on wall time: keep tf fresh for listeners (sim time stands still otherwise).
-      publish();
-      last_paused_publish = tick_start;
     }
     ros::spinOnce();
     if (rtf > 0.0 || paused_) {
@@ -399,12 +384,31 @@ bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res)
         "or call apply_impulse for an instantaneous push";
     return true;
   }
-  const double start = std::max(req.start_time.toSec(), simTime());  // 0 or the past: now
+  // start_time is on the node's clock (the stamps of /odom and tf): 0 or
+  // the past means now, the next step; far ahead is another clock's reading.
+  double start = simTime();
+  std::string when = "from now (t = " + now() + ")";
+  if (!req.start_time.isZero()) {
+    const double at = clock_.simTimeAt(static_cast<int64_t>(req.start_time.toNSec())), lead = at - simTime();
+    if (lead > kMaxLeadTime) {
+      res.message = "start_time " + formatStamp(static_cast<int64_t>(req.start_time.toNSec())) + " s is " +
+                    std::to_string(lead) + " s ahead of this node's clock (now " + now() +
+                    "): is it on another clock? Stamps of odom and tf are on this one; 0 means now";
+      return true;
+    }
+    if (lead > 0.0) {
+      start = at;
+      when = "from t = " + formatStamp(static_cast<int64_t>(req.start_time.toNSec())) + " s";
+    } else if (lead < 0.0) {
+      when = "from now (start_time " + formatStamp(static_cast<int64_t>(req.start_time.toNSec())) +
+             " s is past; t = " + now() + ")";
+    }
+  }
   const double end = duration > 0.0 ? start + duration : core::WrenchSchedule::kForever;
   schedule_.add(body, {force, torque, point, axes.frame}, start, end, axes.other);
   res.success = true;
   std::ostringstream os;
-  os << "wrench on '" << model_.body(body).name << "' from t = " << start << " s "
+  os << "wrench on '" << model_.body(body).name << "' " << when << " "
      << (duration > 0.0 ? "for " + std::to_string(duration) + " s" : std::string("until cleared"));
   res.message = os.str();
   return true;
@@ -508,22 +512,28 @@ bool SimNode::reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& re
   rebaseClock();
   publish();
   res.success = true;
-  res.message = "reset to the initial state at t = " + std::to_string(simTime()) + " s";
+  res.message = "reset to the initial state at t = " + now();
   return true;
 }
 
 bool SimNode::pause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
   paused_ = true;
   res.success = true;
-  res.message = "paused at t = " + std::to_string(simTime()) + " s";
+  res.message = "paused at t = " + now();
   return true;
 }
 
 bool SimNode::unpause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
   paused_ = false;
-  rebaseClock();  // do not make up for the paused time
+  // Do not make up for the paused time; the wall-anchored clock resumes at
+  // wall time, or, if steps taken while paused put it ahead, waits for it.
+  const double lead = rebaseClock();
   res.success = true;
-  res.message = "running from t = " + std::to_string(simTime()) + " s";
+  res.message = "running from t = " + now();
+  if (lead > 0.0 && settings_.realtime_factor > 0.0) {
+    res.message += " once the wall clock reaches it, in " + std::to_string(lead) +
+                   " s (the steps taken while paused put the clock ahead; /use_sim_time has no such wait)";
+  }
   return true;
 }
 
@@ -558,47 +568,6 @@ void SimNode::onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& m
     return;
   }
   held_wrenches_[body] = HeldWrench{{force, torque, Vec3::Zero(), axes->frame}, simTime(), *axes};
-}
-
-// ------------------------------------------------------------------ scene
-
-void SimNode::publishScene() {
-  visualization_msgs::MarkerArray markers;
-  visualization_msgs::Marker base = newMarker(settings_.world_frame, "scene", {0.6f, 0.6f, 0.65f, 0.8f});
-  for (const core::Sdf& item : model_.scene()) {
-    if (item.kind() == core::Sdf::Kind::kPlane) {
-      // A thin square slab standing for the half-space's surface.
-      visualization_msgs::Marker m = base;
-      m.id = static_cast<int>(markers.markers.size());
-      m.type = visualization_msgs::Marker::CUBE;
-      const Vec3 n = item.pose().q_WS * item.params();
-      m.pose = toPose(item.pose().p_WS - 0.0005 * n, Quat::FromTwoVectors(Vec3::UnitZ(), n));
-      m.scale.x = m.scale.y = settings_.scene_size;
-      m.scale.z = 0.001;
-      markers.markers.push_back(m);
-      continue;
-    }
-    appendSolidMarkers(item, core::Pose{}, base, settings_.scene_size, markers);
-  }
-  scene_pub_.publish(markers);
-}
-
-void SimNode::publishBodies() {
-  // A few distinct colours, in turn (rviz draws each body in its own frame,
-  // which tf moves: frame_locked).
-  static const std::array<std::array<float, 4>, 4> kColours = {
-      {{0.85f, 0.45f, 0.2f, 1.0f}, {0.25f, 0.55f, 0.85f, 1.0f}, {0.4f, 0.7f, 0.3f, 1.0f}, {0.75f, 0.3f, 0.6f, 1.0f}}};
-  visualization_msgs::MarkerArray markers;
-  for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
-    const core::BodyModel& b = model_.body(i);
-    if (b.solid_B.empty()) continue;  // points only: nothing solid to draw
-    visualization_msgs::Marker base = newMarker(frames_[i], b.name, kColours[i % kColours.size()]);
-    base.frame_locked = true;
-    visualization_msgs::MarkerArray mine;
-    appendSolidMarkers(b.solid_B.front(), core::Pose{b.q_LB, b.p_LB}, base, settings_.scene_size, mine);
-    markers.markers.insert(markers.markers.end(), mine.markers.begin(), mine.markers.end());
-  }
-  body_pub_.publish(markers);
 }
 
 }  // namespace rigid_body_sim::node

@@ -21,6 +21,9 @@ struct NodeSettings {
   double covariance = 1e-9;           ///< ~covariance: diagonal of the odometry covariances (ground truth)
   double scene_size = 20.0;           ///< ~scene_size: m, extent drawn for planes and unbounded shapes
   bool report_timing = false;         ///< ~report_timing: log the tick-period jitter at shutdown
+  /// ~config_file: the file these parameters were loaded from (the launch
+  /// files set it); relative `urdf` paths in `bodies` resolve from its folder.
+  std::string config_file;
 };
 
 struct NodeParams {

@@ -6,7 +6,9 @@
 #include <geometry_msgs/WrenchStamped.h>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
+#include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <chrono>
 #include <optional>
@@ -23,6 +25,7 @@
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/core/wrench_schedule.h"
 #include "rigid_body_sim/ros/params.h"
+#include "rigid_body_sim/ros/sim_clock.h"
 
 namespace rigid_body_sim::node {
 
@@ -39,12 +42,15 @@ class SimNode {
  private:
   // Stepping and publishing.
   double simTime() const { return static_cast<double>(steps_) * model_.dt(); }
-  ros::Time stamp() const;
+  /// The node's clock now (the stamp of the current state).
+  ros::Time stamp() const { return ros::Time().fromNSec(clock_.stampAt(steps_)); }
+  /// stamp() for messages: "S.NNNNNNNNN s".
+  std::string now() const { return formatStamp(clock_.stampAt(steps_)) + " s"; }
   void stepOnce();
   void publish();
   void publishClock();
-  void publishScene();
-  void publishBodies();  ///< each body's solid, in its frame (latched)
+  void publishFixedFrames();  ///< links fixed to a body, on /tf_static
+  void resendMarkersIfDue();
 
   // Requests. Each validates first: a refused request changes nothing.
   bool applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res);
@@ -79,7 +85,10 @@ class SimNode {
   std::optional<Target> findTarget(const std::string& body, const std::string& frame, std::string& error) const;
   /// `body`'s state for a message, its twist in `axes`.
   BodyState bodyState(int body, const Axes& axes) const;
-  void rebaseClock();
+  /// The loop paces sim time against the wall clock from now on, and,
+  /// unless paused, the wall-anchored clock is re-anchored. Returns how long
+  /// (s) the loop waits for the wall clock to catch up with the node's clock.
+  double rebaseClock();
 
   ros::NodeHandle nh_, pnh_;
   NodeParams params_;
@@ -104,6 +113,7 @@ class SimNode {
   bool paused_ = false;
   bool use_sim_time_ = false;
   long long steps_ = 0;  ///< steps since start: sim time = steps × dt, also across resets
+  SimClock clock_;       ///< what every stamp and every time a user reads or gives is on
   long long publish_every_ = 1;
   ros::Time last_published_;
 
@@ -115,6 +125,13 @@ class SimNode {
   std::vector<ros::Publisher> odom_pubs_;  ///< per body
   ros::Publisher clock_pub_, scene_pub_, body_pub_;
   tf2_ros::TransformBroadcaster tf_;
+  tf2_ros::StaticTransformBroadcaster static_tf_;
+  visualization_msgs::MarkerArray scene_markers_, body_markers_;
+  struct MarkersResend {
+    ros::WallTime connected;  ///< when a subscriber to the markers connected
+    int publishes = 0;        ///< tf publications since
+  };
+  std::optional<MarkersResend> markers_resend_;
   std::vector<ros::Subscriber> wrench_subs_;  ///< per body
   std::vector<ros::ServiceServer> services_;
 };

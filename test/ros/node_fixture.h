@@ -1,0 +1,115 @@
+// The fixture of the node's rostests: a test node that waits for sim_node's
+// services and calls them as a user would.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <std_srvs/Trigger.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <functional>
+#include <string>
+
+#include "rigid_body_sim/ApplyImpulse.h"
+#include "rigid_body_sim/ApplyWrench.h"
+#include "rigid_body_sim/GetState.h"
+#include "rigid_body_sim/Step.h"
+
+namespace rbs_test {
+
+using rigid_body_sim::BodyState;
+
+inline constexpr double kG = 9.81;
+inline constexpr double kDt = 1e-3;
+inline const std::string kLink = "base_link";
+
+inline geometry_msgs::Vector3 vec(double x, double y, double z) {
+  geometry_msgs::Vector3 v;
+  v.x = x;
+  v.y = y;
+  v.z = z;
+  return v;
+}
+
+/// Waits (wall time) until `done` or `seconds` pass, spinning callbacks.
+inline bool spinUntil(const std::function<bool()>& done, double seconds) {
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+  while (ros::ok() && ros::WallTime::now() < end) {
+    ros::spinOnce();
+    if (done()) return true;
+    ros::WallDuration(0.002).sleep();
+  }
+  return done();
+}
+
+class Node : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    for (const char* s : {"get_state", "set_state", "apply_wrench", "apply_impulse", "clear_wrenches", "step", "pause",
+                          "unpause", "reset"}) {
+      ASSERT_TRUE(ros::service::waitForService(std::string("/sim_node/") + s, 30000)) << s;
+    }
+  }
+
+  template <class Srv>
+  Srv call(const std::string& name, Srv srv) {
+    EXPECT_TRUE(ros::service::call("/sim_node/" + name, srv)) << name;
+    return srv;
+  }
+
+  bool trigger(const std::string& name) {
+    std_srvs::Trigger t;
+    EXPECT_TRUE(ros::service::call("/sim_node/" + name, t)) << name;
+    return t.response.success;
+  }
+
+  BodyState state(const std::string& frame = "") {
+    rigid_body_sim::GetState s;
+    s.request.frame = frame;
+    s = call("get_state", s);
+    EXPECT_TRUE(s.response.success) << s.response.message;
+    return s.response.state;
+  }
+
+  /// The message a latched MarkerArray topic holds (empty if none came in 10 s).
+  visualization_msgs::MarkerArray latchedMarkers(const std::string& topic) {
+    visualization_msgs::MarkerArray markers;
+    bool got = false;
+    const ros::Subscriber sub = nh_.subscribe<visualization_msgs::MarkerArray>(
+        topic, 1, [&](const visualization_msgs::MarkerArray::ConstPtr& m) {
+          markers = *m;
+          got = true;
+        });
+    EXPECT_TRUE(spinUntil([&] { return got; }, 10.0)) << topic;  // latched: no need to wait for a change
+    return markers;
+  }
+
+  rigid_body_sim::Step::Response step(int n) {
+    rigid_body_sim::Step s;
+    s.request.steps = n;
+    return call("step", s).response;
+  }
+
+  rigid_body_sim::ApplyWrench::Response wrench(const std::string& frame, const geometry_msgs::Vector3& force,
+                                               double duration, const geometry_msgs::Vector3& torque = vec(0, 0, 0)) {
+    rigid_body_sim::ApplyWrench w;
+    w.request.frame = frame;
+    w.request.force = force;
+    w.request.torque = torque;
+    w.request.duration = ros::Duration(duration);
+    return call("apply_wrench", w).response;
+  }
+
+  rigid_body_sim::ApplyImpulse::Response impulse(const std::string& frame, const geometry_msgs::Vector3& linear,
+                                                 const geometry_msgs::Point& point = geometry_msgs::Point()) {
+    rigid_body_sim::ApplyImpulse i;
+    i.request.frame = frame;
+    i.request.linear = linear;
+    i.request.point = point;
+    return call("apply_impulse", i).response;
+  }
+
+  ros::NodeHandle nh_;
+};
+
+}  // namespace rbs_test
