@@ -116,6 +116,8 @@ void expectThrowsWith(const std::function<void()>& fn, std::initializer_list<std
   } catch (const E& e) {
     const std::string what = e.what();
     for (const std::string& p : parts) EXPECT_NE(what.find(p), std::string::npos) << "'" << p << "' not in: " << what;
+    // Read in plain terminals and rosconsole, which show other bytes as '?'.
+    for (const unsigned char c : what) ASSERT_TRUE(c >= 0x20 && c < 0x7f) << "not plain ASCII: " << what;
   }
 }
 

@@ -54,12 +54,12 @@ void validateInertia(const Mat3& I, const std::string& field, bool allow_zero) {
   if (allow_zero ? m(0) < -tol : !(m(0) > tol)) {
     detail::fail(field, detail::str(I),
                  std::string("must be positive ") + (allow_zero ? "semi-definite" : "definite") +
-                     " (smallest principal moment " + detail::str(m(0)) + " kg·m²)");
+                     " (smallest principal moment " + detail::str(m(0)) + " kg*m^2)");
   }
   if (m(0) + m(1) < m(2) - tol) {
     detail::fail(field, detail::str(I),
                  "violates the triangle inequality of principal moments: " + detail::str(m(0)) + " + " +
-                     detail::str(m(1)) + " < " + detail::str(m(2)) + " kg·m² (no mass distribution has it)");
+                     detail::str(m(1)) + " < " + detail::str(m(2)) + " kg*m^2 (no mass distribution has it)");
   }
 }
 

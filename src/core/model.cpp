@@ -151,20 +151,20 @@ BodyModel buildBody(const BodySpec& spec) {
 void validateDamping(const Damping& d, double dt, const std::vector<BodyModel>& bodies) {
   detail::requireNonNegative(d.linear_rate, "damping.linear", "1/s");
   detail::requireNonNegative(d.angular_rate, "damping.angular", "1/s");
-  detail::requireNonNegative(d.linear_drag, "damping.linear_drag", "N·s/m");
-  detail::requireNonNegative(d.angular_drag, "damping.angular_drag", "N·m·s/rad");
+  detail::requireNonNegative(d.linear_drag, "damping.linear_drag", "N*s/m");
+  detail::requireNonNegative(d.angular_drag, "damping.angular_drag", "N*m*s/rad");
   // The explicit drag step v ← v (1 − σΔt/M) reverses v when σΔt/M ≥ 1.
   for (const BodyModel& b : bodies) {
     const double lin = d.linear_drag * dt * b.inv_mass;
     const double ang = d.angular_drag * dt * b.inv_inertia_B.maxCoeff();
     if (lin >= 1.0) {
       detail::fail("damping.linear_drag", detail::str(d.linear_drag),
-                   "σ·dt/mass = " + detail::str(lin) + " >= 1 for body '" + b.name +
+                   "sigma*dt/mass = " + detail::str(lin) + " >= 1 for body '" + b.name +
                        "' (explicit drag would reverse the velocity; use damping.linear, a decay rate)");
     }
     if (ang >= 1.0) {
       detail::fail("damping.angular_drag", detail::str(d.angular_drag),
-                   "σ·dt/I_min = " + detail::str(ang) + " >= 1 for body '" + b.name +
+                   "sigma*dt/I_min = " + detail::str(ang) + " >= 1 for body '" + b.name +
                        "' (explicit drag would reverse the spin; use damping.angular, a decay rate)");
     }
   }
@@ -180,9 +180,9 @@ void validateContact(const ContactSettings& c) {
   if (c.iterations < 1) detail::fail("contact.iterations", std::to_string(c.iterations), "must be >= 1");
   detail::requireNonNegative(c.position_slop, "contact.position_slop", "m");
   detail::requirePositive(c.penalty_stiffness, "contact.penalty_stiffness", "N/m");
-  detail::requireNonNegative(c.penalty_damping, "contact.penalty_damping", "N·s/m");
+  detail::requireNonNegative(c.penalty_damping, "contact.penalty_damping", "N*s/m");
   detail::requirePositive(c.penalty_buffer, "contact.penalty_buffer", "m");
-  detail::requirePositive(c.barrier_strength, "contact.barrier_strength", "N·m");
+  detail::requirePositive(c.barrier_strength, "contact.barrier_strength", "N*m");
   detail::requirePositive(c.barrier_buffer, "contact.barrier_buffer", "m");
 }
 

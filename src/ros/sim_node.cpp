@@ -374,7 +374,7 @@ bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res)
   const auto [body, axes] = *target;
   const Vec3 force = fromVector3(req.force), torque = fromVector3(req.torque), point = fromPoint(req.point);
   res.message =
-      firstProblem({checkVector(force, kMaxForce, "force", "N"), checkVector(torque, kMaxTorque, "torque", "N·m"),
+      firstProblem({checkVector(force, kMaxForce, "force", "N"), checkVector(torque, kMaxTorque, "torque", "N*m"),
                     checkVector(point, kMaxPosition, "point", "m")});
   if (!res.message.empty()) return true;
   const double duration = req.duration.toSec();
@@ -420,8 +420,8 @@ bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& r
   if (!target) return true;
   const auto [body, axes] = *target;
   const Vec3 linear = fromVector3(req.linear), angular = fromVector3(req.angular), point = fromPoint(req.point);
-  res.message = firstProblem({checkVector(linear, kMaxImpulse, "linear", "N·s"),
-                              checkVector(angular, kMaxImpulse, "angular", "N·m·s"),
+  res.message = firstProblem({checkVector(linear, kMaxImpulse, "linear", "N*s"),
+                              checkVector(angular, kMaxImpulse, "angular", "N*m*s"),
                               checkVector(point, kMaxPosition, "point", "m")});
   if (!res.message.empty()) return true;
   core::BodyState after = state_.bodies[body];
@@ -562,7 +562,7 @@ void SimNode::onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& m
   const auto axes = findFrame(msg->header.frame_id, body, why);
   const Vec3 force = fromVector3(msg->wrench.force), torque = fromVector3(msg->wrench.torque);
   if (why.empty()) why = checkVector(force, kMaxForce, "force", "N");
-  if (why.empty()) why = checkVector(torque, kMaxTorque, "torque", "N·m");
+  if (why.empty()) why = checkVector(torque, kMaxTorque, "torque", "N*m");
   if (!why.empty()) {
     ROS_WARN_THROTTLE(1.0, "sim_node: wrench for '%s' ignored: %s", model_.body(body).name.c_str(), why.c_str());
     return;

@@ -16,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -87,6 +88,9 @@ Args parseArgs(int argc, char** argv) {
       a.quiet = true;
       continue;
     }
+    static const std::set<std::string> kTakesValue = {"--urdf", "--config", "--set", "--duration",
+                                                      "--dt",   "--csv",    "--every"};
+    if (kTakesValue.count(flag) == 0) throw UsageError("unknown argument '" + flag + "' (see rbsim --help)");
     if (i + 1 >= argc) throw UsageError(flag + ": missing value (see rbsim --help)");
     const std::string value = argv[++i];
     if (flag == "--urdf")
@@ -105,8 +109,6 @@ Args parseArgs(int argc, char** argv) {
       const double n = parsePositive(flag, value);
       if (n != std::floor(n)) throw UsageError("--every: expected a whole number > 0, got '" + value + "'");
       a.every = static_cast<long long>(n);
-    } else {
-      throw UsageError("unknown argument '" + flag + "' (see rbsim --help)");
     }
   }
   if (a.duration < 0.0) throw UsageError("--duration S is required (see rbsim --help)");

@@ -68,10 +68,10 @@ TEST(ModelValidation, Damping) {
   expectRefused(s, {"damping.angular = inf"});
   s = good();
   s.damping.linear_drag = 2000.0;  // σ Δt / M = 2
-  expectRefused(s, {"damping.linear_drag = 2000", "σ·dt/mass = 2", "damping.linear"});
+  expectRefused(s, {"damping.linear_drag = 2000", "sigma*dt/mass = 2", "damping.linear"});
   s = good();
   s.damping.angular_drag = 10.0;  // σ Δt / I_min = 10·1e-3/0.0041667 = 2.4
-  expectRefused(s, {"damping.angular_drag = 10", "σ·dt/I_min"});
+  expectRefused(s, {"damping.angular_drag = 10", "sigma*dt/I_min"});
 }
 
 TEST(ModelValidation, NoBodies) {

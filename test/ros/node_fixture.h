@@ -31,6 +31,15 @@ inline geometry_msgs::Vector3 vec(double x, double y, double z) {
   return v;
 }
 
+/// Whether `text` is printable ASCII (rosconsole shows other bytes as '?',
+/// rosservice as escapes).
+inline bool plainAscii(const std::string& text) {
+  for (const unsigned char c : text) {
+    if (c < 0x20 || c >= 0x7f) return false;
+  }
+  return true;
+}
+
 /// Waits (wall time) until `done` or `seconds` pass, spinning callbacks.
 inline bool spinUntil(const std::function<bool()>& done, double seconds) {
   const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);

@@ -309,6 +309,7 @@ TEST_F(BadRequests, AreRefusedWithAMessageAndChangeNothing) {
   auto refused = [&](bool success, const std::string& message, const std::string& what) {
     EXPECT_FALSE(success) << what;
     EXPECT_FALSE(message.empty()) << what;
+    EXPECT_TRUE(plainAscii(message)) << what << ": " << message;
     const BodyState now = state();
     EXPECT_EQ(now.pose, before.pose) << what;
     EXPECT_EQ(now.twist, before.twist) << what;
@@ -335,6 +336,7 @@ TEST_F(BadRequests, AreRefusedWithAMessageAndChangeNothing) {
   refused(i.success, i.message, "NaN impulse");
   i = impulse("world", vec(0, 1e9, 0));
   refused(i.success, i.message, "absurd impulse");
+  EXPECT_NE(i.message.find("N*s"), std::string::npos) << i.message;
   i = impulse("odom", vec(0, 1, 0));
   refused(i.success, i.message, "unknown impulse frame");
   rigid_body_sim::SetState set;  // an all-zero quaternion: not an orientation

@@ -171,6 +171,8 @@ TEST(Rbsim, BadInputIsOneLineAndExitCodeTwo) {
   expectUsageError("--urdf " + kBox + " --duration -1", "--duration: expected a number > 0, got '-1'");
   expectUsageError("--urdf " + kBox + " --duration 1 --every 2.5", "--every: expected a whole number");
   expectUsageError("--urdf " + kBox + " --duration 1 --frobnicate 3", "unknown argument '--frobnicate'");
+  expectUsageError("--urdf " + kBox + " --duration 1 --bogus", "unknown argument '--bogus'");  // last, no value
+  expectUsageError("--urdf " + kBox + " --duration", "--duration: missing value");
   expectUsageError("--urdf /nonexistent.urdf --duration 1", "cannot read URDF '/nonexistent.urdf'");
   expectUsageError("--urdf " + kBox + " --config /nonexistent.yaml --duration 1", "cannot read config");
   expectUsageError("--urdf " + kBox + " --set dampign.linear=1 --duration 1", "config key 'dampign'");
