@@ -1,5 +1,5 @@
 // Contact benchmarks (issue 3), Google Benchmark; run through bench/run.sh.
-//  - BM_BoxDrop: the issue box (half extents 0.2 × 0.1 × 0.05 m, 1 kg)
+//  - BM_BoxDrop: the shipped box (half extents 0.2 × 0.1 × 0.05 m, 1 kg)
 //    dropped from 1 m, tumbling, onto the ground; 10 s at Δt = 1 ms, with and
 //    without sleeping. Counters: ns per step, deepest penetration (mm), time
 //    from the first impact until it stops moving (s).

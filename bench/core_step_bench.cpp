@@ -8,7 +8,7 @@ namespace {
 using namespace rigid_body_sim::core;
 
 /// The issues' box: half extents 0.2 × 0.1 × 0.05 m, 1 kg, Δt = 1 ms.
-ModelSpec issueBox(bool gyroscopic, const Vec3& gravity) {
+ModelSpec shippedBox(bool gyroscopic, const Vec3& gravity) {
   BodySpec b;
   b.mass = 1.0;
   b.I_C_L = Vec3(0.0125 / 3.0, 0.0425 / 3.0, 0.05 / 3.0).asDiagonal();
@@ -39,19 +39,19 @@ void runSpin(benchmark::State& bench, const Model& model, const Loads& loads) {
 }
 
 void BM_TorqueFreeSpin(benchmark::State& bench) {
-  const Model model(issueBox(true, Vec3::Zero()));
+  const Model model(shippedBox(true, Vec3::Zero()));
   runSpin(bench, model, {});
 }
 BENCHMARK(BM_TorqueFreeSpin);
 
-void BM_TorqueFreeSpin_NotesMode(benchmark::State& bench) {
-  const Model model(issueBox(false, Vec3::Zero()));
+void BM_TorqueFreeSpin_GyroscopeOff(benchmark::State& bench) {
+  const Model model(shippedBox(false, Vec3::Zero()));
   runSpin(bench, model, {});
 }
-BENCHMARK(BM_TorqueFreeSpin_NotesMode);
+BENCHMARK(BM_TorqueFreeSpin_GyroscopeOff);
 
 void BM_SpinWithGravityAndBodyWrench(benchmark::State& bench) {
-  const Model model(issueBox(true, Vec3(0, 0, -9.81)));
+  const Model model(shippedBox(true, Vec3(0, 0, -9.81)));
   Loads loads(1);
   addWrench(model.body(0), loads[0], {Vec3(0.1, 0, 0), Vec3(0, 0, 0.001), Vec3(0.1, 0, 0), Frame::kBody});
   runSpin(bench, model, loads);

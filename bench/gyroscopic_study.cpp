@@ -1,7 +1,7 @@
 // The measurement behind the gyroscopic integrator (issue 2: "measure and
 // choose"). Runs the issue's flipping spin, the box of half extents
 // 0.2 × 0.1 × 0.05 m, 1 kg, from ω₀ = (0.01, 3, 0) for 20 s, with:
-//   notes          the notes' integrator, no gyroscopic term (core, gyroscopic: false)
+//   notes          no gyroscopic term, as the original notes (core, gyroscopic: false)
 //   world-L Euler  L carried in the world, ω = R I⁻¹ Rᵀ L at the new orientation
 //   world-L mid    L in the world, ω evaluated at the mid-step orientation
 //   Bullet         implicit Euler in the body frame, one Newton step (Bullet's default)

@@ -12,7 +12,7 @@ echo "== core step, one body (Google Benchmark, median of $REPS)"
 "$BIN/bench_core_step" --benchmark_repetitions="$REPS" --benchmark_report_aggregates_only=true 2>/dev/null |
   grep -E '_median|^Benchmark'
 
-echo "== rbsim whole run: torque-free spin of the issue box, 20 s at 1 ms, output excluded (median of $REPS)"
+echo "== rbsim whole run: torque-free spin of the shipped box, 20 s at 1 ms, output excluded (median of $REPS)"
 for i in $(seq "$REPS"); do
   "$BIN/rbsim" --urdf "$RBS_ROOT/urdf/box.urdf" --config "$RBS_ROOT/config/spin.yaml" --duration 20 --quiet
 done | /usr/bin/python3 -c '

@@ -63,11 +63,26 @@ rbs_install_packages() {
   rbs_phase "installing the Debian packages it needs (${#missing[@]} missing; apt-get, a few minutes on a fresh machine)" apt.log rbs_apt
 }
 
+# The workspace's source space: .ws/src/rigid_body_sim holds a link to every
+# top-level entry of the checkout but .ws and .git. (A link to the checkout
+# itself would loop, .ws/src/rigid_body_sim/.ws/src/..., and rosrun's
+# `find -L` would warn "File system loop detected" at every call.)
+rbs_link_sources() {
+  local dir="$RBS_WS/src/rigid_body_sim" entry name
+  [ ! -L "$dir" ] || rm "$dir"
+  mkdir -p "$dir"
+  find "$dir" -mindepth 1 -maxdepth 1 -type l -delete
+  for entry in "$RBS_ROOT"/* "$RBS_ROOT"/.[!.]*; do
+    name=${entry##*/}
+    case "$name" in .ws | .git | ".[!.]*") continue ;; esac
+    [ -e "$entry" ] && ln -s "$entry" "$dir/$name"
+  done
+}
+
 # Builds into .ws/ (catkin_make, $RBS_BUILD_TYPE); extra arguments are
 # catkin_make targets, e.g. `tests`.
 rbs_build() {
-  mkdir -p "$RBS_WS/src"
-  ln -sfn "$RBS_ROOT" "$RBS_WS/src/rigid_body_sim"
+  rbs_link_sources
   local what="building ${*:-the package} into ${RBS_WS#"$PWD"/} ($RBS_BUILD_TYPE; about 2-3 minutes the first time on 2 cores)"
   [ -f "$RBS_WS/devel/lib/rigid_body_sim/sim_node" ] && what="building ${*:-the package} (only what changed)"
   rbs_phase "$what" "build${1:+_$1}.log" \

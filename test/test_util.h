@@ -24,8 +24,8 @@ inline Mat3 boxInertia(double mass, const Vec3& half) {
   return (mass / 3.0 * Vec3(h2.y() + h2.z(), h2.x() + h2.z(), h2.x() + h2.y())).asDiagonal();
 }
 
-/// The issues' test box: half extents 0.2 × 0.1 × 0.05 m, 1 kg.
-inline core::BodySpec issueBox() {
+/// The shipped box (urdf/box.urdf): half extents 0.2 × 0.1 × 0.05 m, 1 kg.
+inline core::BodySpec shippedBox() {
   core::BodySpec b;
   b.name = "box";
   b.mass = 1.0;

@@ -1,5 +1,6 @@
-// The impulse response (the notes' K J = Δv for every contact together, by
-// projected Gauss-Seidel over islands) and the position correction after it.
+// The impulse response (K J = Δv for every contact together, by projected
+// Gauss-Seidel over islands; docs/physics.md §5.5) and the position
+// correction after it (§5.8).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -221,7 +222,7 @@ double prepareSide(const Vec3& r, const SolverContact& c, double inv_mass, const
   return inv_mass + side.rn.dot(side.turn_n);
 }
 
-/// The entries of the notes' K = M⁻¹𝐈 − r* I⁻¹ r* a contact's solve needs
+/// The entries of K = M⁻¹𝟙 − [r]× I⁻¹ [r]× (docs/physics.md §5.5) a contact's solve needs
 /// (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n), and TᵀKT likewise, with the other body's
 /// terms added), and its target normal velocity. A sleeping body is part of
 /// the ground: no mass terms. `previous` is the solver contact before it

@@ -18,7 +18,7 @@ void accumulatePenaltyForces(const Model& model, const State& state, const Works
     double fn = 0.0;
     if (barrier) {
       if (phi >= cs.barrier_buffer) continue;
-      // The notes' ρ/φ, shifted to vanish at the buffer's edge; φ > 0 is kept by step control.
+      // ρ/φ, shifted to vanish at the buffer's edge; φ > 0 is kept by step control (docs/physics.md §7.2).
       fn = cs.barrier_strength * (1.0 / std::max(phi, 1e-9) - 1.0 / cs.barrier_buffer);
     } else {
       if (phi >= cs.penalty_buffer) continue;

@@ -19,7 +19,7 @@ Mat3 polarRotation(const Mat3& A) {
 
 namespace {
 
-/// The notes' particle response at a vertex inside the scene: reflect the
+/// The particle response at a vertex inside the scene (docs/physics.md §7.3): reflect the
 /// normal velocity (restitution above the threshold) and scale the
 /// tangential one by a = max(1 − μ_T(1+μ_N)|v_N|/|v_T|, 0).
 Vec3 respond(const Vec3& v, const Vec3& n, double restitution, double friction, double threshold) {

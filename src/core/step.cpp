@@ -1,6 +1,6 @@
-// The simulator loop of the notes (rigid_body_notes.md, "Simulator loop"),
-// one named stage per line of advance(), plus what the notes leave out
-// (ERRATA.md): the gyroscopic term, contacts, sleeping.
+// The simulator loop, one named stage per line of advance(), in the order of
+// docs/physics.md §4: Euler-Cromer integration with the gyroscopic term,
+// contacts and sleep.
 #include "rigid_body_sim/core/step.h"
 
 #include <cmath>
@@ -32,8 +32,8 @@ void wakeLoadedBodies(State& state, const Loads& loads) {
   }
 }
 
-// F = −σ v + F_ext (+ penalty),  τ = −σ_ω ω + τ_ext (+ penalty); the notes'
-// τᵢ = (R rᵢ) × Fᵢ has been reduced to the centre of mass by addWrench().
+// F = −σ v + F_ext (+ penalty),  τ = −σ_ω ω + τ_ext (+ penalty) (docs/physics.md
+// §5.2); a force's r × F has been reduced to the centre of mass by addWrench().
 NetLoad accumulateForces(const Model& model, const State& state, const BodyLoad* load, const Workspace& ws, int body) {
   const Damping& damping = model.damping();
   const BodyState& s = state.bodies[body];
@@ -53,15 +53,15 @@ NetLoad accumulateForces(const Model& model, const State& state, const BodyLoad*
   return net;
 }
 
-// v_{n+1} = v_n + h (g + F/M);  ω_{n+1} = ω_n + h I⁻¹ τ.
-// In the body frame I is constant and diagonal: the notes' I_n = R I_ref Rᵀ
-// and its inverse are never formed.
+// v_{n+1} = v_n + h (g + F/M);  ω_{n+1} = ω_n + h I⁻¹ τ (docs/physics.md §5.3).
+// In the body frame I is constant and diagonal: the world tensor R I Rᵀ and
+// its inverse are never formed.
 void integrateVelocities(const Model& model, const BodyModel& b, const NetLoad& net, double h, BodyState& s) {
   s.v_WB += h * (model.gravity() + b.inv_mass * net.force_W);
   s.w_B += h * b.inv_inertia_B.cwiseProduct(net.torque_B);
 }
 
-// v ← α v with α = e^(−k h): the notes' decay coefficient, made independent of h.
+// v ← e^(−k h) v: a decay rate, independent of h (docs/physics.md §5.4).
 void applyDamping(const Model& model, double h, BodyState& s) {
   const Damping& d = model.damping();
   if (d.linear_rate != 0.0) s.v_WB *= h == model.dt() ? model.linearDecay() : std::exp(-d.linear_rate * h);
@@ -89,17 +89,17 @@ bool solveMidpoint(const Vec3& Pi, const Vec3& c, Vec3& u) {
   return false;
 }
 
-// The gyroscopic term −ω × (I ω) of Euler's equation, which the notes leave
-// out. Returns the body-frame rotation of this step as the (unnormalized)
+// The gyroscopic term −ω × (I ω) of Euler's equation (docs/physics.md §5.6).
+// Returns the body-frame rotation of this step as the (unnormalized)
 // quaternion increment [1, h/2 Ω] and updates w_B.
 //
 // Why implicit midpoint: it conserves both quadratic invariants of the free
 // rigid body, |Π| and the energy ½ ΠᵀI⁻¹Π, and its update is exactly
 // Π_{n+1} = cay(−h Ω̂_m) Π_n with Ω_m = I⁻¹(Π_n + Π_{n+1})/2. Rotating the
-// body by cay(h Ω̂_m), which is the notes' quaternion update evaluated with
+// body by cay(h Ω̂_m), which is the quaternion update of §5.7 evaluated with
 // Ω_m, therefore leaves the world angular momentum R Π unchanged. First-order
 // variants drift about 1% in energy over 20 s (bench/README.md).
-// Gyroscopic off: Ω = ω_{n+1}, the notes exactly.
+// Gyroscopic off: Ω = ω_{n+1}, exact only for isotropic inertia.
 Quat gyroscopicRotation(const Model& model, const BodyModel& b, double h, BodyState& s) {
   if (!model.gyroscopic()) {
     const Vec3 half = 0.5 * h * s.w_B;
@@ -130,8 +130,8 @@ Quat gyroscopicRotation(const Model& model, const BodyModel& b, double h, BodySt
 // x_{n+1} = x_n + h v_{n+1}.
 void integratePosition(double h, BodyState& s) { s.p_WB += h * s.v_WB; }
 
-// q_{n+1} = q_n + [0, h/2 ω] × q_n, then normalize (ERRATA: it drifts off
-// the unit sphere otherwise).
+// q_{n+1} = q_n ⊗ [1, h/2 Ω], then normalize: the update drifts off the unit
+// sphere otherwise (docs/physics.md §5.7).
 void integrateOrientation(const Quat& increment, BodyState& s) {
   s.q_WB = s.q_WB * increment;
   s.q_WB.coeffs() *= 1.0 / std::sqrt(s.q_WB.squaredNorm());

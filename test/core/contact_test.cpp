@@ -15,7 +15,7 @@ namespace rigid_body_sim::test {
 namespace {
 
 constexpr double kG = 9.81;
-const Vec3 kHalf(0.2, 0.1, 0.05);  // the issue box
+const Vec3 kHalf(0.2, 0.1, 0.05);  // the shipped box (urdf/box.urdf)
 
 core::ContactSettings impulse(double restitution, double friction) {
   core::ContactSettings c;
@@ -102,7 +102,7 @@ Drop drop(const core::Model& model, const Quat& q, const Vec3& w, double duratio
 TEST(Friction, ALandingCornerGetsTheFullImpulseAgainstTheSlipItLeaves) {
   const double mu = 0.5;
   // Without the gyroscopic term the velocities after the step are those the
-  // solve left (the notes' rotation turns the body about ω itself).
+  // solve left (the quaternion update turns the body about ω itself).
   core::ModelSpec ms = onGround(boxBody(kHalf), impulse(0.0, mu));
   ms.gyroscopic = false;
   const core::Model model(ms);

@@ -99,7 +99,7 @@ TEST(Wrench, BodyFrameForceFollowsTheRotatedAxis) {
   // gazebo_ros_pkgs #310: a body-frame force on a body turned 90° about z
   // must push along world +y, not world +x.
   const double dt = 1e-3;
-  const core::Model model(spec(issueBox(), dt, Vec3::Zero()));
+  const core::Model model(spec(shippedBox(), dt, Vec3::Zero()));
   core::LinkState link;
   link.q_WL = Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ()));
   core::State s = stateOf(model, link);

@@ -10,13 +10,13 @@
 namespace rigid_body_sim::test {
 namespace {
 
-core::ModelSpec good() { return spec(issueBox(), 1e-3, Vec3(0, 0, -9.81)); }
+core::ModelSpec good() { return spec(shippedBox(), 1e-3, Vec3(0, 0, -9.81)); }
 
 void expectRefused(const core::ModelSpec& s, std::initializer_list<std::string> parts) {
   expectThrowsWith<std::invalid_argument>([&] { core::Model m(s); }, parts);
 }
 
-TEST(ModelValidation, AcceptsTheIssueBox) { EXPECT_NO_THROW(core::Model m(good())); }
+TEST(ModelValidation, AcceptsTheShippedBox) { EXPECT_NO_THROW(core::Model m(good())); }
 
 TEST(ModelValidation, Mass) {
   for (double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {

@@ -1,6 +1,6 @@
 // Rotational motion: torque-free conservation, the intermediate-axis flip
-// against its elliptic-integral solution, the symmetric top, and the notes'
-// gyroscope-free mode.
+// against its elliptic-integral solution, the symmetric top, and the
+// gyroscope-free mode (docs/physics.md §5.6).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -65,7 +65,7 @@ TEST(TorqueFree, ConservesEnergyAndWorldAngularMomentum) {
   // Bounds reached (measured: about 2e-12 at 1 ms, 2e-13 at 10 ms); the
   // engines in issue 2 drift about 1e-2 in energy on this spin.
   for (double dt : {1e-3, 1e-2}) {
-    const core::Model model(spec(issueBox(), dt, Vec3::Zero()));
+    const core::Model model(spec(shippedBox(), dt, Vec3::Zero()));
     core::State s = spinning(model, Vec3(0.01, 3.0, 0.0));
     const double e0 = core::totalEnergy(model, s);
     const Vec3 l0 = core::angularMomentumWorld(model.body(0), s.bodies[0]);
@@ -82,7 +82,7 @@ TEST(TorqueFree, ConservesEnergyAndWorldAngularMomentum) {
 }
 
 TEST(IntermediateAxis, FlipsAtTheClosedFormTimes) {
-  const core::Model model(spec(issueBox(), 1e-3, Vec3::Zero()));
+  const core::Model model(spec(shippedBox(), 1e-3, Vec3::Zero()));
   const Vec3 w0(0.01, 3.0, 0.0);
   const FlipPrediction p = predictFlips(model.body(0).inertia_B, w0);
   const std::vector<double> flips = flipTimes(model, spinning(model, w0), 20.0);
@@ -95,7 +95,7 @@ TEST(IntermediateAxis, FlipsAtTheClosedFormTimes) {
 
 TEST(IntermediateAxis, FlipPeriodHoldsFromAnotherStart) {
   // A larger perturbation: more flips, a shorter period, same closed form.
-  const core::Model model(spec(issueBox(), 1e-3, Vec3::Zero()));
+  const core::Model model(spec(shippedBox(), 1e-3, Vec3::Zero()));
   const Vec3 w0(0.3, 2.0, 0.0);
   const FlipPrediction p = predictFlips(model.body(0).inertia_B, w0);
   const std::vector<double> flips = flipTimes(model, spinning(model, w0), 20.0);
@@ -117,7 +117,7 @@ TEST(IntermediateAxis, SeparatrixStartHasNoPeriod) {
 }
 
 TEST(IntermediateAxis, NoFlipWithoutTheGyroscopicTerm) {
-  const core::Model model(spec(issueBox(), 1e-3, Vec3::Zero(), /*gyroscopic=*/false));
+  const core::Model model(spec(shippedBox(), 1e-3, Vec3::Zero(), /*gyroscopic=*/false));
   const core::State start = spinning(model, Vec3(0.01, 3.0, 0.0));
   EXPECT_TRUE(flipTimes(model, start, 20.0).empty());
 }
@@ -141,10 +141,10 @@ TEST(SymmetricTop, BodyFramePrecessionRate) {
   EXPECT_NEAR(omegaBody(s).z(), 5.0, 1e-12);
 }
 
-TEST(NotesMode, GyroscopeOffReproducesTheNotes) {
-  // The notes: ω_{n+1} = ω_n + Δt I⁻¹τ (τ = 0 here), q_{n+1} = q_n + [0, Δt/2 ω] × q_n, normalized.
+TEST(GyroscopeOff, IsTheFirstOrderUpdate) {
+  // Without the gyroscopic term: ω_{n+1} = ω_n + Δt I⁻¹τ (τ = 0 here), q_{n+1} = q_n + [0, Δt/2 ω] × q_n, normalized.
   const double dt = 1e-3;
-  const core::Model model(spec(issueBox(), dt, Vec3::Zero(), /*gyroscopic=*/false));
+  const core::Model model(spec(shippedBox(), dt, Vec3::Zero(), /*gyroscopic=*/false));
   const Vec3 w(0.5, 3.0, -1.0);
   core::State s = spinning(model, w);
   Quat q = Quat::Identity();
@@ -158,7 +158,7 @@ TEST(NotesMode, GyroscopeOffReproducesTheNotes) {
   EXPECT_LT((core::angularVelocityWorld(s.bodies[0]) - w).norm(), 1e-12);
 }
 
-TEST(NotesMode, IsotropicBodyIsTheSameEitherWay) {
+TEST(GyroscopeOff, IsotropicBodyIsTheSameEitherWay) {
   // For a sphere ω × Iω = 0: the gyroscopic term changes nothing.
   core::BodySpec ball;
   ball.I_C_L = 0.4 * Mat3::Identity();

@@ -15,7 +15,7 @@ const Vec3 kGravity(0.0, 0.0, -9.81);
 
 TEST(FreeFall, FollowsTheEulerCromerRecurrence) {
   const double dt = 1e-3;
-  const core::Model model(spec(issueBox(), dt, kGravity));
+  const core::Model model(spec(shippedBox(), dt, kGravity));
   core::LinkState start;
   start.p_WL = Vec3(0.5, -1.0, 10.0);
   start.v_WL = Vec3(1.0, 2.0, 3.0);
@@ -33,7 +33,7 @@ TEST(FreeFall, FollowsTheEulerCromerRecurrence) {
 
 TEST(FreeFall, MatchesTheClosedFormWithinTheFirstOrderTerm) {
   for (double dt : {1e-3, 1e-2}) {
-    const core::Model model(spec(issueBox(), dt, kGravity));
+    const core::Model model(spec(shippedBox(), dt, kGravity));
     core::LinkState start;
     start.p_WL = Vec3(0, 0, 100);
     core::State s = stateOf(model, start);
@@ -50,7 +50,7 @@ TEST(FreeFall, MatchesTheClosedFormWithinTheFirstOrderTerm) {
 TEST(Projectile, ReachesTheApexOfTheClosedForm) {
   const double dt = 1e-3;
   const Vec3 v0(3.0, 0.0, 5.0);
-  const core::Model model(spec(issueBox(), dt, kGravity));
+  const core::Model model(spec(shippedBox(), dt, kGravity));
   core::LinkState start;
   start.v_WL = v0;
   core::State s = stateOf(model, start);
@@ -72,7 +72,7 @@ TEST(Projectile, ReachesTheApexOfTheClosedForm) {
 }
 
 TEST(Damping, DecayRateIsIndependentOfTheTimeStep) {
-  core::BodySpec body = issueBox();
+  core::BodySpec body = shippedBox();
   for (double dt : {1e-3, 1e-2, 0.1}) {
     core::ModelSpec ms = spec(body, dt, Vec3::Zero(), /*gyroscopic=*/false);
     ms.damping.linear_rate = 0.7;
@@ -91,7 +91,7 @@ TEST(Damping, DecayRateIsIndependentOfTheTimeStep) {
 
 TEST(Damping, DragForceFollowsTheNotesRecurrence) {
   const double dt = 1e-2, sigma = 0.5, mass = 2.0;
-  core::BodySpec body = issueBox();
+  core::BodySpec body = shippedBox();
   body.mass = mass;
   core::ModelSpec ms = spec(body, dt, Vec3::Zero());
   ms.damping.linear_drag = sigma;
@@ -107,7 +107,7 @@ TEST(Damping, DragForceFollowsTheNotesRecurrence) {
 }
 
 TEST(Quaternion, StaysUnitWhileTumbling) {
-  core::BodySpec body = issueBox();
+  core::BodySpec body = shippedBox();
   body.I_C_L(0, 1) = body.I_C_L(1, 0) = 0.001;  // off the principal axes as well
   const core::Model model(spec(body, 1e-2, kGravity));
   core::LinkState start;
@@ -120,7 +120,7 @@ TEST(Quaternion, StaysUnitWhileTumbling) {
 }
 
 TEST(Determinism, TwoRunsAreBitIdentical) {
-  core::BodySpec body = issueBox();
+  core::BodySpec body = shippedBox();
   body.I_C_L(0, 2) = body.I_C_L(2, 0) = 0.0007;
   core::ModelSpec ms = spec(body, 1e-3, kGravity);
   ms.damping.angular_rate = 0.01;
@@ -143,7 +143,7 @@ TEST(Determinism, TwoRunsAreBitIdentical) {
 TEST(Step, LargeSpinStaysFiniteAndConserving) {
   // Δt |ω| = 10 rad per step: the midpoint iteration cannot contract in one
   // step, so the step sub-divides; the state stays finite and the invariants hold.
-  const core::Model model(spec(issueBox(), 1e-2, Vec3::Zero()));
+  const core::Model model(spec(shippedBox(), 1e-2, Vec3::Zero()));
   core::LinkState start;
   start.w_W = Vec3(30.0, 1000.0, -20.0);
   core::State s = stateOf(model, start);

@@ -16,7 +16,7 @@ namespace {
 TEST(WrenchSchedule, DeliversForceTimesDurationOffTheStepGrid) {
   // 2 N for 0.0123 s from t = 0.0047: windows that cut steps in the middle.
   const double dt = 1e-3;
-  const core::Model model(spec(issueBox(), dt, Vec3::Zero()));
+  const core::Model model(spec(shippedBox(), dt, Vec3::Zero()));
   core::WrenchSchedule schedule;
   schedule.add(0, {Vec3(2, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, 0.0047, 0.0047 + 0.0123);
   core::State s = stateOf(model, core::LinkState{});
@@ -31,7 +31,7 @@ TEST(WrenchSchedule, DeliversForceTimesDurationOffTheStepGrid) {
 }
 
 TEST(WrenchSchedule, WrenchesAddAndClearPerBody) {
-  const core::Model model(spec(issueBox(), 1e-3, Vec3::Zero()));
+  const core::Model model(spec(shippedBox(), 1e-3, Vec3::Zero()));
   const core::State rest = stateOf(model, core::LinkState{});
   core::WrenchSchedule schedule;
   const double forever = core::WrenchSchedule::kForever;
@@ -56,8 +56,8 @@ TEST(WrenchSchedule, AWrenchInAnotherBodysAxesTurnsWithThatBody) {
   // θ = 2 atan(h ω / 2) (the quaternion update), so after n steps
   // v = (h F / M) Σₖ (cos kθ, sin kθ) = (h F / M) (1 − e^{inθ}) / (1 − e^{iθ}).
   const double dt = 1e-3, w = 3.0, F = 2.0;
-  core::ModelSpec two = spec(issueBox(), dt, Vec3::Zero());
-  two.bodies.push_back(issueBox());
+  core::ModelSpec two = spec(shippedBox(), dt, Vec3::Zero());
+  two.bodies.push_back(shippedBox());
   two.bodies[1].name = "spinner";
   const core::Model model(two);
   core::State s;

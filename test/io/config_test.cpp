@@ -125,12 +125,12 @@ TEST(Config, BadScenesAndContactsAreRefusedByKey) {
 
 TEST(Config, ContactValidationNamesTheField) {
   const io::SimConfig bad = parse("contact: {restitution: 1.5}");
-  expectThrowsWith<std::invalid_argument>([&] { io::buildModel(bad, issueBox()); },
+  expectThrowsWith<std::invalid_argument>([&] { io::buildModel(bad, shippedBox()); },
                                           {"contact.restitution = 1.5", "[0, 1]"});
   // The default scene (the ground) needs the body to have collision geometry.
-  expectThrowsWith<std::invalid_argument>([&] { io::buildModel(parse(""), issueBox()); },
+  expectThrowsWith<std::invalid_argument>([&] { io::buildModel(parse(""), shippedBox()); },
                                           {"body 'box'", "no <collision> geometry", "scene: []"});
-  EXPECT_NO_THROW(io::buildModel(parse("scene: []"), issueBox()));
+  EXPECT_NO_THROW(io::buildModel(parse("scene: []"), shippedBox()));
 }
 
 TEST(Config, ReadsEveryKey) {
@@ -254,7 +254,7 @@ TEST(Config, AWorldLoadsEveryBodyUnderItsName) {
 
 TEST(Config, ModelValidationNamesTheField) {
   const io::SimConfig c = parse("dt: -0.001\nscene: []");
-  expectThrowsWith<std::invalid_argument>([&] { io::buildModel(c, issueBox()); }, {"dt = -0.001", "> 0 s"});
+  expectThrowsWith<std::invalid_argument>([&] { io::buildModel(c, shippedBox()); }, {"dt = -0.001", "> 0 s"});
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ void expectRefused(const std::string& xml, std::initializer_list<std::string> pa
   expectThrowsWith<io::UrdfError>([&] { load(xml); }, parts);
 }
 
-TEST(UrdfLoader, ShippedBoxIsTheIssueBox) {
+TEST(UrdfLoader, ShippedBoxHasItsMassAndInertia) {
   const core::BodySpec b = io::loadUrdfFile(std::string(RBS_SOURCE_DIR) + "/urdf/box.urdf");
   EXPECT_EQ(b.name, "base_link");
   EXPECT_DOUBLE_EQ(b.mass, 1.0);

@@ -92,6 +92,13 @@ TEST(Rbsim, ReportsPenetrationAndRestOfADroppedBox) {
   EXPECT_LT(j["max_penetration"].as<double>(), 1e-3);
   const double z = seq(j["final"]["position"])[2];
   EXPECT_TRUE(std::abs(z - 0.05) < 1e-3 || std::abs(z - 0.1) < 1e-3 || std::abs(z - 0.2) < 1e-3) << z;
+  // The README's drop: the config names its body, no --urdf needed.
+  const Result drop = rbsim("--config " + std::string(RBS_SOURCE_DIR) + "/config/drop.yaml --duration 5 --quiet");
+  ASSERT_EQ(drop.code, 0) << drop.err;
+  const YAML::Node d = YAML::Load(drop.out);
+  EXPECT_TRUE(d["at_rest"].as<bool>());
+  const double dz = seq(d["bodies"][0]["final"]["position"])[2];
+  EXPECT_TRUE(std::abs(dz - 0.05) < 1e-3 || std::abs(dz - 0.1) < 1e-3 || std::abs(dz - 0.2) < 1e-3) << dz;
   // In the air the whole time: no contact, not at rest.
   const Result air = rbsim("--urdf " + kBox + " --set initial.position=[0,0,10] --duration 1 --quiet");
   const YAML::Node a = YAML::Load(air.out);

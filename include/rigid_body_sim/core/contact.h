@@ -1,5 +1,5 @@
 // Contacts with the static scene and between bodies: detection by signed
-// distance (detection.cpp), and the notes' responses: impulses and the
+// distance (detection.cpp), and the responses of docs/physics.md: impulses and the
 // position correction (contact_solver.cpp), penalties (penalty.cpp). Also
 // the step's scratch memory (Workspace). Shape matching is in
 // shape_matching.h.
@@ -39,7 +39,7 @@ struct Contact {
 };
 
 /// A contact as the impulse solver sees it, built each step in island
-/// order. With K the notes' 3×3 matrix of the point, the solve needs nᵀKn,
+/// order. With K the 3×3 matrix of the point (docs/physics.md §5.5), the solve needs nᵀKn,
 /// the 2×2 TᵀKT, the Jacobian rows (r × n etc.: d·(v + ω × r) = d·v +
 /// ω·(r × d)) and the angular velocity an impulse along n, t₁, t₂ gives
 /// (I⁻¹ (r × n) etc.), for both bodies.
@@ -210,11 +210,11 @@ bool wakeTouchedSleepers(const Model& model, State& state, const Workspace& ws, 
 /// index of its island.
 void findIslands(const Model& model, const State& state, Workspace& ws);
 
-/// The notes' impulse response, for all contacts together: per contact the
-/// 3×3 K = M⁻¹𝐈 − (r)* I⁻¹ (r)* of the notes (with the other body's terms
+/// The impulse response (docs/physics.md §5.5), for all contacts together: per contact the
+/// 3×3 K = M⁻¹𝟙 − [r]× I⁻¹ [r]× (with the other body's terms
 /// added); normal and friction impulses solved by projected Gauss-Seidel
 /// with accumulated clamping, λ_N ≥ 0 and |λ_T| ≤ μ λ_N (Coulomb's law on the
-/// impulse, which is the notes' a = max(1 − μ_T(1+μ_N)|v_N|/|v_T|, 0) when K
+/// impulse, which is the friction factor a = max(1 − μ_T(1+μ_N)|v_N|/|v_T|, 0) when K
 /// is isotropic). Restitution first, in impact passes: the contacts arriving
 /// faster than the threshold separate at e × the approach speed they had
 /// before the solve; contacts set approaching by that collide in the next

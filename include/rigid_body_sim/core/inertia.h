@@ -16,8 +16,8 @@ struct MassProperties {
   Mat3 I_C_F = Mat3::Zero();  ///< inertia about C, axes of F (kg·m²)
 };
 
-/// Inertia of point masses mᵢ at rᵢ about their centre of mass (the notes,
-/// corrected by ERRATA.md): I = Σ mᵢ (rᵢᵀrᵢ 𝐈 − rᵢrᵢᵀ), rᵢ measured from the
+/// Inertia of point masses mᵢ at rᵢ about their centre of mass (docs/physics.md
+/// §2): I = Σ mᵢ (rᵢᵀrᵢ 𝐈 − rᵢrᵢᵀ), rᵢ measured from the
 /// centre of mass. Positions may be given in any frame; they are re-centred.
 MassProperties pointMassProperties(const std::vector<double>& masses, const std::vector<Vec3>& positions);
 

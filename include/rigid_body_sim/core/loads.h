@@ -50,7 +50,7 @@ struct BodyLoad {
 using Loads = std::vector<BodyLoad>;
 
 /// Adds a wrench to a body's load: τ = τ₀ + r × F about the centre of mass,
-/// kept in the wrench's frame (the notes' τᵢ = (R rᵢ) × Fᵢ for a body frame).
+/// kept in the wrench's frame (docs/physics.md §3).
 void addWrench(const BodyModel& body, BodyLoad& load, const Wrench& wrench);
 
 /// A wrench (or impulse) whose vectors are given in the axes of a frame F,
@@ -62,7 +62,7 @@ Wrench inWorldAxes(const Wrench& wrench, const Quat& q_WF);
 Impulse inWorldAxes(const Impulse& impulse, const Quat& q_WF);
 
 /// Applies an impulse now: Δv = J / M, Δω = I⁻¹ (r × J + H), with I and r in
-/// the current orientation (the notes' rigid-body impulse response). Wakes
+/// the current orientation (docs/physics.md §3). Wakes
 /// the body if it was asleep.
 void applyImpulse(const BodyModel& body, BodyState& s, const Impulse& impulse);
 

@@ -16,8 +16,8 @@ namespace rigid_body_sim::core {
 
 /// Velocity damping. Two forms, which add up:
 ///  - a decay rate k (1/s): v ← v·exp(−k Δt) each step, so v(t) = v₀ e^(−k t)
-///    whatever Δt is (the notes' "v_{n+1} = α v_n" with α = e^(−k Δt));
-///  - the notes' drag force f = −σ v (and τ = −σ_ω ω), integrated explicitly
+///    whatever Δt is (docs/physics.md §5.4);
+///  - a drag force f = −σ v (and τ = −σ_ω ω), integrated explicitly
 ///    like every other force, so its effect depends on Δt.
 struct Damping {
   double linear_rate = 0.0;   ///< 1/s
@@ -26,7 +26,7 @@ struct Damping {
   double angular_drag = 0.0;  ///< σ_ω, N·m·s/rad
 };
 
-/// How contacts with the scene are resolved (the notes' responses).
+/// How contacts are resolved (docs/physics.md §5.5 and §7).
 enum class ContactMethod {
   kImpulse,            ///< velocity impulses J = K⁻¹Δv per contact, Coulomb friction (default)
   kPenaltyQuadratic,   ///< f = k (ε − φ) N inside the buffer ε, plus damping
@@ -39,7 +39,7 @@ struct ContactSettings {
   double restitution = 0.0;  ///< μ_N ∈ [0, 1]
   double friction = 0.5;     ///< μ_T (Coulomb) ≥ 0
   /// Restitution applies only above this approach speed (m/s), so a resting
-  /// body does not jitter; never below 2|g|Δt (ERRATA.md), whatever is set.
+  /// body does not jitter; never below 2|g|Δt (docs/physics.md §5.5), whatever is set.
   double restitution_threshold = 0.1;
   double sample_spacing = 0.1;     ///< m between collision samples on boxes and cylinders
   int iterations = 50;             ///< impulse solver: most Gauss-Seidel sweeps per step (a stack needs them)
@@ -88,7 +88,7 @@ struct ModelSpec {
   Vec3 gravity_W = Vec3(0.0, 0.0, -9.81);  ///< m/s², world frame
   Damping damping;
   /// Integrate the gyroscopic term −ω × (I ω) of Euler's equation. Off
-  /// reproduces the notes exactly (ω_{n+1} = ω_n + Δt I⁻¹ τ), which is only
+  /// integrates ω_{n+1} = ω_n + Δt I⁻¹ τ alone (docs/physics.md §5.6), which is only
   /// right for bodies with isotropic inertia (spheres, cubes).
   bool gyroscopic = true;
   /// Static geometry the bodies collide with; empty means no contacts.

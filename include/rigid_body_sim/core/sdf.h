@@ -1,8 +1,7 @@
-// Signed distance functions: the notes' collision detection.
+// Signed distance functions: collision detection (docs/physics.md §5.1).
 //
 // φ(x) < 0 inside a solid, > 0 in free space, with gradient ∇φ the outward
-// unit normal. Primitives are exact (value and gradient); compositions follow
-// the notes and ERRATA.md:
+// unit normal. Primitives are exact (value and gradient); compositions:
 //   union         φ = min(φᵢ)       exact outside, approximate inside
 //   intersection  φ = max(φᵢ)       exact inside, a lower bound outside
 //   difference    φ = max(φ₀, −φᵢ)  shape 0 with the others cut out

@@ -1,4 +1,4 @@
-// Shape matching (the notes' last method): let every vertex move on its own
+// Shape matching (docs/physics.md §7.3): let every vertex move on its own
 // with collision and friction, then find the rigid motion closest to where
 // the vertices went. No physics in the second half: an optimization.
 #pragma once
@@ -17,7 +17,7 @@ namespace rigid_body_sim::core {
 Mat3 polarRotation(const Mat3& A);
 
 /// One shape-matching step of length h for every awake body:
-///   vᵢ += h (g + F/M),  yᵢ = xᵢ + h vᵢ, with the notes' particle response
+///   vᵢ += h (g + F/M),  yᵢ = xᵢ + h vᵢ, with a particle response
 ///   where φ(yᵢ) < 0 (restitution, friction a = max(1 − μ_T(1+μ_N)|v_N|/|v_T|, 0)),
 ///   c = mean yᵢ,  A = (Σ (yᵢ − c) r̄ᵢᵀ)(Σ r̄ᵢ r̄ᵢᵀ)⁻¹,  R = Polar(A),
 /// and the body's velocity is the rigid motion from the old pose to the new.

@@ -11,7 +11,7 @@ namespace rigid_body_sim::core {
 /// Advances `state` by model.dt(). `loads` is one BodyLoad per body, held
 /// constant over the step, or empty. `workspace` is scratch memory reused
 /// across steps (optional; it also reports the step's contacts and deepest
-/// penetration). The step is the notes' Euler-Cromer loop, one named stage
+/// penetration). The step is the Euler-Cromer loop of docs/physics.md §4, one named stage
 /// per line (see step.cpp):
 ///   detect contacts                φ(x + R rᵢ) < margin against the scene
 ///   accumulate forces and torques  F = M g − σ v + F_ext (+ penalty),  τ likewise

@@ -19,7 +19,7 @@ using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using Quat = Eigen::Quaterniond;
 
-/// The cross-product matrix r* of the notes: r × q = skew(r) q.
+/// The cross-product matrix [r]×: r × q = skew(r) q (docs/physics.md §5.5).
 inline Mat3 skew(const Vec3& r) {
   Mat3 s;
   s << 0.0, -r.z(), r.y(),  //
