@@ -84,7 +84,9 @@ rbs_link_sources() {
 rbs_build() {
   rbs_link_sources
   local what="building ${*:-the package} into ${RBS_WS#"$PWD"/} ($RBS_BUILD_TYPE; about 2-3 minutes the first time on 2 cores)"
-  [ -f "$RBS_WS/devel/lib/rigid_body_sim/sim_node" ] && what="building ${*:-the package} (only what changed)"
+  local probe=sim_node  # built already: only what changed is built again
+  [ "${1:-}" != tests ] || probe=node_test
+  [ ! -f "$RBS_WS/devel/lib/rigid_body_sim/$probe" ] || what="building ${*:-the package} (only what changed)"
   rbs_phase "$what" "build${1:+_$1}.log" \
     catkin_make -C "$RBS_WS" -j2 $RBS_PYFLAGS -DCMAKE_BUILD_TYPE="$RBS_BUILD_TYPE" "$@"
 }

@@ -64,8 +64,9 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   }
   NodeParams p;
   NodeSettings& n = p.node;
-  const std::set<std::string> node_keys{"rate",       "realtime_factor", "publish_rate",  "world_frame", "wrench_timeout",
-                                        "covariance", "scene_size",      "report_timing", "config_file"};
+  const std::set<std::string> node_keys{"rate",        "realtime_factor", "publish_rate",
+                                        "world_frame", "wrench_timeout",  "covariance",
+                                        "scene_size",  "report_timing",   "config_file"};
   if (all.hasMember("rate")) n.rate = positive(all["rate"], "rate", false);
   if (all.hasMember("realtime_factor")) n.realtime_factor = positive(all["realtime_factor"], "realtime_factor", true);
   if (all.hasMember("publish_rate")) n.publish_rate = positive(all["publish_rate"], "publish_rate", false);

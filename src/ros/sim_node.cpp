@@ -237,6 +237,7 @@ void SimNode::publishFixedFrames() {
   std::vector<geometry_msgs::TransformStamped> fixed;
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
     const core::BodyModel& body = model_.body(i);
+    // frames_[i] is the body's prefix ("NAME/" or "") followed by its root link.
     const std::string prefix = frames_[i].substr(0, frames_[i].size() - body.link.size());
     for (const core::FixedLink& link : body.fixed_links) {
       geometry_msgs::TransformStamped tf;
@@ -389,19 +390,19 @@ bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res)
   double start = simTime();
   std::string when = "from now (t = " + now() + ")";
   if (!req.start_time.isZero()) {
-    const double at = clock_.simTimeAt(static_cast<int64_t>(req.start_time.toNSec())), lead = at - simTime();
+    const int64_t asked = static_cast<int64_t>(req.start_time.toNSec());
+    const double at = clock_.simTimeAt(asked), lead = at - simTime();
     if (lead > kMaxLeadTime) {
-      res.message = "start_time " + formatStamp(static_cast<int64_t>(req.start_time.toNSec())) + " s is " +
-                    std::to_string(lead) + " s ahead of this node's clock (now " + now() +
+      res.message = "start_time " + formatStamp(asked) + " s is " + std::to_string(lead) +
+                    " s ahead of this node's clock (now " + now() +
                     "): is it on another clock? Stamps of odom and tf are on this one; 0 means now";
       return true;
     }
     if (lead > 0.0) {
       start = at;
-      when = "from t = " + formatStamp(static_cast<int64_t>(req.start_time.toNSec())) + " s";
+      when = "from t = " + formatStamp(asked) + " s";
     } else if (lead < 0.0) {
-      when = "from now (start_time " + formatStamp(static_cast<int64_t>(req.start_time.toNSec())) +
-             " s is past; t = " + now() + ")";
+      when = "from now (start_time " + formatStamp(asked) + " s is past; t = " + now() + ")";
     }
   }
   const double end = duration > 0.0 ? start + duration : core::WrenchSchedule::kForever;

@@ -88,7 +88,7 @@ Args parseArgs(int argc, char** argv) {
       a.quiet = true;
       continue;
     }
-    static const std::set<std::string> kTakesValue = {"--urdf", "--config", "--set", "--duration",
+    static const std::set<std::string> kTakesValue = {"--urdf", "--config", "--set",  "--duration",
                                                       "--dt",   "--csv",    "--every"};
     if (kTakesValue.count(flag) == 0) throw UsageError("unknown argument '" + flag + "' (see rbsim --help)");
     if (i + 1 >= argc) throw UsageError(flag + ": missing value (see rbsim --help)");

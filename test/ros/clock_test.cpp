@@ -20,8 +20,8 @@ class Clock : public Node {
   void SetUp() override {
     Node::SetUp();
     ASSERT_TRUE(trigger("unpause"));  // whatever the last test left
-    odom_sub_ = nh_.subscribe<nav_msgs::Odometry>("/odom", 1000,
-                                                  [this](const nav_msgs::Odometry::ConstPtr& m) { odom_.push_back(*m); });
+    odom_sub_ = nh_.subscribe<nav_msgs::Odometry>(
+        "/odom", 1000, [this](const nav_msgs::Odometry::ConstPtr& m) { odom_.push_back(*m); });
     ASSERT_TRUE(spinUntil([&] { return !odom_.empty(); }, 30.0));
   }
 
@@ -109,8 +109,8 @@ TEST_F(Clock, RunningStampsAreOnTheCallersClockAndTfNeedNotExtrapolate) {
   tf2_ros::TransformListener listener(buffer);
   odom_.clear();
   ASSERT_TRUE(spinUntil([&] { return odom_.size() >= 20; }, 10.0));
-  EXPECT_LT(offNow(odom_.back().header.stamp), 0.25) << "stamp " << odom_.back().header.stamp << ", now "
-                                                     << ros::Time::now();
+  EXPECT_LT(offNow(odom_.back().header.stamp), 0.25)
+      << "stamp " << odom_.back().header.stamp << ", now " << ros::Time::now();
   // A listener asking for a moment just past gets it (no extrapolation).
   ASSERT_TRUE(spinUntil([&] { return buffer.canTransform("world", kLink, ros::Time(0)); }, 10.0));
   ros::WallDuration(0.2).sleep();  // the listener has been receiving for a while
@@ -124,8 +124,8 @@ TEST_F(Clock, RunningStampsAreOnTheCallersClockAndTfNeedNotExtrapolate) {
   ros::spinOnce();
   odom_.clear();
   ASSERT_TRUE(spinUntil([&] { return odom_.size() >= 5; }, 10.0));
-  EXPECT_LT(offNow(odom_.back().header.stamp), 0.25) << "stamp " << odom_.back().header.stamp << ", now "
-                                                     << ros::Time::now();
+  EXPECT_LT(offNow(odom_.back().header.stamp), 0.25)
+      << "stamp " << odom_.back().header.stamp << ", now " << ros::Time::now();
   for (std::size_t i = 1; i < odom_.size(); ++i) EXPECT_GT(odom_[i].header.stamp, odom_[i - 1].header.stamp);
   // Paused and stepped 2 s at once: the node's clock is ahead of the wall
   // clock; it never goes back, so running waits for the wall clock to catch up.
@@ -136,8 +136,8 @@ TEST_F(Clock, RunningStampsAreOnTheCallersClockAndTfNeedNotExtrapolate) {
   odom_.clear();
   ASSERT_TRUE(spinUntil([&] { return odom_.size() >= 5; }, 10.0));
   EXPECT_GT(odom_.front().header.stamp, ahead);
-  EXPECT_LT(offNow(odom_.back().header.stamp), 0.25) << "stamp " << odom_.back().header.stamp << ", now "
-                                                     << ros::Time::now();
+  EXPECT_LT(offNow(odom_.back().header.stamp), 0.25)
+      << "stamp " << odom_.back().header.stamp << ", now " << ros::Time::now();
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "node_fixture.h"
 #include "rigid_body_sim/ApplyImpulse.h"
 #include "rigid_body_sim/ApplyWrench.h"
 #include "rigid_body_sim/ClearWrenches.h"
@@ -27,8 +28,6 @@
 #include "rigid_body_sim/SetState.h"
 #include "rigid_body_sim/Step.h"
 #include "rigid_body_sim/core/sdf.h"
-
-#include "node_fixture.h"
 
 namespace {
 

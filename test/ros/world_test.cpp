@@ -181,7 +181,7 @@ TEST_F(ConfigOutside, RelativeUrdfPathsResolveFromTheConfigsFolder) {
   get = call("get_state", get);
   ASSERT_TRUE(get.response.success) << get.response.message;
   EXPECT_EQ(get.response.state.pose.position.x, 3.0);  // the config's initial pose
-  get.request.body = "ball";  // and a package:// one beside it
+  get.request.body = "ball";                           // and a package:// one beside it
   get = call("get_state", get);
   ASSERT_TRUE(get.response.success) << get.response.message;
 }
