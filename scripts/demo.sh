@@ -12,7 +12,7 @@ source "$RBS_WS/devel/setup.bash"
 set -u
 mkdir -p "$ROS_HOME"
 log="$ROS_HOME/demo_launch.log"
-echo "demo: launching sim.launch $* (log: ${log#"$PWD"/})" >&2
+echo "demo: launching sim.launch${*:+ $*} (log: ${log#"$PWD"/})" >&2
 roslaunch rigid_body_sim sim.launch "$@" >"$log" 2>&1 &
 launch=$!
 trap 'kill -INT $launch 2>/dev/null; wait $launch 2>/dev/null || true' EXIT INT TERM
