@@ -60,6 +60,8 @@ rbs_install_packages() {
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   [ ${#missing[@]} -gt 0 ] || return 0
+  # The phase's output goes to a log: ask for sudo's password here, where it shows.
+  [ "$(id -u)" -eq 0 ] || sudo -v
   rbs_phase "installing the Debian packages it needs (${#missing[@]} missing; apt-get, a few minutes on a fresh machine)" apt.log rbs_apt
 }
 
