@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <random>
 #include <string>
 
@@ -43,6 +45,34 @@ inline BoxGrid boxGrid(int n) {
     s.start.bodies.push_back(bodyStateFromLink(s.model.body(i), link));
   }
   return s;
+}
+
+/// FNV-1a over the bits of every body's motion, sleep flag and still time and
+/// of the warm-start impulses: equal hashes mean bit-identical states (for
+/// checking that a refactoring changed nothing).
+inline std::uint64_t stateHash(const core::State& s) {
+  std::uint64_t h = 1469598103934665603ull;
+  const auto mix = [&h](const void* data, std::size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) h = (h ^ bytes[i]) * 1099511628211ull;
+  };
+  const auto mixDoubles = [&mix](const double* d, int n) { mix(d, sizeof(double) * n); };
+  for (const core::BodyState& b : s.bodies) {
+    mixDoubles(b.p_WB.data(), 3);
+    mixDoubles(b.v_WB.data(), 3);
+    mixDoubles(b.q_WB.coeffs().data(), 4);
+    mixDoubles(b.w_B.data(), 3);
+    mixDoubles(&b.still_time, 1);
+    const char asleep = b.asleep;
+    mix(&asleep, 1);
+  }
+  for (const core::ContactImpulse& c : s.contact_impulses) {
+    const int key[4] = {c.body, c.other, c.item, c.point};
+    mix(key, sizeof key);
+    mixDoubles(&c.normal, 1);
+    mixDoubles(c.tangent_W.data(), 3);
+  }
+  return h;
 }
 
 }  // namespace rigid_body_sim::bench

@@ -4,7 +4,8 @@
 // step and per body-step, and (from the last run) the share at rest at the
 // end (asleep, or below the sleep speeds for the sleep time: core::atRest),
 // the share slower than the sleep speeds at the end, the deepest
-// penetration and the lowest centre of mass.
+// penetration, the lowest centre of mass and a hash of the final state's
+// bits (stateHash: equal before and after a refactoring means nothing changed).
 // Usage: world_bench [runs] [N ...]; RBS_THREADS=k limits the step to k threads.
 #include <algorithm>
 #include <chrono>
@@ -23,8 +24,8 @@ int main(int argc, char** argv) {
   std::vector<int> sizes;
   for (int i = 2; i < argc; ++i) sizes.push_back(std::atoi(argv[i]));
   if (sizes.empty()) sizes = {1, 10, 100, 1000};
-  std::printf("%6s %14s %16s %10s %10s %14s %12s\n", "N", "ns/step", "ns/body-step", "at rest", "slow", "deepest (mm)",
-              "lowest z (m)");
+  std::printf("%6s %14s %16s %10s %10s %14s %12s %18s\n", "N", "ns/step", "ns/body-step", "at rest", "slow",
+              "deepest (mm)", "lowest z (m)", "state hash");
   for (int n : sizes) {
     const auto scene = boxGrid(n);
     std::vector<double> ns;
@@ -51,7 +52,8 @@ int main(int argc, char** argv) {
       slow += b.v_WB.norm() < sleep.linear_velocity && b.w_B.norm() < sleep.angular_velocity;
       lowest = std::min(lowest, b.p_WB.z());
     }
-    std::printf("%6d %14.0f %16.1f %9.1f%% %9.1f%% %14.4f %12.4f\n", n, ns[ns.size() / 2], ns[ns.size() / 2] / n,
-                100.0 * resting / n, 100.0 * slow / n, 1e3 * deepest, lowest);
+    std::printf("%6d %14.0f %16.1f %9.1f%% %9.1f%% %14.4f %12.4f %18llx\n", n, ns[ns.size() / 2],
+                ns[ns.size() / 2] / n, 100.0 * resting / n, 100.0 * slow / n, 1e3 * deepest, lowest,
+                static_cast<unsigned long long>(rigid_body_sim::bench::stateHash(s)));
   }
 }
