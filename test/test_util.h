@@ -54,7 +54,7 @@ inline core::BodySpec ballBody(double radius, double mass = 1.0) {
   b.I_C_L = (0.4 * mass * radius * radius) * Mat3::Identity();
   core::CollisionShape shape;
   shape.kind = core::CollisionShape::Kind::kSphere;
-  shape.size = Vec3(radius, 0.0, 0.0);
+  shape.radius = radius;
   b.collision = {shape};
   return b;
 }

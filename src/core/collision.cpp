@@ -78,14 +78,14 @@ std::vector<ContactPoint> sampleShape(const CollisionShape& shape, const Pose& X
       sampleBox(shape.size, spacing, local, extreme);
       break;
     case CollisionShape::Kind::kCylinder:
-      sampleCylinder(shape.size.x(), shape.size.y(), spacing, local, extreme);
+      sampleCylinder(shape.radius, shape.length, spacing, local, extreme);
       break;
     case CollisionShape::Kind::kSphere:
       if (sample_spheres) {
-        sampleSphereSurface(shape.size.x(), spacing, local);
+        sampleSphereSurface(shape.radius, spacing, local);
       } else {
         local.emplace_back(Vec3::Zero());
-        radius = shape.size.x();
+        radius = shape.radius;
       }
       break;
     case CollisionShape::Kind::kPoints:

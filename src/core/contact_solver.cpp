@@ -5,40 +5,27 @@
 #include <cmath>
 #include <limits>
 
+#include "island.h"
 #include "rigid_body_sim/core/contact.h"
+#include "scratch.h"
 
 namespace rigid_body_sim::core {
 namespace {
 
-/// m/s: a contact velocity error below this is the rounding of the impulses
-/// that hold a body still (about 1e-18 m/s, the last bits of h g left over).
-/// The solver leaves such a contact alone; otherwise rounding would walk its
-/// impulse in the last bits at every step.
-constexpr double kRoundingSpeed = 1e-15;
-/// m/s and rad/s: a body the solve leaves slower than this (every contact
-/// held to kRoundingSpeed gives ω below about kRoundingSpeed / 1 mm) ends
-/// the solve at exactly zero, so that it rests exactly: far below any motion
-/// (3e-5 m a year), and a resting body becomes a fixed point of the step
-/// (Workspace::FixedPoint) instead of moving the last bits of its pose.
-constexpr double kRestingSpeed = 1e-12;
-
-bool keyLess(int body_a, int other_a, int item_a, int point_a, int body_b, int other_b, int item_b, int point_b) {
-  if (body_a != body_b) return body_a < body_b;
-  if (other_a != other_b) return other_a < other_b;
-  if (item_a != item_b) return item_a < item_b;
-  return point_a < point_b;
-}
-
-using Velocities = std::vector<Workspace::Velocity>;
+using detail::BodyVelocity;
+using detail::PartScratch;
+using detail::SolverContact;
+using detail::StepScratch;
+using Velocities = std::vector<BodyVelocity>;
 
 /// The velocity of `body`'s point relative to the other's along n, t₁ and
 /// t₂ (Jacobian rows (d, r × d) per body: d·(v + ω × r) = d·v + ω·(r × d)).
 inline Vec3 contactVelocity(const SolverContact& c, const Velocities& vel) {
-  const Workspace::Velocity& a = vel[c.body];
+  const BodyVelocity& a = vel[c.body];
   Vec3 u(c.normal_W.dot(a.v_W) + c.a.rn.dot(a.w_W), c.tangent1_W.dot(a.v_W) + c.a.rt1.dot(a.w_W),
          c.tangent2_W.dot(a.v_W) + c.a.rt2.dot(a.w_W));
   if (c.other >= 0) {
-    const Workspace::Velocity& o = vel[c.other];
+    const BodyVelocity& o = vel[c.other];
     u -= Vec3(c.normal_W.dot(o.v_W) + c.o.rn.dot(o.w_W), c.tangent1_W.dot(o.v_W) + c.o.rt1.dot(o.w_W),
               c.tangent2_W.dot(o.v_W) + c.o.rt2.dot(o.w_W));
   }
@@ -80,12 +67,8 @@ void matchLastImpulses(const State& state, std::vector<Contact>& contacts) {
   const std::vector<ContactImpulse>& last = state.contact_impulses;
   std::size_t k = 0;
   for (Contact& c : contacts) {
-    while (k < last.size() &&
-           keyLess(last[k].body, last[k].other, last[k].item, last[k].point, c.body, c.other, c.item, c.point)) {
-      ++k;
-    }
-    const bool same = k < last.size() && last[k].body == c.body && last[k].other == c.other && last[k].item == c.item &&
-                      last[k].point == c.point;
+    while (k < last.size() && last[k].key() < c.key()) ++k;
+    const bool same = k < last.size() && last[k].key() == c.key();
     c.last_impulse = same ? static_cast<int>(k) : -1;
   }
 }
@@ -110,8 +93,9 @@ Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
 /// ν > ν* its first step lands below ν*: `nu` (in: a guess, such as the
 /// contact's ν of the last sweep; out: the ν found, 0 inside the disk)
 /// saves most of the iterations of a converging Gauss-Seidel.
-Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, SolverContact::TangentEigen& eigen,
-                               const Eigen::Vector2d& stick, double limit, double& nu) {
+Eigen::Vector2d frictionOnDisk(const SolverSettings& settings, const Eigen::Matrix2d& K,
+                               SolverContact::TangentEigen& eigen, const Eigen::Vector2d& stick, double limit,
+                               double& nu) {
   if (stick.squaredNorm() <= limit * limit) {
     nu = 0.0;
     return stick;
@@ -120,7 +104,7 @@ Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, SolverContact::TangentE
   if (!eigen.ready) {  // K = Q diag(k) Qᵀ, closed form for a symmetric 2×2; once per contact and step
     const double mean = 0.5 * (K(0, 0) + K(1, 1)), half_gap = 0.5 * (K(0, 0) - K(1, 1));
     const double radius = std::sqrt(half_gap * half_gap + K(0, 1) * K(0, 1));
-    eigen.isotropic = radius <= 1e-12 * mean;
+    eigen.isotropic = radius <= settings.isotropy_tolerance * mean;
     eigen.k = Eigen::Vector2d(mean + radius, mean - radius);
     eigen.q1 =
         half_gap >= 0.0 ? Eigen::Vector2d(half_gap + radius, K(0, 1)) : Eigen::Vector2d(K(0, 1), radius - half_gap);
@@ -137,12 +121,12 @@ Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, SolverContact::TangentE
   nu = std::max(nu, 0.0);
   Eigen::Vector2d l = c;  // λ in the eigenbasis
   double size = 0.0;      // |l|
-  for (int i = 0; i < 30; ++i) {
+  for (int i = 0; i < settings.friction_newton_iterations; ++i) {
     const Eigen::Vector2d d(1.0 / (k.x() + nu), 1.0 / (k.y() + nu));
     l = kc.cwiseProduct(d);
     const double size2 = l.squaredNorm();
     size = std::sqrt(size2);
-    if (std::abs(size - limit) <= 1e-10 * limit) break;
+    if (std::abs(size - limit) <= settings.friction_newton_tolerance * limit) break;
     // ν += φ/(−φ') for φ = 1/|λ| − 1/limit, with d|λ|/dν = −Σ λᵢ² dᵢ / |λ|.
     nu = std::max(nu + (size2 * inv_limit - size) * size / (l.x() * l.x() * d.x() + l.y() * l.y() * d.y()), 0.0);
   }
@@ -155,15 +139,16 @@ Eigen::Vector2d frictionOnDisk(const Eigen::Matrix2d& K, SolverContact::TangentE
 /// reach `target` (m/s). Returns the velocity change it made (m/s). The
 /// normal velocity after the friction update is u_N + nᵀKT Δλ_T, so the
 /// bodies are read once and written once.
-double sweepContact(SolverContact& c, double& normal, Eigen::Vector2d& tangent, double target, double friction,
-                    Velocities& vel) {
+double sweepContact(const SolverSettings& settings, SolverContact& c, double& normal, Eigen::Vector2d& tangent,
+                    double target, double friction, Velocities& vel) {
   const Vec3 u = contactVelocity(c, vel);
-  if (std::abs(u.x() - target) < kRoundingSpeed && u.tail<2>().squaredNorm() < kRoundingSpeed * kRoundingSpeed) {
+  const double rounding = settings.rounding_speed;
+  if (std::abs(u.x() - target) < rounding && u.tail<2>().squaredNorm() < rounding * rounding) {
     return 0.0;  // the contact holds to rounding: an impulse now would only move λ's last bits
   }
   // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows; otherwise
   // slide with maximal dissipation (frictionOnDisk).
-  const Eigen::Vector2d lt = frictionOnDisk(c.tangent_k, c.tangent_eigen, tangent - c.tangent_mass * u.tail<2>(),
+  const Eigen::Vector2d lt = frictionOnDisk(settings, c.tangent_k, c.tangent_eigen, tangent - c.tangent_mass * u.tail<2>(),
                                             friction * normal, c.friction_nu);
   const Eigen::Vector2d dlt = lt - tangent;
   tangent = lt;
@@ -174,32 +159,6 @@ double sweepContact(SolverContact& c, double& normal, Eigen::Vector2d& tangent, 
   normal = ln;
   applyImpulse(c, dln, dlt.x(), dlt.y(), vel);
   return (std::abs(dln) + dlt.norm()) / c.normal_mass;
-}
-
-/// Sorts the contacts into islands (findIslands). Fills ws.island_contacts
-/// (contact indices, island by island, each island in contact order) and
-/// ws.island_starts (offsets).
-void groupIslands(const Model& model, const State& state, Workspace& ws) {
-  findIslands(model, state, ws);
-  // A counting sort by island root: islands in root order, each island's
-  // contacts in contact order.
-  const std::vector<int>& root = ws.island_root;
-  std::vector<int>& next = ws.island_of;  // per root: where its island's next contact goes
-  next.assign(model.bodyCount(), 0);
-  for (const Contact& c : ws.contacts) ++next[root[c.body]];
-  ws.island_starts.clear();
-  int at = 0;
-  for (int& slot : next) {
-    const int count = slot;
-    slot = at;
-    if (count > 0) ws.island_starts.push_back(at);
-    at += count;
-  }
-  ws.island_starts.push_back(at);
-  ws.island_contacts.resize(ws.contacts.size());
-  for (std::size_t k = 0; k < ws.contacts.size(); ++k) {
-    ws.island_contacts[next[root[ws.contacts[k].body]]++] = static_cast<int>(k);
-  }
 }
 
 /// One body's side of a contact: its Jacobian rows and turns for the arm r,
@@ -264,24 +223,27 @@ void prepareContact(const Model& model, const State& state, const std::vector<Ma
 /// start, restitution (impact passes), projected Gauss-Seidel; then the
 /// results go back to the contacts.
 void solveIsland(const Model& model, int first, int last, double h, const State& state, Velocities& vel, Workspace& ws,
-                 StepScratch& scratch) {
+                 PartScratch& scratch) {
   const ContactSettings& cs = model.contact();
+  const SolverSettings& settings = model.solver();
+  StepScratch& sc = *ws.scratch;
   const double threshold = model.restitutionThreshold();
-  SolverContact* const begin = ws.solver_contacts.data() + first;
-  SolverContact* const end = ws.solver_contacts.data() + last;
+  SolverContact* const begin = sc.solver_contacts.data() + first;
+  SolverContact* const end = sc.solver_contacts.data() + last;
   double fastest = 0.0;  // (m/s)²: the largest contact speed, each taken before its warm start
   for (int k = first; k < last; ++k) {
-    const Contact& contact = ws.contacts[ws.island_contacts[k]];
-    SolverContact& c = ws.solver_contacts[k];
-    c.contact = ws.island_contacts[k];
-    prepareContact(model, state, ws.inverse_inertias, h, contact, k > first ? &c - 1 : nullptr, c);
+    const Contact& contact = ws.contacts[sc.island_contacts[k]];
+    SolverContact& c = sc.solver_contacts[k];
+    c.contact = sc.island_contacts[k];
+    prepareContact(model, state, sc.inverse_inertias, h, contact, k > first ? &c - 1 : nullptr, c);
     fastest = std::max(fastest, contactVelocity(c, vel).squaredNorm());
     warmStart(model, contact, state, vel, c);
   }
-  // Sweeps stop once none changes a velocity by more than 1e-7 m/s (1e-10 m
-  // of drift a step: what a resting stack needs), or by more than 1e-6 of
-  // the fastest contact's speed when the island moves (a relative residual).
-  const double tolerance = std::max(1e-7, 1e-6 * std::sqrt(fastest));
+  // Sweeps stop once none changes a velocity by more than the velocity
+  // tolerance (1e-7 m/s: 1e-10 m of drift a step, what a resting stack
+  // needs), or by more than the relative tolerance (1e-6) of the fastest
+  // contact's speed when the island moves (a relative residual).
+  const double tolerance = std::max(settings.velocity_tolerance, settings.relative_tolerance * std::sqrt(fastest));
   // Impacts first, as a sequence of simultaneous collisions: the contacts
   // arriving faster than the threshold are solved together to separate at
   // e × their approach speed (the pre-solve speed, for the first pass).
@@ -310,7 +272,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
         for (int k : hit) {
           SolverContact& c = begin[k];
           largest =
-              std::max(largest, sweepContact(c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction, vel));
+              std::max(largest, sweepContact(settings, c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction, vel));
         }
         if (largest < tolerance) break;
       }
@@ -322,14 +284,14 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
   for (int sweep = 0; sweep < cs.iterations; ++sweep) {
     double largest = 0.0;
     for (SolverContact* c = begin; c != end; ++c) {
-      largest = std::max(largest, sweepContact(*c, c->normal_impulse, c->tangent_impulse, c->target_normal_velocity,
+      largest = std::max(largest, sweepContact(settings, *c, c->normal_impulse, c->tangent_impulse, c->target_normal_velocity,
                                                cs.friction, vel));
     }
     if (largest < tolerance) break;
-    // Stalled: four sweeps took off less than a tenth. Gauss-Seidel on
+    // Stalled: four sweeps took off less than a tenth (by default). Gauss-Seidel on
     // friction whose limit moves with the normal impulse can settle into a
     // small cycle instead of converging; more sweeps would not change it.
-    if (sweep >= 8 && largest > 0.9 * recent[sweep % 4]) break;
+    if (sweep >= settings.stall_min_sweeps && largest > settings.stall_ratio * recent[sweep % 4]) break;
     recent[sweep % 4] = largest;
   }
   for (const SolverContact* c = begin; c != end; ++c) {
@@ -342,77 +304,62 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
 
 }  // namespace
 
-void findIslands(const Model& model, const State& state, Workspace& ws) {
-  std::vector<int>& parent = ws.island_root;
-  parent.resize(model.bodyCount());
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
-  const auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (const Contact& c : ws.contacts) {
-    if (c.other < 0 || state.bodies[c.other].asleep || state.bodies[c.body].asleep) continue;
-    const int a = find(c.body), b = find(c.other);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the island's smallest body
+bool solveContactImpulses(const Model& model, State& state, double h, Workspace& ws) {
+  if (model.contact().method != ContactMethod::kImpulse || ws.contacts.empty()) {
+    state.contact_impulses.clear();  // nothing to warm-start from next time
+    return false;
   }
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = find(static_cast<int>(i));
-}
-
-void solveContactImpulses(const Model& model, State& state, double h, Workspace& ws) {
-  if (ws.contacts.empty()) {
-    state.contact_impulses.clear();
-    return;
-  }
+  StepScratch& sc = *ws.scratch;
   // The bodies in contact, in world axes: v, ω_W = R w_B and I⁻¹_W = R I⁻¹ Rᵀ
   // (a sleeper's velocities are zero and it has no inertia terms: it is ground).
-  Velocities& vel = ws.velocities;
+  Velocities& vel = sc.velocities;
   vel.resize(model.bodyCount());
-  ws.inverse_inertias.resize(model.bodyCount());
+  sc.inverse_inertias.resize(model.bodyCount());
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
-    if (!ws.in_contact[i]) continue;
+    if (!sc.in_contact[i]) continue;
     const BodyState& b = state.bodies[i];
     vel[i].v_W = b.v_WB;
     vel[i].w_W = b.q_WB * b.w_B;
-    if (!b.asleep) ws.inverse_inertias[i] = worldInverseInertia(model.body(i), b.q_WB);
+    if (!b.asleep) sc.inverse_inertias[i] = worldInverseInertia(model.body(i), b.q_WB);
   }
   // Islands: contacts only couple bodies they join (the scene and sleepers
   // join nothing), so each island is solved on its own, to its own
   // convergence: a box still bouncing does not keep the others sweeping.
   // Islands share no body, so they split over the cores with the same result.
   matchLastImpulses(state, ws.contacts);
-  groupIslands(model, state, ws);
-  const int islands = static_cast<int>(ws.island_starts.size()) - 1;
-  const int parts = islands > 1 ? partsFor(ws, ws.contacts.size()) : 1;
-  ws.parts.resize(std::max<std::size_t>(ws.parts.size(), parts));
-  ws.solver_contacts.resize(ws.contacts.size());
-  runParts(ws, parts, [&](int part) {
-    // Contiguous runs of islands holding about equal numbers of contacts.
-    const std::size_t total = ws.contacts.size();
+  groupContactsByIsland(model, state, ws);
+  const int islands = static_cast<int>(sc.island_starts.size()) - 1;
+  const int parts = islands > 1 ? detail::partsFor(ws, ws.contacts.size()) : 1;
+  sc.solver_contacts.resize(ws.contacts.size());
+  detail::runParts(ws, parts, [&](int part) {
+    // Contiguous runs of islands holding about equal numbers of contacts:
+    // each part takes the islands that start in its range of contacts.
+    const Range range = partRange(ws.contacts.size(), part, parts);
     for (int k = 0; k < islands; ++k) {
-      const std::size_t at = static_cast<std::size_t>(ws.island_starts[k]);
-      if (static_cast<int>(at * parts / total) != part) continue;
-      solveIsland(model, ws.island_starts[k], ws.island_starts[k + 1], h, state, vel, ws, ws.parts[part]);
+      const std::size_t at = static_cast<std::size_t>(sc.island_starts[k]);
+      if (at < range.begin || at >= range.end) continue;
+      solveIsland(model, sc.island_starts[k], sc.island_starts[k + 1], h, state, vel, ws, sc.parts[part]);
     }
   });
   // The contacts come sorted by key (see detectContacts), and so do these.
   // A body a contact pushes (λ_N > 0) is held up, not merely touching.
-  std::vector<char>& held = ws.held_still;
+  std::vector<char>& held = sc.held_still;
   held.assign(model.bodyCount(), 0);
   state.contact_impulses.clear();
   for (const Contact& c : ws.contacts) {
-    state.contact_impulses.push_back({c.body, c.other, c.item, c.point, c.normal_impulse, c.tangent_impulse_W});
+    state.contact_impulses.push_back({c.key(), c.normal_impulse, c.tangent_impulse_W});
     if (c.normal_impulse > 0.0) {
       held[c.body] = 1;
       if (c.other >= 0) held[c.other] = 1;
     }
   }
-  // Velocities below kRestingSpeed are rounding: zero, so that the body rests
-  // exactly. A body held up and left exactly still is in equilibrium.
+  // Velocities below the resting speed are rounding: zero, so that the body
+  // rests exactly. A body held up and left exactly still is in equilibrium.
+  const double resting = model.solver().resting_speed;
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     BodyState& b = state.bodies[i];
-    if (!ws.in_contact[i] || b.asleep) continue;
-    if (vel[i].v_W.squaredNorm() < kRestingSpeed * kRestingSpeed &&
-        vel[i].w_W.squaredNorm() < kRestingSpeed * kRestingSpeed) {
+    if (!sc.in_contact[i] || b.asleep) continue;
+    if (vel[i].v_W.squaredNorm() < resting * resting && vel[i].w_W.squaredNorm() < resting * resting) {
       b.v_WB.setZero();
       b.w_B.setZero();
       continue;
@@ -421,29 +368,30 @@ void solveContactImpulses(const Model& model, State& state, double h, Workspace&
     b.v_WB = vel[i].v_W;
     b.w_B = b.q_WB.conjugate() * vel[i].w_W;
   }
+  return true;
 }
 
 void correctPositions(const Model& model, State& state, Workspace& ws) {
   const double slop = model.contact().position_slop;
+  StepScratch& sc = *ws.scratch;
   // Resting contacts end the step where they began: nothing to correct.
   // (Linear prediction; rotation adds O(h²ω²r), far below the slop at rest.)
   // Only the islands (of the impulse solve) with a contact predicted to end
-  // deeper than half the slop are corrected (the prediction is linear: half
-  // the slop is its margin).
-  std::vector<char>& needs = ws.island_flags;  // per island root
+  // deeper than a fraction of the slop (correction_trigger, a half) are
+  // corrected (the prediction is linear: the rest of the slop is its margin).
+  std::vector<char>& needs = sc.island_flags;  // per island root
   needs.assign(model.bodyCount(), 0);
   bool any = false;
   for (const Contact& c : ws.contacts) {
-    if (c.predicted_separation <= -0.5 * slop) needs[ws.island_root[c.body]] = any = true;
+    if (c.predicted_separation <= -model.solver().correction_trigger * slop) needs[sc.island_root[c.body]] = any = true;
   }
   if (!any) return;
-  std::vector<int>& todo = ws.correct_contacts;  // in contact order
+  std::vector<int>& todo = sc.correct_contacts;  // in contact order
   todo.clear();
   for (std::size_t k = 0; k < ws.contacts.size(); ++k) {
-    if (needs[ws.island_root[ws.contacts[k].body]]) todo.push_back(static_cast<int>(k));
+    if (needs[sc.island_root[ws.contacts[k].body]]) todo.push_back(static_cast<int>(k));
   }
-  constexpr int kSweeps = 4;
-  for (int sweep = 0; sweep < kSweeps; ++sweep) {
+  for (int sweep = 0; sweep < model.solver().position_iterations; ++sweep) {
     double deepest = 0.0;
     for (const int index : todo) {
       const Contact& c = ws.contacts[index];

@@ -8,9 +8,15 @@
 #include <limits>
 
 #include "rigid_body_sim/core/contact.h"
+#include "scratch.h"
+#include "sleep.h"
 
 namespace rigid_body_sim::core {
 namespace {
+
+using detail::ContactCandidate;
+using detail::PartScratch;
+using detail::StepScratch;
 
 /// Calls visit(item, point, separation, normal_W) for every contact point of
 /// a body with φ − radius < margin against the scene. Scene items farther
@@ -28,8 +34,8 @@ void scanScene(const Model& model, const BodyState& s, int body, double margin, 
   for (int item = 0; item < static_cast<int>(scene.size()); ++item) {
     const Sdf& sdf = scene[item];
     const bool plane = sdf.kind() == Sdf::Kind::kPlane;
-    const Vec3 n_W = plane ? Vec3(sdf.pose().q_WS * sdf.params()) : Vec3::Zero();
-    const double phi_centre = plane ? n_W.dot(s.p_WB - sdf.pose().p_WS) : sdf.eval(s.p_WB);
+    const Vec3 n_W = plane ? Vec3(sdf.pose().rotation * sdf.normal()) : Vec3::Zero();
+    const double phi_centre = plane ? n_W.dot(s.p_WB - sdf.pose().translation) : sdf.eval(s.p_WB);
     if (phi_centre - b.bound_radius >= margin) continue;
     if (!have_R) {
       R = s.q_WB.toRotationMatrix();
@@ -94,8 +100,8 @@ void scanBody(const Model& model, const State& state, int a, int o, double margi
 }
 
 /// How far a body can move in h, plus a small constant so resting contacts persist (m).
-double speculativeMargin(const BodyModel& b, const BodyState& s, double h, double slop) {
-  return (s.v_WB.norm() + s.w_B.norm() * b.bound_radius) * h + std::max(slop, 1e-4);
+double speculativeMargin(const BodyModel& b, const BodyState& s, double h, double slop, double min_margin) {
+  return (s.v_WB.norm() + s.w_B.norm() * b.bound_radius) * h + std::max(slop, min_margin);
 }
 
 /// Of the candidates listed in `members` (one region), keeps at most four
@@ -105,32 +111,35 @@ double speculativeMargin(const BodyModel& b, const BodyState& s, double h, doubl
 /// nanometre, or 1e-9 relative) go to the lowest point index, so the same
 /// points are kept from step to step, which lets the solver warm-start.
 /// Distances are rigid, so it works on the body-frame points.
-void reduceRegion(const std::vector<ContactCandidate>& cands, const BodyModel& b, const Vec3& n_B,
-                  std::vector<int>& members, std::vector<Vec3>& at) {
+void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandidate>& cands, const BodyModel& b,
+                  const Vec3& n_B, std::vector<int>& members, std::vector<Vec3>& at) {
   const std::size_t n = members.size();
   if (n <= 4) return;
   at.resize(n);
   for (std::size_t k = 0; k < n; ++k) at[k] = b.contact_points[cands[members[k]].point].r_B;
   // The index of the largest score (the first one on near-ties).
-  const auto argmax = [n](auto score, double tie) {
+  const double relative = settings.reduction_tie_relative;
+  const auto argmax = [n, relative](auto score, double tie) {
     std::size_t best = 0;
     double best_score = score(0);
     for (std::size_t k = 1; k < n; ++k) {
       const double sc = score(k);
-      if (sc > best_score + tie + 1e-9 * std::abs(best_score)) {
+      if (sc > best_score + tie + relative * std::abs(best_score)) {
         best_score = sc;
         best = k;
       }
     }
     return std::make_pair(best, best_score);
   };
-  const std::size_t a = argmax([&](std::size_t k) { return -cands[members[k]].separation; }, 1e-9).first;
-  const std::size_t b2 = argmax([&](std::size_t k) { return (at[k] - at[a]).squaredNorm(); }, 1e-18).first;
+  const std::size_t a = argmax([&](std::size_t k) { return -cands[members[k]].separation; }, settings.reduction_tie_depth).first;
+  const std::size_t b2 = argmax([&](std::size_t k) { return (at[k] - at[a]).squaredNorm(); },
+                                settings.reduction_tie_distance2)
+                         .first;
   const Vec3 normal_of_ab = (at[b2] - at[a]).cross(n_B);  // in the plane, across the line ab
   const auto side = [&](std::size_t k) { return normal_of_ab.dot(at[k] - at[a]); };
-  const auto [c, c_score] = argmax([&](std::size_t k) { return std::abs(side(k)); }, 1e-18);
+  const auto [c, c_score] = argmax([&](std::size_t k) { return std::abs(side(k)); }, settings.reduction_tie_distance2);
   const double sign = side(c) >= 0.0 ? 1.0 : -1.0;
-  const auto [d, d_score] = argmax([&](std::size_t k) { return -sign * side(k); }, 1e-18);
+  const auto [d, d_score] = argmax([&](std::size_t k) { return -sign * side(k); }, settings.reduction_tie_distance2);
   const int kept[4] = {members[a], members[b2], members[c], members[d]};
   members.resize(2);
   members[0] = kept[0];
@@ -142,28 +151,28 @@ void reduceRegion(const std::vector<ContactCandidate>& cands, const BodyModel& b
 /// Turns one body's candidates into contacts: regions by item (or other
 /// body) and normal direction (within about 20°; a plane is one region),
 /// each reduced to at most four points for the impulse method.
-void emitContacts(const Model& model, const State& state, int body, bool reduce, StepScratch& ws) {
-  constexpr double kSameRegionCos = 0.94;
+void emitContacts(const Model& model, const State& state, int body, bool reduce, PartScratch& out) {
+  const double same_region_cos = model.solver().region_cos;
   const BodyModel& b = model.body(body);
   const BodyState& s = state.bodies[body];
-  std::vector<ContactCandidate>& cands = ws.candidates;
+  std::vector<ContactCandidate>& cands = out.candidates;
   // Region ids; candidates arrive grouped by item (or other body).
   int regions = 0, group_first_region = 0;
   for (std::size_t i = 0; i < cands.size(); ++i) {
     const bool new_group = i == 0 || cands[i].item != cands[i - 1].item || cands[i].other != cands[i - 1].other;
     if (new_group) {
-      ws.region_normals.clear();
+      out.region_normals.clear();
       group_first_region = regions;
     } else if (cands[i].item >= 0 && model.scene()[cands[i].item].kind() == Sdf::Kind::kPlane) {
       cands[i].region = cands[i - 1].region;  // one normal: one region
       continue;
     }
     int r = -1;
-    for (std::size_t k = 0; k < ws.region_normals.size() && r < 0; ++k) {
-      if (ws.region_normals[k].dot(cands[i].normal_W) > kSameRegionCos) r = group_first_region + static_cast<int>(k);
+    for (std::size_t k = 0; k < out.region_normals.size() && r < 0; ++k) {
+      if (out.region_normals[k].dot(cands[i].normal_W) > same_region_cos) r = group_first_region + static_cast<int>(k);
     }
     if (r < 0) {
-      ws.region_normals.push_back(cands[i].normal_W);
+      out.region_normals.push_back(cands[i].normal_W);
       r = regions++;
     }
     cands[i].region = r;
@@ -172,19 +181,19 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
   // then point): the contacts of a step come out sorted by (body, other,
   // item, point), which warm starting looks them up by.
   const Quat q_BW = s.q_WB.conjugate();
-  std::vector<int>& kept = ws.kept;
+  std::vector<int>& kept = out.kept;
   kept.clear();
   std::size_t start = 0;
   for (int r = 0; r < regions; ++r) {
-    ws.region_members.clear();
+    out.region_members.clear();
     for (std::size_t i = start; i < cands.size(); ++i) {
-      if (cands[i].region == r) ws.region_members.push_back(static_cast<int>(i));
+      if (cands[i].region == r) out.region_members.push_back(static_cast<int>(i));
     }
-    start = static_cast<std::size_t>(ws.region_members.front());  // regions begin in order
+    start = static_cast<std::size_t>(out.region_members.front());  // regions begin in order
     if (reduce) {
-      reduceRegion(cands, b, q_BW * cands[ws.region_members.front()].normal_W, ws.region_members, ws.region_points);
+      reduceRegion(model.solver(), cands, b, q_BW * cands[out.region_members.front()].normal_W, out.region_members, out.region_points);
     }
-    kept.insert(kept.end(), ws.region_members.begin(), ws.region_members.end());
+    kept.insert(kept.end(), out.region_members.begin(), out.region_members.end());
   }
   std::sort(kept.begin(), kept.end(), [&](int x, int y) {
     return cands[x].item != cands[y].item ? cands[x].item < cands[y].item : cands[x].point < cands[y].point;
@@ -204,7 +213,7 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
     c.r_W = R_WB * p.r_B - p.radius * cand.normal_W;
     if (c.other >= 0) c.r_other_W = s.p_WB + c.r_W - state.bodies[c.other].p_WB;
     c.separation = cand.separation;
-    ws.contacts.push_back(c);
+    out.contacts.push_back(c);
   }
 }
 
@@ -219,21 +228,22 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
 /// compare numbers. Sorted, so the result does not depend on the order the
 /// workspace kept from the last step, nor on the number of parts.
 void broadPhase(const Model& model, const State& state, int parts, Workspace& ws) {
+  StepScratch& sc = *ws.scratch;
   const int n = static_cast<int>(model.bodyCount());
-  std::vector<int>& order = ws.sweep_order;
+  std::vector<int>& order = sc.sweep_order;
   if (static_cast<int>(order.size()) != n) {
     order.resize(n);
     for (int i = 0; i < n; ++i) order[i] = i;
   }
-  std::vector<double>& lo = ws.box_lo;  // 3 per body, by body index
-  std::vector<double>& hi = ws.box_hi;
-  std::vector<double>& strip = ws.box_strip;  // per body
+  std::vector<double>& lo = sc.box_lo;  // 3 per body, by body index
+  std::vector<double>& hi = sc.box_hi;
+  std::vector<double>& strip = sc.box_strip;  // per body
   lo.resize(3 * n);
   hi.resize(3 * n);
   strip.resize(n);
   double width = 0.0;  // m: of the widest box
   for (int i = 0; i < n; ++i) {
-    const double e = model.body(i).bound_radius + ws.margins[i];
+    const double e = model.body(i).bound_radius + sc.margins[i];
     width = std::max(width, 2.0 * e);
     for (int a = 0; a < 3; ++a) {
       lo[3 * i + a] = state.bodies[i].p_WB(a) - e;
@@ -258,10 +268,10 @@ void broadPhase(const Model& model, const State& state, int parts, Workspace& ws
   // Per place in the order: lo x, hi x, lo y, hi y, lo z, hi z, strip, and
   // where the next strip starts.
   constexpr int kStride = 8;
-  ws.sorted_boxes.resize(kStride * n);
+  sc.sorted_boxes.resize(kStride * n);
   for (int k = 0; k < n; ++k) {
     const int i = order[k];
-    double* b = &ws.sorted_boxes[kStride * k];
+    double* b = &sc.sorted_boxes[kStride * k];
     b[0] = lo[3 * i];
     b[1] = hi[3 * i];
     b[2] = lo[3 * i + 1];
@@ -271,19 +281,20 @@ void broadPhase(const Model& model, const State& state, int parts, Workspace& ws
     b[6] = strip[i];
   }
   for (int k = n - 1, next = n; k >= 0; --k) {
-    if (k + 1 < n && ws.sorted_boxes[kStride * (k + 1) + 6] != ws.sorted_boxes[kStride * k + 6]) next = k + 1;
-    ws.sorted_boxes[kStride * k + 7] = next;
+    if (k + 1 < n && sc.sorted_boxes[kStride * (k + 1) + 6] != sc.sorted_boxes[kStride * k + 6]) next = k + 1;
+    sc.sorted_boxes[kStride * k + 7] = next;
   }
   // The sweep: each box against the boxes after it in its strip that start
   // before it ends, and against the boxes of the next strip (if it is the
   // neighbouring one) that overlap it in x; two sleepers make no pair. In
   // `parts` contiguous runs of the order, each run's directions in its own
   // list, then merged and sorted.
-  const double* box = ws.sorted_boxes.data();
-  runParts(ws, parts, [&](int part) {
-    std::vector<std::pair<int, int>>& pairs = ws.parts[part].directions;
+  const double* box = sc.sorted_boxes.data();
+  detail::runParts(ws, parts, [&](int part) {
+    std::vector<std::pair<int, int>>& pairs = sc.parts[part].directions;
     pairs.clear();
-    const int begin = n * part / parts, end = n * (part + 1) / parts;
+    const Range range = partRange(n, part, parts);
+    const int begin = static_cast<int>(range.begin), end = static_cast<int>(range.end);
     const auto overlap = [&](int k, int m, bool k_asleep) {
       const double *a = box + kStride * k, *b = box + kStride * m;
       if ((b[2] <= a[3]) & (a[2] <= b[3]) & (b[4] <= a[5]) & (a[4] <= b[5]) &
@@ -309,74 +320,74 @@ void broadPhase(const Model& model, const State& state, int parts, Workspace& ws
     }
   });
   if (parts == 1) {
-    ws.directions.swap(ws.parts[0].directions);
+    sc.directions.swap(sc.parts[0].directions);
   } else {
-    ws.directions.clear();
+    sc.directions.clear();
     for (int k = 0; k < parts; ++k) {
-      ws.directions.insert(ws.directions.end(), ws.parts[k].directions.begin(), ws.parts[k].directions.end());
+      sc.directions.insert(sc.directions.end(), sc.parts[k].directions.begin(), sc.parts[k].directions.end());
     }
   }
-  std::sort(ws.directions.begin(), ws.directions.end());
+  std::sort(sc.directions.begin(), sc.directions.end());
 }
 
-}  // namespace
-
-void detectContacts(const Model& model, const State& state, double h, Workspace& ws) {
+/// The contacts at the current state (detectContacts without the waking).
+void findContacts(const Model& model, const State& state, double h, Workspace& ws) {
+  StepScratch& sc = *ws.scratch;
   ws.contacts.clear();
   ws.deepest_penetration = 0.0;
   const int n = static_cast<int>(model.bodyCount());
   const bool multi = n > 1 && model.contact().method != ContactMethod::kShapeMatching;
   if (model.scene().empty() && !multi) {
-    ws.in_contact.clear();  // no scene, no other body: no contact (and no allocation)
+    sc.in_contact.clear();  // no scene, no other body: no contact (and no allocation)
     return;
   }
-  ws.in_contact.assign(model.bodyCount(), 0);
+  sc.in_contact.assign(model.bodyCount(), 0);
   const ContactSettings& cs = model.contact();
   const bool impulse = cs.method == ContactMethod::kImpulse;
   const auto margin = [&](int body) {
-    if (state.bodies[body].asleep) return std::max(cs.position_slop, 1e-4);
+    if (state.bodies[body].asleep) return std::max(cs.position_slop, model.solver().min_margin);
     if (cs.method == ContactMethod::kPenaltyQuadratic) return cs.penalty_buffer;
     if (cs.method == ContactMethod::kPenaltyLogBarrier) return cs.barrier_buffer;
-    return speculativeMargin(model.body(body), state.bodies[body], h, cs.position_slop);
+    return speculativeMargin(model.body(body), state.bodies[body], h, cs.position_slop, model.solver().min_margin);
   };
   // Body against body, both ways: a's points against o's solid for every
   // pair the broad phase keeps, as directions (a, o) sorted by a then o.
-  ws.directions.clear();
+  sc.directions.clear();
   int parts = 1;
   if (multi) {
-    ws.margins.resize(n);
-    for (int i = 0; i < n; ++i) ws.margins[i] = margin(i);
+    sc.margins.resize(n);
+    for (int i = 0; i < n; ++i) sc.margins[i] = margin(i);
     std::size_t awake = 0;
     for (const BodyState& b : state.bodies) awake += !b.asleep;
-    parts = partsFor(ws, awake);
-    if (ws.parts.size() < static_cast<std::size_t>(parts)) ws.parts.resize(parts);
+    parts = detail::partsFor(ws, awake);
     broadPhase(model, state, parts, ws);
   }
   // Body by body (each against the scene, then against the others in
   // order), so contacts come out sorted by key; split over the cores in
   // contiguous ranges of bodies, merged in order.
-  if (ws.parts.empty()) ws.parts.resize(1);
-  runParts(ws, parts, [&](int k) {
-    StepScratch& out = ws.parts[k];
+  if (sc.parts.empty()) sc.parts.resize(1);
+  detail::runParts(ws, parts, [&](int k) {
+    PartScratch& out = sc.parts[k];
     out.contacts.clear();
     out.deepest = 0.0;
-    const int begin = n * k / parts, end = n * (k + 1) / parts;
-    auto dir = std::lower_bound(ws.directions.begin(), ws.directions.end(), std::make_pair(begin, -1));
+    const Range range = partRange(n, k, parts);
+    const int begin = static_cast<int>(range.begin), end = static_cast<int>(range.end);
+    auto dir = std::lower_bound(sc.directions.begin(), sc.directions.end(), std::make_pair(begin, -1));
     for (int body = begin; body < end; ++body) {
       const BodyState& s = state.bodies[body];
       if (!s.asleep && !model.scene().empty()) {
         out.candidates.clear();
-        scanScene(model, s, body, multi ? ws.margins[body] : margin(body), out.separations,
+        scanScene(model, s, body, multi ? sc.margins[body] : margin(body), out.separations,
                   [&](int item, int point, double separation, const Vec3& normal) {
                     out.candidates.push_back({-1, item, point, 0, separation, normal});
                     out.deepest = std::max(out.deepest, -separation);
                   });
         if (!out.candidates.empty()) emitContacts(model, state, body, impulse, out);
       }
-      for (; dir != ws.directions.end() && dir->first == body; ++dir) {
+      for (; dir != sc.directions.end() && dir->first == body; ++dir) {
         const int o = dir->second;
         out.candidates.clear();
-        scanBody(model, state, body, o, ws.margins[body] + ws.margins[o],
+        scanBody(model, state, body, o, sc.margins[body] + sc.margins[o],
                  [&](int point, double separation, const Vec3& normal) {
                    out.candidates.push_back({o, -1, point, 0, separation, normal});
                    out.deepest = std::max(out.deepest, -separation);
@@ -386,40 +397,25 @@ void detectContacts(const Model& model, const State& state, double h, Workspace&
     }
   });
   if (parts == 1) {
-    ws.contacts.swap(ws.parts[0].contacts);  // no copy; the old buffer is reused next time
+    ws.contacts.swap(sc.parts[0].contacts);  // no copy; the old buffer is reused next time
   } else {
     for (int k = 0; k < parts; ++k) {
-      ws.contacts.insert(ws.contacts.end(), ws.parts[k].contacts.begin(), ws.parts[k].contacts.end());
+      ws.contacts.insert(ws.contacts.end(), sc.parts[k].contacts.begin(), sc.parts[k].contacts.end());
     }
   }
-  for (int k = 0; k < parts; ++k) ws.deepest_penetration = std::max(ws.deepest_penetration, ws.parts[k].deepest);
+  for (int k = 0; k < parts; ++k) ws.deepest_penetration = std::max(ws.deepest_penetration, sc.parts[k].deepest);
   for (const Contact& c : ws.contacts) {
-    ws.in_contact[c.body] = 1;
-    if (c.other >= 0) ws.in_contact[c.other] = 1;
+    sc.in_contact[c.body] = 1;
+    if (c.other >= 0) sc.in_contact[c.other] = 1;
   }
 }
 
-bool wakeTouchedSleepers(const Model& model, State& state, const Workspace& ws, double h) {
-  // Wake a sleeper when an awake body comes at it faster than a resting
-  // contact would (gravity's one step), or presses in deeper than the slop.
-  const double still = model.sleep().linear_velocity + model.gravity().norm() * h;
-  bool woke = false;
-  for (const Contact& c : ws.contacts) {
-    if (c.other < 0) continue;
-    BodyState &a = state.bodies[c.body], &o = state.bodies[c.other];
-    if (a.asleep == o.asleep) continue;
-    const BodyState& awake = a.asleep ? o : a;
-    BodyState& sleeper = a.asleep ? a : o;
-    const Vec3 w = awake.q_WB * awake.w_B;
-    const Vec3 arm = a.asleep ? c.r_other_W : c.r_W;
-    const double approach = std::abs(c.normal_W.dot(awake.v_WB + w.cross(arm)));
-    if (approach > still || c.separation < -model.contact().position_slop) {
-      sleeper.asleep = false;
-      sleeper.still_time = 0.0;
-      woke = true;
-    }
-  }
-  return woke;
+}  // namespace
+
+void detectContacts(const Model& model, State& state, double h, Workspace& ws) {
+  findContacts(model, state, h, ws);
+  // A woken body takes part from this step on: detect again with it awake.
+  if (model.bodyCount() > 1 && wakeTouchedSleepers(model, state, ws, h)) findContacts(model, state, h, ws);
 }
 
 double minSeparation(const Model& model, const BodyState& s, int body, double margin) {

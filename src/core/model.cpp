@@ -13,9 +13,8 @@ namespace rigid_body_sim::core {
 namespace {
 
 /// Orders the extreme points by recursive median splits along the widest
-/// axis into groups of at most kGroupSize, and bounds each group by a sphere.
-void groupExtremePoints(BodyModel& b) {
-  constexpr std::size_t kGroupSize = 32;
+/// axis into groups of at most `group_size`, and bounds each group by a sphere.
+void groupExtremePoints(BodyModel& b, std::size_t group_size) {
   std::vector<std::pair<std::size_t, std::size_t>> todo{{0, b.extreme_points}};
   while (!todo.empty()) {
     const auto [begin, end] = todo.back();
@@ -23,7 +22,7 @@ void groupExtremePoints(BodyModel& b) {
     if (begin == end) continue;
     const auto first = b.contact_points.begin() + static_cast<std::ptrdiff_t>(begin);
     const auto last = b.contact_points.begin() + static_cast<std::ptrdiff_t>(end);
-    if (end - begin <= kGroupSize) {
+    if (end - begin <= group_size) {
       BodyModel::PointGroup g;
       g.begin = begin;
       g.end = end;
@@ -56,7 +55,8 @@ void groupExtremePoints(BodyModel& b) {
 
 /// Samples the body's collision shapes into contact points in B, and the
 /// quantities shape matching needs.
-void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, BodyModel& b) {
+void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, const SolverSettings& solver,
+                        BodyModel& b) {
   const Pose X_BL = Pose{b.q_LB, b.p_LB}.inverse();
   const bool sample_spheres = contact.method == ContactMethod::kShapeMatching;
   for (const CollisionShape& shape : spec.collision) {
@@ -66,7 +66,7 @@ void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, Bo
   const auto first_other = std::stable_partition(b.contact_points.begin(), b.contact_points.end(),
                                                  [](const ContactPoint& p) { return p.extreme; });
   b.extreme_points = static_cast<std::size_t>(first_other - b.contact_points.begin());
-  groupExtremePoints(b);
+  groupExtremePoints(b, static_cast<std::size_t>(solver.point_group_size));
   for (std::size_t i = 0; i < b.extreme_points; ++i) {
     b.extreme_x.push_back(b.contact_points[i].r_B.x());
     b.extreme_y.push_back(b.contact_points[i].r_B.y());
@@ -91,7 +91,7 @@ void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, Bo
 
 /// The body's solid in B: the union of its collision shapes, each posed by
 /// X_BS; meshes as a sampled signed-distance grid.
-void buildSolid(const BodySpec& spec, BodyModel& b) {
+void buildSolid(const BodySpec& spec, const SolverSettings& solver, BodyModel& b) {
   const Pose X_BL = Pose{b.q_LB, b.p_LB}.inverse();
   std::vector<Sdf> parts;
   for (const CollisionShape& shape : spec.collision) {
@@ -101,16 +101,19 @@ void buildSolid(const BodySpec& spec, BodyModel& b) {
         parts.push_back(Sdf::box(shape.size).transformed(X_BS));
         break;
       case CollisionShape::Kind::kSphere:
-        parts.push_back(Sdf::sphere(shape.size.x()).transformed(X_BS));
+        parts.push_back(Sdf::sphere(shape.radius).transformed(X_BS));
         break;
       case CollisionShape::Kind::kCylinder:
-        parts.push_back(Sdf::cylinder(shape.size.x(), shape.size.y()).transformed(X_BS));
+        parts.push_back(Sdf::cylinder(shape.radius, shape.length).transformed(X_BS));
         break;
       case CollisionShape::Kind::kPoints:
         if (shape.mesh.triangles.empty()) break;  // a point cloud has no inside
         // The grid costs resolution³ × triangles to build: coarser for big meshes.
-        parts.push_back(
-            Sdf::grid(SdfGrid::fromMesh(shape.mesh, shape.mesh.triangles.size() > 2000 ? 20 : 32)).transformed(X_BS));
+        parts.push_back(Sdf::grid(SdfGrid::fromMesh(shape.mesh, static_cast<int>(shape.mesh.triangles.size()) >
+                                                                        solver.large_mesh_triangles
+                                                                    ? solver.large_mesh_grid_resolution
+                                                                    : solver.mesh_grid_resolution))
+                            .transformed(X_BS));
         break;
     }
   }
@@ -192,6 +195,20 @@ void validateSleep(const SleepSettings& s) {
   detail::requireNonNegative(s.time, "sleep.time", "s");
 }
 
+void validateSolver(const SolverSettings& s) {
+  detail::requirePositive(s.velocity_tolerance, "solver.velocity_tolerance", "m/s");
+  detail::requireNonNegative(s.relative_tolerance, "solver.relative_tolerance", "");
+  detail::requireNonNegative(s.resting_speed, "solver.resting_speed", "m/s");
+  detail::requireNonNegative(s.rounding_speed, "solver.rounding_speed", "m/s");
+  if (s.position_iterations < 0) {
+    detail::fail("solver.position_iterations", std::to_string(s.position_iterations), "must be >= 0");
+  }
+  if (s.mesh_grid_resolution < 2 || s.large_mesh_grid_resolution < 2) {
+    detail::fail("solver.mesh_grid_resolution", std::to_string(s.mesh_grid_resolution), "must be >= 2");
+  }
+  if (s.point_group_size < 1) detail::fail("solver.point_group_size", std::to_string(s.point_group_size), "must be >= 1");
+}
+
 }  // namespace
 
 Model::Model(const ModelSpec& spec)
@@ -201,12 +218,14 @@ Model::Model(const ModelSpec& spec)
       gyroscopic_(spec.gyroscopic),
       scene_(spec.scene),
       contact_(spec.contact),
-      sleep_(spec.sleep) {
+      sleep_(spec.sleep),
+      solver_(spec.solver) {
   if (spec.bodies.empty()) detail::fail("bodies", "[]", "the model needs at least one body");
   detail::requirePositive(spec.dt, "dt", "s");
   detail::requireFinite(spec.gravity_W, "gravity");
   validateContact(spec.contact);
   validateSleep(spec.sleep);
+  validateSolver(spec.solver);
   for (std::size_t i = 0; i < spec.bodies.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
       if (spec.bodies[i].name == spec.bodies[j].name) {
@@ -219,8 +238,8 @@ Model::Model(const ModelSpec& spec)
   for (const BodySpec& b : spec.bodies) {
     bodies_.push_back(buildBody(b));
     BodyModel& body = bodies_.back();
-    buildContactPoints(b, spec.contact, body);
-    if (spec.bodies.size() > 1) buildSolid(b, body);
+    buildContactPoints(b, spec.contact, spec.solver, body);
+    if (spec.bodies.size() > 1) buildSolid(b, spec.solver, body);
     if (!scene_.empty() && body.contact_points.empty()) {
       detail::fail("body '" + b.name + "': collision", "none",
                    "contacts are on (the scene is not empty) but the body has no <collision> geometry; "

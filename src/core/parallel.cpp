@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <chrono>
 
-#include "rigid_body_sim/core/contact.h"
-
 namespace rigid_body_sim::core {
 
 WorkerPool::WorkerPool(int threads) {
@@ -20,15 +18,16 @@ WorkerPool::~WorkerPool() {
   for (std::thread& t : helpers_) t.join();
 }
 
-void WorkerPool::run(const std::function<void(int)>& part) {
+void WorkerPool::run(int parts, const std::function<void(int)>& part) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     job_ = &part;
+    parts_ = parts;
     pending_.store(static_cast<int>(helpers_.size()), std::memory_order_relaxed);
     generation_.fetch_add(1, std::memory_order_release);
   }
   wake_.notify_all();
-  part(0);
+  for (int k = 0; k < parts; k += threads()) part(k);
   while (pending_.load(std::memory_order_acquire) != 0) {
   }  // the helpers' parts are about as long as ours: spin
 }
@@ -42,27 +41,23 @@ void WorkerPool::helper(int index) {
            std::chrono::steady_clock::now() < spin_until) {
     }
     const std::function<void(int)>* job;
+    int parts;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait(lock, [&] { return stop_ || generation_.load() != seen; });
       if (stop_) return;
       seen = generation_.load();
       job = job_;
+      parts = parts_;
     }
-    (*job)(index);
+    for (int k = index; k < parts; k += threads()) (*job)(k);
     pending_.fetch_sub(1, std::memory_order_acq_rel);
   }
 }
 
-/// How many parts to split `work` units into: one unless there is enough
-/// work for a second core to pay (and a pool to run it on).
-int partsFor(Workspace& ws, std::size_t work) {
-  static const int cores = static_cast<int>(std::thread::hardware_concurrency());  // a system call: once
-  int threads = ws.threads > 0 ? ws.threads : cores;
-  threads = std::max(1, std::min(threads, 8));
-  if (threads == 1 || work < ws.min_parallel_work) return 1;  // the hand-over would cost more than it saves
-  if (!ws.pool || ws.pool->threads() != threads) ws.pool = std::make_shared<WorkerPool>(threads);
-  return threads;
+int threadCount(int setting) {
+  static const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));  // a system call: once
+  return setting > 0 ? setting : cores;
 }
 
 }  // namespace rigid_body_sim::core

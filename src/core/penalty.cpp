@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "rigid_body_sim/core/contact.h"
+#include "rigid_body_sim/core/workspace.h"
 
 namespace rigid_body_sim::core {
 
@@ -11,7 +12,7 @@ void accumulatePenaltyForces(const Model& model, const State& state, const Works
                              Vec3& torque_W) {
   const ContactSettings& cs = model.contact();
   const bool barrier = cs.method == ContactMethod::kPenaltyLogBarrier;
-  constexpr double kStictionSpeed = 1e-3;  // m/s: friction is viscous below it (regularised Coulomb)
+  const double stiction_speed = model.solver().stiction_speed;  // m/s: friction is viscous below it (regularised Coulomb)
   for (const Contact& c : ws.contacts) {
     if (c.body != body && c.other != body) continue;
     const double phi = c.separation;
@@ -30,7 +31,7 @@ void accumulatePenaltyForces(const Model& model, const State& state, const Works
     const double vn = c.normal_W.dot(u);
     fn = std::max(fn - cs.penalty_damping * vn, 0.0);
     const Vec3 vt = u - vn * c.normal_W;
-    const Vec3 f = fn * c.normal_W - (cs.friction * fn / std::max(vt.norm(), kStictionSpeed)) * vt;
+    const Vec3 f = fn * c.normal_W - (cs.friction * fn / std::max(vt.norm(), stiction_speed)) * vt;
     if (c.body == body) {
       force_W += f;
       torque_W += c.r_W.cross(f);

@@ -54,7 +54,7 @@ Sdf Sdf::subtract(std::vector<Sdf> shapes) {
 Sdf Sdf::transformed(const Pose& X) const {
   Sdf s = *this;
   s.X_WS_ = X * X_WS_;
-  s.X_WS_.q_WS.normalize();
+  s.X_WS_.rotation.normalize();
   s.X_SW_ = s.X_WS_.inverse();
   return s;
 }
@@ -64,7 +64,7 @@ double Sdf::eval(const Vec3& p_W, Vec3* gradient) const {
   if (gradient == nullptr) return evalLocal(p_S, nullptr);
   Vec3 g_S;
   const double phi = evalLocal(p_S, &g_S);
-  *gradient = X_WS_.q_WS * g_S;
+  *gradient = X_WS_.rotation * g_S;
   return phi;
 }
 

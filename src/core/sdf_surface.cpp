@@ -23,22 +23,22 @@ Bounds transformedBounds(const Bounds& b, const Pose& X) {
 }  // namespace
 
 std::optional<Bounds> solidBounds(const Sdf& sdf) {
-  const Vec3& k = sdf.params();
+  const double r = sdf.radius(), half_length = 0.5 * sdf.length();
   std::optional<Bounds> local;
   switch (sdf.kind()) {
     case Sdf::Kind::kPlane:
       return std::nullopt;
     case Sdf::Kind::kSphere:
-      local = Bounds{Vec3::Constant(-k.x()), Vec3::Constant(k.x())};
+      local = Bounds{Vec3::Constant(-r), Vec3::Constant(r)};
       break;
     case Sdf::Kind::kBox:
-      local = Bounds{-0.5 * k, 0.5 * k};
+      local = Bounds{-0.5 * sdf.size(), 0.5 * sdf.size()};
       break;
     case Sdf::Kind::kCapsule:
-      local = Bounds{Vec3(-k.x(), -k.x(), -0.5 * k.y() - k.x()), Vec3(k.x(), k.x(), 0.5 * k.y() + k.x())};
+      local = Bounds{Vec3(-r, -r, -half_length - r), Vec3(r, r, half_length + r)};
       break;
     case Sdf::Kind::kCylinder:
-      local = Bounds{Vec3(-k.x(), -k.x(), -0.5 * k.y()), Vec3(k.x(), k.x(), 0.5 * k.y())};
+      local = Bounds{Vec3(-r, -r, -half_length), Vec3(r, r, half_length)};
       break;
     case Sdf::Kind::kGrid:
       local = Bounds{sdf.samples()->lo(), sdf.samples()->hi()};

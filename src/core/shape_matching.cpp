@@ -5,6 +5,9 @@
 #include <cmath>
 #include <limits>
 
+#include "scratch.h"
+#include "sleep.h"
+
 namespace rigid_body_sim::core {
 
 Mat3 polarRotation(const Mat3& A) {
@@ -53,7 +56,8 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
   const ContactSettings& cs = model.contact();
   ws.contacts.clear();
   ws.deepest_penetration = 0.0;
-  ws.in_contact.assign(model.bodyCount(), 0);
+  detail::StepScratch& sc = *ws.scratch;
+  sc.in_contact.assign(model.bodyCount(), 0);
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     BodyState& s = state.bodies[i];
     if (s.asleep) continue;
@@ -77,7 +81,7 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
                       minSeparation(model, s, static_cast<int>(i), (v.norm() + w.norm() * b.bound_radius) * h) <
                           std::numeric_limits<double>::infinity();
     Vec3 centroid;
-    std::vector<Vec3>& y = ws.positions;
+    std::vector<Vec3>& y = sc.positions;
     y.clear();
     y.reserve(b.contact_points.size());
     for (const ContactPoint& p : b.contact_points) {
@@ -87,7 +91,7 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
       Vec3 y_i = x_i + h * v_i;
       Vec3 n;
       if (near && scenePhi(model.scene(), y_i, n) < 0.0) {
-        ws.in_contact[i] = 1;
+        sc.in_contact[i] = 1;
         v_i = respond(v_i, n, cs.restitution, cs.friction, model.restitutionThreshold());
         y_i = x_i + h * v_i;
         const double phi = scenePhi(model.scene(), y_i, n);
@@ -113,8 +117,7 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
       R_new = polarRotation(A * b.points_inv_spread);
     };
     fit();
-    constexpr int kPasses = 10;
-    for (int pass = 0; near && pass < kPasses; ++pass) {
+    for (int pass = 0; near && pass < model.solver().shape_matching_passes; ++pass) {
       bool projected = false;
       for (std::size_t k = 0; k < y.size(); ++k) {
         y[k] = centroid + R_new * (b.contact_points[k].r_B - b.points_centroid_B);
@@ -135,7 +138,7 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
     s.p_WB = p_new;
     s.q_WB = Quat(R_new).normalized();
     s.w_B = s.q_WB.conjugate() * w_new;
-    updateSleep(model, ws.in_contact[i] != 0, h, s);
+    updateSleep(model, sc.in_contact[i] != 0, h, s);
   }
 }
 

@@ -80,8 +80,8 @@ class Lumper {
     if (in.mass == 0.0 && !I.isZero(0.0)) fail(where + ": mass is 0 kg but <inertia> is not zero");
     // <inertial><origin> places the centre of mass and the inertia axes.
     const Pose X_LI = X_LK * toPose(in.origin);
-    const Mat3 R = X_LI.q_WS.toRotationMatrix();
-    return {in.mass, X_LI.p_WS, R * I * R.transpose()};
+    const Mat3 R = X_LI.rotation.toRotationMatrix();
+    return {in.mass, X_LI.translation, R * I * R.transpose()};
   }
 
   /// The link's <collision> elements as shapes posed in L.
@@ -113,14 +113,15 @@ class Lumper {
         case urdf::Geometry::SPHERE: {
           const auto& sphere = static_cast<const urdf::Sphere&>(*col.geometry);
           shape.kind = core::CollisionShape::Kind::kSphere;
-          shape.size = Vec3(sphere.radius, 0.0, 0.0);
+          shape.radius = sphere.radius;
           positive(sphere.radius, "sphere radius");
           break;
         }
         case urdf::Geometry::CYLINDER: {
           const auto& cyl = static_cast<const urdf::Cylinder&>(*col.geometry);
           shape.kind = core::CollisionShape::Kind::kCylinder;
-          shape.size = Vec3(cyl.radius, cyl.length, 0.0);
+          shape.radius = cyl.radius;
+          shape.length = cyl.length;
           positive(cyl.radius, "cylinder radius");
           positive(cyl.length, "cylinder length");
           break;

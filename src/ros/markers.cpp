@@ -38,24 +38,23 @@ void appendSolidMarkers(const core::Sdf& sdf, const core::Pose& X_FP, const Mark
   const core::Pose X_FS = X_FP * sdf.pose();
   Marker m = base;
   m.id = static_cast<int>(out.markers.size());
-  m.pose = toPose(X_FS.p_WS, X_FS.q_WS);
-  const Vec3& a = sdf.params();
+  m.pose = toPose(X_FS.translation, X_FS.rotation);
   switch (sdf.kind()) {
     case Kind::kUnion:
       for (const core::Sdf& child : sdf.children()) appendSolidMarkers(child, X_FS, base, fallback_size, out);
       return;
     case Kind::kBox:  // full size
       m.type = Marker::CUBE;
-      m.scale = toVector3(a);
+      m.scale = toVector3(sdf.size());
       break;
     case Kind::kSphere:  // radius
       m.type = Marker::SPHERE;
-      m.scale.x = m.scale.y = m.scale.z = 2.0 * a.x();
+      m.scale.x = m.scale.y = m.scale.z = 2.0 * sdf.radius();
       break;
     case Kind::kCylinder:  // radius, length along z
       m.type = Marker::CYLINDER;
-      m.scale.x = m.scale.y = 2.0 * a.x();
-      m.scale.z = a.y();
+      m.scale.x = m.scale.y = 2.0 * sdf.radius();
+      m.scale.z = sdf.length();
       break;
     default: {
       core::Bounds bounds;
@@ -69,7 +68,7 @@ void appendSolidMarkers(const core::Sdf& sdf, const core::Pose& X_FP, const Mark
       bounds.hi += margin;
       const double cell = (bounds.hi - bounds.lo).maxCoeff() / 64.0;
       m.type = Marker::TRIANGLE_LIST;
-      m.pose = toPose(X_FP.p_WS, X_FP.q_WS);  // the triangles are in P, where sdf's pose applies
+      m.pose = toPose(X_FP.translation, X_FP.rotation);  // the triangles are in P, where sdf's pose applies
       for (const Vec3& p : core::surfaceTriangles(sdf, bounds, cell)) m.points.push_back(toPoint(p));
     }
   }
@@ -80,7 +79,7 @@ void appendSolidMarkers(const core::Sdf& sdf, const core::Pose& X_FP, const Mark
 Marker shapeMarker(const core::CollisionShape& shape, const Marker& base) {
   using Kind = core::CollisionShape::Kind;
   Marker m = base;
-  m.pose = toPose(shape.X_LS.p_WS, shape.X_LS.q_WS);
+  m.pose = toPose(shape.X_LS.translation, shape.X_LS.rotation);
   switch (shape.kind) {
     case Kind::kBox:  // full size
       m.type = Marker::CUBE;
@@ -88,12 +87,12 @@ Marker shapeMarker(const core::CollisionShape& shape, const Marker& base) {
       break;
     case Kind::kSphere:  // radius
       m.type = Marker::SPHERE;
-      m.scale.x = m.scale.y = m.scale.z = 2.0 * shape.size.x();
+      m.scale.x = m.scale.y = m.scale.z = 2.0 * shape.radius;
       break;
     case Kind::kCylinder:  // radius, length along z
       m.type = Marker::CYLINDER;
-      m.scale.x = m.scale.y = 2.0 * shape.size.x();
-      m.scale.z = shape.size.y();
+      m.scale.x = m.scale.y = 2.0 * shape.radius;
+      m.scale.z = shape.length;
       break;
     case Kind::kPoints:
       if (shape.mesh.triangles.empty()) {  // a point cloud: its points, 5 mm across
@@ -122,8 +121,8 @@ MarkerArray sceneMarkers(const std::vector<core::Sdf>& scene, const std::string&
       Marker m = base;
       m.id = static_cast<int>(markers.markers.size());
       m.type = Marker::CUBE;
-      const Vec3 n = item.pose().q_WS * item.params();
-      m.pose = toPose(item.pose().p_WS - 0.0005 * n, Quat::FromTwoVectors(Vec3::UnitZ(), n));
+      const Vec3 n = item.pose().rotation * item.normal();
+      m.pose = toPose(item.pose().translation - 0.0005 * n, Quat::FromTwoVectors(Vec3::UnitZ(), n));
       m.scale.x = m.scale.y = scene_size;
       m.scale.z = 0.001;
       markers.markers.push_back(m);

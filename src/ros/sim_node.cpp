@@ -244,7 +244,7 @@ void SimNode::publishFixedFrames() {
       tf.header.stamp = stamp();
       tf.header.frame_id = prefix + link.parent;
       tf.child_frame_id = prefix + link.name;
-      tf.transform = toTransform(link.X_PK.p_WS, link.X_PK.q_WS);
+      tf.transform = toTransform(link.X_PK.translation, link.X_PK.rotation);
       fixed.push_back(tf);
     }
   }

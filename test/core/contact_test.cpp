@@ -291,7 +291,7 @@ TEST(Room, ACornerGivesSeparateContactRegions) {
   ms.scene = {room()};
   const core::Model model(ms);
   // Pressed 0.1 mm into the floor and both walls of the (+x, +y) corner.
-  const core::State s = at(model, Vec3(1 - kHalf.x() + 1e-4, 1 - kHalf.y() + 1e-4, kHalf.z() - 1e-4));
+  core::State s = at(model, Vec3(1 - kHalf.x() + 1e-4, 1 - kHalf.y() + 1e-4, kHalf.z() - 1e-4));
   core::Workspace ws;
   core::detectContacts(model, s, model.dt(), ws);
   // Group the contacts by normal: each group is one region, at most four points.

@@ -130,13 +130,14 @@ TEST(UrdfCollision, ShapesArePosedInTheRootLinkFrame) {
   ASSERT_EQ(b.collision.size(), 3u);
   EXPECT_EQ(b.collision[0].kind, core::CollisionShape::Kind::kBox);
   EXPECT_EQ(b.collision[0].size, Vec3(0.2, 0.4, 0.6));
-  EXPECT_LT((b.collision[0].X_LS.p_WS - Vec3(0, 0, 0.5)).norm(), 1e-15);
+  EXPECT_LT((b.collision[0].X_LS.translation - Vec3(0, 0, 0.5)).norm(), 1e-15);
   EXPECT_EQ(b.collision[1].kind, core::CollisionShape::Kind::kSphere);
-  EXPECT_EQ(b.collision[1].size.x(), 0.3);
+  EXPECT_EQ(b.collision[1].radius, 0.3);
   EXPECT_EQ(b.collision[2].kind, core::CollisionShape::Kind::kCylinder);
-  EXPECT_EQ(b.collision[2].size.head<2>(), Eigen::Vector2d(0.1, 0.8));
+  EXPECT_EQ(b.collision[2].radius, 0.1);
+  EXPECT_EQ(b.collision[2].length, 0.8);
   // The arm is 1 m along x, turned 90° about z: its 0.5 m along x is world +y.
-  EXPECT_LT((b.collision[2].X_LS.p_WS - Vec3(1, 0.5, 0)).norm(), 1e-15);
+  EXPECT_LT((b.collision[2].X_LS.translation - Vec3(1, 0.5, 0)).norm(), 1e-15);
 }
 
 TEST(UrdfCollision, BadGeometryIsRefusedNamingTheLink) {

@@ -80,11 +80,11 @@ TEST(UrdfLoader, ChainsOfFixedJointsComposeTheirTransforms) {
   ASSERT_EQ(b.fixed_links.size(), 2u);
   EXPECT_EQ(b.fixed_links[0].name, "mid");
   EXPECT_EQ(b.fixed_links[0].parent, "base");
-  EXPECT_LT((b.fixed_links[0].X_PK.p_WS - Vec3(0.5, 0, 0)).norm(), 1e-15);
-  EXPECT_LT(b.fixed_links[0].X_PK.q_WS.angularDistance(Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ()))), 1e-15);
+  EXPECT_LT((b.fixed_links[0].X_PK.translation - Vec3(0.5, 0, 0)).norm(), 1e-15);
+  EXPECT_LT(b.fixed_links[0].X_PK.rotation.angularDistance(Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ()))), 1e-15);
   EXPECT_EQ(b.fixed_links[1].name, "tip");
   EXPECT_EQ(b.fixed_links[1].parent, "mid");
-  EXPECT_LT((b.fixed_links[1].X_PK.p_WS - Vec3(0.5, 0, 0)).norm(), 1e-15);
+  EXPECT_LT((b.fixed_links[1].X_PK.translation - Vec3(0.5, 0, 0)).norm(), 1e-15);
 }
 
 TEST(UrdfLoader, ReportsTheLinkFrameNotTheCentreOfMass) {

@@ -1,27 +1,22 @@
 // A body's collision geometry and the contact points it is sampled into.
 #pragma once
 
-#include <array>
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/sdf.h"
+#include "rigid_body_sim/core/geometry.h"
 #include "rigid_body_sim/core/types.h"
 
 namespace rigid_body_sim::core {
-
-/// A triangle mesh: vertices and the triangles over them (indices).
-struct TriangleMesh {
-  std::vector<Vec3> vertices;                 ///< m
-  std::vector<std::array<int, 3>> triangles;  ///< counter-clockwise seen from outside
-};
 
 /// One <collision> element, posed in the link frame L.
 struct CollisionShape {
   enum class Kind { kBox, kSphere, kCylinder, kPoints };
   Kind kind = Kind::kBox;
   Pose X_LS;                 ///< pose of the shape in the link frame
-  Vec3 size = Vec3::Zero();  ///< box: full size; sphere: (radius, ·, ·); cylinder: (radius, length, ·) (m)
+  Vec3 size = Vec3::Zero();  ///< box: full size along x, y, z (m)
+  double radius = 0.0;       ///< sphere, cylinder (m)
+  double length = 0.0;       ///< cylinder: along z (m)
   TriangleMesh mesh;         ///< kPoints: the mesh, scaled, in the shape frame (m)
   std::string name;          ///< where it came from, for messages
 };

@@ -10,56 +10,10 @@
 
 #include "rigid_body_sim/core/collision.h"
 #include "rigid_body_sim/core/sdf.h"
+#include "rigid_body_sim/core/settings.h"
 #include "rigid_body_sim/core/types.h"
 
 namespace rigid_body_sim::core {
-
-/// Velocity damping. Two forms, which add up:
-///  - a decay rate k (1/s): v ← v·exp(−k Δt) each step, so v(t) = v₀ e^(−k t)
-///    whatever Δt is (docs/physics.md §5.4);
-///  - a drag force f = −σ v (and τ = −σ_ω ω), integrated explicitly
-///    like every other force, so its effect depends on Δt.
-struct Damping {
-  double linear_rate = 0.0;   ///< 1/s
-  double angular_rate = 0.0;  ///< 1/s
-  double linear_drag = 0.0;   ///< σ, N·s/m
-  double angular_drag = 0.0;  ///< σ_ω, N·m·s/rad
-};
-
-/// How contacts are resolved (docs/physics.md §5.5 and §7).
-enum class ContactMethod {
-  kImpulse,            ///< velocity impulses J = K⁻¹Δv per contact, Coulomb friction (default)
-  kPenaltyQuadratic,   ///< f = k (ε − φ) N inside the buffer ε, plus damping
-  kPenaltyLogBarrier,  ///< f = ρ (1/φ − 1/ε) N inside ε; the step shrinks so φ stays > 0
-  kShapeMatching,      ///< per-vertex update with collision and friction, then rigidify
-};
-
-struct ContactSettings {
-  ContactMethod method = ContactMethod::kImpulse;
-  double restitution = 0.0;  ///< μ_N ∈ [0, 1]
-  double friction = 0.5;     ///< μ_T (Coulomb) ≥ 0
-  /// Restitution applies only above this approach speed (m/s), so a resting
-  /// body does not jitter; never below 2|g|Δt (docs/physics.md §5.5), whatever is set.
-  double restitution_threshold = 0.1;
-  double sample_spacing = 0.1;     ///< m between collision samples on boxes and cylinders
-  int iterations = 50;             ///< impulse solver: most Gauss-Seidel sweeps per step (a stack needs them)
-  double position_slop = 1e-4;     ///< m of penetration left alone by the position correction
-  double penalty_stiffness = 1e4;  ///< k, N/m per contact point
-  double penalty_damping = 50.0;   ///< N·s/m per contact point (both penalty methods)
-  double penalty_buffer = 0.005;   ///< ε, m
-  double barrier_strength = 0.01;  ///< ρ, N·m per contact point
-  double barrier_buffer = 0.005;   ///< ε, m
-};
-
-/// A body whose speed stays below these for `time` while in contact falls
-/// asleep: it is not integrated, so it stays exactly where it is, until a
-/// load, an impulse or a new state wakes it.
-struct SleepSettings {
-  bool enabled = true;
-  double linear_velocity = 0.01;   ///< m/s
-  double angular_velocity = 0.05;  ///< rad/s
-  double time = 0.5;               ///< s
-};
 
 /// A link joined to the body by a fixed joint: a frame users see (tf), not a
 /// separate body.
@@ -96,6 +50,7 @@ struct ModelSpec {
   std::vector<Sdf> scene;
   ContactSettings contact;
   SleepSettings sleep;
+  SolverSettings solver;
 };
 
 /// One body as the integrator uses it: derived and validated quantities.
@@ -153,6 +108,7 @@ class Model {
   const std::vector<Sdf>& scene() const { return scene_; }
   const ContactSettings& contact() const { return contact_; }
   const SleepSettings& sleep() const { return sleep_; }
+  const SolverSettings& solver() const { return solver_; }
   /// max(restitution_threshold, 2 |g| Δt), m/s.
   double restitutionThreshold() const { return restitution_threshold_; }
   /// Per-step decay factors α = e^(−k Δt) of the damping rates.
@@ -168,6 +124,7 @@ class Model {
   std::vector<Sdf> scene_;
   ContactSettings contact_;
   SleepSettings sleep_;
+  SolverSettings solver_;
   double restitution_threshold_;
   double linear_decay_;
   double angular_decay_;

@@ -13,21 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "rigid_body_sim/core/geometry.h"
 #include "rigid_body_sim/core/types.h"
 
 namespace rigid_body_sim::core {
 
 class SdfGrid;
-
-/// A rigid transform: the pose of frame S in frame W.
-struct Pose {
-  Quat q_WS = Quat::Identity();
-  Vec3 p_WS = Vec3::Zero();
-
-  Pose operator*(const Pose& o) const { return {q_WS * o.q_WS, p_WS + q_WS * o.p_WS}; }
-  Vec3 operator*(const Vec3& p_S) const { return p_WS + q_WS * p_S; }
-  Pose inverse() const { return {q_WS.conjugate(), -(q_WS.conjugate() * p_WS)}; }
-};
 
 class Sdf {
  public:
@@ -57,11 +48,16 @@ class Sdf {
   double eval(const Vec3& p_W, Vec3* gradient = nullptr) const;
 
   Kind kind() const { return kind_; }
-  /// Pose of the shape frame in the world; the parameters below are in it.
+  /// Pose of the shape frame in the world; the dimensions below are in it.
   const Pose& pose() const { return X_WS_; }
-  /// Plane: the normal, in the shape frame's axes. Box: full size.
-  /// Sphere: (radius, 0, 0). Capsule, cylinder: (radius, length, 0).
-  const Vec3& params() const { return params_; }
+  /// Plane: the outward unit normal, in the shape frame's axes.
+  const Vec3& normal() const { return params_; }
+  /// Box: the full size along x, y, z (m).
+  const Vec3& size() const { return params_; }
+  /// Sphere, capsule, cylinder: the radius (m).
+  double radius() const { return params_.x(); }
+  /// Capsule, cylinder: the length along z (m; a capsule's without its caps).
+  double length() const { return params_.y(); }
   const std::vector<Sdf>& children() const { return children_; }
   const SdfGrid* samples() const { return grid_.get(); }
   bool isComposite() const { return kind_ >= Kind::kUnion; }
@@ -71,7 +67,7 @@ class Sdf {
   double evalLocal(const Vec3& p_S, Vec3* grad_S) const;
 
   Kind kind_;
-  Vec3 params_;
+  Vec3 params_;  ///< by kind: the normal, the size, or (radius, length, 0), read through the accessors above
   Pose X_WS_;
   Pose X_SW_;  // cached inverse
   std::vector<Sdf> children_;

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "rigid_body_sim/core/collision.h"
+#include "rigid_body_sim/core/geometry.h"
 #include "rigid_body_sim/core/types.h"
 
 namespace rigid_body_sim::core {

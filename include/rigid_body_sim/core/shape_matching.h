@@ -3,10 +3,10 @@
 // the vertices went. No physics in the second half: an optimization.
 #pragma once
 
-#include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/loads.h"
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/core/workspace.h"
 
 namespace rigid_body_sim::core {
 

@@ -27,20 +27,37 @@ struct BodyState {
   }
 };
 
+/// What names a contact from step to step: the body, what it touches (another
+/// body or a scene item) and which of the body's contact points touches.
+/// Contacts and their impulses are kept sorted by it; warm starting matches
+/// them by it. The one place contacts are compared.
+struct ContactKey {
+  int body = 0;    ///< index in the model
+  int other = -1;  ///< the other body, or -1 for a scene item
+  int item = -1;   ///< index in model.scene(), or -1 for a body
+  int point = 0;   ///< index in `body`'s contact points
+
+  const ContactKey& key() const { return *this; }
+  bool operator==(const ContactKey& o) const {
+    return body == o.body && other == o.other && item == o.item && point == o.point;
+  }
+  bool operator<(const ContactKey& o) const {
+    if (body != o.body) return body < o.body;
+    if (other != o.other) return other < o.other;
+    if (item != o.item) return item < o.item;
+    return point < o.point;
+  }
+};
+
 /// The impulse a contact carried in the last step, which starts the next
 /// step's solve (warm starting, as Box2D and Bullet do): a resting body's
 /// contacts then converge in one sweep instead of fifteen.
-struct ContactImpulse {
-  int body = 0;                   ///< the body
-  int other = -1;                 ///< the other body it touched, or -1
-  int item = -1;                  ///< the scene item it touched, or -1
-  int point = 0;                  ///< the body's contact point
+struct ContactImpulse : ContactKey {
   double normal = 0.0;            ///< λ_N, N·s
   Vec3 tangent_W = Vec3::Zero();  ///< λ_T, N·s, world frame
 
   bool operator==(const ContactImpulse& o) const {
-    return body == o.body && other == o.other && item == o.item && point == o.point && normal == o.normal &&
-           tangent_W == o.tangent_W;
+    return key() == o.key() && normal == o.normal && tangent_W == o.tangent_W;
   }
 };
 
@@ -75,35 +92,6 @@ State restState(const Model& model);
 /// True once a body has stayed below the sleep speeds for the sleep time
 /// (whether or not sleeping is enabled).
 bool atRest(const Model& model, const BodyState& s);
-
-/// After a step of h: counts the time a body stays below the sleep speeds.
-inline void updateStillTime(const Model& model, double h, BodyState& s) {
-  const SleepSettings& sleep = model.sleep();
-  const bool still = s.v_WB.squaredNorm() < sleep.linear_velocity * sleep.linear_velocity &&
-                     s.w_B.squaredNorm() < sleep.angular_velocity * sleep.angular_velocity;
-  s.still_time = still ? s.still_time + h : 0.0;
-}
-
-/// Whether a body may fall asleep now: sleeping is on, the body has been
-/// still for the sleep time, and it is `touching` something (a body in free
-/// flight never sleeps).
-inline bool readyToSleep(const Model& model, bool touching, const BodyState& s) {
-  return model.sleep().enabled && touching && s.still_time > 0.0 && s.still_time >= model.sleep().time;
-}
-
-/// Puts a body to sleep: velocities zeroed, no longer integrated, so it
-/// stays exactly put until something wakes it.
-inline void fallAsleep(BodyState& s) {
-  s.asleep = true;
-  s.v_WB.setZero();
-  s.w_B.setZero();
-}
-
-/// updateStillTime, then sleep for a body on its own (one body, no islands).
-inline void updateSleep(const Model& model, bool touching, double h, BodyState& s) {
-  updateStillTime(model, h, s);
-  if (readyToSleep(model, touching, s)) fallAsleep(s);
-}
 
 /// Angular velocity in the world frame: ω_W = R_WB w_B (rad/s).
 inline Vec3 angularVelocityWorld(const BodyState& s) { return s.q_WB * s.w_B; }

@@ -1,10 +1,10 @@
 // One time step of the simulation.
 #pragma once
 
-#include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/loads.h"
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/core/workspace.h"
 
 namespace rigid_body_sim::core {
 

@@ -1,0 +1,137 @@
+// Every setting of the simulation, with its unit, in one place (as Jolt's
+// PhysicsSettings): what a config file sets (damping, contact, sleep, the
+// solver's tolerances) and the numerical constants of each stage. The
+// config keys are those of config/default.yaml (`contact.friction`,
+// `solver.velocity_tolerance`, ...); the fields below say which have none.
+#pragma once
+
+namespace rigid_body_sim::core {
+
+/// Velocity damping. Two forms, which add up:
+///  - a decay rate k (1/s): v ← v·exp(−k Δt) each step, so v(t) = v₀ e^(−k t)
+///    whatever Δt is (docs/physics.md §5.4);
+///  - a drag force f = −σ v (and τ = −σ_ω ω), integrated explicitly
+///    like every other force, so its effect depends on Δt.
+struct Damping {
+  double linear_rate = 0.0;   ///< 1/s
+  double angular_rate = 0.0;  ///< 1/s
+  double linear_drag = 0.0;   ///< σ, N·s/m
+  double angular_drag = 0.0;  ///< σ_ω, N·m·s/rad
+};
+
+/// How contacts are resolved (docs/physics.md §5.5 and §7).
+enum class ContactMethod {
+  kImpulse,            ///< velocity impulses J = K⁻¹Δv per contact, Coulomb friction (default)
+  kPenaltyQuadratic,   ///< f = k (ε − φ) N inside the buffer ε, plus damping
+  kPenaltyLogBarrier,  ///< f = ρ (1/φ − 1/ε) N inside ε; the step shrinks so φ stays > 0
+  kShapeMatching,      ///< per-vertex update with collision and friction, then rigidify
+};
+
+struct ContactSettings {
+  ContactMethod method = ContactMethod::kImpulse;
+  double restitution = 0.0;  ///< μ_N ∈ [0, 1]
+  double friction = 0.5;     ///< μ_T (Coulomb) ≥ 0
+  /// Restitution applies only above this approach speed (m/s), so a resting
+  /// body does not jitter; never below 2|g|Δt (docs/physics.md §5.5), whatever is set.
+  double restitution_threshold = 0.1;
+  double sample_spacing = 0.1;     ///< m between collision samples on boxes and cylinders
+  int iterations = 50;             ///< impulse solver: most Gauss-Seidel sweeps per step (a stack needs them)
+  double position_slop = 1e-4;     ///< m of penetration left alone by the position correction
+  double penalty_stiffness = 1e4;  ///< k, N/m per contact point
+  double penalty_damping = 50.0;   ///< N·s/m per contact point (both penalty methods)
+  double penalty_buffer = 0.005;   ///< ε, m
+  double barrier_strength = 0.01;  ///< ρ, N·m per contact point
+  double barrier_buffer = 0.005;   ///< ε, m
+};
+
+/// A body whose speed stays below these for `time` while in contact falls
+/// asleep: it is not integrated, so it stays exactly where it is, until a
+/// load, an impulse or a new state wakes it.
+struct SleepSettings {
+  bool enabled = true;
+  double linear_velocity = 0.01;   ///< m/s
+  double angular_velocity = 0.05;  ///< rad/s
+  double time = 0.5;               ///< s
+};
+
+/// The numerical constants of the stages: tolerances, iteration limits and
+/// thresholds. The defaults are what the tests and benchmarks were measured
+/// with (docs/physics.md says why each is what it is); the config sets those
+/// with a key (`solver.KEY`), the others are fixed here.
+struct SolverSettings {
+  // -- impulse solve (docs/physics.md §5.5)
+  /// m/s: sweeps stop once none changes a contact velocity by more than this
+  /// (1e-10 m of drift a step: what a resting stack needs). Key velocity_tolerance.
+  double velocity_tolerance = 1e-7;
+  /// In a moving island, sweeps also stop below this fraction of the fastest
+  /// contact's speed (a relative residual). Key relative_tolerance.
+  double relative_tolerance = 1e-6;
+  /// Stall rule: from this sweep on, the solve stops when a sweep takes off
+  /// more than `stall_ratio` of what the sweep four before took (friction
+  /// whose limit moves with the normal impulse can cycle instead of converging).
+  int stall_min_sweeps = 8;
+  double stall_ratio = 0.9;
+  /// m/s: a contact off by less than this holds to rounding and gets no
+  /// impulse (about 1e-18 m/s is the rounding of impulses holding h g).
+  double rounding_speed = 1e-15;
+  /// m/s and rad/s: a body the solve leaves slower than this ends at exactly
+  /// zero, so it rests exactly (3e-5 m a year). Key resting_speed.
+  double resting_speed = 1e-12;
+  /// Friction on the Coulomb disk: Newton iterations on the secular
+  /// equation, their relative tolerance on |λ_T|, and the relative gap
+  /// between TᵀKT's eigenvalues below which it counts as isotropic.
+  int friction_newton_iterations = 30;
+  double friction_newton_tolerance = 1e-10;
+  double isotropy_tolerance = 1e-12;
+
+  // -- position correction (§5.8)
+  /// Gauss-Seidel sweeps on positions. Key position_iterations.
+  int position_iterations = 4;
+  /// An island is corrected when a contact is predicted to end deeper than
+  /// this fraction of contact.position_slop (the prediction is linear).
+  double correction_trigger = 0.5;
+
+  // -- detection (§5.1)
+  /// m: the smallest speculative margin, so resting contacts persist.
+  double min_margin = 1e-4;
+  /// Contacts of one item whose normals are within this cosine (about 20°)
+  /// form one region, reduced to four points.
+  double region_cos = 0.94;
+  /// The reduction's near-ties: m of depth and of distance, and relative;
+  /// ties go to the lowest point index, so the same points are kept from
+  /// step to step (warm starting needs it).
+  double reduction_tie_depth = 1e-9;
+  double reduction_tie_distance2 = 1e-18;  ///< m²
+  double reduction_tie_relative = 1e-9;
+
+  // -- gyroscopic rotation (§5.6)
+  /// Fixed-point passes of the implicit midpoint rule, their tolerance on
+  /// |Δu|²/|u|² (1e-12 relative), and the most sub-steps when it cannot contract.
+  int gyroscopic_iterations = 40;
+  double gyroscopic_tolerance2 = 1e-24;
+  int gyroscopic_max_substeps = 1 << 16;
+
+  // -- penalty and barrier responses (§7)
+  /// m/s: penalty friction is viscous below this slip (regularised Coulomb).
+  double stiction_speed = 1e-3;
+  /// Log barrier: a step is taken again as two halves when φ would shrink or
+  /// grow by more than this factor, at most `barrier_max_halvings` times.
+  double barrier_step_factor = 2.0;
+  int barrier_max_halvings = 20;
+
+  // -- shape matching (§7.3)
+  /// Passes projecting the fitted pose's penetrating vertices out and fitting again.
+  int shape_matching_passes = 10;
+
+  // -- the model (collision geometry)
+  /// Extreme points per group with a bounding sphere (the plane test skips whole groups).
+  int point_group_size = 32;
+  /// Cells along a mesh's longest side in its signed-distance grid; meshes
+  /// of more than `large_mesh_triangles` triangles get the coarser grid.
+  /// Key mesh_grid_resolution (the fine one).
+  int mesh_grid_resolution = 32;
+  int large_mesh_grid_resolution = 20;
+  int large_mesh_triangles = 2000;
+};
+
+}  // namespace rigid_body_sim::core

@@ -1,0 +1,49 @@
+// What a caller passes to step() besides the model and the state: the knobs
+// of how the step runs (threads, fixed points) and what it reports (the
+// contacts, the deepest penetration). The stages' scratch memory lives here
+// too, behind a pointer to a type private to the core (src/core/scratch.h),
+// as MuJoCo keeps its arena in mjData: results never depend on it, so a
+// fresh workspace or a reused one, one thread or two, give bit-identical steps.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "rigid_body_sim/core/contact.h"
+
+namespace rigid_body_sim::core {
+
+namespace detail {
+struct StepScratch;
+}
+
+struct Workspace {
+  Workspace();
+  ~Workspace();
+  Workspace(Workspace&&) noexcept;
+  Workspace& operator=(Workspace&&) noexcept;
+
+  // ---- knobs (none changes a result)
+  /// Threads the step may use, the caller's included: 0 = every core
+  /// (std::thread::hardware_concurrency). The step only splits work when
+  /// enough is awake for it to pay.
+  int threads = 0;
+  /// Awake bodies (or contacts) below which a stage runs on one thread: a
+  /// hand-over to the other core costs about 1–1.5 µs, and an awake body's
+  /// step 0.5–1.5 µs (bench/README.md).
+  std::size_t min_parallel_work = 32;
+  /// Take a step that would return its input unchanged as such (fixed_point.h);
+  /// false computes every step (the tests compare the two, state for state).
+  bool skip_fixed_points = true;
+
+  // ---- outputs of the last step
+  std::vector<Contact> contacts;     ///< sorted by key (body, other, item, point)
+  double deepest_penetration = 0.0;  ///< m, ≥ 0, seen in this step's detection
+  std::size_t skipped_steps = 0;     ///< steps found to be a fixed point and not computed again (a count)
+
+  /// The stages' scratch memory; not for callers.
+  std::unique_ptr<detail::StepScratch> scratch;
+};
+
+}  // namespace rigid_body_sim::core
