@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rigid_body_sim/io/mesh_loader.h"
+#include "rigid_body_sim/io/orientation.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 
 namespace rigid_body_sim::io {
@@ -65,12 +66,6 @@ bool boolean(const YAML::Node& node, const std::string& key) {
   fail(key, "expected true or false, got " + show(node));
 }
 
-/// URDF convention: fixed axes X (roll), Y (pitch), Z (yaw): R = Rz Ry Rx.
-Quat fromRpy(const Vec3& rpy) {
-  return Quat(Eigen::AngleAxisd(rpy.z(), Vec3::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Vec3::UnitY()) *
-              Eigen::AngleAxisd(rpy.x(), Vec3::UnitX()));
-}
-
 double positiveNumber(const YAML::Node& node, const std::string& key) {
   const double x = number(node, key);
   if (!(x > 0.0)) fail(key, "must be > 0, got " + show(node));
@@ -79,14 +74,13 @@ double positiveNumber(const YAML::Node& node, const std::string& key) {
 
 Quat orientation(const YAML::Node& node, const std::string& path) {
   if (node["rpy"] && node["quaternion"]) fail(path, "give " + path + ".rpy or " + path + ".quaternion, not both");
-  if (node["rpy"]) return fromRpy(vec3(node["rpy"], join(path, "rpy")));
+  if (node["rpy"]) return quaternionFromRpy(vec3(node["rpy"], join(path, "rpy")));
   if (!node["quaternion"]) return Quat::Identity();
   const YAML::Node q = node["quaternion"];
   const std::string key = join(path, "quaternion");
   if (!q.IsSequence() || q.size() != 4) fail(key, "expected [x, y, z, w], got " + show(q));
-  // geometry_msgs order (x, y, z, w); Eigen's constructor takes (w, x, y, z).
-  const Quat value(number(q[3], key + "[3]"), number(q[0], key + "[0]"), number(q[1], key + "[1]"),
-                   number(q[2], key + "[2]"));
+  const Quat value = quaternionFromXyzw(number(q[0], key + "[0]"), number(q[1], key + "[1]"),
+                                        number(q[2], key + "[2]"), number(q[3], key + "[3]"));
   if (std::abs(value.norm() - 1.0) > 1e-3) {
     std::ostringstream os;
     os << value.norm();
@@ -202,6 +196,28 @@ void parseSleep(const YAML::Node& node, core::SleepSettings& s) {
   if (node["time"]) s.time = number(node["time"], "sleep.time");
 }
 
+/// An integer key: a number with no fraction.
+int integer(const YAML::Node& node, const std::string& key) {
+  const double x = number(node, key);
+  if (x != std::floor(x) || std::abs(x) > 1e9) fail(key, "expected an integer, got " + show(node));
+  return static_cast<int>(x);
+}
+
+void parseSolver(const YAML::Node& node, core::SolverSettings& s) {
+  requireKnownKeys(node, "solver",
+                   {"velocity_tolerance", "relative_tolerance", "resting_speed", "position_iterations",
+                    "mesh_grid_resolution"});
+  if (node["velocity_tolerance"]) s.velocity_tolerance = number(node["velocity_tolerance"], "solver.velocity_tolerance");
+  if (node["relative_tolerance"]) s.relative_tolerance = number(node["relative_tolerance"], "solver.relative_tolerance");
+  if (node["resting_speed"]) s.resting_speed = number(node["resting_speed"], "solver.resting_speed");
+  if (node["position_iterations"]) {
+    s.position_iterations = integer(node["position_iterations"], "solver.position_iterations");
+  }
+  if (node["mesh_grid_resolution"]) {
+    s.mesh_grid_resolution = integer(node["mesh_grid_resolution"], "solver.mesh_grid_resolution");
+  }
+}
+
 void parseDamping(const YAML::Node& node, core::Damping& d) {
   requireKnownKeys(node, "damping", {"linear", "angular", "linear_drag", "angular_drag"});
   if (node["linear"]) d.linear_rate = number(node["linear"], "damping.linear");
@@ -255,7 +271,7 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
   c.model.scene = {core::Sdf::plane(Vec3::UnitZ())};  // the ground, z = 0
   if (!root || root.IsNull()) return c;
   requireKnownKeys(root, "",
-                   {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "bodies"});
+                   {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver", "bodies"});
   if (root["dt"]) c.model.dt = number(root["dt"], "dt");
   if (root["gravity"]) c.model.gravity_W = vec3(root["gravity"], "gravity");
   if (root["gyroscopic"]) c.model.gyroscopic = boolean(root["gyroscopic"], "gyroscopic");
@@ -264,6 +280,7 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
   if (root["scene"]) c.model.scene = parseScene(root["scene"]);
   if (root["contact"]) parseContact(root["contact"], c.model.contact);
   if (root["sleep"]) parseSleep(root["sleep"], c.model.sleep);
+  if (root["solver"]) parseSolver(root["solver"], c.model.solver);
   if (root["bodies"]) {
     if (root["initial"]) fail("initial", "with a bodies list, give each body its own bodies[i].initial");
     c.bodies = parseBodies(root["bodies"], base_dir);
@@ -311,27 +328,6 @@ void applyOverride(YAML::Node& root, const std::string& assignment) {
   }
   if (!node.IsMap()) fail(key, "cannot set '" + parts.back() + "' inside a value that is not a map");
   node[parts.back()] = value;
-}
-
-World buildWorld(const SimConfig& config, const std::function<core::BodySpec(const BodyEntry&)>& load_urdf) {
-  core::ModelSpec spec = config.model;
-  spec.bodies.clear();
-  for (const BodyEntry& entry : config.bodies) {
-    core::BodySpec body = load_urdf ? load_urdf(entry) : loadUrdfFile(resolveMeshUri(entry.urdf, config.base_dir));
-    body.name = entry.name;
-    spec.bodies.push_back(body);
-  }
-  World world{core::Model(spec), {}};
-  for (std::size_t i = 0; i < config.bodies.size(); ++i) {
-    world.state.bodies.push_back(core::bodyStateFromLink(world.model.body(i), config.bodies[i].initial));
-  }
-  return world;
-}
-
-core::Model buildModel(const SimConfig& config, const core::BodySpec& body) {
-  core::ModelSpec spec = config.model;
-  spec.bodies = {body};
-  return core::Model(spec);
 }
 
 }  // namespace rigid_body_sim::io

@@ -13,6 +13,7 @@
 
 #include "rigid_body_sim/core/inertia.h"
 #include "rigid_body_sim/io/mesh_loader.h"
+#include "rigid_body_sim/io/orientation.h"
 
 namespace rigid_body_sim::io {
 namespace {
@@ -24,8 +25,7 @@ using core::Vec3;
 using core::Pose;
 
 Pose toPose(const urdf::Pose& u) {
-  // urdf::Rotation is (x, y, z, w); Eigen's constructor takes (w, x, y, z).
-  return {Quat(u.rotation.w, u.rotation.x, u.rotation.y, u.rotation.z).normalized(),
+  return {quaternionFromXyzw(u.rotation.x, u.rotation.y, u.rotation.z, u.rotation.w).normalized(),
           Vec3(u.position.x, u.position.y, u.position.z)};
 }
 

@@ -1,5 +1,6 @@
 // Config parsing: the shipped defaults, overrides, and refusals that name the key.
 #include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/world.h"
 
 #include <gtest/gtest.h>
 

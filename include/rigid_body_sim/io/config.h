@@ -5,7 +5,6 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -53,20 +52,5 @@ YAML::Node loadYamlFile(const std::string& path);
 /// Applies "a.b.c=VALUE" to the tree: VALUE is parsed as YAML
 /// ("gravity=[0,0,0]", "gyroscopic=false"); missing maps are created.
 void applyOverride(YAML::Node& root, const std::string& assignment);
-
-/// Builds the model of one body with the config's settings (std::invalid_argument
-/// from the model's validation names the field).
-core::Model buildModel(const SimConfig& config, const core::BodySpec& body);
-
-/// A world: the model of the config's `bodies` and their initial state.
-struct World {
-  core::Model model;
-  core::State state;
-};
-
-/// Loads every body of config.bodies, each named by its entry, through
-/// `load_urdf` (which turns an entry's `urdf` into a BodySpec; the default
-/// reads files), and builds the model and the initial state.
-World buildWorld(const SimConfig& config, const std::function<core::BodySpec(const BodyEntry&)>& load_urdf = {});
 
 }  // namespace rigid_body_sim::io

@@ -1,0 +1,39 @@
+// A world from a config: the model of its bodies and their initial state.
+// The one place rbsim and the ROS node set a world up (they differ only in
+// where a URDF comes from: files, or for the node also parameters). ROS-free.
+#pragma once
+
+#include <functional>
+
+#include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/io/config.h"
+
+namespace rigid_body_sim::io {
+
+/// The model and the initial state.
+struct World {
+  core::Model model;
+  core::State state;
+};
+
+/// Turns a `bodies` entry's `urdf` into a body (the name is set afterwards).
+using BodyLoader = std::function<core::BodySpec(const BodyEntry&)>;
+
+/// Builds the model of one body with the config's settings (std::invalid_argument
+/// from the model's validation names the field).
+core::Model buildModel(const SimConfig& config, const core::BodySpec& body);
+
+/// Loads every body of config.bodies, each named by its entry, through `load`
+/// (default: URDF files, relative to the config's folder or package://), and
+/// builds the model and the initial state.
+World buildWorld(const SimConfig& config, const BodyLoader& load = {});
+
+/// The world a config describes: its `bodies` list (buildWorld), or, when it
+/// lists none, the one body `single_body` gives (rbsim's --urdf, the node's
+/// robot_description) at the config's `initial` pose. `single_body` is only
+/// called then; without one, a config with no bodies list is an error.
+World loadWorld(const SimConfig& config, const std::function<core::BodySpec()>& single_body,
+                const BodyLoader& load = {});
+
+}  // namespace rigid_body_sim::io
