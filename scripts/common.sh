@@ -17,6 +17,7 @@ RBS_APT_PACKAGES=(
   libeigen3-dev liburdfdom-dev libyaml-cpp-dev libassimp-dev
   # libassimp-dev's CMake config links libz.so but the package does not depend on zlib1g-dev
   zlib1g-dev
+  nlohmann-json3-dev  # rbsim writes its JSON line through it
   libgtest-dev libbenchmark-dev
   # ROS 1 (Debian's packages): build and test
   libroscpp-dev ros-message-generation ros-message-runtime

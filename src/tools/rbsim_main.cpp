@@ -21,10 +21,13 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/diagnostics.h"
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/world.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 
 namespace {
@@ -117,17 +120,18 @@ Args parseArgs(int argc, char** argv) {
 
 // ---------------------------------------------------------------- output
 
-std::string num(double x) {
-  if (!std::isfinite(x)) return "null";
+using Json = nlohmann::ordered_json;  // keys in the order written
+
+/// A number for the JSON line: non-finite values become null (JSON has no NaN).
+Json num(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+Json vec(const Vec3& v) { return Json::array({num(v.x()), num(v.y()), num(v.z())}); }
+Json quat(const Quat& q) { return Json::array({num(q.x()), num(q.y()), num(q.z()), num(q.w())}); }
+
+/// A number for messages: as precise as the double.
+std::string text(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.17g", x);
   return buf;
-}
-
-std::string vec(const Vec3& v) { return "[" + num(v.x()) + "," + num(v.y()) + "," + num(v.z()) + "]"; }
-
-std::string quat(const Quat& q) {
-  return "[" + num(q.x()) + "," + num(q.y()) + "," + num(q.z()) + "," + num(q.w()) + "]";
 }
 
 /// Roll, pitch, yaw (URDF fixed-axis convention) of a unit quaternion.
@@ -192,9 +196,11 @@ Vec3 angularMomentum(const core::Model& model, const core::State& state) {
   return total;
 }
 
-std::string finalJson(const core::LinkState& link) {
-  return "{\"position\":" + vec(link.p_WL) + ",\"quaternion\":" + quat(link.q_WL) +
-         ",\"linear_velocity\":" + vec(link.v_WL) + ",\"angular_velocity\":" + vec(link.w_W) + "}";
+Json finalJson(const core::LinkState& link) {
+  return {{"position", vec(link.p_WL)},
+          {"quaternion", quat(link.q_WL)},
+          {"linear_velocity", vec(link.v_WL)},
+          {"angular_velocity", vec(link.w_W)}};
 }
 
 int run(const Args& args) {
@@ -211,9 +217,7 @@ int run(const Args& args) {
     throw UsageError("--urdf and a config with a bodies list: give one or the other");
   }
   const bool world_config = !config.bodies.empty();
-  io::World world =
-      world_config ? io::buildWorld(config) : io::World{io::buildModel(config, io::loadUrdfFile(args.urdf)), {}};
-  if (!world_config) world.state.bodies = {core::bodyStateFromLink(world.model.body(0), config.initial)};
+  io::World world = io::loadWorld(config, [&] { return io::loadUrdfFile(args.urdf); });
   const core::Model& model = world.model;
   core::State& state = world.state;
   const std::size_t n = model.bodyCount();
@@ -221,7 +225,7 @@ int run(const Args& args) {
   const double dt = model.dt();
   const long long steps = std::llround(args.duration / dt);
   if (steps < 1) {
-    throw UsageError("--duration " + num(args.duration) + " is shorter than one step of " + num(dt) + " s");
+    throw UsageError("--duration " + text(args.duration) + " is shorter than one step of " + text(dt) + " s");
   }
   const double energy_start = core::totalEnergy(model, state);
   const Vec3 momentum_start = angularMomentum(model, state);
@@ -269,27 +273,26 @@ int run(const Args& args) {
   // The final state (the loop saw every earlier state), and rest of all bodies.
   bool at_rest = true;
   int resting = 0;
-  std::string bodies_json;
+  Json bodies_json = Json::array();
   for (std::size_t i = 0; i < n; ++i) {
     max_penetration = std::max(max_penetration,
                                -std::min(0.0, core::minSeparation(model, state.bodies[i], static_cast<int>(i), 0.0)));
     const bool rest = core::atRest(model, state.bodies[i]);
     at_rest = at_rest && rest;
     resting += rest;
-    bodies_json += std::string(i ? "," : "") + "{\"name\":\"" + model.body(i).name +
-                   "\",\"final\":" + finalJson(core::linkState(model.body(i), state.bodies[i])) +
-                   ",\"at_rest\":" + (rest ? "true" : "false") + "}";
+    bodies_json.push_back({{"name", model.body(i).name},
+                           {"final", finalJson(core::linkState(model.body(i), state.bodies[i]))},
+                           {"at_rest", rest}});
   }
-  const std::string single_final =
-      world_config ? "" : "\"final\":" + finalJson(core::linkState(model.body(0), state.bodies[0])) + ",";
-
-  std::printf(
-      "{\"steps\":%lld,\"sim_time\":%s,\"wall_s\":%s,\"ns_per_step\":%s,%s"
-      "\"energy\":{\"start\":%s,\"end\":%s},\"angular_momentum\":{\"start\":%s,\"end\":%s},"
-      "\"max_penetration\":%s,\"at_rest\":%s,\"bodies\":[%s]}\n",
-      steps, num(sim_time).c_str(), num(wall_s).c_str(), num(ns_per_step).c_str(), single_final.c_str(),
-      num(energy_start).c_str(), num(energy_end).c_str(), vec(momentum_start).c_str(), vec(momentum_end).c_str(),
-      num(max_penetration).c_str(), at_rest ? "true" : "false", bodies_json.c_str());
+  Json out = {{"steps", steps}, {"sim_time", num(sim_time)}, {"wall_s", num(wall_s)}, {"ns_per_step", num(ns_per_step)}};
+  if (!world_config) out["final"] = finalJson(core::linkState(model.body(0), state.bodies[0]));
+  out["energy"] = {{"start", num(energy_start)}, {"end", num(energy_end)}};
+  out["angular_momentum"] = {{"start", vec(momentum_start)}, {"end", vec(momentum_end)}};
+  out["max_penetration"] = num(max_penetration);
+  out["at_rest"] = at_rest;
+  out["bodies"] = bodies_json;
+  // Names are the user's: escaped by the library; bytes that are not UTF-8 are replaced, not refused.
+  std::printf("%s\n", out.dump(-1, ' ', false, Json::error_handler_t::replace).c_str());
 
   if (!args.quiet) {
     const auto rel = [](double a, double b) { return a == 0.0 ? std::abs(b) : (b - a) / std::abs(a); };

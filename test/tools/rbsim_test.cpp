@@ -3,6 +3,8 @@
 #include <sys/wait.h>
 #include <yaml-cpp/yaml.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -135,6 +137,21 @@ TEST(Rbsim, RunsAWorldOfBodiesFromTheConfig) {
   EXPECT_EQ(rows, 6 * 4);  // t = 0, 1, ..., 5 s for four bodies
   expectUsageError("--urdf " + kBox + " --config " + std::string(RBS_SOURCE_DIR) + "/config/world.yaml --duration 1",
                    "give one or the other");
+}
+
+TEST(Rbsim, EscapesBodyNamesInItsJson) {
+  // Quotes, a backslash and control characters in names: the line must stay
+  // valid JSON (a strict parser reads it) and give the names back as given.
+  const std::string config = tempPath("names.yaml");
+  std::ofstream(config) << "scene: []\ngravity: [0, 0, 0]\nbodies:\n"
+                        << "  - {name: \"say \\\"hi\\\" \\\\ back\", urdf: " << kBox << "}\n"
+                        << "  - {name: \"tab\\tand\\x01\", urdf: " << kBox << ", initial: {position: [5, 0, 0]}}\n";
+  const Result r = rbsim("--config " + config + " --duration 0.01 --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j;
+  ASSERT_NO_THROW(j = nlohmann::json::parse(r.out)) << r.out;
+  EXPECT_EQ(j["bodies"][0]["name"], "say \"hi\" \\ back");
+  EXPECT_EQ(j["bodies"][1]["name"], "tab\tand\x01");
 }
 
 TEST(Rbsim, WritesTheCsvEveryNStepsAndTheFinalState) {
