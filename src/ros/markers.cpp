@@ -4,6 +4,7 @@
 
 #include "rigid_body_sim/core/sdf_surface.h"
 #include "rigid_body_sim/ros/conversions.h"
+#include "rigid_body_sim/ros/sim_node.h"
 
 namespace rigid_body_sim::node {
 namespace {
@@ -147,6 +148,23 @@ MarkerArray bodyMarkers(const core::Model& model, const std::vector<std::string>
     }
   }
   return markers;
+}
+
+void SimNode::resendMarkersIfDue() {
+  // rviz passes each marker through a tf2 MessageFilter. A marker stamped 0
+  // that arrives before its frame's first transform is failed for good when
+  // that transform is stamped more than the buffer's 10 s after 0 (always
+  // on the wall-anchored clock, after 10 s on sim time), and the latched
+  // copy a new subscriber gets on connecting can beat tf. So the markers go
+  // again once the subscriber has had tf for a second: by then rviz knows
+  // every frame, and a marker for a known frame passes at once.
+  if (!markers_resend_ || ++markers_resend_->publishes < 2 ||
+      (ros::WallTime::now() - markers_resend_->connected).toSec() < 1.0) {
+    return;
+  }
+  markers_resend_.reset();
+  scene_pub_.publish(scene_markers_);
+  body_pub_.publish(body_markers_);
 }
 
 }  // namespace rigid_body_sim::node

@@ -1,9 +1,11 @@
-// geometry_msgs ↔ Eigen. geometry_msgs quaternions are (x, y, z, w); Eigen's
-// constructor takes (w, x, y, z): every conversion goes through here.
+// geometry_msgs ↔ Eigen, the node's one place for them. geometry_msgs
+// quaternions are (x, y, z, w); Eigen's constructor takes (w, x, y, z).
+// (Files: io/orientation.h.)
 #pragma once
 
 #include <geometry_msgs/Point.h>
 #include <geometry_msgs/Pose.h>
+#include <geometry_msgs/Quaternion.h>
 #include <geometry_msgs/Transform.h>
 #include <geometry_msgs/Vector3.h>
 
@@ -13,6 +15,8 @@ namespace rigid_body_sim::node {
 
 inline core::Vec3 fromVector3(const geometry_msgs::Vector3& v) { return {v.x, v.y, v.z}; }
 inline core::Vec3 fromPoint(const geometry_msgs::Point& p) { return {p.x, p.y, p.z}; }
+/// As given: not normalized (a request's norm is checked, not hidden).
+inline core::Quat fromQuaternion(const geometry_msgs::Quaternion& q) { return core::Quat(q.w, q.x, q.y, q.z); }
 
 /// A geometry_msgs type with fields x, y, z (Vector3, Point) from a vector.
 template <class Msg>

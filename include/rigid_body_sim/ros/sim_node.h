@@ -24,6 +24,7 @@
 #include "rigid_body_sim/Step.h"
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/core/wrench_schedule.h"
+#include "rigid_body_sim/io/world.h"
 #include "rigid_body_sim/ros/params.h"
 #include "rigid_body_sim/ros/sim_clock.h"
 

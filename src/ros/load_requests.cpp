@@ -1,0 +1,115 @@
+// The requests that push bodies: timed wrenches, impulses, the ~wrench
+// topics, and clearing them. Each validates first: a refused request
+// changes nothing.
+#include "request_checks.h"
+#include "rigid_body_sim/ros/conversions.h"
+#include "rigid_body_sim/ros/sim_node.h"
+
+namespace rigid_body_sim::node {
+
+bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res) {
+  res.success = false;
+  const auto target = findTarget(req.body, req.frame, res.message);
+  if (!target) return true;
+  const auto [body, axes] = *target;
+  const Vec3 force = fromVector3(req.force), torque = fromVector3(req.torque), point = fromPoint(req.point);
+  res.message =
+      firstProblem({checkVector(force, kMaxForce, "force", "N"), checkVector(torque, kMaxTorque, "torque", "N*m"),
+                    checkVector(point, kMaxPosition, "point", "m")});
+  if (!res.message.empty()) return true;
+  const double duration = req.duration.toSec();
+  if (duration == 0.0) {
+    res.message =
+        "duration 0 applies nothing: give duration > 0 (for that long), < 0 (until clear_wrenches), "
+        "or call apply_impulse for an instantaneous push";
+    return true;
+  }
+  // start_time is on the node's clock (the stamps of /odom and tf): 0 or
+  // the past means now, the next step; far ahead is another clock's reading.
+  double start = simTime();
+  std::string when = "from now (t = " + now() + ")";
+  if (!req.start_time.isZero()) {
+    const int64_t asked = static_cast<int64_t>(req.start_time.toNSec());
+    const double at = clock_.simTimeAt(asked), lead = at - simTime();
+    if (lead > kMaxLeadTime) {
+      res.message = "start_time " + formatStamp(asked) + " s is " + std::to_string(lead) +
+                    " s ahead of this node's clock (now " + now() +
+                    "): is it on another clock? Stamps of odom and tf are on this one; 0 means now";
+      return true;
+    }
+    if (lead > 0.0) {
+      start = at;
+      when = "from t = " + formatStamp(asked) + " s";
+    } else if (lead < 0.0) {
+      when = "from now (start_time " + formatStamp(asked) + " s is past; t = " + now() + ")";
+    }
+  }
+  const double end = duration > 0.0 ? start + duration : core::WrenchSchedule::kForever;
+  schedule_.add(body, {force, torque, point, axes.frame}, start, end, axes.other);
+  res.success = true;
+  std::ostringstream os;
+  os << "wrench on '" << model_.body(body).name << "' " << when << " "
+     << (duration > 0.0 ? "for " + std::to_string(duration) + " s" : std::string("until cleared"));
+  res.message = os.str();
+  return true;
+}
+
+bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& res) {
+  res.success = false;
+  const auto target = findTarget(req.body, req.frame, res.message);
+  if (!target) return true;
+  const auto [body, axes] = *target;
+  const Vec3 linear = fromVector3(req.linear), angular = fromVector3(req.angular), point = fromPoint(req.point);
+  res.message = firstProblem({checkVector(linear, kMaxImpulse, "linear", "N*s"),
+                              checkVector(angular, kMaxImpulse, "angular", "N*m*s"),
+                              checkVector(point, kMaxPosition, "point", "m")});
+  if (!res.message.empty()) return true;
+  core::BodyState after = state_.bodies[body];
+  core::Impulse impulse{linear, angular, point, axes.frame};
+  if (axes.other >= 0) impulse = core::inWorldAxes(impulse, orientationOf(axes, body));
+  core::applyImpulse(model_.body(body), after, impulse);
+  const std::string speed = checkVector(after.v_WB, kMaxSpeed, "resulting velocity", "m/s");
+  const std::string spin = checkVector(after.w_B, kMaxAngularSpeed, "resulting angular velocity", "rad/s");
+  if (!speed.empty() || !spin.empty()) {
+    res.message = speed.empty() ? spin : speed;
+    return true;
+  }
+  state_.bodies[body] = after;
+  res.success = true;
+  res.message = "impulse applied to '" + model_.body(body).name + "'";
+  return true;
+}
+
+bool SimNode::clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response& res) {
+  int body = -1;
+  if (!req.body.empty()) {
+    const auto found = findBody(req.body, res.message);
+    if (!found) {
+      res.success = false;
+      return true;
+    }
+    body = *found;
+  }
+  schedule_.clear(body);
+  for (std::size_t i = 0; i < held_wrenches_.size(); ++i) {
+    if (body < 0 || static_cast<int>(i) == body) held_wrenches_[i].reset();
+  }
+  res.success = true;
+  res.message = "wrenches cleared";
+  return true;
+}
+
+void SimNode::onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& msg) {
+  std::string why;
+  const auto axes = findFrame(msg->header.frame_id, body, why);
+  const Vec3 force = fromVector3(msg->wrench.force), torque = fromVector3(msg->wrench.torque);
+  if (why.empty()) why = checkVector(force, kMaxForce, "force", "N");
+  if (why.empty()) why = checkVector(torque, kMaxTorque, "torque", "N*m");
+  if (!why.empty()) {
+    ROS_WARN_THROTTLE(1.0, "sim_node: wrench for '%s' ignored: %s", model_.body(body).name.c_str(), why.c_str());
+    return;
+  }
+  held_wrenches_[body] = HeldWrench{{force, torque, Vec3::Zero(), axes->frame}, simTime(), *axes};
+}
+
+}  // namespace rigid_body_sim::node

@@ -1,0 +1,106 @@
+// The loop: sim time follows the wall clock × ~realtime_factor, in ticks
+// of ~rate, and the node's one clock (SimClock) is anchored to it.
+#include <sys/prctl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <thread>
+
+#include "rigid_body_sim/ros/sim_node.h"
+
+namespace rigid_body_sim::node {
+namespace {
+
+constexpr int kMaxStepsPerTick = 1000;  // beyond this the loop gives up catching up
+
+}  // namespace
+
+void SimNode::stepOnce() {
+  const double t = simTime(), h = model_.dt();
+  schedule_.loadsFor(model_, state_, t, h, loads_);
+  for (std::size_t i = 0; i < held_wrenches_.size(); ++i) {
+    std::optional<HeldWrench>& held = held_wrenches_[i];
+    if (!held) continue;
+    if (settings_.wrench_timeout > 0.0 && t - held->received > settings_.wrench_timeout) {
+      held.reset();
+    } else {
+      if (loads_.empty()) loads_.resize(model_.bodyCount());
+      const core::Wrench& w = held->wrench;
+      core::addWrench(model_.body(i), loads_[i],
+                      held->axes.other < 0 ? w : core::inWorldAxes(w, orientationOf(held->axes, i)));
+    }
+  }
+  core::step(model_, state_, loads_, &workspace_);
+  ++steps_;
+  state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
+  schedule_.dropFinished(simTime());
+  if (steps_ % publish_every_ == 0) {
+    publishClock();
+    publish();
+  }
+}
+
+double SimNode::rebaseClock() {
+  const int64_t lead = paused_ ? 0 : clock_.anchor(steps_, static_cast<int64_t>(ros::WallTime::now().toNSec()));
+  ref_wall_ = std::chrono::steady_clock::now() + std::chrono::nanoseconds(lead);
+  ref_sim_ = simTime();
+  return 1e-9 * static_cast<double>(lead);
+}
+
+void SimNode::run() {
+  using Clock = std::chrono::steady_clock;
+  // Linux lets a sleeping thread wake up to 50 us late by default (timer
+  // slack); at 1 kHz that is the step-period jitter. Ask for 1 us.
+  prctl(PR_SET_TIMERSLACK, 1000UL, 0UL, 0UL, 0UL);
+  const auto tick = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / settings_.rate));
+  rebaseClock();
+  auto next_tick = Clock::now();
+  auto last_tick = next_tick;
+  const double rtf = settings_.realtime_factor;
+  if (settings_.report_timing) tick_periods_.reserve(1 << 20);
+  while (ros::ok()) {
+    const auto tick_start = Clock::now();
+    if (settings_.report_timing) tick_periods_.push_back(std::chrono::duration<double>(tick_start - last_tick).count());
+    last_tick = tick_start;
+    if (!paused_ && rtf > 0.0) {
+      // Step until sim time reaches wall time × realtime factor.
+      const double target = ref_sim_ + std::chrono::duration<double>(tick_start - ref_wall_).count() * rtf;
+      int n = 0;
+      while (simTime() + 0.5 * model_.dt() <= target && n < kMaxStepsPerTick) {
+        stepOnce();
+        ++n;
+      }
+      if (n == kMaxStepsPerTick) {
+        ROS_WARN_THROTTLE(5.0, "sim_node: cannot keep up with realtime_factor %g; slowing down", rtf);
+        rebaseClock();
+      }
+    } else if (!paused_) {
+      // As fast as possible: steps in slices of about a millisecond, then callbacks.
+      const auto slice_end = tick_start + std::chrono::milliseconds(1);
+      do {
+        for (int k = 0; k < 64; ++k) stepOnce();
+      } while (Clock::now() < slice_end);
+    }
+    ros::spinOnce();
+    if (rtf > 0.0 || paused_) {
+      next_tick += tick;
+      const auto now = Clock::now();
+      if (next_tick < now) next_tick = now;  // late: do not try to make up ticks
+      std::this_thread::sleep_until(next_tick);
+    }
+  }
+  if (settings_.report_timing && tick_periods_.size() > 10) {
+    std::vector<double> d(tick_periods_.begin() + 1, tick_periods_.end());
+    for (double& x : d) x = std::abs(x - 1.0 / settings_.rate);
+    std::sort(d.begin(), d.end());
+    // Plain stdout: ROS logging is already shut down once ros::ok() is false.
+    std::printf(
+        "sim_node: timing: %zu ticks, |period - %.6g s| p50 %.1f us, p99 %.1f us, max %.1f us; sim time %.3f s\n",
+        d.size(), 1.0 / settings_.rate, 1e6 * d[d.size() / 2], 1e6 * d[d.size() * 99 / 100], 1e6 * d.back(), simTime());
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace rigid_body_sim::node

@@ -1,0 +1,88 @@
+// What the node publishes: tf and odometry of every body, /clock, the
+// fixed links on /tf_static, and the state messages of the services.
+#include <nav_msgs/Odometry.h>
+#include <rosgraph_msgs/Clock.h>
+
+#include "rigid_body_sim/ros/conversions.h"
+#include "rigid_body_sim/ros/sim_node.h"
+
+namespace rigid_body_sim::node {
+
+using core::Quat;
+
+void SimNode::publishClock() {
+  if (!use_sim_time_) return;
+  rosgraph_msgs::Clock clock;
+  clock.clock = stamp();
+  clock_pub_.publish(clock);
+}
+
+void SimNode::publish() {
+  const ros::Time now = stamp();
+  // Never the same stamp twice (tf2 would warn of repeated data) and never
+  // an older one: on sim time a paused set_state waits for the next step.
+  if (!last_published_.isZero() && now <= last_published_) return;
+  last_published_ = now;
+  for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
+    const core::BodyModel& body = model_.body(i);
+    const core::LinkState link = core::linkState(body, state_.bodies[i]);
+    geometry_msgs::TransformStamped tf;
+    tf.header.stamp = now;
+    tf.header.frame_id = settings_.world_frame;
+    tf.child_frame_id = frames_[i];
+    tf.transform = toTransform(link.p_WL, link.q_WL);
+    tf_.sendTransform(tf);
+
+    nav_msgs::Odometry odom;
+    odom.header = tf.header;
+    odom.child_frame_id = frames_[i];  // the twist is in this frame (nav_msgs/Odometry)
+    odom.pose.pose = toPose(link.p_WL, link.q_WL);
+    const Quat q_LW = link.q_WL.conjugate();
+    odom.twist.twist.linear = toVector3(q_LW * link.v_WL);
+    odom.twist.twist.angular = toVector3(q_LW * link.w_W);
+    for (int k = 0; k < 6; ++k) {
+      odom.pose.covariance[k * 7] = settings_.covariance;
+      odom.twist.covariance[k * 7] = settings_.covariance;
+    }
+    odom_pubs_[i].publish(odom);
+  }
+  resendMarkersIfDue();
+}
+
+void SimNode::publishFixedFrames() {
+  // Links fixed to a body: their frames under the body's prefix, as
+  // robot_state_publisher publishes them for one robot (static: they never move).
+  std::vector<geometry_msgs::TransformStamped> fixed;
+  for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
+    const core::BodyModel& body = model_.body(i);
+    // frames_[i] is the body's prefix ("NAME/" or "") followed by its root link.
+    const std::string prefix = frames_[i].substr(0, frames_[i].size() - body.link.size());
+    for (const core::FixedLink& link : body.fixed_links) {
+      geometry_msgs::TransformStamped tf;
+      tf.header.stamp = stamp();
+      tf.header.frame_id = prefix + link.parent;
+      tf.child_frame_id = prefix + link.name;
+      tf.transform = toTransform(link.X_PK.translation, link.X_PK.rotation);
+      fixed.push_back(tf);
+    }
+  }
+  if (!fixed.empty()) static_tf_.sendTransform(fixed);
+}
+
+BodyState SimNode::bodyState(int body, const Axes& axes) const {
+  const core::BodyModel& b = model_.body(body);
+  const core::LinkState link = core::linkState(b, state_.bodies[body]);
+  BodyState msg;
+  msg.body = b.name;
+  msg.stamp = stamp();
+  msg.pose = toPose(link.p_WL, link.q_WL);
+  msg.twist_frame = axes.other >= 0                    ? frames_[axes.other]
+                    : axes.frame == core::Frame::kBody ? frames_[body]
+                                                       : settings_.world_frame;
+  const Quat q = orientationOf(axes, body).conjugate();
+  msg.twist.linear = toVector3(q * link.v_WL);
+  msg.twist.angular = toVector3(q * link.w_W);
+  return msg;
+}
+
+}  // namespace rigid_body_sim::node

@@ -1,0 +1,44 @@
+// What a request may ask for, and the checks every handler runs first (a
+// refused request changes nothing). Private to the node.
+#pragma once
+
+#include <initializer_list>
+#include <sstream>
+#include <string>
+
+#include "rigid_body_sim/core/types.h"
+
+namespace rigid_body_sim::node {
+
+using core::Vec3;
+
+// What a request may ask for at most: beyond these it is refused as absurd.
+inline constexpr double kMaxForce = 1e6;         // N
+inline constexpr double kMaxTorque = 1e6;        // N·m
+inline constexpr double kMaxImpulse = 1e5;       // N·s and N·m·s
+inline constexpr double kMaxPosition = 1e6;      // m, also for points of application
+inline constexpr double kMaxSpeed = 1e4;         // m/s
+inline constexpr double kMaxAngularSpeed = 1e4;  // rad/s
+inline constexpr int kMaxSteps = 1000000;        // per ~step call
+inline constexpr double kMaxLeadTime = 1e6;      // s, how far ahead a start_time may be
+
+/// "" if v is finite and |v| ≤ limit, else why not.
+inline std::string checkVector(const Vec3& v, double limit, const std::string& what, const std::string& unit) {
+  std::ostringstream os;
+  if (!v.allFinite()) {
+    os << what << " is not finite: [" << v.x() << ", " << v.y() << ", " << v.z() << "]";
+  } else if (v.norm() > limit) {
+    os << what << " is absurd: |" << what << "| = " << v.norm() << " " << unit << " > " << limit << " " << unit;
+  }
+  return os.str();
+}
+
+/// The first non-empty complaint, or "".
+inline std::string firstProblem(std::initializer_list<std::string> problems) {
+  for (const std::string& p : problems) {
+    if (!p.empty()) return p;
+  }
+  return {};
+}
+
+}  // namespace rigid_body_sim::node
