@@ -122,19 +122,22 @@ void integrateBodies(const Model& model, State& state, double h, std::size_t beg
   for (std::size_t i = begin; i < end; ++i) {
     BodyState& s = state.bodies[i];
     if (s.asleep) continue;
-    if (s.w_B.isZero(0.0)) {  // no rotation: q stays as it is (normalizing it again would move its last bits)
-      integratePosition(h, s);
-    } else {
-      const Quat rotation = gyroscopicRotation(model, model.body(i), h, s);
-      integratePosition(h, s);
-      integrateOrientation(rotation, s);
-    }
+    integrateBody(model, model.body(i), h, s);
     updateStillTime(model, h, s);
   }
 }
 
-
 }  // namespace
+
+void integrateBody(const Model& model, const BodyModel& b, double h, BodyState& s) {
+  if (s.w_B.isZero(0.0)) {  // no rotation: q stays as it is (normalizing it again would move its last bits)
+    integratePosition(h, s);
+  } else {
+    const Quat rotation = gyroscopicRotation(model, b, h, s);
+    integratePosition(h, s);
+    integrateOrientation(rotation, s);
+  }
+}
 
 void integrateVelocities(const Model& model, State& state, const Loads& loads, double h, const Workspace& ws) {
   const Damping& d = model.damping();

@@ -39,6 +39,10 @@ void integratePosition(double h, BodyState& s);
 /// q ← q ⊗ increment, normalized (§5.7).
 void integrateOrientation(const Quat& increment, BodyState& s);
 
+/// One awake body's rotation, position and orientation over h (§5.6–5.7;
+/// not its still time): what stage 6–7 does to each body.
+void integrateBody(const Model& model, const BodyModel& b, double h, BodyState& s);
+
 /// Stage 2–4: forces, velocities and damping of every awake body.
 void integrateVelocities(const Model& model, State& state, const Loads& loads, double h, const Workspace& ws);
 

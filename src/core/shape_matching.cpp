@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "integration.h"
 #include "scratch.h"
 #include "sleep.h"
 
@@ -65,21 +66,30 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
     const double deepest = minSeparation(model, s, static_cast<int>(i), 0.0);
     if (deepest < 0.0) ws.deepest_penetration = std::max(ws.deepest_penetration, -deepest);
 
-    // Rigid velocities after forces (Euler-Cromer), then per-vertex motion.
-    const Mat3 R = s.q_WB.toRotationMatrix();
-    Vec3 force_W = Vec3::Zero(), torque_W = Vec3::Zero();
-    if (!loads.empty()) {
-      force_W = loads[i].force_W + R * loads[i].force_B;
-      torque_W = loads[i].torque_W + R * loads[i].torque_B;
-    }
-    Vec3 v = s.v_WB + h * (model.gravity() + b.inv_mass * force_W);
-    Vec3 w = R * s.w_B + h * (R * b.inv_inertia_B.asDiagonal() * R.transpose() * torque_W);
-    v *= std::exp(-model.damping().linear_rate * h);
-    w *= std::exp(-model.damping().angular_rate * h);
-
+    // The rigid step first, with the integration stage's own functions:
+    // forces (external, drag), velocities, damping, then the rotation with
+    // the gyroscopic term (§5.2–5.4, §5.6). Without contact every vertex
+    // moves rigidly, so that rigid step is the answer.
+    const BodyLoad* load = loads.empty() ? nullptr : &loads[i];
+    integrateVelocity(model, b, accumulateForces(model, state, load, ws, static_cast<int>(i)), h, s);
+    applyDamping(model, h, s);
     const bool near = !model.scene().empty() &&
-                      minSeparation(model, s, static_cast<int>(i), (v.norm() + w.norm() * b.bound_radius) * h) <
+                      minSeparation(model, s, static_cast<int>(i), (s.v_WB.norm() + s.w_B.norm() * b.bound_radius) * h) <
                           std::numeric_limits<double>::infinity();
+    if (!near) {
+      integrateBody(model, b, h, s);
+      updateSleep(model, false, h, s);
+      continue;
+    }
+    // Near the scene: each vertex moves with the step's rigid velocity, the
+    // rotation being the one the gyroscopic stage found (its angle over h),
+    // and collides on its own.
+    const Mat3 R = s.q_WB.toRotationMatrix();
+    const Vec3 v = s.v_WB;
+    BodyState turned = s;
+    const Eigen::AngleAxisd turn_B(gyroscopicRotation(model, b, h, turned).normalized());
+    const Vec3 w = R * ((turn_B.angle() / h) * turn_B.axis());
+
     Vec3 centroid;
     std::vector<Vec3>& y = sc.positions;
     y.clear();

@@ -16,8 +16,12 @@ namespace rigid_body_sim::core {
 /// rank-deficient A).
 Mat3 polarRotation(const Mat3& A);
 
-/// One shape-matching step of length h for every awake body:
-///   vᵢ += h (g + F/M),  yᵢ = xᵢ + h vᵢ, with a particle response
+/// One shape-matching step of length h for every awake body, in place of
+/// every stage of step(): first the rigid velocities with the integration
+/// stage's own functions (external loads, drag, damping, and the rotation
+/// with the gyroscopic term), which is the whole step for a body away from
+/// the scene; near it, each vertex moves on its own,
+///   yᵢ = xᵢ + h (v + ω × rᵢ), with a particle response
 ///   where φ(yᵢ) < 0 (restitution, friction a = max(1 − μ_T(1+μ_N)|v_N|/|v_T|, 0)),
 ///   c = mean yᵢ,  A = (Σ (yᵢ − c) r̄ᵢᵀ)(Σ r̄ᵢ r̄ᵢᵀ)⁻¹,  R = Polar(A),
 /// and the body's velocity is the rigid motion from the old pose to the new.

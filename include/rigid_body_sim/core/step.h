@@ -23,7 +23,7 @@ namespace rigid_body_sim::core {
 ///   integrate orientations         q += [0, Δt/2 ω] × q, then normalize
 ///   correct positions              push penetrating bodies out (impulse method)
 ///   update sleep                   bodies at rest stop being integrated
-/// Shape matching replaces the stages from the forces on (shape_matching.h);
+/// Shape matching replaces every stage (shape_matching.h);
 /// the log-barrier method repeats a step as two halves when φ would cross 0.
 void step(const Model& model, State& state, const Loads& loads = {}, Workspace* workspace = nullptr);
 
