@@ -52,8 +52,8 @@ int main(int argc, char** argv) {
       slow += b.v_WB.norm() < sleep.linear_velocity && b.w_B.norm() < sleep.angular_velocity;
       lowest = std::min(lowest, b.p_WB.z());
     }
-    std::printf("%6d %14.0f %16.1f %9.1f%% %9.1f%% %14.4f %12.4f %18llx\n", n, ns[ns.size() / 2],
-                ns[ns.size() / 2] / n, 100.0 * resting / n, 100.0 * slow / n, 1e3 * deepest, lowest,
+    std::printf("%6d %14.0f %16.1f %9.1f%% %9.1f%% %14.4f %12.4f %18llx\n", n, ns[ns.size() / 2], ns[ns.size() / 2] / n,
+                100.0 * resting / n, 100.0 * slow / n, 1e3 * deepest, lowest,
                 static_cast<unsigned long long>(rigid_body_sim::bench::stateHash(s)));
   }
 }

@@ -148,8 +148,8 @@ double sweepContact(const SolverSettings& settings, SolverContact& c, double& no
   }
   // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows; otherwise
   // slide with maximal dissipation (frictionOnDisk).
-  const Eigen::Vector2d lt = frictionOnDisk(settings, c.tangent_k, c.tangent_eigen, tangent - c.tangent_mass * u.tail<2>(),
-                                            friction * normal, c.friction_nu);
+  const Eigen::Vector2d lt = frictionOnDisk(settings, c.tangent_k, c.tangent_eigen,
+                                            tangent - c.tangent_mass * u.tail<2>(), friction * normal, c.friction_nu);
   const Eigen::Vector2d dlt = lt - tangent;
   tangent = lt;
   // Normal: reach the target velocity, never pull (λ_N ≥ 0).
@@ -271,8 +271,8 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
         double largest = 0.0;
         for (int k : hit) {
           SolverContact& c = begin[k];
-          largest =
-              std::max(largest, sweepContact(settings, c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction, vel));
+          largest = std::max(
+              largest, sweepContact(settings, c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction, vel));
         }
         if (largest < tolerance) break;
       }
@@ -284,8 +284,8 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
   for (int sweep = 0; sweep < cs.iterations; ++sweep) {
     double largest = 0.0;
     for (SolverContact* c = begin; c != end; ++c) {
-      largest = std::max(largest, sweepContact(settings, *c, c->normal_impulse, c->tangent_impulse, c->target_normal_velocity,
-                                               cs.friction, vel));
+      largest = std::max(largest, sweepContact(settings, *c, c->normal_impulse, c->tangent_impulse,
+                                               c->target_normal_velocity, cs.friction, vel));
     }
     if (largest < tolerance) break;
     // Stalled: four sweeps took off less than a tenth (by default). Gauss-Seidel on

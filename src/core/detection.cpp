@@ -131,10 +131,10 @@ void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandi
     }
     return std::make_pair(best, best_score);
   };
-  const std::size_t a = argmax([&](std::size_t k) { return -cands[members[k]].separation; }, settings.reduction_tie_depth).first;
-  const std::size_t b2 = argmax([&](std::size_t k) { return (at[k] - at[a]).squaredNorm(); },
-                                settings.reduction_tie_distance2)
-                         .first;
+  const std::size_t a =
+      argmax([&](std::size_t k) { return -cands[members[k]].separation; }, settings.reduction_tie_depth).first;
+  const std::size_t b2 =
+      argmax([&](std::size_t k) { return (at[k] - at[a]).squaredNorm(); }, settings.reduction_tie_distance2).first;
   const Vec3 normal_of_ab = (at[b2] - at[a]).cross(n_B);  // in the plane, across the line ab
   const auto side = [&](std::size_t k) { return normal_of_ab.dot(at[k] - at[a]); };
   const auto [c, c_score] = argmax([&](std::size_t k) { return std::abs(side(k)); }, settings.reduction_tie_distance2);
@@ -191,7 +191,8 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
     }
     start = static_cast<std::size_t>(out.region_members.front());  // regions begin in order
     if (reduce) {
-      reduceRegion(model.solver(), cands, b, q_BW * cands[out.region_members.front()].normal_W, out.region_members, out.region_points);
+      reduceRegion(model.solver(), cands, b, q_BW * cands[out.region_members.front()].normal_W, out.region_members,
+                   out.region_points);
     }
     kept.insert(kept.end(), out.region_members.begin(), out.region_members.end());
   }

@@ -79,7 +79,6 @@ void advanceOrRepeat(const Model& model, State& state, const Loads& loads, doubl
   f.holds = keep && sameInput(f, model, state, loads);
 }
 
-
 void forgetFixedPoint(Workspace& ws) { ws.scratch->fixed_point.holds = false; }
 
 }  // namespace rigid_body_sim::core

@@ -206,7 +206,8 @@ void validateSolver(const SolverSettings& s) {
   if (s.mesh_grid_resolution < 2 || s.large_mesh_grid_resolution < 2) {
     detail::fail("solver.mesh_grid_resolution", std::to_string(s.mesh_grid_resolution), "must be >= 2");
   }
-  if (s.point_group_size < 1) detail::fail("solver.point_group_size", std::to_string(s.point_group_size), "must be >= 1");
+  if (s.point_group_size < 1)
+    detail::fail("solver.point_group_size", std::to_string(s.point_group_size), "must be >= 1");
 }
 
 }  // namespace

@@ -12,7 +12,8 @@ void accumulatePenaltyForces(const Model& model, const State& state, const Works
                              Vec3& torque_W) {
   const ContactSettings& cs = model.contact();
   const bool barrier = cs.method == ContactMethod::kPenaltyLogBarrier;
-  const double stiction_speed = model.solver().stiction_speed;  // m/s: friction is viscous below it (regularised Coulomb)
+  const double stiction_speed =
+      model.solver().stiction_speed;  // m/s: friction is viscous below it (regularised Coulomb)
   for (const Contact& c : ws.contacts) {
     if (c.body != body && c.other != body) continue;
     const double phi = c.separation;

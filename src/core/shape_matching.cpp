@@ -73,9 +73,9 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
     const BodyLoad* load = loads.empty() ? nullptr : &loads[i];
     integrateVelocity(model, b, accumulateForces(model, state, load, ws, static_cast<int>(i)), h, s);
     applyDamping(model, h, s);
-    const bool near = !model.scene().empty() &&
-                      minSeparation(model, s, static_cast<int>(i), (s.v_WB.norm() + s.w_B.norm() * b.bound_radius) * h) <
-                          std::numeric_limits<double>::infinity();
+    const bool near = !model.scene().empty() && minSeparation(model, s, static_cast<int>(i),
+                                                              (s.v_WB.norm() + s.w_B.norm() * b.bound_radius) * h) <
+                                                    std::numeric_limits<double>::infinity();
     if (!near) {
       integrateBody(model, b, h, s);
       updateSleep(model, false, h, s);

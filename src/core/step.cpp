@@ -18,12 +18,15 @@ namespace {
 /// solve ran (its islands are then in the workspace, for sleep and the
 /// fixed-point cache).
 bool advance(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
+  // The stages, as a table:
+  // clang-format off
   detectContacts(model, state, h, ws);                             // §5.1    detection.cpp (wakes sleepers hit)
   integrateVelocities(model, state, loads, h, ws);                 // §5.2–4  integration.cpp: forces, v and ω, damping
   const bool impulse = solveContactImpulses(model, state, h, ws);  // §5.5    contact_solver.cpp
   integratePositions(model, state, h, ws);                         // §5.6–7  integration.cpp: gyroscopic, x and q
   if (impulse) correctPositions(model, state, ws);                 // §5.8    contact_solver.cpp
   sleepIslands(model, state, ws, impulse);                         // §6      sleep.cpp
+  // clang-format on
   return impulse;
 }
 

@@ -79,8 +79,8 @@ Quat orientation(const YAML::Node& node, const std::string& path) {
   const YAML::Node q = node["quaternion"];
   const std::string key = join(path, "quaternion");
   if (!q.IsSequence() || q.size() != 4) fail(key, "expected [x, y, z, w], got " + show(q));
-  const Quat value = quaternionFromXyzw(number(q[0], key + "[0]"), number(q[1], key + "[1]"),
-                                        number(q[2], key + "[2]"), number(q[3], key + "[3]"));
+  const Quat value = quaternionFromXyzw(number(q[0], key + "[0]"), number(q[1], key + "[1]"), number(q[2], key + "[2]"),
+                                        number(q[3], key + "[3]"));
   if (std::abs(value.norm() - 1.0) > 1e-3) {
     std::ostringstream os;
     os << value.norm();
@@ -204,11 +204,13 @@ int integer(const YAML::Node& node, const std::string& key) {
 }
 
 void parseSolver(const YAML::Node& node, core::SolverSettings& s) {
-  requireKnownKeys(node, "solver",
-                   {"velocity_tolerance", "relative_tolerance", "resting_speed", "position_iterations",
-                    "mesh_grid_resolution"});
-  if (node["velocity_tolerance"]) s.velocity_tolerance = number(node["velocity_tolerance"], "solver.velocity_tolerance");
-  if (node["relative_tolerance"]) s.relative_tolerance = number(node["relative_tolerance"], "solver.relative_tolerance");
+  requireKnownKeys(
+      node, "solver",
+      {"velocity_tolerance", "relative_tolerance", "resting_speed", "position_iterations", "mesh_grid_resolution"});
+  if (node["velocity_tolerance"])
+    s.velocity_tolerance = number(node["velocity_tolerance"], "solver.velocity_tolerance");
+  if (node["relative_tolerance"])
+    s.relative_tolerance = number(node["relative_tolerance"], "solver.relative_tolerance");
   if (node["resting_speed"]) s.resting_speed = number(node["resting_speed"], "solver.resting_speed");
   if (node["position_iterations"]) {
     s.position_iterations = integer(node["position_iterations"], "solver.position_iterations");
@@ -270,8 +272,8 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
   c.base_dir = base_dir;
   c.model.scene = {core::Sdf::plane(Vec3::UnitZ())};  // the ground, z = 0
   if (!root || root.IsNull()) return c;
-  requireKnownKeys(root, "",
-                   {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver", "bodies"});
+  requireKnownKeys(
+      root, "", {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver", "bodies"});
   if (root["dt"]) c.model.dt = number(root["dt"], "dt");
   if (root["gravity"]) c.model.gravity_W = vec3(root["gravity"], "gravity");
   if (root["gyroscopic"]) c.model.gyroscopic = boolean(root["gyroscopic"], "gyroscopic");

@@ -16,19 +16,18 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/diagnostics.h"
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/io/config.h"
-#include "rigid_body_sim/io/world.h"
 #include "rigid_body_sim/io/urdf_loader.h"
+#include "rigid_body_sim/io/world.h"
 
 namespace {
 
@@ -284,7 +283,8 @@ int run(const Args& args) {
                            {"final", finalJson(core::linkState(model.body(i), state.bodies[i]))},
                            {"at_rest", rest}});
   }
-  Json out = {{"steps", steps}, {"sim_time", num(sim_time)}, {"wall_s", num(wall_s)}, {"ns_per_step", num(ns_per_step)}};
+  Json out = {
+      {"steps", steps}, {"sim_time", num(sim_time)}, {"wall_s", num(wall_s)}, {"ns_per_step", num(ns_per_step)}};
   if (!world_config) out["final"] = finalJson(core::linkState(model.body(0), state.bodies[0]));
   out["energy"] = {{"start", num(energy_start)}, {"end", num(energy_end)}};
   out["angular_momentum"] = {{"start", vec(momentum_start)}, {"end", vec(momentum_end)}};

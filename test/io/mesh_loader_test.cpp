@@ -16,8 +16,8 @@
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/io/config.h"
-#include "rigid_body_sim/io/world.h"
 #include "rigid_body_sim/io/urdf_loader.h"
+#include "rigid_body_sim/io/world.h"
 
 namespace rigid_body_sim::test {
 namespace {

@@ -16,7 +16,9 @@ struct Pose {
   Quat rotation = Quat::Identity();  ///< orientation of B in A (unit)
   Vec3 translation = Vec3::Zero();   ///< B's origin in A (m)
 
-  Pose operator*(const Pose& X_BC) const { return {rotation * X_BC.rotation, translation + rotation * X_BC.translation}; }
+  Pose operator*(const Pose& X_BC) const {
+    return {rotation * X_BC.rotation, translation + rotation * X_BC.translation};
+  }
   Vec3 operator*(const Vec3& p_B) const { return translation + rotation * p_B; }
   Pose inverse() const { return {rotation.conjugate(), -(rotation.conjugate() * translation)}; }
 };
