@@ -48,22 +48,25 @@ rbs_phase() {
   echo "setup: done in $((SECONDS - start)) s" >&2
 }
 
+# Installs the packages given.
 rbs_apt() {
   local sudo=""
   [ "$(id -u)" -eq 0 ] || sudo="sudo"
   DEBIAN_FRONTEND=noninteractive $sudo apt-get update -q &&
-    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${RBS_APT_PACKAGES[@]}"
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "$@"
 }
 
+# Installs the packages given (default: RBS_APT_PACKAGES) that are missing.
 rbs_install_packages() {
-  local missing=()
-  for p in "${RBS_APT_PACKAGES[@]}"; do
+  local missing=() wanted=("$@")
+  [ ${#wanted[@]} -gt 0 ] || wanted=("${RBS_APT_PACKAGES[@]}")
+  for p in "${wanted[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   [ ${#missing[@]} -gt 0 ] || return 0
   # The phase's output goes to a log: ask for sudo's password here, where it shows.
   [ "$(id -u)" -eq 0 ] || sudo -v
-  rbs_phase "installing the Debian packages it needs (${#missing[@]} missing; apt-get, a few minutes on a fresh machine)" apt.log rbs_apt
+  rbs_phase "installing the Debian packages it needs (${#missing[@]} missing; apt-get, a few minutes on a fresh machine)" apt.log rbs_apt "${missing[@]}"
 }
 
 # The workspace's source space: .ws/src/rigid_body_sim holds a link to every
@@ -83,7 +86,9 @@ rbs_link_sources() {
 }
 
 # Builds into .ws/ (catkin_make, $RBS_BUILD_TYPE); extra arguments are
-# catkin_make targets, e.g. `tests`.
+# catkin_make targets, e.g. `tests`. RBS_WERROR=ON makes the project's
+# warnings errors (the tests and CI set it); compile_commands.json is kept
+# for clang-tidy.
 rbs_build() {
   rbs_link_sources
   local what="building ${*:-the package} into ${RBS_WS#"$PWD"/} ($RBS_BUILD_TYPE; about 2-3 minutes the first time on 2 cores)"
@@ -91,5 +96,6 @@ rbs_build() {
   [ "${1:-}" != tests ] || probe=node_test
   [ ! -f "$RBS_WS/devel/lib/rigid_body_sim/$probe" ] || what="building ${*:-the package} (only what changed)"
   rbs_phase "$what" "build${1:+_$1}.log" \
-    catkin_make -C "$RBS_WS" -j2 $RBS_PYFLAGS -DCMAKE_BUILD_TYPE="$RBS_BUILD_TYPE" "$@"
+    catkin_make -C "$RBS_WS" -j2 $RBS_PYFLAGS -DCMAKE_BUILD_TYPE="$RBS_BUILD_TYPE" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
+    ${RBS_WERROR:+-DRBS_WERROR="$RBS_WERROR"} "$@"
 }

@@ -9,11 +9,12 @@
 namespace rigid_body_sim::core {
 namespace {
 
-// A step that returns its input unchanged (Workspace::FixedPoint). Compared
-// bit for bit, not with ==, which would take −0.0 for +0.0.
+// A step that returns its input unchanged (detail::FixedPoint). Compared bit
+// for bit, not with ==, which would take −0.0 for +0.0: the bits are the point
+// (T holds only doubles, no padding), hence the NOLINT.
 template <class T>
 bool sameBits(const T& a, const T& b) {
-  return std::memcmp(&a, &b, sizeof(T)) == 0;
+  return std::memcmp(&a, &b, sizeof(T)) == 0;  // NOLINT(bugprone-suspicious-memory-comparison)
 }
 
 /// Everything a body brings into the step but its still time.

@@ -50,7 +50,7 @@ void validateInertia(const Mat3& I, const std::string& field, bool allow_zero) {
   const double tol = 1e-9 * scale;
   if ((I - I.transpose()).cwiseAbs().maxCoeff() > tol) detail::fail(field, detail::str(I), "must be symmetric");
   const Eigen::SelfAdjointEigenSolver<Mat3> eig(I, Eigen::EigenvaluesOnly);
-  const Vec3 m = eig.eigenvalues();  // ascending
+  const Vec3& m = eig.eigenvalues();  // ascending
   if (allow_zero ? m(0) < -tol : !(m(0) > tol)) {
     detail::fail(field, detail::str(I),
                  std::string("must be positive ") + (allow_zero ? "semi-definite" : "definite") +
