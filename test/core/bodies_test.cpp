@@ -1,6 +1,6 @@
 // Many bodies: body-body contact against closed forms (momentum, restitution,
-// Newton's cradle), a stack standing still, a room full of boxes, determinism,
-// and the sampled signed distance of a mesh.
+// Newton's cradle), a stack standing still, sleep, a room full of boxes and
+// determinism: the whole step (step.cpp) with several bodies.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +9,6 @@
 #include "../test_util.h"
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/diagnostics.h"
-#include "rigid_body_sim/core/sdf_grid.h"
 #include "rigid_body_sim/core/step.h"
 
 namespace rigid_body_sim::test {
@@ -310,24 +309,6 @@ TEST(Determinism, OneThreadOrTwoGiveTheSameBits) {
     return s;
   };
   EXPECT_TRUE(bitIdentical(run(1), run(2)));
-}
-
-TEST(SdfGrid, AMeshCubeMatchesTheBoxDistanceWithinTwoCells) {
-  // A 0.2 m cube as 12 triangles.
-  core::TriangleMesh cube;
-  for (int i = 0; i < 8; ++i) cube.vertices.emplace_back(i & 1 ? 0.1 : -0.1, i & 2 ? 0.1 : -0.1, i & 4 ? 0.1 : -0.1);
-  cube.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                    {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-  const auto grid = core::SdfGrid::fromMesh(cube, 32);
-  const core::Sdf exact = core::Sdf::box(Vec3(0.2, 0.2, 0.2));
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-0.2, 0.2);
-  for (int i = 0; i < 500; ++i) {
-    const Vec3 p(u(rng), u(rng), u(rng));
-    EXPECT_NEAR(grid->eval(p, nullptr), exact.eval(p), 2 * grid->cell()) << p.transpose();  // trilinear near edges
-  }
-  EXPECT_LT(grid->eval(Vec3::Zero(), nullptr), -0.09);         // inside is negative
-  EXPECT_NEAR(grid->eval(Vec3(1, 0, 0), nullptr), 0.9, 1e-9);  // beyond the grid: plus the distance
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Timed wrenches deliver exactly force × duration; surfaces of the scene.
+// Timed wrenches deliver exactly force × duration.
 #include "rigid_body_sim/core/wrench_schedule.h"
 
 #include <gtest/gtest.h>
@@ -7,7 +7,6 @@
 #include <complex>
 
 #include "../test_util.h"
-#include "rigid_body_sim/core/sdf_surface.h"
 #include "rigid_body_sim/core/step.h"
 
 namespace rigid_body_sim::test {
@@ -82,23 +81,6 @@ TEST(WrenchSchedule, AWrenchInAnotherBodysAxesTurnsWithThatBody) {
   EXPECT_GT(s.bodies[0].v_WB.y(), 0.1);       // it turned: a fixed world force would give none along y
   EXPECT_EQ(s.bodies[0].w_B, Vec3::Zero());   // the force acts at the centre of mass
   EXPECT_EQ(s.bodies[1].v_WB, Vec3::Zero());  // and on body 0 only
-}
-
-TEST(SdfSurface, TrianglesLieOnTheSurfaceOfAComposition) {
-  const core::Sdf room =
-      core::Sdf::subtract({core::Sdf::box(Vec3(2.2, 2.2, 1.2)).transformed({Quat::Identity(), Vec3(0, 0, 0.5)}),
-                           core::Sdf::box(Vec3(2.0, 2.0, 1.5)).transformed({Quat::Identity(), Vec3(0, 0, 0.75)})});
-  const auto bounds = core::solidBounds(room);
-  ASSERT_TRUE(bounds.has_value());
-  EXPECT_LT((bounds->lo - Vec3(-1.1, -1.1, -0.1)).norm(), 1e-12);
-  EXPECT_LT((bounds->hi - Vec3(1.1, 1.1, 1.1)).norm(), 1e-12);
-  const double cell = 0.05;
-  const std::vector<Vec3> tris = core::surfaceTriangles(room, *bounds, cell);
-  ASSERT_GT(tris.size(), 300u);
-  EXPECT_EQ(tris.size() % 3, 0u);
-  for (const Vec3& p : tris) EXPECT_LT(std::abs(room.eval(p)), cell) << p.transpose();
-  EXPECT_FALSE(core::solidBounds(core::Sdf::plane(Vec3::UnitZ())).has_value());
-  EXPECT_FALSE(core::solidBounds(core::Sdf::unite({core::Sdf::sphere(1), core::Sdf::plane(Vec3::UnitZ())})));
 }
 
 }  // namespace

@@ -1,0 +1,78 @@
+// Collision shapes sampled into contact points (src/core/collision.cpp).
+#include "rigid_body_sim/core/collision.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../test_util.h"
+#include "rigid_body_sim/core/sdf.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+core::CollisionShape box(const Vec3& size) {
+  core::CollisionShape s;
+  s.kind = core::CollisionShape::Kind::kBox;
+  s.size = size;
+  return s;
+}
+
+TEST(Collision, ABoxIsItsEightCornersPlusSamplesAllOnItsSurface) {
+  const core::CollisionShape shape = box(Vec3(0.4, 0.2, 0.1));
+  const auto points = core::sampleShape(shape, core::Pose{}, 0.05, false);
+  const core::Sdf solid = core::Sdf::box(shape.size);
+  int extreme = 0;
+  for (const core::ContactPoint& p : points) {
+    EXPECT_NEAR(solid.eval(p.r_B), 0.0, 1e-15) << p.r_B.transpose();
+    EXPECT_EQ(p.radius, 0.0);
+    if (p.extreme) {
+      ++extreme;
+      EXPECT_EQ(p.r_B.cwiseAbs(), Vec3(0.2, 0.1, 0.05));  // only the corners can be deepest against a plane
+    }
+  }
+  EXPECT_EQ(extreme, 8);
+  EXPECT_GT(points.size(), 8u);  // edges and faces sampled at the spacing
+}
+
+TEST(Collision, ASphereIsItsCentreWithItsRadiusUnlessShapeMatchingNeedsVertices) {
+  core::CollisionShape shape;
+  shape.kind = core::CollisionShape::Kind::kSphere;
+  shape.radius = 0.3;
+  const auto exact = core::sampleShape(shape, core::Pose{}, 0.05, false);
+  ASSERT_EQ(exact.size(), 1u);
+  EXPECT_EQ(exact[0].r_B, Vec3::Zero());
+  EXPECT_EQ(exact[0].radius, 0.3);
+  const auto sampled = core::sampleShape(shape, core::Pose{}, 0.05, true);
+  ASSERT_GT(sampled.size(), 100u);  // 4π r² / spacing²
+  for (const core::ContactPoint& p : sampled) EXPECT_NEAR(p.r_B.norm(), 0.3, 1e-12);
+}
+
+TEST(Collision, ACylindersRimsAreItsExtremePoints) {
+  core::CollisionShape shape;
+  shape.kind = core::CollisionShape::Kind::kCylinder;
+  shape.radius = 0.1;
+  shape.length = 0.4;
+  const core::Sdf solid = core::Sdf::cylinder(0.1, 0.4);
+  for (const core::ContactPoint& p : core::sampleShape(shape, core::Pose{}, 0.02, false)) {
+    EXPECT_NEAR(solid.eval(p.r_B), 0.0, 1e-12) << p.r_B.transpose();
+    if (p.extreme) {
+      EXPECT_NEAR(std::hypot(p.r_B.x(), p.r_B.y()), 0.1, 1e-12);
+      EXPECT_NEAR(std::abs(p.r_B.z()), 0.2, 1e-12);
+    }
+  }
+}
+
+TEST(Collision, PointsAreExpressedInTheBodyFrameThroughTheShapeAndLinkPoses) {
+  core::CollisionShape shape = box(Vec3(0.2, 0.2, 0.2));
+  shape.X_LS = {Quat::Identity(), Vec3(1, 0, 0)};                                          // the shape 1 m along L's x
+  const core::Pose X_BL{Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ())), Vec3(0, 0, 2)};  // L turned in B, 2 m up
+  Vec3 mean = Vec3::Zero();
+  const auto points = core::sampleShape(shape, X_BL, 1.0, false);
+  for (const core::ContactPoint& p : points) mean += p.r_B;
+  mean /= static_cast<double>(points.size());
+  EXPECT_LT((mean - Vec3(0, 1, 2)).norm(), 1e-12);  // the shape's centre, X_BL X_LS applied
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
