@@ -47,6 +47,12 @@ TEST(Config, ShippedDefaultsAreTheCodeDefaults) {
   EXPECT_EQ(fs.linear_velocity, cs.linear_velocity);
   EXPECT_EQ(fs.angular_velocity, cs.angular_velocity);
   EXPECT_EQ(fs.time, cs.time);
+  const core::SolverSettings &fv = file.model.solver, &cv = code.model.solver;
+  EXPECT_EQ(fv.velocity_tolerance, cv.velocity_tolerance);
+  EXPECT_EQ(fv.relative_tolerance, cv.relative_tolerance);
+  EXPECT_EQ(fv.resting_speed, cv.resting_speed);
+  EXPECT_EQ(fv.position_iterations, cv.position_iterations);
+  EXPECT_EQ(fv.mesh_grid_resolution, cv.mesh_grid_resolution);
   // The default scene is the ground plane z = 0, in the file and in the code.
   for (const io::SimConfig* c : {&file, &code}) {
     ASSERT_EQ(c->model.scene.size(), 1u);
@@ -105,6 +111,22 @@ sleep: {enabled: false, linear_velocity: 0.02, angular_velocity: 0.1, time: 1.5}
   for (const char* m : {"impulse", "penalty_quadratic", "shape_matching"}) {
     EXPECT_NO_THROW(parse(std::string("contact: {method: ") + m + "}"));
   }
+}
+
+TEST(Config, SolverKeysSetTheTolerancesAUserMayNeed) {
+  const io::SimConfig c = parse(
+      "solver: {velocity_tolerance: 1.0e-6, relative_tolerance: 1.0e-5, resting_speed: 0, position_iterations: 8, "
+      "mesh_grid_resolution: 48}");
+  EXPECT_EQ(c.model.solver.velocity_tolerance, 1e-6);
+  EXPECT_EQ(c.model.solver.relative_tolerance, 1e-5);
+  EXPECT_EQ(c.model.solver.resting_speed, 0.0);
+  EXPECT_EQ(c.model.solver.position_iterations, 8);
+  EXPECT_EQ(c.model.solver.mesh_grid_resolution, 48);
+  expectRefused("solver: {stall_ratio: 0.5}", {"'solver.stall_ratio'", "unknown key"});
+  expectRefused("solver: {position_iterations: 2.5}", {"'solver.position_iterations'", "integer"});
+  const io::SimConfig zero = parse("scene: []\nsolver: {velocity_tolerance: 0}");
+  expectThrowsWith<std::invalid_argument>([&] { io::buildModel(zero, shippedBox()); },
+                                          {"solver.velocity_tolerance = 0", "> 0"});
 }
 
 TEST(Config, BadScenesAndContactsAreRefusedByKey) {
