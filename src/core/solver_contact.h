@@ -4,9 +4,16 @@
 
 #include <Eigen/Core>
 
+#include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/types.h"
 
 namespace rigid_body_sim::core::detail {
+
+/// A body's inverse inertia in world axes, R I⁻¹ Rᵀ (1/(kg·m²)).
+inline Mat3 worldInverseInertia(const BodyModel& b, const Quat& q_WB) {
+  const Mat3 R = q_WB.toRotationMatrix();
+  return R * b.inv_inertia_B.asDiagonal() * R.transpose();
+}
 
 /// A body's velocity as the solve changes it, world axes (Box2D's solver body).
 struct BodyVelocity {

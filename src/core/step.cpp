@@ -24,7 +24,7 @@ bool advance(const Model& model, State& state, const Loads& loads, double h, Wor
   integrateVelocities(model, state, loads, h, ws);                 // §5.2–4  integration.cpp: forces, v and ω, damping
   const bool impulse = solveContactImpulses(model, state, h, ws);  // §5.5    contact_solver.cpp
   integratePositions(model, state, h, ws);                         // §5.6–7  integration.cpp: gyroscopic, x and q
-  if (impulse) correctPositions(model, state, ws);                 // §5.8    contact_solver.cpp
+  if (impulse) correctPositions(model, state, ws);                 // §5.8    position_correction.cpp
   sleepIslands(model, state, ws, impulse);                         // §6      sleep.cpp
   // clang-format on
   return impulse;

@@ -1,0 +1,80 @@
+// The position correction after the impulse solve (docs/physics.md §5.8):
+// nonlinear Gauss-Seidel on positions, as Box2D does.
+#include "rigid_body_sim/core/contact.h"
+#include "scratch.h"
+
+namespace rigid_body_sim::core {
+
+using detail::StepScratch;
+
+void correctPositions(const Model& model, State& state, Workspace& ws) {
+  const double slop = model.contact().position_slop;
+  StepScratch& sc = *ws.scratch;
+  // Resting contacts end the step where they began: nothing to correct.
+  // (Linear prediction; rotation adds O(h²ω²r), far below the slop at rest.)
+  // Only the islands (of the impulse solve) with a contact predicted to end
+  // deeper than a fraction of the slop (correction_trigger, a half) are
+  // corrected (the prediction is linear: the rest of the slop is its margin).
+  std::vector<char>& needs = sc.island_flags;  // per island root
+  needs.assign(model.bodyCount(), 0);
+  bool any = false;
+  for (const Contact& c : ws.contacts) {
+    if (c.predicted_separation <= -model.solver().correction_trigger * slop) needs[sc.island_root[c.body]] = any = true;
+  }
+  if (!any) return;
+  std::vector<int>& todo = sc.correct_contacts;  // in contact order
+  todo.clear();
+  for (std::size_t k = 0; k < ws.contacts.size(); ++k) {
+    if (needs[sc.island_root[ws.contacts[k].body]]) todo.push_back(static_cast<int>(k));
+  }
+  for (int sweep = 0; sweep < model.solver().position_iterations; ++sweep) {
+    double deepest = 0.0;
+    for (const int index : todo) {
+      const Contact& c = ws.contacts[index];
+      const BodyModel& b = model.body(c.body);
+      BodyState& s = state.bodies[c.body];
+      const ContactPoint& p = b.contact_points[c.point];
+      const Vec3 arm = s.q_WB * p.r_B;
+      Vec3 n;
+      double separation;
+      BodyState* o = nullptr;
+      if (c.other < 0) {
+        separation = model.scene()[c.item].eval(s.p_WB + arm, &n) - p.radius;
+      } else {
+        o = &state.bodies[c.other];
+        Vec3 n_O;
+        separation =
+            model.body(c.other).solid_B.front().eval(o->q_WB.conjugate() * (s.p_WB + arm - o->p_WB), &n_O) - p.radius;
+        n = o->q_WB * n_O;
+        if (o->asleep) o = nullptr;  // a sleeper stays put, like the ground
+      }
+      const double C = separation + slop;
+      if (C >= 0.0) continue;
+      deepest = std::min(deepest, C);
+      const Vec3 r = arm - p.radius * n;
+      const Mat3 inv_I = detail::worldInverseInertia(b, s.q_WB);
+      const Vec3 rn = r.cross(n);
+      double k = b.inv_mass + rn.dot(inv_I * rn);
+      Vec3 r_o = Vec3::Zero();
+      Mat3 inv_I_o = Mat3::Zero();
+      if (o != nullptr) {
+        r_o = s.p_WB + r - o->p_WB;
+        inv_I_o = detail::worldInverseInertia(model.body(c.other), o->q_WB);
+        const Vec3 on = r_o.cross(n);
+        k += model.body(c.other).inv_mass + on.dot(inv_I_o * on);
+      }
+      const Vec3 P = (-C / k) * n;  // positional impulse that closes C to first order
+      const auto move = [](BodyState& x, double inv_mass, const Mat3& inv_I_W, const Vec3& arm_W, const Vec3& impulse) {
+        x.p_WB += inv_mass * impulse;
+        const Vec3 half_turn = 0.5 * (inv_I_W * arm_W.cross(impulse));
+        x.q_WB = Quat(1.0, half_turn.x(), half_turn.y(), half_turn.z()) * x.q_WB;
+        x.q_WB.normalize();
+      };
+      move(s, b.inv_mass, inv_I, r, P);
+      if (o != nullptr) move(*o, model.body(c.other).inv_mass, inv_I_o, r_o, -P);
+    }
+    if (deepest >= 0.0) break;
+  }
+}
+
+}  // namespace rigid_body_sim::core
