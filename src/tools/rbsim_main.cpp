@@ -26,6 +26,7 @@
 #include "rigid_body_sim/core/diagnostics.h"
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/orientation.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/io/world.h"
 
@@ -131,14 +132,6 @@ std::string text(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.17g", x);
   return buf;
-}
-
-/// Roll, pitch, yaw (URDF fixed-axis convention) of a unit quaternion.
-Vec3 rpy(const Quat& q) {
-  const double roll = std::atan2(2 * (q.w() * q.x() + q.y() * q.z()), 1 - 2 * (q.x() * q.x() + q.y() * q.y()));
-  const double s = std::clamp(2 * (q.w() * q.y() - q.z() * q.x()), -1.0, 1.0);
-  const double yaw = std::atan2(2 * (q.w() * q.z() + q.x() * q.y()), 1 - 2 * (q.y() * q.y() + q.z() * q.z()));
-  return {roll, std::asin(s), yaw};
 }
 
 class CsvWriter {
@@ -304,7 +297,7 @@ int run(const Args& args) {
     } else {
       const core::BodyModel& bm = model.body(0);
       const core::LinkState final_link = core::linkState(bm, state.bodies[0]);
-      const Vec3 angles = rpy(final_link.q_WL);
+      const Vec3 angles = io::rpyFromQuaternion(final_link.q_WL);
       std::fprintf(stderr, "rbsim: '%s' (%.6g kg) for %.6g s: %lld steps of %.6g s, %.3g s wall, %.1f ns/step\n",
                    bm.name.c_str(), bm.mass, sim_time, steps, dt, wall_s, ns_per_step);
       std::fprintf(stderr, "  final position    [%.6g, %.6g, %.6g] m, rpy [%.6g, %.6g, %.6g] rad\n",

@@ -5,6 +5,9 @@
 // (The ROS messages' own conversion is ros/conversions.h.)
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "rigid_body_sim/core/types.h"
 
 namespace rigid_body_sim::io {
@@ -17,6 +20,15 @@ inline core::Quat quaternionFromXyzw(double x, double y, double z, double w) { r
 inline core::Quat quaternionFromRpy(const core::Vec3& rpy) {
   return core::Quat(Eigen::AngleAxisd(rpy.z(), core::Vec3::UnitZ()) * Eigen::AngleAxisd(rpy.y(), core::Vec3::UnitY()) *
                     Eigen::AngleAxisd(rpy.x(), core::Vec3::UnitX()));
+}
+
+/// The inverse: roll, pitch, yaw (rad) of a unit quaternion, pitch within
+/// [−π/2, π/2] (what rbsim prints).
+inline core::Vec3 rpyFromQuaternion(const core::Quat& q) {
+  const double roll = std::atan2(2 * (q.w() * q.x() + q.y() * q.z()), 1 - 2 * (q.x() * q.x() + q.y() * q.y()));
+  const double sin_pitch = std::clamp(2 * (q.w() * q.y() - q.z() * q.x()), -1.0, 1.0);
+  const double yaw = std::atan2(2 * (q.w() * q.z() + q.x() * q.y()), 1 - 2 * (q.y() * q.y() + q.z() * q.z()));
+  return {roll, std::asin(sin_pitch), yaw};
 }
 
 }  // namespace rigid_body_sim::io
