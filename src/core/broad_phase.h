@@ -6,6 +6,9 @@
 #include "rigid_body_sim/core/state.h"
 #include "rigid_body_sim/core/workspace.h"
 
+// Not exported from the library (only its own files and the core tests,
+// which link its objects, call these), so link-time optimisation may inline them.
+#pragma GCC visibility push(hidden)
 namespace rigid_body_sim::core {
 
 /// Sweep and prune along x in strips along y: the pairs of bodies (at least
@@ -24,3 +27,4 @@ namespace rigid_body_sim::core {
 void broadPhase(const Model& model, const State& state, int parts, Workspace& ws);
 
 }  // namespace rigid_body_sim::core
+#pragma GCC visibility pop

@@ -297,13 +297,9 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
   }
 }
 
-}  // namespace
-
-bool solveContactImpulses(const Model& model, State& state, double h, Workspace& ws) {
-  if (model.contact().method != ContactMethod::kImpulse || ws.contacts.empty()) {
-    state.contact_impulses.clear();  // nothing to warm-start from next time
-    return false;
-  }
+/// solveContactImpulses with contacts to solve (kept apart so that a step
+/// with none does not pay for this function's set-up).
+[[gnu::noinline]] void solveAll(const Model& model, State& state, double h, Workspace& ws) {
   StepScratch& sc = *ws.scratch;
   // The bodies in contact, in world axes: v, ω_W = R w_B and I⁻¹_W = R I⁻¹ Rᵀ
   // (a sleeper's velocities are zero and it has no inertia terms: it is ground).
@@ -363,6 +359,16 @@ bool solveContactImpulses(const Model& model, State& state, double h, Workspace&
     b.v_WB = vel[i].v_W;
     b.w_B = b.q_WB.conjugate() * vel[i].w_W;
   }
+}
+
+}  // namespace
+
+bool solveContactImpulses(const Model& model, State& state, double h, Workspace& ws) {
+  if (model.contact().method != ContactMethod::kImpulse || ws.contacts.empty()) {
+    state.contact_impulses.clear();  // nothing to warm-start from next time
+    return false;
+  }
+  solveAll(model, state, h, ws);
   return true;
 }
 

@@ -219,17 +219,14 @@ void emitContacts(const Model& model, const State& state, int body, bool reduce,
   }
 }
 
-/// The contacts at the current state (detectContacts without the waking).
-void findContacts(const Model& model, const State& state, double h, Workspace& ws) {
+/// The contacts at the current state (detectContacts without the waking),
+/// when there is a scene or another body.
+[[gnu::noinline]] void findContacts(const Model& model, const State& state, double h, Workspace& ws) {
   StepScratch& sc = *ws.scratch;
   ws.contacts.clear();
   ws.deepest_penetration = 0.0;
   const int n = static_cast<int>(model.bodyCount());
   const bool multi = n > 1 && model.contact().method != ContactMethod::kShapeMatching;
-  if (model.scene().empty() && !multi) {
-    sc.in_contact.clear();  // no scene, no other body: no contact (and no allocation)
-    return;
-  }
   sc.in_contact.assign(model.bodyCount(), 0);
   const ContactSettings& cs = model.contact();
   const bool impulse = cs.method == ContactMethod::kImpulse;
@@ -302,6 +299,13 @@ void findContacts(const Model& model, const State& state, double h, Workspace& w
 }  // namespace
 
 void detectContacts(const Model& model, State& state, double h, Workspace& ws) {
+  const bool other_bodies = model.bodyCount() > 1 && model.contact().method != ContactMethod::kShapeMatching;
+  if (model.scene().empty() && !other_bodies) {  // nothing to touch (and no allocation)
+    ws.contacts.clear();
+    ws.deepest_penetration = 0.0;
+    ws.scratch->in_contact.clear();
+    return;
+  }
   findContacts(model, state, h, ws);
   // A woken body takes part from this step on: detect again with it awake.
   if (model.bodyCount() > 1 && wakeTouchedSleepers(model, state, ws, h)) findContacts(model, state, h, ws);

@@ -15,6 +15,9 @@
 #include "rigid_body_sim/core/state.h"
 #include "rigid_body_sim/core/workspace.h"
 
+// Not exported from the library (only its own files and the core tests,
+// which link its objects, call these), so link-time optimisation may inline them.
+#pragma GCC visibility push(hidden)
 namespace rigid_body_sim::core {
 
 /// A full step of length h; returns whether the impulse solve ran (its islands are then in the workspace).
@@ -31,3 +34,4 @@ void advanceOrRepeat(const Model& model, State& state, const Loads& loads, doubl
 void forgetFixedPoint(Workspace& ws);
 
 }  // namespace rigid_body_sim::core
+#pragma GCC visibility pop

@@ -18,7 +18,8 @@ bool solveMidpoint(const SolverSettings& settings, const Vec3& Pi, const Vec3& c
   const Vec3 two_pi = 2.0 * Pi;
   const double tol2 = settings.gyroscopic_tolerance2 * two_pi.squaredNorm();  // |Δu| ≤ 1e-12 |u| by default
   u = two_pi;
-  for (int i = 0; i < settings.gyroscopic_iterations; ++i) {
+  const int iterations = settings.gyroscopic_iterations;  // read once: writes to u may alias it for the compiler
+  for (int i = 0; i < iterations; ++i) {
     const Vec3 next = two_pi + u.cross(c.cwiseProduct(u));
     const double d2 = (next - u).squaredNorm();
     u = next;
@@ -84,6 +85,7 @@ Quat gyroscopicRotation(const Model& model, const BodyModel& b, double h, BodySt
   }
   // Sub-step only when one step is too large for the iteration to contract;
   // every sub-step conserves the invariants, so the result stays exact.
+  const int max_substeps = model.solver().gyroscopic_max_substeps;
   for (int substeps = 1;; substeps *= 2) {
     const Vec3 c = (0.25 * h / substeps) * b.inv_inertia_B;
     Vec3 w = s.w_B;
@@ -97,7 +99,7 @@ Quat gyroscopicRotation(const Model& model, const BodyModel& b, double h, BodySt
       const Vec3 half = c.cwiseProduct(u);       // h/2 Ω_m = (h/4) I⁻¹ u
       increment = increment * Quat(1.0, half.x(), half.y(), half.z());
     }
-    if (converged || substeps >= model.solver().gyroscopic_max_substeps) {
+    if (converged || substeps >= max_substeps) {
       if (w.allFinite()) s.w_B = w;
       return increment;
     }
@@ -117,8 +119,10 @@ void integrateOrientation(const Quat& increment, BodyState& s) {
 namespace {
 
 /// The awake bodies in [begin, end): rotation (with the gyroscopic term),
-/// position, orientation, and the time they have been still.
-void integrateBodies(const Model& model, State& state, double h, std::size_t begin, std::size_t end) {
+/// position, orientation, and the time they have been still. Flattened: the
+/// per-body functions are inlined into this loop, the step's hottest (they
+/// are not static, being shared with shape matching and tested on their own).
+[[gnu::flatten]] void integrateBodies(const Model& model, State& state, double h, std::size_t begin, std::size_t end) {
   for (std::size_t i = begin; i < end; ++i) {
     BodyState& s = state.bodies[i];
     if (s.asleep) continue;
@@ -139,7 +143,9 @@ void integrateBody(const Model& model, const BodyModel& b, double h, BodyState& 
   }
 }
 
-void integrateVelocities(const Model& model, State& state, const Loads& loads, double h, const Workspace& ws) {
+// Flattened as integrateBodies is: the per-body functions inlined into the loop.
+[[gnu::flatten]] void integrateVelocities(const Model& model, State& state, const Loads& loads, double h,
+                                          const Workspace& ws) {
   const Damping& d = model.damping();
   // Without loads, drag or penalty contacts the only force is gravity.
   const bool penalty = !ws.contacts.empty() && model.contact().method != ContactMethod::kImpulse;
@@ -165,6 +171,10 @@ void integratePositions(const Model& model, State& state, double h, Workspace& w
     for (const BodyState& s : state.bodies) awake -= s.asleep;
   }
   const int parts = n > 1 ? detail::partsFor(ws, awake) : 1;
+  if (parts == 1) {
+    integrateBodies(model, state, h, 0, n);
+    return;
+  }
   detail::runParts(ws, parts, [&](int part) {
     const Range r = partRange(n, part, parts);
     integrateBodies(model, state, h, r.begin, r.end);

@@ -9,6 +9,9 @@
 #include "rigid_body_sim/core/state.h"
 #include "rigid_body_sim/core/workspace.h"
 
+// Not exported from the library (only its own files and the core tests,
+// which link its objects, call these), so link-time optimisation may inline them.
+#pragma GCC visibility push(hidden)
 namespace rigid_body_sim::core {
 
 /// External, drag and penalty loads on one body for this step (gravity is
@@ -52,3 +55,4 @@ void integrateVelocities(const Model& model, State& state, const Loads& loads, d
 void integratePositions(const Model& model, State& state, double h, Workspace& ws);
 
 }  // namespace rigid_body_sim::core
+#pragma GCC visibility pop

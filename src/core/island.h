@@ -7,6 +7,9 @@
 #include "rigid_body_sim/core/state.h"
 #include "rigid_body_sim/core/workspace.h"
 
+// Not exported from the library (only its own files and the core tests,
+// which link its objects, call these), so link-time optimisation may inline them.
+#pragma GCC visibility push(hidden)
 namespace rigid_body_sim::core {
 
 /// Union-find over this step's body-body contacts (the scene and sleepers
@@ -20,3 +23,4 @@ void findIslands(const Model& model, const State& state, Workspace& ws);
 void groupContactsByIsland(const Model& model, const State& state, Workspace& ws);
 
 }  // namespace rigid_body_sim::core
+#pragma GCC visibility pop

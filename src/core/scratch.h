@@ -79,11 +79,17 @@ struct StepScratch {
   FixedPoint fixed_point;
 };
 
+// Not exported from the library (only its own files and the core tests,
+// which link its objects, call it), so link-time optimisation may inline it.
+#pragma GCC visibility push(hidden)
+
 /// How many parts a stage of `work` units (awake bodies, contacts) splits
 /// into: one unless there is enough for another core to pay (and then the
 /// workspace's thread count, whose pool this makes); at least that many
 /// PartScratch are ready in ws.scratch->parts.
 int partsFor(Workspace& ws, std::size_t work);
+
+#pragma GCC visibility pop
 
 /// Runs part(k) for k < parts (parallelFor on the workspace's pool).
 template <class Part>

@@ -9,6 +9,9 @@
 #include "rigid_body_sim/core/state.h"
 #include "rigid_body_sim/core/workspace.h"
 
+// Not exported from the library (only its own files and the core tests,
+// which link its objects, call these), so link-time optimisation may inline them.
+#pragma GCC visibility push(hidden)
 namespace rigid_body_sim::core {
 
 /// After a step of h: counts the time a body stays below the sleep speeds.
@@ -55,3 +58,4 @@ bool wakeTouchedSleepers(const Model& model, State& state, const Workspace& ws, 
 void sleepIslands(const Model& model, State& state, Workspace& ws, bool islands_known);
 
 }  // namespace rigid_body_sim::core
+#pragma GCC visibility pop
