@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Interleaved A/B of two builds of the package: the world bench (N boxes
-# dropped on a grid) with one thread and with two, and the one-body core
-# step, alternating A and B each round so the machine's drift hits both.
+# dropped on a grid) with one thread and with two, the one-body core steps,
+# the box drop of the contacts bench and rbsim's torque-free spin,
+# alternating A and B each round so the machine's drift hits both.
 # Prints each round's figures, then the medians over the rounds and whether
 # the final states' hashes agree (bit-identical trajectories).
 #
@@ -11,6 +12,7 @@
 # (e.g. a `git worktree` of the old commit built with catkin_make, and .ws/devel/lib).
 set -euo pipefail
 A=$1 B=$2 ROUNDS=${3:-7}
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
 out=$(mktemp -d)
 for r in $(seq "$ROUNDS"); do
   for side in A B; do
@@ -19,9 +21,14 @@ for r in $(seq "$ROUNDS"); do
       LD_LIBRARY_PATH="$lib" RBS_THREADS=$t "$lib/rigid_body_sim/world_bench" 3 10 100 1000 |
         awk -v s="$side" -v t="$t" 'NR > 1 {print s, t, $1, $3, $NF}' >>"$out/world"
     done
-    LD_LIBRARY_PATH="$lib" "$lib/rigid_body_sim/bench_core_step" --benchmark_filter=BM_TorqueFreeSpin \
+    LD_LIBRARY_PATH="$lib" "$lib/rigid_body_sim/bench_core_step" \
       --benchmark_repetitions=5 --benchmark_report_aggregates_only=true 2>/dev/null |
-      awk -v s="$side" '/_median/ {print s, $2}' >>"$out/core"
+      awk -v s="$side" '/_median/ {print s, $1, $2}' >>"$out/core"
+    LD_LIBRARY_PATH="$lib" "$lib/rigid_body_sim/bench_contact" --benchmark_filter='BM_BoxDrop/0/1' \
+      --benchmark_repetitions=3 --benchmark_report_aggregates_only=true 2>/dev/null |
+      awk -v s="$side" '/_median/ {print s, "BM_BoxDrop_ms", $2}' >>"$out/core"
+    LD_LIBRARY_PATH="$lib" "$lib/rigid_body_sim/rbsim" --urdf "$ROOT/urdf/box.urdf" --config "$ROOT/config/spin.yaml" \
+      --duration 20 --quiet | /usr/bin/python3 -c 'import json,sys; print(sys.argv[1], "rbsim_spin", json.load(sys.stdin)["ns_per_step"])' "$side" >>"$out/core"
   done
 done
 /usr/bin/python3 - "$out" <<'PY'
@@ -42,9 +49,12 @@ for threads in ("1", "2"):
         print(f"{threads:>7} {n:>5} {a:9.1f} {b:9.1f} {b / a:6.3f}  {same} ({' '.join(sorted(hashes[(threads, n, 'B')]))})")
 core = collections.defaultdict(list)
 for line in open(f"{d}/core"):
-    side, ns = line.split()
-    core[side].append(float(ns))
-a, b = statistics.median(core["A"]), statistics.median(core["B"])
-print(f"core step (BM_TorqueFreeSpin), ns, median of the rounds' medians: A {a:.1f}  B {b:.1f}  B/A {b / a:.3f}")
+    side, name, value = line.split()
+    core[(name, side)].append(float(value))
+print("one body, median of the rounds (each a median of its repetitions):")
+for name in sorted({n for n, _ in core}):
+    a, b = statistics.median(core[(name, "A")]), statistics.median(core[(name, "B")])
+    unit = "ms" if name.endswith("_ms") else "ns"
+    print(f"  {name:<50} A {a:8.1f}  B {b:8.1f} {unit}  B/A {b / a:.3f}")
 PY
 rm -rf "$out"

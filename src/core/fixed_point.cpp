@@ -57,8 +57,7 @@ bool everyAwakeBodyStill(const State& state) {
 
 }  // namespace
 
-void advanceOrRepeat(const Model& model, State& state, const Loads& loads, double h, Workspace& ws,
-                     AdvanceFunction advance) {
+bool repeatFixedPoint(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
   detail::FixedPoint& f = ws.scratch->fixed_point;
   if (ws.skip_fixed_points && f.holds && sameInput(f, model, state, loads)) {
     for (BodyState& s : state.bodies) {
@@ -66,18 +65,23 @@ void advanceOrRepeat(const Model& model, State& state, const Loads& loads, doubl
     }
     sleepIslands(model, state, ws, f.islands_known);
     ++ws.skipped_steps;
-    return;
+    return true;
   }
-  const bool keep = ws.skip_fixed_points && everyAwakeBodyStill(state);
+  f.kept = ws.skip_fixed_points && everyAwakeBodyStill(state);
   f.holds = false;
-  if (keep) {
+  if (f.kept) {
     f.model = &model;
     f.bodies = state.bodies;
     f.impulses = state.contact_impulses;
     f.loads = loads;
   }
-  f.islands_known = advance(model, state, loads, h, ws);
-  f.holds = keep && sameInput(f, model, state, loads);
+  return false;
+}
+
+void recordFixedPoint(const Model& model, const State& state, const Loads& loads, bool islands_known, Workspace& ws) {
+  detail::FixedPoint& f = ws.scratch->fixed_point;
+  f.islands_known = islands_known;
+  f.holds = f.kept && sameInput(f, model, state, loads);
 }
 
 void forgetFixedPoint(Workspace& ws) { ws.scratch->fixed_point.holds = false; }

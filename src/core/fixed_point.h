@@ -20,14 +20,25 @@
 #pragma GCC visibility push(hidden)
 namespace rigid_body_sim::core {
 
-/// A full step of length h; returns whether the impulse solve ran (its islands are then in the workspace).
-using AdvanceFunction = bool (*)(const Model&, State&, const Loads&, double, Workspace&);
+/// When the last step returned this same input unchanged: does what the
+/// step would do again, nothing but the still times and sleep (counted in
+/// ws.skipped_steps), and returns true. Otherwise keeps the input if the
+/// bodies are still (to compare the result with) and returns false: the
+/// caller computes the step, then calls recordFixedPoint. Only when
+/// ws.skip_fixed_points is set.
+bool repeatFixedPoint(const Model& model, State& state, const Loads& loads, double h, Workspace& ws);
 
-/// advance(), or, when the last step returned this same input unchanged,
-/// what advance() would do again: nothing but the still times and sleep
-/// (counted in ws.skipped_steps). Only when ws.skip_fixed_points is set.
-void advanceOrRepeat(const Model& model, State& state, const Loads& loads, double h, Workspace& ws,
-                     AdvanceFunction advance);
+/// After a computed step: whether it returned its input unchanged (then the
+/// next step from it is repeated). `islands_known`: the impulse solve ran.
+void recordFixedPoint(const Model& model, const State& state, const Loads& loads, bool islands_known, Workspace& ws);
+
+/// advance(model, state, loads, h, ws) (a full step, returning whether the
+/// impulse solve ran), or its repetition at a fixed point.
+template <class Advance>
+void advanceOrRepeat(const Model& model, State& state, const Loads& loads, double h, Workspace& ws, Advance&& advance) {
+  if (repeatFixedPoint(model, state, loads, h, ws)) return;
+  recordFixedPoint(model, state, loads, advance(model, state, loads, h, ws), ws);
+}
 
 /// Drops the cache: the next step is computed in full (for steps that leave
 /// other contents in the workspace).

@@ -14,12 +14,11 @@ namespace {
 ///   u = 2Π + u × (c ∘ u),  c = (h/4) I⁻¹   (fixed-point iteration)
 /// The iteration contracts by about h|Ω| per pass: 4 passes at 1 ms and
 /// 3 rad/s. Returns false if it does not converge (h|Ω| too large).
-bool solveMidpoint(const SolverSettings& settings, const Vec3& Pi, const Vec3& c, Vec3& u) {
+bool solveMidpoint(const Vec3& Pi, const Vec3& c, Vec3& u) {
   const Vec3 two_pi = 2.0 * Pi;
-  const double tol2 = settings.gyroscopic_tolerance2 * two_pi.squaredNorm();  // |Δu| ≤ 1e-12 |u| by default
+  const double tol2 = SolverSettings::kGyroscopicTolerance2 * two_pi.squaredNorm();  // |Δu| ≤ 1e-12 |u| by default
   u = two_pi;
-  const int iterations = settings.gyroscopic_iterations;  // read once: writes to u may alias it for the compiler
-  for (int i = 0; i < iterations; ++i) {
+  for (int i = 0; i < SolverSettings::kGyroscopicIterations; ++i) {
     const Vec3 next = two_pi + u.cross(c.cwiseProduct(u));
     const double d2 = (next - u).squaredNorm();
     u = next;
@@ -85,7 +84,6 @@ Quat gyroscopicRotation(const Model& model, const BodyModel& b, double h, BodySt
   }
   // Sub-step only when one step is too large for the iteration to contract;
   // every sub-step conserves the invariants, so the result stays exact.
-  const int max_substeps = model.solver().gyroscopic_max_substeps;
   for (int substeps = 1;; substeps *= 2) {
     const Vec3 c = (0.25 * h / substeps) * b.inv_inertia_B;
     Vec3 w = s.w_B;
@@ -94,12 +92,12 @@ Quat gyroscopicRotation(const Model& model, const BodyModel& b, double h, BodySt
     for (int k = 0; k < substeps && converged; ++k) {
       const Vec3 Pi = b.inertia_B.cwiseProduct(w);
       Vec3 u;
-      converged = solveMidpoint(model.solver(), Pi, c, u);
+      converged = solveMidpoint(Pi, c, u);
       w = b.inv_inertia_B.cwiseProduct(u - Pi);  // Ω_{n+1} = I⁻¹ Π_{n+1}
       const Vec3 half = c.cwiseProduct(u);       // h/2 Ω_m = (h/4) I⁻¹ u
       increment = increment * Quat(1.0, half.x(), half.y(), half.z());
     }
-    if (converged || substeps >= max_substeps) {
+    if (converged || substeps >= SolverSettings::kGyroscopicMaxSubsteps) {
       if (w.allFinite()) s.w_B = w;
       return increment;
     }

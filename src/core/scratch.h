@@ -47,6 +47,7 @@ struct FixedPoint {
   std::vector<ContactImpulse> impulses;  ///< the warm start
   Loads loads;
   bool islands_known = false;  ///< the last step's islands are in island_root
+  bool kept = false;           ///< the input of the step being computed is kept above
 };
 
 struct StepScratch {

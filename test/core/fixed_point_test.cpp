@@ -33,7 +33,8 @@ struct FixedPointTest : ::testing::Test {
     g_advances = 0;
     state.bodies[0].still_time = 0.1;  // below the sleep speeds: worth caching
   }
-  void repeat(const core::Loads& loads = {}, core::AdvanceFunction advance = unchanged) {
+  void repeat(const core::Loads& loads = {}, bool (*advance)(const core::Model&, core::State&, const core::Loads&,
+                                                             double, core::Workspace&) = unchanged) {
     core::advanceOrRepeat(model, state, loads, 1e-3, ws, advance);
   }
 };
