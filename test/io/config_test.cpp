@@ -1,10 +1,10 @@
 // Config parsing: the shipped defaults, overrides, and refusals that name the key.
 #include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/world.h"
 
 #include <gtest/gtest.h>
 
 #include "../test_util.h"
-#include "rigid_body_sim/io/world.h"
 
 namespace rigid_body_sim::test {
 namespace {
@@ -259,20 +259,6 @@ TEST(Config, BadBodiesAreRefusedByKey) {
                 {"'bodies[0].initial.position'", "[x, y, z]"});
   expectRefused("initial: {position: [0, 0, 1]}\nbodies: [{name: a, urdf: x.urdf}]",
                 {"'initial'", "bodies[i].initial"});
-}
-
-TEST(Config, AWorldLoadsEveryBodyUnderItsName) {
-  const io::SimConfig c = io::parseConfig(io::loadYamlFile(std::string(RBS_SOURCE_DIR) + "/config/world.yaml"),
-                                          std::string(RBS_SOURCE_DIR) + "/config");
-  const io::World w = io::buildWorld(c);
-  ASSERT_EQ(w.model.bodyCount(), 4u);
-  EXPECT_EQ(w.model.body(0).name, "box");
-  EXPECT_EQ(w.model.body(0).link, "base_link");
-  EXPECT_EQ(w.model.body(2).name, "bunny");
-  EXPECT_EQ(w.model.body(2).link, "bunny");
-  ASSERT_EQ(w.state.bodies.size(), 4u);
-  EXPECT_NEAR(core::linkState(w.model.body(1), w.state.bodies[1]).p_WL.z(), 1.0, 1e-15);
-  EXPECT_FALSE(w.model.body(2).solid_B.empty());  // the bunny's mesh, sampled, for the others to hit
 }
 
 TEST(Config, ModelValidationNamesTheField) {
