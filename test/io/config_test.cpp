@@ -1,10 +1,10 @@
 // Config parsing: the shipped defaults, overrides, and refusals that name the key.
 #include "rigid_body_sim/io/config.h"
-#include "rigid_body_sim/io/world.h"
 
 #include <gtest/gtest.h>
 
 #include "../test_util.h"
+#include "rigid_body_sim/io/world.h"
 
 namespace rigid_body_sim::test {
 namespace {
