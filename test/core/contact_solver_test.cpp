@@ -327,7 +327,7 @@ TEST(Rest, ARestingBodyStaysExactlyPutAndWakesOnLoadsAndImpulses) {
 }
 
 // A box resting exactly is a fixed point of the step, and step() does not
-// compute a step from the same input again (Workspace::FixedPoint). Run
+// compute a step from the same input again (the fixed-point cache, src/core/fixed_point.h). Run
 // beside a workspace that computes every step, it must give the same bits
 // at every step, through the landing, the rest, a push and a kick, with
 // sleep off and on; and it must have skipped steps, or this proves nothing.
