@@ -76,7 +76,7 @@ void scanScene(const Model& model, const BodyState& s, int body, double margin, 
 /// The same for the points of body a against the solid of body o: each
 /// point is taken into o's frame, where the solid is.
 template <class Visit>
-void scanBody(const Model& model, const State& state, int a, int o, double margin, Visit&& visit) {
+[[gnu::flatten]] void scanBody(const Model& model, const State& state, int a, int o, double margin, Visit&& visit) {
   const BodyModel &ba = model.body(a), &bo = model.body(o);
   if (bo.solid_B.empty()) return;
   const Sdf& solid = bo.solid_B.front();
@@ -152,7 +152,7 @@ void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandi
 /// Turns one body's candidates into contacts: regions by item (or other
 /// body) and normal direction (within about 20°; a plane is one region),
 /// each reduced to at most four points for the impulse method.
-void emitContacts(const Model& model, const State& state, int body, bool reduce, PartScratch& out) {
+[[gnu::flatten]] void emitContacts(const Model& model, const State& state, int body, bool reduce, PartScratch& out) {
   const double same_region_cos = model.solver().region_cos;
   const BodyModel& b = model.body(body);
   const BodyState& s = state.bodies[body];

@@ -129,6 +129,19 @@ namespace {
   }
 }
 
+/// integrateVelocities with loads, drag or penalty forces. Flattened as
+/// integrateBodies is: the per-body functions inlined into the loop.
+[[gnu::flatten]] void integrateForces(const Model& model, State& state, const Loads& loads, double h,
+                                      const Workspace& ws) {
+  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
+    BodyState& s = state.bodies[i];
+    if (s.asleep) continue;
+    const NetLoad net = accumulateForces(model, state, loads.empty() ? nullptr : &loads[i], ws, static_cast<int>(i));
+    integrateVelocity(model, model.body(i), net, h, s);
+    applyDamping(model, h, s);
+  }
+}
+
 }  // namespace
 
 void integrateBody(const Model& model, const BodyModel& b, double h, BodyState& s) {
@@ -141,22 +154,17 @@ void integrateBody(const Model& model, const BodyModel& b, double h, BodyState& 
   }
 }
 
-// Flattened as integrateBodies is: the per-body functions inlined into the loop.
-[[gnu::flatten]] void integrateVelocities(const Model& model, State& state, const Loads& loads, double h,
-                                          const Workspace& ws) {
+void integrateVelocities(const Model& model, State& state, const Loads& loads, double h, const Workspace& ws) {
   const Damping& d = model.damping();
   // Without loads, drag or penalty contacts the only force is gravity.
   const bool penalty = !ws.contacts.empty() && model.contact().method != ContactMethod::kImpulse;
-  const bool forces = !loads.empty() || d.linear_drag != 0.0 || d.angular_drag != 0.0 || penalty;
-  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
-    BodyState& s = state.bodies[i];
+  if (!loads.empty() || d.linear_drag != 0.0 || d.angular_drag != 0.0 || penalty) {
+    integrateForces(model, state, loads, h, ws);
+    return;
+  }
+  for (BodyState& s : state.bodies) {
     if (s.asleep) continue;
-    if (forces) {
-      const NetLoad net = accumulateForces(model, state, loads.empty() ? nullptr : &loads[i], ws, static_cast<int>(i));
-      integrateVelocity(model, model.body(i), net, h, s);
-    } else {
-      s.v_WB += h * model.gravity();
-    }
+    s.v_WB += h * model.gravity();
     applyDamping(model, h, s);
   }
 }

@@ -31,6 +31,11 @@ struct Contact : ContactKey {
   double predicted_separation = 0.0;      ///< m after the step, from the solved velocity (linear)
 };
 
+// The stages are the library's own (step() runs them; the core's tests,
+// which link its objects, call them directly): not exported, so link-time
+// optimisation may inline them into the step.
+#pragma GCC visibility push(hidden)
+
 /// Stage 1 (§5.1). Contacts of the awake bodies, at the current state,
 /// against the scene and against each other, into ws.contacts sorted by key:
 /// every contact point with φ − radius < margin, where the margin is the
@@ -70,6 +75,8 @@ void correctPositions(const Model& model, State& state, Workspace& ws);
 /// both minus damping c v_N and never pulling, with Coulomb friction μ |f_N|.
 void accumulatePenaltyForces(const Model& model, const State& state, const Workspace& ws, int body, Vec3& force_W,
                              Vec3& torque_W);
+
+#pragma GCC visibility pop
 
 /// The smallest φ − radius of any contact point of `body` within `margin`
 /// of the scene (+infinity if none is that close; other bodies not counted).
