@@ -227,7 +227,8 @@ void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandi
   ws.deepest_penetration = 0.0;
   const int n = static_cast<int>(model.bodyCount());
   const bool multi = n > 1 && model.contact().method != ContactMethod::kShapeMatching;
-  sc.in_contact.assign(model.bodyCount(), 0);
+  sc.in_contact.resize(model.bodyCount());  // resize and fill: assign() was not inlined here
+  std::fill(sc.in_contact.begin(), sc.in_contact.end(), 0);
   const ContactSettings& cs = model.contact();
   const bool impulse = cs.method == ContactMethod::kImpulse;
   const auto margin = [&](int body) {
