@@ -76,6 +76,20 @@ inline core::ModelSpec onGround(const core::BodySpec& body, const core::ContactS
   return s;
 }
 
+/// Impulse-method contact settings with this restitution and friction.
+inline core::ContactSettings impulse(double restitution, double friction) {
+  core::ContactSettings c;
+  c.restitution = restitution;
+  c.friction = friction;
+  return c;
+}
+
+/// A room as one SDF: floor z = 0, walls x = ±1 and y = ±1, open on top.
+inline core::Sdf room() {
+  return core::Sdf::subtract({core::Sdf::box(Vec3(2.2, 2.2, 1.2)).transformed({Quat::Identity(), Vec3(0, 0, 0.5)}),
+                              core::Sdf::box(Vec3(2.0, 2.0, 1.5)).transformed({Quat::Identity(), Vec3(0, 0, 0.75)})});
+}
+
 /// A one-body state from the link's pose and twist.
 inline core::State stateOf(const core::Model& model, const core::LinkState& link) {
   core::State s;

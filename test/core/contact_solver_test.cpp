@@ -17,13 +17,6 @@ namespace {
 constexpr double kG = 9.81;
 const Vec3 kHalf(0.2, 0.1, 0.05);  // the shipped box (urdf/box.urdf)
 
-core::ContactSettings impulse(double restitution, double friction) {
-  core::ContactSettings c;
-  c.restitution = restitution;
-  c.friction = friction;
-  return c;
-}
-
 core::State at(const core::Model& model, const Vec3& p, const Quat& q = Quat::Identity(), const Vec3& v = Vec3::Zero(),
                const Vec3& w = Vec3::Zero()) {
   core::LinkState link;
@@ -278,12 +271,6 @@ TEST(Tunneling, FastBodiesStopOnAThinPlate) {
     EXPECT_NEAR(s.bodies[0].p_WB.z(), 0.005 + 0.05, 1e-3) << body.name;
     EXPECT_LT(deepest, 1e-3) << body.name;
   }
-}
-
-core::Sdf room() {
-  // Floor z = 0, walls x = ±1 and y = ±1, open on top.
-  return core::Sdf::subtract({core::Sdf::box(Vec3(2.2, 2.2, 1.2)).transformed({Quat::Identity(), Vec3(0, 0, 0.5)}),
-                              core::Sdf::box(Vec3(2.0, 2.0, 1.5)).transformed({Quat::Identity(), Vec3(0, 0, 0.75)})});
 }
 
 TEST(Room, BoxThrownIntoTheCornerStaysInsideAndRests) {

@@ -14,24 +14,11 @@ namespace {
 
 const Vec3 kHalf(0.2, 0.1, 0.05);  // the shipped box (urdf/box.urdf)
 
-core::ContactSettings impulse(double restitution, double friction) {
-  core::ContactSettings c;
-  c.restitution = restitution;
-  c.friction = friction;
-  return c;
-}
-
 core::State at(const core::Model& model, const Vec3& p, const Quat& q = Quat::Identity()) {
   core::LinkState link;
   link.p_WL = p;
   link.q_WL = q;
   return stateOf(model, link);
-}
-
-core::Sdf room() {
-  // Floor z = 0, walls x = ±1 and y = ±1, open on top.
-  return core::Sdf::subtract({core::Sdf::box(Vec3(2.2, 2.2, 1.2)).transformed({Quat::Identity(), Vec3(0, 0, 0.5)}),
-                              core::Sdf::box(Vec3(2.0, 2.0, 1.5)).transformed({Quat::Identity(), Vec3(0, 0, 0.75)})});
 }
 
 TEST(Detection, ABoxPressedIntoTheGroundTouchesAtItsFourLowCornersByTheirDepth) {
