@@ -117,10 +117,8 @@ void integrateOrientation(const Quat& increment, BodyState& s) {
 namespace {
 
 /// The awake bodies in [begin, end): rotation (with the gyroscopic term),
-/// position, orientation, and the time they have been still. Flattened: the
-/// per-body functions are inlined into this loop, the step's hottest (they
-/// are not static, being shared with shape matching and tested on their own).
-[[gnu::flatten]] void integrateBodies(const Model& model, State& state, double h, std::size_t begin, std::size_t end) {
+/// position, orientation, and the time they have been still.
+void integrateBodies(const Model& model, State& state, double h, std::size_t begin, std::size_t end) {
   for (std::size_t i = begin; i < end; ++i) {
     BodyState& s = state.bodies[i];
     if (s.asleep) continue;
