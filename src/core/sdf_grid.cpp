@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rigid_body_sim::core {
 
@@ -75,9 +76,17 @@ std::shared_ptr<const SdfGrid> SdfGrid::fromMesh(const TriangleMesh& mesh, int r
 }
 
 double SdfGrid::eval(const Vec3& p, Vec3* gradient) const {
+  // A point with a NaN or infinite coordinate is infinitely far from the
+  // solid: no contact. (A NaN would otherwise reach the sample index: floor
+  // of NaN cast to int is undefined, and read far out of the grid.)
+  if (!p.allFinite()) {
+    if (gradient != nullptr) *gradient = Vec3::UnitZ();
+    return std::numeric_limits<double>::infinity();
+  }
   const Vec3 top = hi();
   const Vec3 q = p.cwiseMax(lo_).cwiseMin(top);
-  const double outside = (p - q).norm();
+  double outside = (p - q).norm();
+  if (std::isinf(outside)) outside = (p - q).stableNorm();  // far beyond 1e154 m: the squares overflow
   const Vec3 u = (q - lo_) / cell_;
   int i[3];
   double f[3];

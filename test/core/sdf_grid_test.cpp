@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 #include "../test_util.h"
@@ -27,6 +28,25 @@ TEST(SdfGrid, AMeshCubeMatchesTheBoxDistanceWithinTwoCells) {
   }
   EXPECT_LT(grid->eval(Vec3::Zero(), nullptr), -0.09);         // inside is negative
   EXPECT_NEAR(grid->eval(Vec3(1, 0, 0), nullptr), 0.9, 1e-9);  // beyond the grid: plus the distance
+}
+
+TEST(SdfGrid, AnyPointIsSafeNaNAndInfinityAreFarAway) {
+  // Issue 13: a NaN state made eval cast floor(NaN) to int and read far out of the grid (SIGSEGV).
+  core::TriangleMesh cube;
+  for (int i = 0; i < 8; ++i) cube.vertices.emplace_back(i & 1 ? 0.1 : -0.1, i & 2 ? 0.1 : -0.1, i & 4 ? 0.1 : -0.1);
+  cube.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                    {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  const auto grid = core::SdfGrid::fromMesh(cube, 8);
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (const Vec3& p : {Vec3(nan, 0, 0), Vec3(0, nan, nan), Vec3(inf, 0, 0), Vec3(-inf, inf, 0)}) {
+    Vec3 g;
+    EXPECT_EQ(grid->eval(p, &g), inf) << p.transpose();
+    EXPECT_EQ(g, Vec3::UnitZ());
+  }
+  Vec3 g;
+  EXPECT_NEAR(grid->eval(Vec3(1e300, 0, 0), &g), 1e300, 1e285);  // huge but finite: the distance
+  EXPECT_TRUE(g.allFinite());
+  EXPECT_NEAR(g.norm(), 1.0, 1e-12);
 }
 
 TEST(SdfGrid, FlippedTrianglesDoNotTurnTheInsideOut) {

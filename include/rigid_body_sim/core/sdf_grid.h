@@ -20,7 +20,8 @@ class SdfGrid {
 
   /// φ at p (grid frame, m), trilinear between the samples, and its gradient
   /// (normalized). Beyond the grid: the value at the nearest grid point plus
-  /// the distance to it.
+  /// the distance to it. Any input is safe: a point with a NaN or infinite
+  /// coordinate gives +∞ (and the gradient +z).
   double eval(const Vec3& p, Vec3* gradient) const;
 
   const Vec3& lo() const { return lo_; }
