@@ -57,6 +57,9 @@ constexpr const char* kUsage =
     "  --every N          one CSV row every N steps (default 1), plus the final state\n"
     "  --quiet            no summary on stderr\n";
 
+/// The most steps one run takes (1e12: eleven days at 1 µs a step).
+constexpr double kMaxSteps = 1e12;
+
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -111,7 +114,8 @@ Args parseArgs(int argc, char** argv) {
     else if (flag == "--every") {
       const double n = parsePositive(flag, value);
       if (n != std::floor(n)) throw UsageError("--every: expected a whole number > 0, got '" + value + "'");
-      a.every = static_cast<long long>(n);
+      // Any whole number: beyond the run's steps it only writes the final state.
+      a.every = n < 1e18 ? static_cast<long long>(n) : 1'000'000'000'000'000'000LL;
     }
   }
   if (a.duration < 0.0) throw UsageError("--duration S is required (see rbsim --help)");
@@ -138,10 +142,17 @@ class CsvWriter {
  public:
   /// With `with_body`, a body column after t (a world of several bodies).
   CsvWriter(const std::string& path, bool with_body)
-      : file_(std::fopen(path.c_str(), "w"), &std::fclose), with_body_(with_body) {
+      : file_(std::fopen(path.c_str(), "w"), &std::fclose), path_(path), with_body_(with_body) {
     if (!file_) throw UsageError("--csv: cannot write '" + path + "': " + std::strerror(errno));
     std::fputs(with_body_ ? "t,body,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz\n" : "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz\n",
                file_.get());
+  }
+  /// Flushes and closes the file; a failed write (a full disk) is an error.
+  void finish() {
+    FILE* f = file_.release();
+    const bool failed = std::ferror(f) != 0;
+    const int closed = std::fclose(f);
+    if (failed || closed != 0) throw UsageError("--csv: writing '" + path_ + "' failed: " + std::strerror(errno));
   }
   void row(double t, const std::string& body, const core::LinkState& s) {
     std::fprintf(file_.get(), "%.9g,", t);
@@ -153,6 +164,7 @@ class CsvWriter {
 
  private:
   std::unique_ptr<FILE, int (*)(FILE*)> file_;
+  std::string path_;
   bool with_body_;
 };
 
@@ -215,7 +227,12 @@ int run(const Args& args) {
   const std::size_t n = model.bodyCount();
 
   const double dt = model.dt();
-  const long long steps = std::llround(args.duration / dt);
+  const double step_count = args.duration / dt;
+  if (!(step_count < kMaxSteps)) {  // also keeps llround below from overflowing
+    throw UsageError("--duration " + text(args.duration) + " is " + text(step_count) + " steps of " + text(dt) +
+                     " s: at most " + text(kMaxSteps) + " steps per run");
+  }
+  const long long steps = std::llround(step_count);
   if (steps < 1) {
     throw UsageError("--duration " + text(args.duration) + " is shorter than one step of " + text(dt) + " s");
   }
@@ -285,7 +302,11 @@ int run(const Args& args) {
   out["at_rest"] = at_rest;
   out["bodies"] = bodies_json;
   // Names are the user's: escaped by the library; bytes that are not UTF-8 are replaced, not refused.
-  std::printf("%s\n", out.dump(-1, ' ', false, Json::error_handler_t::replace).c_str());
+  if (csv) csv->finish();
+  const std::string line = out.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n";
+  if (std::fwrite(line.data(), 1, line.size(), stdout) != line.size() || std::fflush(stdout) != 0) {
+    throw UsageError(std::string("stdout: writing the JSON line failed: ") + std::strerror(errno));
+  }
 
   if (!args.quiet) {
     const auto rel = [](double a, double b) { return a == 0.0 ? std::abs(b) : (b - a) / std::abs(a); };

@@ -32,9 +32,10 @@ std::string slurp(const std::string& path) {
 
 std::string tempPath(const std::string& name) { return (scratch().path() / name).string(); }
 
+/// Runs rbsim with `args`; killed after 60 s (exit code 124) so that a hang fails instead of stalling.
 Result rbsim(const std::string& args) {
   const std::string out = tempPath("out"), err = tempPath("err");
-  const std::string cmd = std::string(RBS_RBSIM) + " " + args + " >" + out + " 2>" + err;
+  const std::string cmd = "timeout 60 " + std::string(RBS_RBSIM) + " " + args + " >" + out + " 2>" + err;
   const int status = std::system(cmd.c_str());
   Result r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -151,6 +152,27 @@ TEST(Rbsim, EscapesBodyNamesInItsJson) {
   ASSERT_NO_THROW(j = nlohmann::json::parse(r.out)) << r.out;
   EXPECT_EQ(j["bodies"][0]["name"], "say \"hi\" \\ back");
   EXPECT_EQ(j["bodies"][1]["name"], "tab\tand\x01");
+}
+
+TEST(Rbsim, HugeCountsAreSafe) {
+  // Issue 13: --every 1e300 overflowed a long long and never ended; --duration 1e300 overflowed the step count.
+  const std::string csv = tempPath("every.csv");
+  const Result every = rbsim("--urdf " + kBox + " --duration 0.01 --every 1e300 --csv " + csv + " --quiet");
+  ASSERT_EQ(every.code, 0) << every.err;
+  const std::string rows = slurp(csv);
+  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 3) << rows;  // the header, t = 0 and the final state
+  const Result duration = rbsim("--urdf " + kBox + " --duration 1e300 --quiet");
+  EXPECT_EQ(duration.code, 2) << duration.err;
+  EXPECT_NE(duration.err.find("--duration 1.0000000000000001e+300 is"), std::string::npos) << duration.err;
+  EXPECT_NE(duration.err.find("at most 1000000000000 steps"), std::string::npos) << duration.err;
+}
+
+TEST(Rbsim, AFailedWriteIsAnError) {
+  // Issue 13: --csv /dev/full exited 0 with nothing written.
+  const Result r = rbsim("--urdf " + kBox + " --duration 0.1 --csv /dev/full --quiet");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--csv: writing '/dev/full' failed: No space left on device"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;  // no figures for a run whose output is lost
 }
 
 TEST(Rbsim, WritesTheCsvEveryNStepsAndTheFinalState) {
