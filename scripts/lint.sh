@@ -38,9 +38,12 @@ if [ ${#units[@]} -eq 0 ]; then
   exit 0
 fi
 echo "lint: clang-tidy over ${#units[@]} sources changed since $base (about 10 s each, 2 at a time)" >&2
-# The build's paths are the workspace's links to these files.
+# The build's paths are the workspace's links to these files. The core's
+# flags carry GCC's -fno-fat-lto-objects (link-time optimisation), which
+# clang does not know: not a finding.
 status=0
 printf "$RBS_WS/src/rigid_body_sim/%s\n" "${units[@]}" |
-  xargs -P 2 -n 1 clang-tidy --quiet -p "$RBS_WS/build" 2>/dev/null || status=1
+  xargs -P 2 -n 1 clang-tidy --quiet -p "$RBS_WS/build" --extra-arg=-Wno-ignored-optimization-argument 2>/dev/null ||
+  status=1
 [ "$status" -eq 0 ] && echo "lint: clean" >&2
 exit "$status"
