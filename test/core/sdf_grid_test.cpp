@@ -5,6 +5,7 @@
 
 #include <limits>
 #include <random>
+#include <utility>
 
 #include "../test_util.h"
 #include "rigid_body_sim/core/sdf.h"
@@ -12,12 +13,17 @@
 namespace rigid_body_sim::test {
 namespace {
 
-TEST(SdfGrid, AMeshCubeMatchesTheBoxDistanceWithinTwoCells) {
-  // A 0.2 m cube as 12 triangles.
+/// A 0.2 m cube centred at the origin as 12 triangles, counter-clockwise seen from outside.
+core::TriangleMesh cubeMesh() {
   core::TriangleMesh cube;
   for (int i = 0; i < 8; ++i) cube.vertices.emplace_back(i & 1 ? 0.1 : -0.1, i & 2 ? 0.1 : -0.1, i & 4 ? 0.1 : -0.1);
   cube.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                     {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  return cube;
+}
+
+TEST(SdfGrid, AMeshCubeMatchesTheBoxDistanceWithinTwoCells) {
+  const core::TriangleMesh cube = cubeMesh();
   const auto grid = core::SdfGrid::fromMesh(cube, 32);
   const core::Sdf exact = core::Sdf::box(Vec3(0.2, 0.2, 0.2));
   std::mt19937 rng(5);
@@ -32,10 +38,7 @@ TEST(SdfGrid, AMeshCubeMatchesTheBoxDistanceWithinTwoCells) {
 
 TEST(SdfGrid, AnyPointIsSafeNaNAndInfinityAreFarAway) {
   // Issue 13: a NaN state made eval cast floor(NaN) to int and read far out of the grid (SIGSEGV).
-  core::TriangleMesh cube;
-  for (int i = 0; i < 8; ++i) cube.vertices.emplace_back(i & 1 ? 0.1 : -0.1, i & 2 ? 0.1 : -0.1, i & 4 ? 0.1 : -0.1);
-  cube.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                    {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  const core::TriangleMesh cube = cubeMesh();
   const auto grid = core::SdfGrid::fromMesh(cube, 8);
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
   for (const Vec3& p : {Vec3(nan, 0, 0), Vec3(0, nan, nan), Vec3(inf, 0, 0), Vec3(-inf, inf, 0)}) {
@@ -51,10 +54,8 @@ TEST(SdfGrid, AnyPointIsSafeNaNAndInfinityAreFarAway) {
 
 TEST(SdfGrid, FlippedTrianglesDoNotTurnTheInsideOut) {
   // The sign comes from the winding number, robust to a triangle wound the wrong way.
-  core::TriangleMesh cube;
-  for (int i = 0; i < 8; ++i) cube.vertices.emplace_back(i & 1 ? 0.1 : -0.1, i & 2 ? 0.1 : -0.1, i & 4 ? 0.1 : -0.1);
-  cube.triangles = {{0, 1, 2}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                    {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};  // the first one flipped
+  core::TriangleMesh cube = cubeMesh();
+  std::swap(cube.triangles[0][1], cube.triangles[0][2]);  // the first triangle wound the wrong way
   const auto grid = core::SdfGrid::fromMesh(cube, 16);
   EXPECT_LT(grid->eval(Vec3::Zero(), nullptr), -0.05);
   EXPECT_GT(grid->eval(Vec3(0.15, 0, 0), nullptr), 0.0);
