@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "guard.h"
 #include "island.h"
 #include "rigid_body_sim/core/contact.h"
 #include "scratch.h"
@@ -358,6 +359,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
     held[i] = 0;
     b.v_WB = vel[i].v_W;
     b.w_B = b.q_WB.conjugate() * vel[i].w_W;
+    limitSpeeds(model, static_cast<int>(i), b, ws);
   }
 }
 

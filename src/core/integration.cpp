@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "guard.h"
 #include "scratch.h"
 #include "sleep.h"
 
@@ -129,14 +130,14 @@ void integrateBodies(const Model& model, State& state, double h, std::size_t beg
 
 /// integrateVelocities with loads, drag or penalty forces. Flattened as
 /// integrateBodies is: the per-body functions inlined into the loop.
-[[gnu::flatten]] void integrateForces(const Model& model, State& state, const Loads& loads, double h,
-                                      const Workspace& ws) {
+[[gnu::flatten]] void integrateForces(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     BodyState& s = state.bodies[i];
     if (s.asleep) continue;
     const NetLoad net = accumulateForces(model, state, loads.empty() ? nullptr : &loads[i], ws, static_cast<int>(i));
     integrateVelocity(model, model.body(i), net, h, s);
     applyDamping(model, h, s);
+    limitSpeeds(model, static_cast<int>(i), s, ws);
   }
 }
 
@@ -152,7 +153,7 @@ void integrateBody(const Model& model, const BodyModel& b, double h, BodyState& 
   }
 }
 
-void integrateVelocities(const Model& model, State& state, const Loads& loads, double h, const Workspace& ws) {
+void integrateVelocities(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
   const Damping& d = model.damping();
   // Without loads, drag or penalty contacts the only force is gravity.
   const bool penalty = !ws.contacts.empty() && model.contact().method != ContactMethod::kImpulse;
@@ -160,10 +161,14 @@ void integrateVelocities(const Model& model, State& state, const Loads& loads, d
     integrateForces(model, state, loads, h, ws);
     return;
   }
-  for (BodyState& s : state.bodies) {
+  // Gravity alone changes only v: ω needs no look (it was limited when it changed).
+  const double linear2 = model.limits().linear * model.limits().linear;
+  for (std::size_t i = 0; i < state.bodies.size(); ++i) {
+    BodyState& s = state.bodies[i];
     if (s.asleep) continue;
     s.v_WB += h * model.gravity();
     applyDamping(model, h, s);
+    if (!(s.v_WB.squaredNorm() <= linear2)) limitSpeeds(model, static_cast<int>(i), s, ws);
   }
 }
 

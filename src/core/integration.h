@@ -46,8 +46,9 @@ void integrateOrientation(const Quat& increment, BodyState& s);
 /// not its still time): what stage 6–7 does to each body.
 void integrateBody(const Model& model, const BodyModel& b, double h, BodyState& s);
 
-/// Stage 2–4: forces, velocities and damping of every awake body.
-void integrateVelocities(const Model& model, State& state, const Loads& loads, double h, const Workspace& ws);
+/// Stage 2–4: forces, velocities and damping of every awake body, then its
+/// speed limits (guard.h).
+void integrateVelocities(const Model& model, State& state, const Loads& loads, double h, Workspace& ws);
 
 /// Stage 6–7: rotation (with the gyroscopic term), position and orientation
 /// of every awake body, and the time it has been still (§6); split over the

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "guard.h"
 #include "integration.h"
 #include "scratch.h"
 #include "sleep.h"
@@ -73,6 +74,7 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
     const BodyLoad* load = loads.empty() ? nullptr : &loads[i];
     integrateVelocity(model, b, accumulateForces(model, state, load, ws, static_cast<int>(i)), h, s);
     applyDamping(model, h, s);
+    limitSpeeds(model, static_cast<int>(i), s, ws);
     const bool near = !model.scene().empty() && minSeparation(model, s, static_cast<int>(i),
                                                               (s.v_WB.norm() + s.w_B.norm() * b.bound_radius) * h) <
                                                     std::numeric_limits<double>::infinity();
@@ -148,6 +150,7 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
     s.p_WB = p_new;
     s.q_WB = Quat(R_new).normalized();
     s.w_B = s.q_WB.conjugate() * w_new;
+    limitSpeeds(model, static_cast<int>(i), s, ws);  // a contact's push, as the impulse method's
     updateSleep(model, sc.in_contact[i] != 0, h, s);
   }
 }

@@ -3,10 +3,12 @@
 // file named beside it.
 #include "rigid_body_sim/core/step.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
 #include "fixed_point.h"
+#include "guard.h"
 #include "integration.h"
 #include "rigid_body_sim/core/shape_matching.h"
 #include "sleep.h"
@@ -20,11 +22,13 @@ namespace {
 bool advance(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
   // The stages, as a table:
   // clang-format off
+  keepPoses(state, ws);                                            // §5.9    guard.cpp: the last finite poses
   detectContacts(model, state, h, ws);                             // §5.1    detection.cpp (wakes sleepers hit)
-  integrateVelocities(model, state, loads, h, ws);                 // §5.2–4  integration.cpp: forces, v and ω, damping
-  const bool impulse = solveContactImpulses(model, state, h, ws);  // §5.5    contact_solver.cpp
+  integrateVelocities(model, state, loads, h, ws);                 // §5.2–4  integration.cpp: forces, v and ω, damping, limits
+  const bool impulse = solveContactImpulses(model, state, h, ws);  // §5.5    contact_solver.cpp (then the limits)
   integratePositions(model, state, h, ws);                         // §5.6–7  integration.cpp: gyroscopic, x and q
   if (impulse) correctPositions(model, state, ws);                 // §5.8    position_correction.cpp
+  guardFinite(state, ws);                                          // §5.9    guard.cpp: non-finite bodies go back
   sleepIslands(model, state, ws, impulse);                         // §6      sleep.cpp
   // clang-format on
   return impulse;
@@ -64,10 +68,14 @@ void step(const Model& model, State& state, const Loads& loads, Workspace* works
   Workspace& ws = workspace != nullptr ? *workspace : *local;
   const double h = model.dt();
   wakeLoadedBodies(state, loads);
+  ws.speed_limited.clear();
+  ws.diverged.clear();
   switch (model.contact().method) {
-    case ContactMethod::kShapeMatching:  // replaces every stage (§7.3)
+    case ContactMethod::kShapeMatching:  // replaces every stage (§7.3), under the same guard
       forgetFixedPoint(ws);
+      keepPoses(state, ws);
       stepShapeMatching(model, state, loads, h, ws);
+      guardFinite(state, ws);
       break;
     case ContactMethod::kPenaltyLogBarrier:  // advance() under step control (§7.2)
       forgetFixedPoint(ws);
@@ -78,6 +86,9 @@ void step(const Model& model, State& state, const Loads& loads, Workspace* works
       break;
   }
   state.time += h;
+  // The stages list a body each time they limit it: once each, ascending.
+  std::sort(ws.speed_limited.begin(), ws.speed_limited.end());
+  ws.speed_limited.erase(std::unique(ws.speed_limited.begin(), ws.speed_limited.end()), ws.speed_limited.end());
 }
 
 }  // namespace rigid_body_sim::core

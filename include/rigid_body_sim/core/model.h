@@ -51,6 +51,7 @@ struct ModelSpec {
   ContactSettings contact;
   SleepSettings sleep;
   SolverSettings solver;
+  SpeedLimits limits;
 };
 
 /// One body as the integrator uses it: derived and validated quantities.
@@ -109,6 +110,7 @@ class Model {
   const ContactSettings& contact() const { return contact_; }
   const SleepSettings& sleep() const { return sleep_; }
   const SolverSettings& solver() const { return solver_; }
+  const SpeedLimits& limits() const { return limits_; }
   /// max(restitution_threshold, 2 |g| Δt), m/s.
   double restitutionThreshold() const { return restitution_threshold_; }
   /// Per-step decay factors α = e^(−k Δt) of the damping rates.
@@ -125,6 +127,7 @@ class Model {
   ContactSettings contact_;
   SleepSettings sleep_;
   SolverSettings solver_;
+  SpeedLimits limits_;
   double restitution_threshold_;
   double linear_decay_;
   double angular_decay_;

@@ -54,6 +54,19 @@ struct SleepSettings {
   double time = 0.5;               ///< s
 };
 
+/// The fastest a body may move, as Jolt's mMaxLinearVelocity and
+/// mMaxAngularVelocity and PhysX's maxAngularVelocity: a velocity beyond
+/// them is scaled back to them wherever loads and contacts change it
+/// (docs/physics.md §5.9), and the step reports the body (Workspace::speed_limited).
+/// Without them an accepted load (1e12 N·m through a lever) spins a body to
+/// overflow. Jolt's defaults are 500 m/s and about 47 rad/s, Unity's PhysX
+/// 50 rad/s; 100 rad/s here lets a 0.1 m wheel roll at 10 m/s. Config keys
+/// limits.max_linear_speed and limits.max_angular_speed, each in (0, 1e4].
+struct SpeedLimits {
+  double linear = 500.0;   ///< m/s
+  double angular = 100.0;  ///< rad/s
+};
+
 /// The numerical constants of the stages: tolerances, iteration limits and
 /// thresholds. The defaults are what the tests and benchmarks were measured
 /// with (docs/physics.md says why each is what it is); the config sets those

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "rigid_body_sim/core/contact.h"
@@ -17,6 +18,12 @@ namespace rigid_body_sim::core {
 namespace detail {
 struct StepScratch;
 }
+
+/// A body the step's guard put back (docs/physics.md §5.9).
+struct Divergence {
+  int body = 0;      ///< index in the model
+  std::string what;  ///< what was not finite: "position, velocity", ...
+};
 
 struct Workspace {
   Workspace();
@@ -41,6 +48,12 @@ struct Workspace {
   std::vector<Contact> contacts;     ///< sorted by key (body, other, item, point)
   double deepest_penetration = 0.0;  ///< m, ≥ 0, seen in this step's detection
   std::size_t skipped_steps = 0;     ///< steps found to be a fixed point and not computed again (a count)
+  /// Bodies whose velocity the speed limits (SpeedLimits) scaled back in
+  /// this step, ascending: the caller says so, once per body.
+  std::vector<int> speed_limited;
+  /// Bodies whose state stopped being finite in this step, put back to
+  /// their pose before it, at rest: the caller clears their loads and says so.
+  std::vector<Divergence> diverged;
 
   /// The stages' scratch memory; not for callers.
   std::unique_ptr<detail::StepScratch> scratch;
