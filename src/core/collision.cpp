@@ -66,7 +66,33 @@ void sampleSphereSurface(double radius, double spacing, std::vector<Vec3>& out) 
   }
 }
 
+/// Intervals of `spacing` along `length`, in floating point (no int to overflow).
+double intervalCount(double length, double spacing) { return std::max(1.0, std::ceil(length / spacing - 1e-9)); }
+
 }  // namespace
+
+double sampleCount(const CollisionShape& shape, double spacing, bool sample_spheres) {
+  switch (shape.kind) {
+    case CollisionShape::Kind::kBox: {
+      const double n = intervalCount(shape.size.x(), spacing) + 1.0;
+      const double m = intervalCount(shape.size.y(), spacing) + 1.0;
+      const double k = intervalCount(shape.size.z(), spacing) + 1.0;
+      return n * m * k;  // the whole lattice: more than its surface
+    }
+    case CollisionShape::Kind::kCylinder: {
+      const double around = std::max(8.0, intervalCount(2.0 * M_PI * shape.radius, spacing));
+      const double along = intervalCount(shape.length, spacing);
+      const double rings = intervalCount(shape.radius, spacing);
+      return around * (along + 1.0 + 2.0 * rings) + 2.0;
+    }
+    case CollisionShape::Kind::kSphere:
+      return sample_spheres ? std::max(12.0, std::ceil(4.0 * M_PI * shape.radius * shape.radius / (spacing * spacing)))
+                            : 1.0;
+    case CollisionShape::Kind::kPoints:
+      return static_cast<double>(shape.mesh.vertices.size());
+  }
+  return 0.0;
+}
 
 std::vector<ContactPoint> sampleShape(const CollisionShape& shape, const Pose& X_BL, double spacing,
                                       bool sample_spheres) {

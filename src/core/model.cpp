@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "rigid_body_sim/core/inertia.h"
+#include "rigid_body_sim/core/ranges.h"
 #include "rigid_body_sim/core/sdf_grid.h"
 #include "rigid_body_sim/core/sdf_surface.h"
 #include "validate.h"
@@ -59,6 +60,14 @@ void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, co
                         BodyModel& b) {
   const Pose X_BL = Pose{b.q_LB, b.p_LB}.inverse();
   const bool sample_spheres = contact.method == ContactMethod::kShapeMatching;
+  double count = 0.0;
+  for (const CollisionShape& shape : spec.collision)
+    count += sampleCount(shape, contact.sample_spacing, sample_spheres);
+  if (count > ranges::kMaxContactPoints) {
+    detail::fail("contact.sample_spacing", detail::str(contact.sample_spacing),
+                 "body '" + spec.name + "' would get " + detail::str(count) + " contact points, more than " +
+                     detail::str(ranges::kMaxContactPoints) + " (raise the spacing or simplify the mesh)");
+  }
   for (const CollisionShape& shape : spec.collision) {
     const auto points = sampleShape(shape, X_BL, contact.sample_spacing, sample_spheres);
     b.contact_points.insert(b.contact_points.end(), points.begin(), points.end());
@@ -89,6 +98,24 @@ void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, co
   if (eig.eigenvalues()(0) > 1e-12 * std::max(1.0, eig.eigenvalues()(2))) b.points_inv_spread = spread.inverse();
 }
 
+/// The cells along a mesh's longest side in its distance grid: the grid
+/// costs resolution³ × triangles to build, so big meshes get a coarser one,
+/// as coarse as the work bound needs, and a mesh too big even for the
+/// coarsest is refused.
+int gridResolution(const CollisionShape& shape, const SolverSettings& solver, const std::string& body) {
+  const double triangles = static_cast<double>(shape.mesh.triangles.size());
+  int resolution =
+      triangles > solver.large_mesh_triangles ? solver.large_mesh_grid_resolution : solver.mesh_grid_resolution;
+  const int fits = static_cast<int>(std::cbrt(ranges::kMaxGridWork / triangles));
+  if (fits < ranges::kMinGridResolution) {
+    detail::fail("body '" + body + "': collision mesh '" + shape.name + "'", detail::str(triangles) + " triangles",
+                 "too many for its distance grid in a world (at most " +
+                     detail::str(std::floor(ranges::kMaxGridWork / std::pow(ranges::kMinGridResolution, 3))) +
+                     "; simplify the mesh)");
+  }
+  return std::min(resolution, fits);
+}
+
 /// The body's solid in B: the union of its collision shapes, each posed by
 /// X_BS; meshes as a sampled signed-distance grid.
 void buildSolid(const BodySpec& spec, const SolverSettings& solver, BodyModel& b) {
@@ -108,12 +135,8 @@ void buildSolid(const BodySpec& spec, const SolverSettings& solver, BodyModel& b
         break;
       case CollisionShape::Kind::kPoints:
         if (shape.mesh.triangles.empty()) break;  // a point cloud has no inside
-        // The grid costs resolution³ × triangles to build: coarser for big meshes.
-        parts.push_back(Sdf::grid(SdfGrid::fromMesh(shape.mesh, static_cast<int>(shape.mesh.triangles.size()) >
-                                                                        solver.large_mesh_triangles
-                                                                    ? solver.large_mesh_grid_resolution
-                                                                    : solver.mesh_grid_resolution))
-                            .transformed(X_BS));
+        parts.push_back(
+            Sdf::grid(SdfGrid::fromMesh(shape.mesh, gridResolution(shape, solver, spec.name))).transformed(X_BS));
         break;
     }
   }
@@ -129,11 +152,37 @@ void buildSolid(const BodySpec& spec, const SolverSettings& solver, BodyModel& b
   }
 }
 
+/// A collision shape's size and place: finite, and at most kMaxExtent.
+void validateShape(const CollisionShape& shape, const std::string& where) {
+  const std::string field = where + "collision '" + shape.name + "'";
+  double extent = std::max({shape.size.cwiseAbs().maxCoeff(), shape.radius, shape.length});
+  for (const Vec3& v : shape.mesh.vertices) extent = std::max(extent, v.cwiseAbs().maxCoeff());
+  if (!std::isfinite(extent) || extent > ranges::kMaxExtent) {
+    detail::fail(field, detail::str(extent) + " m",
+                 "its size must be finite and at most " + detail::str(ranges::kMaxExtent) + " m");
+  }
+  if (!shape.X_LS.translation.allFinite() || shape.X_LS.translation.norm() > ranges::kMaxExtent) {
+    detail::fail(field + " origin", detail::str(shape.X_LS.translation),
+                 "must be finite and within " + detail::str(ranges::kMaxExtent) + " m of the link frame");
+  }
+}
+
 BodyModel buildBody(const BodySpec& spec) {
   const std::string where = "body '" + spec.name + "': ";
-  detail::requirePositive(spec.mass, where + "mass", "kg");
+  detail::requireWithin(spec.mass, ranges::kMinMass, ranges::kMaxMass, where + "mass", "kg");
   detail::requireFinite(spec.p_LC, where + "centre of mass");
+  if (spec.p_LC.norm() > ranges::kMaxExtent) {
+    detail::fail(where + "centre of mass", detail::str(spec.p_LC),
+                 "is more than " + detail::str(ranges::kMaxExtent) + " m from the link frame");
+  }
   validateInertia(spec.I_C_L, where + "inertia");
+  const Vec3 moments = principalAxes(spec.I_C_L).moments;
+  if (moments.minCoeff() < ranges::kMinInertia || moments.maxCoeff() > ranges::kMaxInertia) {
+    detail::fail(where + "inertia", detail::str(spec.I_C_L),
+                 "principal moments " + detail::str(moments) + " must be within [" + detail::str(ranges::kMinInertia) +
+                     ", " + detail::str(ranges::kMaxInertia) + "] kg*m^2");
+  }
+  for (const CollisionShape& shape : spec.collision) validateShape(shape, where);
 
   BodyModel b;
   b.name = spec.name;
@@ -174,25 +223,49 @@ void validateDamping(const Damping& d, double dt, const std::vector<BodyModel>& 
 }
 
 void validateContact(const ContactSettings& c) {
-  if (!std::isfinite(c.restitution) || c.restitution < 0.0 || c.restitution > 1.0) {
-    detail::fail("contact.restitution", detail::str(c.restitution), "must be within [0, 1]");
-  }
-  detail::requireNonNegative(c.friction, "contact.friction", "");
-  detail::requireNonNegative(c.restitution_threshold, "contact.restitution_threshold", "m/s");
-  detail::requirePositive(c.sample_spacing, "contact.sample_spacing", "m");
-  if (c.iterations < 1) detail::fail("contact.iterations", std::to_string(c.iterations), "must be >= 1");
-  detail::requireNonNegative(c.position_slop, "contact.position_slop", "m");
-  detail::requirePositive(c.penalty_stiffness, "contact.penalty_stiffness", "N/m");
+  detail::requireWithin(c.restitution, 0.0, 1.0, "contact.restitution", "");
+  detail::requireWithin(c.friction, 0.0, ranges::kMaxFriction, "contact.friction", "");
+  detail::requireWithin(c.restitution_threshold, 0.0, ranges::kMaxThresholdSpeed, "contact.restitution_threshold",
+                        "m/s");
+  detail::requireWithin(c.sample_spacing, ranges::kMinSampleSpacing, ranges::kMaxExtent, "contact.sample_spacing", "m");
+  detail::requireCount(c.iterations, 1, ranges::kMaxIterations, "contact.iterations");
+  detail::requireWithin(c.position_slop, 0.0, ranges::kMaxBuffer, "contact.position_slop", "m");
+  detail::requirePositive(c.penalty_stiffness, "contact.penalty_stiffness", "N/m");  // per body: validatePenalty
   detail::requireNonNegative(c.penalty_damping, "contact.penalty_damping", "N*s/m");
-  detail::requirePositive(c.penalty_buffer, "contact.penalty_buffer", "m");
-  detail::requirePositive(c.barrier_strength, "contact.barrier_strength", "N*m");
-  detail::requirePositive(c.barrier_buffer, "contact.barrier_buffer", "m");
+  detail::requirePositiveAtMost(c.penalty_buffer, ranges::kMaxBuffer, "contact.penalty_buffer", "m");
+  detail::requirePositiveAtMost(c.barrier_strength, ranges::kMaxBarrierStrength, "contact.barrier_strength", "N*m");
+  detail::requirePositiveAtMost(c.barrier_buffer, ranges::kMaxBuffer, "contact.barrier_buffer", "m");
+}
+
+/// The penalty spring and damper act explicitly on each body: k h²/m and
+/// c h/m must stay small, or the force overshoots (as validateDamping's drag).
+void validatePenalty(const ContactSettings& c, double dt, const std::vector<BodyModel>& bodies) {
+  if (c.method != ContactMethod::kPenaltyQuadratic && c.method != ContactMethod::kPenaltyLogBarrier) return;
+  for (const BodyModel& b : bodies) {
+    const double stiff = c.penalty_stiffness * dt * dt * b.inv_mass;
+    if (c.method == ContactMethod::kPenaltyQuadratic && stiff > ranges::kMaxPenaltyStiffnessRatio) {
+      detail::fail("contact.penalty_stiffness", detail::str(c.penalty_stiffness),
+                   "k*dt^2/mass = " + detail::str(stiff) + " > " + detail::str(ranges::kMaxPenaltyStiffnessRatio) +
+                       " for body '" + b.name + "' (the explicit spring would be unstable; lower k or dt)");
+    }
+    const double damp = c.penalty_damping * dt * b.inv_mass;
+    if (damp >= 1.0) {
+      detail::fail("contact.penalty_damping", detail::str(c.penalty_damping),
+                   "c*dt/mass = " + detail::str(damp) + " >= 1 for body '" + b.name +
+                       "' (the explicit damper would reverse the velocity)");
+    }
+  }
 }
 
 void validateSleep(const SleepSettings& s) {
-  detail::requireNonNegative(s.linear_velocity, "sleep.linear_velocity", "m/s");
-  detail::requireNonNegative(s.angular_velocity, "sleep.angular_velocity", "rad/s");
-  detail::requireNonNegative(s.time, "sleep.time", "s");
+  detail::requireWithin(s.linear_velocity, 0.0, ranges::kMaxThresholdSpeed, "sleep.linear_velocity", "m/s");
+  detail::requireWithin(s.angular_velocity, 0.0, ranges::kMaxThresholdSpeed, "sleep.angular_velocity", "rad/s");
+  detail::requireWithin(s.time, 0.0, 1e6, "sleep.time", "s");
+}
+
+void validateLimits(const SpeedLimits& l) {
+  detail::requirePositiveAtMost(l.linear, ranges::kMaxSpeedLimit, "limits.max_linear_speed", "m/s");
+  detail::requirePositiveAtMost(l.angular, ranges::kMaxSpeedLimit, "limits.max_angular_speed", "rad/s");
 }
 
 void validateSolver(const SolverSettings& s) {
@@ -200,12 +273,9 @@ void validateSolver(const SolverSettings& s) {
   detail::requireNonNegative(s.relative_tolerance, "solver.relative_tolerance", "");
   detail::requireNonNegative(s.resting_speed, "solver.resting_speed", "m/s");
   detail::requireNonNegative(s.rounding_speed, "solver.rounding_speed", "m/s");
-  if (s.position_iterations < 0) {
-    detail::fail("solver.position_iterations", std::to_string(s.position_iterations), "must be >= 0");
-  }
-  if (s.mesh_grid_resolution < 2 || s.large_mesh_grid_resolution < 2) {
-    detail::fail("solver.mesh_grid_resolution", std::to_string(s.mesh_grid_resolution), "must be >= 2");
-  }
+  detail::requireCount(s.position_iterations, 0, ranges::kMaxIterations, "solver.position_iterations");
+  detail::requireCount(s.mesh_grid_resolution, 2, ranges::kMaxGridResolution, "solver.mesh_grid_resolution");
+  detail::requireCount(s.large_mesh_grid_resolution, 2, ranges::kMaxGridResolution, "solver.mesh_grid_resolution");
   if (s.point_group_size < 1)
     detail::fail("solver.point_group_size", std::to_string(s.point_group_size), "must be >= 1");
 }
@@ -220,10 +290,17 @@ Model::Model(const ModelSpec& spec)
       scene_(spec.scene),
       contact_(spec.contact),
       sleep_(spec.sleep),
-      solver_(spec.solver) {
+      solver_(spec.solver),
+      limits_(spec.limits) {
   if (spec.bodies.empty()) detail::fail("bodies", "[]", "the model needs at least one body");
-  detail::requirePositive(spec.dt, "dt", "s");
+  detail::requireWithin(spec.dt, ranges::kMinDt, ranges::kMaxDt, "dt", "s");
   detail::requireFinite(spec.gravity_W, "gravity");
+  if (spec.gravity_W.norm() > ranges::kMaxGravity) {
+    detail::fail("gravity", detail::str(spec.gravity_W),
+                 "|g| = " + detail::str(spec.gravity_W.norm()) + " must be at most " +
+                     detail::str(ranges::kMaxGravity) + " m/s^2");
+  }
+  validateLimits(spec.limits);
   validateContact(spec.contact);
   validateSleep(spec.sleep);
   validateSolver(spec.solver);
@@ -253,6 +330,7 @@ Model::Model(const ModelSpec& spec)
   }
   restitution_threshold_ = std::max(spec.contact.restitution_threshold, 2.0 * gravity_W_.norm() * dt_);
   validateDamping(spec.damping, spec.dt, bodies_);
+  validatePenalty(spec.contact, spec.dt, bodies_);
   linear_decay_ = std::exp(-spec.damping.linear_rate * spec.dt);
   angular_decay_ = std::exp(-spec.damping.angular_rate * spec.dt);
 }

@@ -38,6 +38,27 @@ inline void requireNonNegative(double x, const std::string& field, const std::st
   if (!std::isfinite(x) || x < 0.0) fail(field, str(x), "must be finite and >= 0 " + unit);
 }
 
+/// x within [lo, hi]: the range a setting makes physical sense in.
+inline void requireWithin(double x, double lo, double hi, const std::string& field, const std::string& unit) {
+  if (!std::isfinite(x) || x < lo || x > hi) {
+    fail(field, str(x), "must be within [" + str(lo) + ", " + str(hi) + "]" + (unit.empty() ? "" : " " + unit));
+  }
+}
+
+/// x within (0, hi].
+inline void requirePositiveAtMost(double x, double hi, const std::string& field, const std::string& unit) {
+  if (!std::isfinite(x) || !(x > 0.0) || x > hi) {
+    fail(field, str(x), "must be > 0 and at most " + str(hi) + (unit.empty() ? "" : " " + unit));
+  }
+}
+
+/// An integer count within [lo, hi].
+inline void requireCount(int n, int lo, int hi, const std::string& field) {
+  if (n < lo || n > hi) {
+    fail(field, std::to_string(n), "must be within [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  }
+}
+
 inline void requireFinite(const Vec3& v, const std::string& field) {
   if (!v.allFinite()) fail(field, str(v), "must be finite");
 }

@@ -19,10 +19,11 @@ void expectRefused(const core::ModelSpec& s, std::initializer_list<std::string> 
 TEST(ModelValidation, AcceptsTheShippedBox) { EXPECT_NO_THROW(core::Model m(good())); }
 
 TEST(ModelValidation, Mass) {
-  for (double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+  for (double bad :
+       {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), 1e-300, 1e300}) {
     core::ModelSpec s = good();
     s.bodies[0].mass = bad;
-    expectRefused(s, {"body 'box': mass = ", "must be finite and > 0 kg"});
+    expectRefused(s, {"body 'box': mass = ", "must be within [1e-06, 10000000] kg"});
   }
   core::ModelSpec s = good();
   s.bodies[0].mass = -2.5;
@@ -46,11 +47,70 @@ TEST(ModelValidation, CentreOfMass) {
 }
 
 TEST(ModelValidation, TimeStep) {
-  for (double bad : {0.0, -1e-3, std::numeric_limits<double>::quiet_NaN()}) {
+  for (double bad : {0.0, -1e-3, std::numeric_limits<double>::quiet_NaN(), 300000.0, 1e-9}) {
     core::ModelSpec s = good();
     s.dt = bad;
-    expectRefused(s, {"dt = ", "must be finite and > 0 s"});
+    expectRefused(s, {"dt = ", "must be within [1e-06, 0.1] s"});
   }
+}
+
+TEST(ModelValidation, MagnitudesOutsidePhysicalSenseAreRefused) {
+  core::ModelSpec s = good();
+  s.gravity_W = Vec3(0.0, 0.0, -1e308);
+  expectRefused(s, {"gravity = [0, 0, -1e+308]", "must be at most 1000 m/s^2"});
+  s = good();
+  s.bodies[0].I_C_L = Vec3(5e-324, 5e-324, 5e-324).asDiagonal();
+  expectRefused(s, {"body 'box': inertia"});
+  s = good();
+  s.bodies[0].I_C_L = Vec3(1e-20, 1e-20, 1e-20).asDiagonal();
+  expectRefused(s, {"body 'box': inertia", "principal moments", "must be within [1e-15, 1e+12] kg*m^2"});
+  s = onGround(boxBody(Vec3(0.2, 0.1, 0.05)), impulse(0.0, 0.5));
+  s.bodies[0].collision[0].size.x() = 1e30;
+  expectRefused(s, {"body 'box': collision", "1e+30 m", "at most 1000 m"});
+  for (const double spacing : {1e-5, 1e-12}) {
+    s = onGround(boxBody(Vec3(0.2, 0.1, 0.05)), impulse(0.0, 0.5));
+    s.contact.sample_spacing = spacing;
+    expectRefused(s, {"contact.sample_spacing = ", "must be within [0.0001, 1000] m"});
+  }
+  s = onGround(boxBody(Vec3(100.0, 100.0, 100.0)), impulse(0.0, 0.5));
+  s.contact.sample_spacing = 1e-3;  // 8e15 lattice points
+  expectRefused(s, {"contact.sample_spacing = 0.001", "body 'box' would get", "more than 1000000"});
+  s = onGround(boxBody(Vec3(0.2, 0.1, 0.05)), impulse(0.0, 0.5));
+  s.contact.method = core::ContactMethod::kPenaltyQuadratic;
+  s.contact.penalty_stiffness = 1e300;
+  expectRefused(s, {"contact.penalty_stiffness = 1e+300", "k*dt^2/mass", "for body 'box'"});
+  for (const double bad : {0.0, -1.0, 1e5, std::numeric_limits<double>::quiet_NaN()}) {
+    s = good();
+    s.limits.linear = bad;
+    expectRefused(s, {"limits.max_linear_speed = ", "at most 10000 m/s"});
+    s = good();
+    s.limits.angular = bad;
+    expectRefused(s, {"limits.max_angular_speed = ", "at most 10000 rad/s"});
+  }
+}
+
+TEST(ModelValidation, AMeshTooBigForItsDistanceGridIsRefused) {
+  // In a world a mesh body gets a distance grid costing cells × triangles:
+  // 200,000 triangles do not fit the bound even at 8³ cells.
+  core::BodySpec mesh = boxBody(Vec3(0.5, 0.5, 0.5));
+  core::CollisionShape shape;
+  shape.kind = core::CollisionShape::Kind::kPoints;
+  shape.name = "soup";
+  for (int i = 0; i < 200000; ++i) {
+    const double t = i * 1e-6;
+    shape.mesh.vertices.push_back(Vec3(t, 0.0, 0.0));
+    shape.mesh.triangles.push_back({0, 0, 0});
+  }
+  shape.mesh.vertices.resize(3, Vec3::Zero());
+  shape.mesh.vertices[1] = Vec3(0.1, 0.0, 0.0);
+  shape.mesh.vertices[2] = Vec3(0.0, 0.1, 0.0);
+  for (auto& t : shape.mesh.triangles) t = {0, 1, 2};
+  mesh.collision = {shape};
+  core::ModelSpec s = onGround(mesh, impulse(0.0, 0.5));
+  core::BodySpec other = boxBody(Vec3(0.1, 0.1, 0.1));
+  other.name = "other";
+  s.bodies.push_back(other);
+  expectRefused(s, {"body 'box': collision mesh 'soup'", "200000 triangles", "simplify the mesh"});
 }
 
 TEST(ModelValidation, Gravity) {

@@ -32,6 +32,10 @@ struct ContactPoint {
   bool extreme = true;
 };
 
+/// How many points sampleShape() gives, at most, computed without sampling
+/// (so a spacing of 1e-12 m is refused before it allocates anything).
+double sampleCount(const CollisionShape& shape, double spacing, bool sample_spheres);
+
 /// Samples a shape into contact points at most `spacing` (m) apart, expressed
 /// in the body frame B through X_BL (the link frame's pose in B):
 ///  - box: the 8 corners, plus points along the edges and on the faces;

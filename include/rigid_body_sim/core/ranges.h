@@ -1,0 +1,42 @@
+// The ranges in which a model makes physical sense: Model's constructor
+// refuses anything outside them, naming the key and the range. Each bound is
+// far beyond what the bodies people simulate need, and well inside what the
+// arithmetic survives (a 1e30 m box, a 1e300 kg mass or a 300,000 s step are
+// typos, not scenes). docs/physics.md §5.9 says why each is where it is.
+#pragma once
+
+namespace rigid_body_sim::core::ranges {
+
+// -- the world
+constexpr double kMinDt = 1e-6;         ///< s (1 MHz)
+constexpr double kMaxDt = 0.1;          ///< s (10 Hz: coarser steps miss every contact)
+constexpr double kMaxGravity = 1e3;     ///< m/s², |g| (100 g; Jupiter's is 25)
+constexpr double kMaxSpeedLimit = 1e4;  ///< m/s and rad/s: SpeedLimits may be set up to this
+
+// -- a body
+constexpr double kMinMass = 1e-6;          ///< kg (a milligram)
+constexpr double kMaxMass = 1e7;           ///< kg (10,000 t)
+constexpr double kMinInertia = 1e-15;      ///< kg·m², smallest principal moment (a milligram of 0.1 mm)
+constexpr double kMaxInertia = 1e12;       ///< kg·m², largest principal moment
+constexpr double kMaxExtent = 1e3;         ///< m: any collision shape's size, and how far it sits from the link
+constexpr double kMaxContactPoints = 1e6;  ///< samples and mesh vertices of one body (memory and time per step)
+
+// -- contacts
+constexpr double kMinSampleSpacing = 1e-4;   ///< m
+constexpr double kMaxFriction = 10.0;        ///< μ (rubber on rubber is about 1–2)
+constexpr double kMaxThresholdSpeed = 1e3;   ///< m/s (restitution threshold, sleep speeds)
+constexpr double kMaxBuffer = 1.0;           ///< m (penalty and barrier buffers, position slop)
+constexpr double kMaxBarrierStrength = 1e6;  ///< N·m per contact point
+/// A penalty spring k on a body of mass m is integrated explicitly: stable
+/// only while ω h = √(k/m) h < 2. Refused from k h²/m above this.
+constexpr double kMaxPenaltyStiffnessRatio = 1.0;
+constexpr int kMaxIterations = 10000;  ///< impulse sweeps and position passes per step
+
+// -- the mesh distance grid (bodies in a world)
+constexpr int kMaxGridResolution = 256;  ///< cells along the longest side
+/// Cells × triangles the grid may cost to build (about 80 ns each here: 8 s);
+/// the resolution comes down to fit, and a mesh too big for 8 cells is refused.
+constexpr double kMaxGridWork = 1e8;
+constexpr int kMinGridResolution = 8;
+
+}  // namespace rigid_body_sim::core::ranges
