@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/orientation.h"
 #include "rigid_body_sim/io/urdf_loader.h"
@@ -220,6 +221,12 @@ void parseSolver(const YAML::Node& node, core::SolverSettings& s) {
   }
 }
 
+void parseLimits(const YAML::Node& node, core::SpeedLimits& l) {
+  requireKnownKeys(node, "limits", {"max_linear_speed", "max_angular_speed"});
+  if (node["max_linear_speed"]) l.linear = number(node["max_linear_speed"], "limits.max_linear_speed");
+  if (node["max_angular_speed"]) l.angular = number(node["max_angular_speed"], "limits.max_angular_speed");
+}
+
 void parseDamping(const YAML::Node& node, core::Damping& d) {
   requireKnownKeys(node, "damping", {"linear", "angular", "linear_drag", "angular_drag"});
   if (node["linear"]) d.linear_rate = number(node["linear"], "damping.linear");
@@ -273,7 +280,8 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
   c.model.scene = {core::Sdf::plane(Vec3::UnitZ())};  // the ground, z = 0
   if (!root || root.IsNull()) return c;
   requireKnownKeys(
-      root, "", {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver", "bodies"});
+      root, "",
+      {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver", "limits", "bodies"});
   if (root["dt"]) c.model.dt = number(root["dt"], "dt");
   if (root["gravity"]) c.model.gravity_W = vec3(root["gravity"], "gravity");
   if (root["gyroscopic"]) c.model.gyroscopic = boolean(root["gyroscopic"], "gyroscopic");
@@ -283,6 +291,7 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
   if (root["contact"]) parseContact(root["contact"], c.model.contact);
   if (root["sleep"]) parseSleep(root["sleep"], c.model.sleep);
   if (root["solver"]) parseSolver(root["solver"], c.model.solver);
+  if (root["limits"]) parseLimits(root["limits"], c.model.limits);
   if (root["bodies"]) {
     if (root["initial"]) fail("initial", "with a bodies list, give each body its own bodies[i].initial");
     c.bodies = parseBodies(root["bodies"], base_dir);
@@ -291,12 +300,24 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
 }
 
 YAML::Node loadYamlFile(const std::string& path) {
-  std::ifstream probe(path);
-  if (!probe) throw ConfigError("cannot read config '" + path + "'");
+  const std::string problem = fileProblem(path, InputCaps::kConfigBytes);
+  if (!problem.empty()) throw ConfigError("config " + problem);
+  std::string text;
   try {
-    return YAML::LoadFile(path);
+    text = readFile(path, InputCaps::kConfigBytes);
+  } catch (const std::runtime_error& e) {
+    throw ConfigError(std::string("config ") + e.what());
+  }
+  return loadYamlText(text, "config '" + path + "'");
+}
+
+YAML::Node loadYamlText(const std::string& text, const std::string& source) {
+  const std::string problem = yamlProblem(text);
+  if (!problem.empty()) throw ConfigError(source + ": " + problem);
+  try {
+    return YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw ConfigError("config '" + path + "' is not valid YAML: " + e.what());
+    throw ConfigError(source + " is not valid YAML: " + e.what());
   }
 }
 
@@ -306,12 +327,7 @@ void applyOverride(YAML::Node& root, const std::string& assignment) {
     throw ConfigError("--set '" + assignment + "': expected KEY=VALUE, e.g. gravity=[0,0,0]");
   }
   const std::string key = assignment.substr(0, eq);
-  YAML::Node value;
-  try {
-    value = YAML::Load(assignment.substr(eq + 1));
-  } catch (const YAML::Exception& e) {
-    throw ConfigError("--set '" + assignment + "': the value is not YAML: " + e.what());
-  }
+  const YAML::Node value = loadYamlText(assignment.substr(eq + 1), "--set '" + assignment + "': the value");
   std::vector<std::string> parts;
   std::stringstream ss(key);
   for (std::string part; std::getline(ss, part, '.');) {

@@ -13,6 +13,8 @@
 #include <regex>
 #include <sstream>
 
+#include "rigid_body_sim/io/input_bounds.h"
+
 namespace rigid_body_sim::io {
 namespace {
 
@@ -75,15 +77,11 @@ std::string resolveMeshUri(const std::string& uri, const std::string& base_dir) 
                   "' not found in ROS_PACKAGE_PATH nor above the URDF's folder");
 }
 
-core::TriangleMesh loadMesh(const std::string& path, const core::Vec3& scale) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw MeshError("mesh '" + path + "': no such file");
-  Assimp::Importer importer;
-  // ROS reads mesh coordinates as they are, z up (rviz, Gazebo): a Collada
-  // <up_axis> must not rotate them.
-  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-  // Bake node transforms into the vertices (DAE files carry them); triangles only.
-  const aiScene* scene = importer.ReadFile(path, aiProcess_PreTransformVertices | aiProcess_Triangulate);
+namespace {
+
+/// The meshes of an imported scene as one TriangleMesh (see loadMesh).
+core::TriangleMesh fromScene(const aiScene* scene, const Assimp::Importer& importer, const std::string& path,
+                             const core::Vec3& scale) {
   if (scene == nullptr || scene->mNumMeshes == 0) {
     throw MeshError("mesh '" + path + "': cannot read it (" + importer.GetErrorString() + ")");
   }
@@ -123,6 +121,34 @@ core::TriangleMesh loadMesh(const std::string& path, const core::Vec3& scale) {
   for (const auto& t : raw_triangles) out.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
   if (out.vertices.empty()) throw MeshError("mesh '" + path + "': no vertices");
   return out;
+}
+
+/// An importer that reads mesh coordinates as ROS does.
+void configure(Assimp::Importer& importer) {
+  // ROS reads mesh coordinates as they are, z up (rviz, Gazebo): a Collada
+  // <up_axis> must not rotate them.
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+}
+
+// Bake node transforms into the vertices (DAE files carry them); triangles only.
+constexpr unsigned kImportSteps = aiProcess_PreTransformVertices | aiProcess_Triangulate;
+
+}  // namespace
+
+core::TriangleMesh loadMesh(const std::string& path, const core::Vec3& scale) {
+  const std::string problem = fileProblem(path, InputCaps::kMeshBytes);
+  if (!problem.empty()) throw MeshError("mesh " + problem);
+  Assimp::Importer importer;
+  configure(importer);
+  return fromScene(importer.ReadFile(path, kImportSteps), importer, path, scale);
+}
+
+core::TriangleMesh loadMeshBytes(const std::string& bytes, const std::string& format, const core::Vec3& scale) {
+  if (bytes.size() > InputCaps::kMeshBytes) throw MeshError("mesh bytes: more than the cap");
+  Assimp::Importer importer;
+  configure(importer);
+  const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportSteps, format.c_str());
+  return fromScene(scene, importer, "<" + format + " bytes>", scale);
 }
 
 }  // namespace rigid_body_sim::io

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "rigid_body_sim/core/inertia.h"
+#include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/orientation.h"
 
@@ -148,22 +149,31 @@ class Lumper {
   }
 
   /// Adds `link` and, through fixed joints, everything below it (its
-  /// frames to `frames`).
-  void collect(const urdf::Link& link, const Pose& X_LK, std::vector<core::MassProperties>& parts,
+  /// frames to `frames`), depth first in URDF order: with a stack of its
+  /// own, so a long chain of links cannot overflow the call stack.
+  void collect(const urdf::Link& root, std::vector<core::MassProperties>& parts,
                std::vector<core::CollisionShape>& shapes, std::vector<core::FixedLink>& frames) const {
-    parts.push_back(part(link, X_LK));
-    collisions(link, X_LK, shapes);
-    for (const auto& joint : link.child_joints) {
-      if (joint->type != urdf::Joint::FIXED) {
-        fail(std::string("joint '") + joint->name + "' is " + jointTypeName(joint->type) +
-             ": only fixed joints are supported (articulated bodies are out of scope)");
+    std::vector<std::pair<const urdf::Link*, Pose>> todo{{&root, Pose{}}};
+    while (!todo.empty()) {
+      const auto [link, X_LK] = todo.back();
+      todo.pop_back();
+      parts.push_back(part(*link, X_LK));
+      collisions(*link, X_LK, shapes);
+      const std::size_t first_child = todo.size();
+      for (const auto& joint : link->child_joints) {
+        if (joint->type != urdf::Joint::FIXED) {
+          fail(std::string("joint '") + joint->name + "' is " + jointTypeName(joint->type) +
+               ": only fixed joints are supported (articulated bodies are out of scope)");
+        }
+        const auto child = std::find_if(link->child_links.begin(), link->child_links.end(),
+                                        [&](const auto& l) { return l->name == joint->child_link_name; });
+        if (child == link->child_links.end()) fail("joint '" + joint->name + "' has no child link");
+        const Pose X_KC = toPose(joint->parent_to_joint_origin_transform);
+        todo.push_back({child->get(), X_LK * X_KC});
+        frames.push_back({(*child)->name, link->name, X_KC});
       }
-      const auto child = std::find_if(link.child_links.begin(), link.child_links.end(),
-                                      [&](const auto& l) { return l->name == joint->child_link_name; });
-      if (child == link.child_links.end()) fail("joint '" + joint->name + "' has no child link");
-      const Pose X_KC = toPose(joint->parent_to_joint_origin_transform);
-      frames.push_back({(*child)->name, link.name, X_KC});
-      collect(**child, X_LK * X_KC, parts, shapes, frames);
+      // Children come off the stack in URDF order.
+      std::reverse(todo.begin() + static_cast<std::ptrdiff_t>(first_child), todo.end());
     }
   }
 
@@ -176,6 +186,12 @@ class Lumper {
 
 core::BodySpec loadUrdfString(const std::string& xml, const std::string& source, const std::string& base_dir) {
   const Lumper lumper(source, base_dir);
+  if (xml.size() > InputCaps::kUrdfBytes) {
+    lumper.fail("the URDF text is " + std::to_string(xml.size()) + " bytes, more than the " +
+                std::to_string(InputCaps::kUrdfBytes) + " a URDF may have");
+  }
+  const std::string problem = xmlProblem(xml);
+  if (!problem.empty()) lumper.fail("refused before parsing: " + problem);
   const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
   if (!model) lumper.fail("not a valid URDF document (the parser's reason is printed above)");
   const urdf::LinkConstSharedPtr root = model->getRoot();
@@ -184,7 +200,7 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
   std::vector<core::MassProperties> parts;
   std::vector<core::CollisionShape> shapes;
   std::vector<core::FixedLink> frames;
-  lumper.collect(*root, Pose{}, parts, shapes, frames);
+  lumper.collect(*root, parts, shapes, frames);
   const core::MassProperties total = core::combine(parts);
   if (!(total.mass > 0.0)) {
     lumper.fail("the body rooted at link '" + root->name + "' has a total mass of 0 kg");
@@ -201,11 +217,15 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
 }
 
 core::BodySpec loadUrdfFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw UrdfError("cannot read URDF '" + path + "': " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return loadUrdfString(text.str(), path, std::filesystem::path(path).parent_path().string());
+  const std::string problem = fileProblem(path, InputCaps::kUrdfBytes);
+  if (!problem.empty()) throw UrdfError("URDF " + problem);
+  std::string text;
+  try {
+    text = readFile(path, InputCaps::kUrdfBytes);
+  } catch (const std::runtime_error& e) {
+    throw UrdfError(std::string("URDF ") + e.what());
+  }
+  return loadUrdfString(text, path, std::filesystem::path(path).parent_path().string());
 }
 
 }  // namespace rigid_body_sim::io

@@ -213,7 +213,7 @@ TEST(Config, BadOverridesAreRefused) {
   YAML::Node tree = YAML::Load("dt: 0.001");
   expectThrowsWith<io::ConfigError>([&] { io::applyOverride(tree, "gravity"); }, {"--set 'gravity'", "KEY=VALUE"});
   expectThrowsWith<io::ConfigError>([&] { io::applyOverride(tree, "dt.x=1"); }, {"'dt.x'", "not a map"});
-  expectThrowsWith<io::ConfigError>([&] { io::applyOverride(tree, "gravity=[0,0"); }, {"not YAML"});
+  expectThrowsWith<io::ConfigError>([&] { io::applyOverride(tree, "gravity=[0,0"); }, {"not valid YAML"});
 }
 
 TEST(Config, RefusalsNameTheKeyAndTheValue) {
@@ -263,7 +263,8 @@ TEST(Config, BadBodiesAreRefusedByKey) {
 
 TEST(Config, ModelValidationNamesTheField) {
   const io::SimConfig c = parse("dt: -0.001\nscene: []");
-  expectThrowsWith<std::invalid_argument>([&] { io::buildModel(c, shippedBox()); }, {"dt = -0.001", "> 0 s"});
+  expectThrowsWith<std::invalid_argument>([&] { io::buildModel(c, shippedBox()); },
+                                          {"dt = -0.001", "must be within [1e-06, 0.1] s"});
 }
 
 }  // namespace

@@ -138,7 +138,7 @@ TEST(UrdfLoader, RefusesZeroTotalMass) {
 TEST(UrdfLoader, RefusesNonsenseAndMissingFiles) {
   expectRefused("this is not xml", {"test.urdf", "not a valid URDF"});
   expectThrowsWith<io::UrdfError>([] { io::loadUrdfFile("/nonexistent/robot.urdf"); },
-                                  {"cannot read URDF '/nonexistent/robot.urdf'", "No such file"});
+                                  {"URDF '/nonexistent/robot.urdf': no such file"});
 }
 
 }  // namespace

@@ -46,8 +46,13 @@ struct SimConfig {
 /// Relative URDF paths in `bodies` resolve against `base_dir`.
 SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir = "");
 
-/// Reads a YAML file (ConfigError if unreadable or not YAML).
+/// Reads a YAML file: ConfigError if it is not a readable regular file of at
+/// most InputCaps::kConfigBytes, or its text is refused by loadYamlText.
 YAML::Node loadYamlFile(const std::string& path);
+
+/// Parses a YAML text after yamlProblem() (input_bounds.h) accepts it: one
+/// document, no aliases, bounded nesting. ConfigError names `source`.
+YAML::Node loadYamlText(const std::string& text, const std::string& source);
 
 /// Applies "a.b.c=VALUE" to the tree: VALUE is parsed as YAML
 /// ("gravity=[0,0,0]", "gyroscopic=false"); missing maps are created.

@@ -25,7 +25,12 @@ std::string resolveMeshUri(const std::string& uri, const std::string& base_dir);
 
 /// Every mesh in the file as one: distinct vertices (node transforms applied,
 /// multiplied by `scale`, m) and the triangles over them. Throws MeshError
-/// naming the file.
+/// naming the file, also when it is not a regular file of at most
+/// InputCaps::kMeshBytes (input_bounds.h).
 core::TriangleMesh loadMesh(const std::string& path, const core::Vec3& scale);
+
+/// The same from the file's bytes; `format` is its extension ("obj", "stl",
+/// "dae"). What the mesh fuzzer calls.
+core::TriangleMesh loadMeshBytes(const std::string& bytes, const std::string& format, const core::Vec3& scale);
 
 }  // namespace rigid_body_sim::io

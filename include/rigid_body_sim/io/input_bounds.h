@@ -1,0 +1,45 @@
+// Bounds on what the loaders read, checked before anything is parsed: a
+// file must be a regular file of bounded size, a YAML text has one document
+// and no aliases, a URDF's nesting and link count are capped. Each check
+// returns why the input is refused ("" when it is not), for the loader to
+// throw in its own error type.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace rigid_body_sim::io {
+
+/// Caps on input (docs/physics.md §5.9 lists them with the model's ranges).
+struct InputCaps {
+  static constexpr std::uintmax_t kConfigBytes = 16u << 20;  ///< a YAML config (10,000 bodies take about 1 MB)
+  static constexpr std::uintmax_t kUrdfBytes = 16u << 20;    ///< a URDF document
+  static constexpr std::uintmax_t kMeshBytes = 256u << 20;   ///< a mesh file (a million-vertex OBJ is about 40 MB)
+  static constexpr int kYamlDepth = 64;                      ///< nested maps and sequences
+  static constexpr int kXmlDepth = 64;                       ///< nested XML elements (a URDF needs 5)
+  static constexpr int kUrdfLinks = 10000;                   ///< <link> elements in one URDF
+};
+
+/// Why `path` cannot be read as an input file: it does not exist, is not a
+/// regular file (a directory, a device, a pipe), or holds more than
+/// `max_bytes`. "" when it can.
+std::string fileProblem(const std::string& path, std::uintmax_t max_bytes);
+
+/// The bytes of `path`, which fileProblem() found readable. Throws
+/// std::runtime_error naming the file if it cannot be read or grew past
+/// `max_bytes` since (at most max_bytes + 1 bytes are ever read).
+std::string readFile(const std::string& path, std::uintmax_t max_bytes);
+
+/// Why a YAML text is refused before a tree is built from it: an alias or
+/// anchor (an alias bomb expands exponentially; write the value out), a
+/// second document (it would be ignored), nesting deeper than kYamlDepth,
+/// or a syntax error. "" when it is accepted.
+std::string yamlProblem(const std::string& text);
+
+/// Why an XML text is refused before it is parsed: elements nested deeper
+/// than kXmlDepth (the parser recurses), or more than kUrdfLinks <link>
+/// elements. "" when it is accepted. A scan of tags only: comments, CDATA,
+/// processing instructions and declarations are skipped.
+std::string xmlProblem(const std::string& xml);
+
+}  // namespace rigid_body_sim::io

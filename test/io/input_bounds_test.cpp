@@ -1,0 +1,112 @@
+// Bounds on input, checked before parsing (src/io/input_bounds.cpp): each
+// case here once crashed, hung or read without end.
+#include "rigid_body_sim/io/input_bounds.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+
+#include "../scratch_dir.h"
+#include "../test_util.h"
+#include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/mesh_loader.h"
+#include "rigid_body_sim/io/urdf_loader.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+std::string write(const std::string& name, const std::string& text) {
+  const std::string path = (scratch().path() / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string link(int i) {
+  return "<link name=\"l" + std::to_string(i) +
+         "\"><inertial><mass value=\"1\"/><inertia ixx=\"1\" iyy=\"1\" izz=\"1\" ixy=\"0\" ixz=\"0\" "
+         "iyz=\"0\"/></inertial></link>";
+}
+
+/// A URDF of `n` links in one chain of fixed joints.
+std::string chain(int n) {
+  std::string xml = "<robot name=\"chain\">";
+  for (int i = 0; i < n; ++i) xml += link(i);
+  for (int i = 1; i < n; ++i) {
+    xml += "<joint name=\"j" + std::to_string(i) + "\" type=\"fixed\"><parent link=\"l" + std::to_string(i - 1) +
+           "\"/><child link=\"l" + std::to_string(i) + "\"/><origin xyz=\"0.001 0 0\"/></joint>";
+  }
+  return xml + "</robot>";
+}
+
+TEST(InputBounds, OnlyRegularFilesOfBoundedSizeAreRead) {
+  EXPECT_NE(io::fileProblem("/nonexistent.yaml", 100).find("no such file"), std::string::npos);
+  EXPECT_NE(io::fileProblem(scratch().path().string(), 100).find("is a directory"), std::string::npos);
+  EXPECT_NE(io::fileProblem("/dev/zero", 100).find("not a regular file"), std::string::npos);
+  const std::string eleven = write("eleven.txt", "01234567890");
+  EXPECT_EQ(io::fileProblem(eleven, 11), "");
+  EXPECT_NE(io::fileProblem(eleven, 10).find("is 11 bytes, more than the 10"), std::string::npos);
+  EXPECT_EQ(io::readFile(eleven, 11), "01234567890");
+  EXPECT_THROW(io::readFile(eleven, 10), std::runtime_error);
+  // Each loader says so in its own words (/dev/zero was read until memory ran out).
+  expectThrowsWith<io::UrdfError>([] { io::loadUrdfFile("/dev/zero"); }, {"URDF '/dev/zero'", "not a regular file"});
+  expectThrowsWith<io::ConfigError>([] { io::loadYamlFile(scratch().path().string()); },
+                                    {"config '", "is a directory"});
+  expectThrowsWith<io::MeshError>([] { io::loadMesh(scratch().path().string(), Vec3::Ones()); },
+                                  {"mesh '", "is a directory"});
+}
+
+TEST(InputBounds, YamlAliasesSecondDocumentsAndDeepNestingAreRefused) {
+  // 9 levels of 10 aliases: 10⁹ nodes once expanded (it hung).
+  std::string bomb = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int i = 1; i < 9; ++i) {
+    bomb += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [";
+    for (int k = 0; k < 10; ++k) bomb += std::string(k ? ", " : "") + "*a" + std::to_string(i - 1);
+    bomb += "]\n";
+  }
+  bomb += "scene: *a8\n";
+  const auto t0 = std::chrono::steady_clock::now();
+  expectThrowsWith<io::ConfigError>([&] { io::loadYamlText(bomb, "bomb"); }, {"bomb: line 1", "anchor"});
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(5));  // a hang guard, not a benchmark
+  EXPECT_NE(io::yamlProblem("a: &x 1\nb: *x\n").find("aliases are refused"), std::string::npos);
+  EXPECT_NE(io::yamlProblem("dt: 0.001\n---\ndt: 0.1\n").find("second YAML document"), std::string::npos);
+  EXPECT_EQ(io::yamlProblem("dt: 0.001\n"), "");
+  EXPECT_EQ(io::yamlProblem("---\ndt: 0.001\n...\n"), "");
+  const std::string deep = std::string(100, '[') + std::string(100, ']');
+  EXPECT_NE(io::yamlProblem(deep).find("nested more than 64 levels"), std::string::npos);
+  EXPECT_EQ(io::yamlProblem(std::string(64, '[') + std::string(64, ']')), "");
+  const std::string file = write("two.yaml", "dt: 0.001\n---\ndt: 0.1\n");
+  expectThrowsWith<io::ConfigError>([&] { io::loadYamlFile(file); }, {"two.yaml", "second YAML document"});
+}
+
+TEST(InputBounds, XmlNestingAndLinkCountAreCappedBeforeParsing) {
+  const std::string deep = std::string("<robot name=\"r\">") + [] {
+    std::string s;
+    for (int i = 0; i < 100000; ++i) s += "<a>";
+    for (int i = 0; i < 100000; ++i) s += "</a>";
+    return s;
+  }() + "</robot>";
+  EXPECT_NE(io::xmlProblem(deep).find("nested more than 64 levels"), std::string::npos);
+  // 100,000 nested elements overflowed the stack inside TinyXML.
+  expectThrowsWith<io::UrdfError>([&] { io::loadUrdfString(deep, "deep.urdf"); },
+                                  {"deep.urdf", "refused before parsing", "nested"});
+  // A "/>" or ">" inside quotes closes nothing.
+  std::string quoted;
+  for (int i = 0; i < 100; ++i) quoted += "<a x=\"/>\" y='>'>";
+  EXPECT_NE(io::xmlProblem(quoted).find("nested"), std::string::npos);
+  EXPECT_EQ(io::xmlProblem("<?xml version=\"1.0\"?><!-- <a><a><a> --><robot><link name=\"a\"/></robot>"), "");
+  EXPECT_NE(io::xmlProblem(chain(10001)).find("more than 10000 <link> elements"), std::string::npos);
+}
+
+TEST(InputBounds, AChainOfTenThousandLinksLoadsWithoutRecursion) {
+  // The loader's own recursion overflowed the stack at 10,000 links.
+  const core::BodySpec body = io::loadUrdfString(chain(10000), "chain.urdf");
+  EXPECT_DOUBLE_EQ(body.mass, 10000.0);
+  ASSERT_EQ(body.fixed_links.size(), 9999u);
+  EXPECT_EQ(body.fixed_links.back().name, "l9999");
+  EXPECT_EQ(body.fixed_links.back().parent, "l9998");
+  EXPECT_NEAR(body.p_LC.x(), 0.001 * 9999 / 2.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
