@@ -1,9 +1,42 @@
 #include "rigid_body_sim/io/world.h"
 
+#include <sstream>
+
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 
 namespace rigid_body_sim::io {
+namespace {
+
+/// Farthest from the origin a body may start (m): far beyond any scene, and
+/// where a double still resolves a micrometre.
+constexpr double kMaxStartDistance = 1e6;
+
+/// A start state within the model's speed limits and reach: the body at
+/// `key` (initial, or bodies[i].initial) as a ConfigError names it.
+core::BodyState startState(const core::Model& model, std::size_t i, const core::LinkState& link,
+                           const std::string& key) {
+  const auto refuse = [&key](const std::string& field, double value, const std::string& unit, const std::string& above,
+                             double limit) {
+    std::ostringstream os;
+    os << "config key '" << key << "." << field << "': magnitude " << value << " " << unit << " is above " << above
+       << " = " << limit << " " << unit;
+    throw ConfigError(os.str());
+  };
+  // stableNorm: |x|² of a finite 1e300 overflows.
+  if (link.p_WL.stableNorm() > kMaxStartDistance) {
+    refuse("position", link.p_WL.stableNorm(), "m", "the farthest a body may start", kMaxStartDistance);
+  }
+  if (link.v_WL.stableNorm() > model.limits().linear) {
+    refuse("linear_velocity", link.v_WL.stableNorm(), "m/s", "limits.max_linear_speed", model.limits().linear);
+  }
+  if (link.w_W.stableNorm() > model.limits().angular) {
+    refuse("angular_velocity", link.w_W.stableNorm(), "rad/s", "limits.max_angular_speed", model.limits().angular);
+  }
+  return core::bodyStateFromLink(model.body(i), link);
+}
+
+}  // namespace
 
 core::Model buildModel(const SimConfig& config, const core::BodySpec& body) {
   core::ModelSpec spec = config.model;
@@ -21,7 +54,8 @@ World buildWorld(const SimConfig& config, const BodyLoader& load) {
   }
   World world{core::Model(spec), {}};
   for (std::size_t i = 0; i < config.bodies.size(); ++i) {
-    world.state.bodies.push_back(core::bodyStateFromLink(world.model.body(i), config.bodies[i].initial));
+    world.state.bodies.push_back(
+        startState(world.model, i, config.bodies[i].initial, "bodies[" + std::to_string(i) + "].initial"));
   }
   return world;
 }
@@ -30,7 +64,7 @@ World loadWorld(const SimConfig& config, const std::function<core::BodySpec()>& 
   if (!config.bodies.empty()) return buildWorld(config, load);
   if (!single_body) throw ConfigError("bodies: the config lists no bodies, and no single body was given");
   World world{buildModel(config, single_body()), {}};
-  world.state.bodies = {core::bodyStateFromLink(world.model.body(0), config.initial)};
+  world.state.bodies = {startState(world.model, 0, config.initial, "initial")};
   return world;
 }
 

@@ -64,6 +64,12 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A body's state stopped being finite (the step's guard put it back): the
+/// run's figures would mean nothing, so it ends with exit code 3.
+struct Diverged : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 struct Args {
   std::string urdf, config, csv;
   std::vector<std::string> sets;
@@ -207,6 +213,24 @@ Json finalJson(const core::LinkState& link) {
           {"angular_velocity", vec(link.w_W)}};
 }
 
+/// What a step reports beyond the state: a body held back by the speed
+/// limits (a warning, once per body) or put back by the guard (the end).
+void checkStep(const core::Model& model, const core::Workspace& ws, double t, std::vector<char>& limited) {
+  for (const core::Divergence& d : ws.diverged) {
+    throw Diverged("body '" + model.body(d.body).name + "': " + d.what + " stopped being finite at t = " + text(t) +
+                   " s (the step's guard put it back at rest; the run stops here)");
+  }
+  for (const int i : ws.speed_limited) {
+    if (limited[i]) continue;
+    limited[i] = 1;
+    std::fprintf(stderr,
+                 "rbsim: warning: body '%s' reached the speed limits at t = %s s (limits.max_linear_speed %s m/s, "
+                 "limits.max_angular_speed %s rad/s): its velocity is held to them\n",
+                 model.body(i).name.c_str(), text(t).c_str(), text(model.limits().linear).c_str(),
+                 text(model.limits().angular).c_str());
+  }
+}
+
 int run(const Args& args) {
   YAML::Node tree = args.config.empty() ? YAML::Node() : io::loadYamlFile(args.config);
   for (const std::string& s : args.sets) io::applyOverride(tree, s);
@@ -256,7 +280,8 @@ int run(const Args& args) {
   Clock::duration stepping{0};
   if (csv) write_rows(0.0);
   core::Workspace workspace;
-  double max_penetration = 0.0;  // m, over the states at the start of every step
+  std::vector<char> limited(n, 0);  // bodies the speed limits have held back, warned once each
+  double max_penetration = 0.0;     // m, over the states at the start of every step
   long long done = 0;
   while (done < steps) {
     long long block = steps - done;
@@ -266,6 +291,9 @@ int run(const Args& args) {
     for (long long k = 0; k < block; ++k) {
       core::step(model, state, {}, &workspace);
       max_penetration = std::max(max_penetration, workspace.deepest_penetration);
+      if (!workspace.speed_limited.empty() || !workspace.diverged.empty()) {
+        checkStep(model, workspace, (done + k + 1) * dt, limited);
+      }
     }
     stepping += Clock::now() - t0;
     done += block;
@@ -300,6 +328,11 @@ int run(const Args& args) {
   out["angular_momentum"] = {{"start", vec(momentum_start)}, {"end", vec(momentum_end)}};
   out["max_penetration"] = num(max_penetration);
   out["at_rest"] = at_rest;
+  Json limited_json = Json::array();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (limited[i]) limited_json.push_back(model.body(i).name);
+  }
+  out["speed_limited"] = limited_json;
   out["bodies"] = bodies_json;
   // Names are the user's: escaped by the library; bytes that are not UTF-8 are replaced, not refused.
   if (csv) csv->finish();
@@ -343,6 +376,9 @@ int run(const Args& args) {
 int main(int argc, char** argv) {
   try {
     return run(parseArgs(argc, argv));
+  } catch (const Diverged& e) {
+    std::fprintf(stderr, "rbsim: error: %s\n", e.what());
+    return 3;
   } catch (const std::exception& e) {
     // UsageError, io::ConfigError, io::UrdfError, and the model's
     // std::invalid_argument: all one line, all exit code 2.

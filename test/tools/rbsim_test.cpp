@@ -218,8 +218,9 @@ TEST(Rbsim, BadInputIsOneLineAndExitCodeTwo) {
   expectUsageError("--urdf " + kBox + " --duration 1 --frobnicate 3", "unknown argument '--frobnicate'");
   expectUsageError("--urdf " + kBox + " --duration 1 --bogus", "unknown argument '--bogus'");  // last, no value
   expectUsageError("--urdf " + kBox + " --duration", "--duration: missing value");
-  expectUsageError("--urdf /nonexistent.urdf --duration 1", "cannot read URDF '/nonexistent.urdf'");
-  expectUsageError("--urdf " + kBox + " --config /nonexistent.yaml --duration 1", "cannot read config");
+  expectUsageError("--urdf /nonexistent.urdf --duration 1", "URDF '/nonexistent.urdf': no such file");
+  expectUsageError("--urdf " + kBox + " --config /nonexistent.yaml --duration 1",
+                   "config '/nonexistent.yaml': no such file");
   expectUsageError("--urdf " + kBox + " --set dampign.linear=1 --duration 1", "config key 'dampign'");
   expectUsageError("--urdf " + kBox + " --set dt=-1 --duration 1", "dt = -1");
   expectUsageError("--urdf " + kBox + " --duration 0.0001", "shorter than one step");
@@ -227,6 +228,45 @@ TEST(Rbsim, BadInputIsOneLineAndExitCodeTwo) {
   const std::string bad = tempPath("bad.urdf");
   std::ofstream(bad) << "<robot name='r'><link name='base'/></robot>";
   expectUsageError("--urdf " + bad + " --duration 1", "link 'base' has no <inertial>");
+}
+
+TEST(Rbsim, AbsurdMagnitudesAreRefusedNamingTheKey) {
+  // Each ran to the end with null in the JSON before the physical ranges.
+  expectUsageError("--urdf " + kBox + " --set initial.angular_velocity=[1e300,0,0] --duration 1",
+                   "config key 'initial.angular_velocity': magnitude 1e+300 rad/s is above limits.max_angular_speed");
+  expectUsageError("--urdf " + kBox + " --set gravity=[0,0,-1e308] --duration 1", "gravity = [0, 0, -1e+308]");
+  expectUsageError("--urdf " + kBox + " --dt 300000 --duration 1e6", "dt = 300000: must be within [1e-06, 0.1] s");
+  expectUsageError("--urdf " + kBox +
+                       " --set contact.method=penalty_quadratic --set contact.penalty_stiffness=1e300 "
+                       "--duration 1",
+                   "contact.penalty_stiffness = 1e+300");
+  expectUsageError("--urdf " + kBox + " --set contact.sample_spacing=1e-12 --duration 1",
+                   "contact.sample_spacing = 1e-12");
+  // The bunny at 1e7 m/s in a world crashed rbsim in the distance grid.
+  const std::string fast = tempPath("fast_world.yaml");
+  std::ofstream(fast) << "bodies:\n"
+                         "  - {name: box, urdf: "
+                      << kBox
+                      << "}\n"
+                         "  - {name: bunny, urdf: "
+                      << RBS_SOURCE_DIR
+                      << "/urdf/bunny.urdf,\n"
+                         "     initial: {position: [-0.6, 0.2, 0.6], linear_velocity: [1, 0, 1e7]}}\n";
+  expectUsageError(
+      "--config " + fast + " --duration 1",
+      "config key 'bodies[1].initial.linear_velocity': magnitude 1e+07 m/s is above limits.max_linear_speed = 500 m/s");
+}
+
+TEST(Rbsim, ABodyHeldByTheSpeedLimitsIsNamedOnce) {
+  const Result r =
+      rbsim("--urdf " + kBox + " --set scene=[] --set initial.linear_velocity=[0,0,-499.99] --duration 0.1");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"speed_limited\":[\"base_link\"]"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("rbsim: warning: body 'base_link' reached the speed limits at t = 0.002 s"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("warning", r.err.find("warning") + 1), std::string::npos) << r.err;  // once
+  const Result slow = rbsim("--urdf " + kBox + " --set scene=[] --duration 0.1");
+  EXPECT_NE(slow.out.find("\"speed_limited\":[]"), std::string::npos) << slow.out;
 }
 
 }  // namespace
