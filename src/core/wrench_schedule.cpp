@@ -4,22 +4,47 @@
 
 namespace rigid_body_sim::core {
 
+bool WrenchSchedule::add(int body, const Wrench& wrench, double start, double end, int axes_body) {
+  if (body < 0) return false;
+  if (count_.size() <= static_cast<std::size_t>(body)) count_.resize(static_cast<std::size_t>(body) + 1, 0);
+  if (count_[body] >= kMaxPerBody) return false;
+  ++count_[body];
+  const auto at =
+      std::upper_bound(waiting_.begin(), waiting_.end(), start, [](double s, const Entry& e) { return s < e.start; });
+  waiting_.insert(at, {body, wrench, start, end, axes_body});
+  return true;
+}
+
+std::size_t WrenchSchedule::count(int body) const {
+  return body >= 0 && static_cast<std::size_t>(body) < count_.size() ? count_[body] : 0;
+}
+
 void WrenchSchedule::clear(int body) {
-  entries_.erase(
-      std::remove_if(entries_.begin(), entries_.end(), [body](const Entry& e) { return body < 0 || e.body == body; }),
-      entries_.end());
+  const auto of = [body](const Entry& e) { return body < 0 || e.body == body; };
+  acting_.erase(std::remove_if(acting_.begin(), acting_.end(), of), acting_.end());
+  waiting_.erase(std::remove_if(waiting_.begin(), waiting_.end(), of), waiting_.end());
+  for (std::size_t i = 0; i < count_.size(); ++i) {
+    if (body < 0 || static_cast<int>(i) == body) count_[i] = 0;
+  }
 }
 
 void WrenchSchedule::dropFinished(double t) {
-  entries_.erase(std::remove_if(entries_.begin(), entries_.end(), [t](const Entry& e) { return e.end <= t; }),
-                 entries_.end());
+  // The waiting wrenches that started are a prefix of waiting_.
+  const auto started = std::find_if(waiting_.begin(), waiting_.end(), [t](const Entry& e) { return !(e.start < t); });
+  acting_.insert(acting_.end(), waiting_.begin(), started);
+  waiting_.erase(waiting_.begin(), started);
+  const auto ended = [t](const Entry& e) { return e.end <= t; };
+  for (const Entry& e : acting_) {
+    if (ended(e)) --count_[e.body];
+  }
+  acting_.erase(std::remove_if(acting_.begin(), acting_.end(), ended), acting_.end());
 }
 
 void WrenchSchedule::loadsFor(const Model& model, const State& state, double t, double h, Loads& out) const {
   out.clear();
-  for (const Entry& e : entries_) {
+  const auto add = [&](const Entry& e) {
     const double overlap = std::min(e.end, t + h) - std::max(e.start, t);
-    if (!(overlap > 0.0)) continue;
+    if (!(overlap > 0.0)) return;
     if (out.empty()) out.resize(model.bodyCount());
     Wrench w = e.axes_body < 0
                    ? e.wrench
@@ -28,6 +53,11 @@ void WrenchSchedule::loadsFor(const Model& model, const State& state, double t, 
     w.force *= fraction;
     w.torque *= fraction;
     addWrench(model.body(e.body), out[e.body], w);
+  };
+  for (const Entry& e : acting_) add(e);
+  for (const Entry& e : waiting_) {  // sorted by start: stop at the first that starts after the step
+    if (!(e.start < t + h)) break;
+    add(e);
   }
 }
 

@@ -26,7 +26,7 @@ TEST(WrenchSchedule, DeliversForceTimesDurationOffTheStepGrid) {
     schedule.dropFinished(s.time);
   }
   EXPECT_NEAR(s.bodies[0].v_WB.x(), 2.0 * 0.0123 / 1.0, 1e-14);  // Δv = F T / M
-  EXPECT_TRUE(schedule.entries().empty());
+  EXPECT_EQ(schedule.size(), 0u);
 }
 
 TEST(WrenchSchedule, WrenchesAddAndClearPerBody) {
@@ -81,6 +81,35 @@ TEST(WrenchSchedule, AWrenchInAnotherBodysAxesTurnsWithThatBody) {
   EXPECT_GT(s.bodies[0].v_WB.y(), 0.1);       // it turned: a fixed world force would give none along y
   EXPECT_EQ(s.bodies[0].w_B, Vec3::Zero());   // the force acts at the centre of mass
   EXPECT_EQ(s.bodies[1].v_WB, Vec3::Zero());  // and on body 0 only
+}
+
+TEST(WrenchSchedule, EachBodyHoldsABoundedNumberAndStepsCostOnlyWhatActs) {
+  const core::Model model(spec(shippedBox(), 1e-3, Vec3::Zero()));
+  const core::State rest = stateOf(model, core::LinkState{});
+  core::WrenchSchedule schedule;
+  const core::Wrench one{Vec3(1, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld};
+  // Future wrenches, latest first: the schedule keeps them in order of start.
+  const std::size_t cap = core::WrenchSchedule::kMaxPerBody;
+  for (std::size_t k = cap; k > 0; --k) ASSERT_TRUE(schedule.add(0, one, 10.0 + k, 10.0 + k + 0.5));
+  EXPECT_FALSE(schedule.add(0, one, 1.0, 2.0));  // refused: full
+  EXPECT_EQ(schedule.count(0), cap);
+  core::Loads loads;
+  schedule.loadsFor(model, rest, 0.0, 1e-3, loads);
+  EXPECT_TRUE(loads.empty());
+  // At t = 11.2 only the first acts; at 12.2 the first has ended and the second acts.
+  schedule.dropFinished(11.2);
+  schedule.loadsFor(model, rest, 11.2, 1e-3, loads);
+  ASSERT_EQ(loads.size(), 1u);
+  EXPECT_NEAR((loads[0].force_W - Vec3(1, 0, 0)).norm(), 0.0,
+              1e-9);  // the step's fraction of the window is 1 − rounding
+  schedule.dropFinished(12.2);
+  EXPECT_EQ(schedule.count(0), cap - 1);
+  EXPECT_TRUE(schedule.add(0, one, 1.0, 2.0));  // room again (a start in the past acts at once)
+  schedule.loadsFor(model, rest, 12.2, 1e-3, loads);
+  EXPECT_NEAR((loads[0].force_W - Vec3(1, 0, 0)).norm(), 0.0, 1e-9);  // the second only: [1, 2) is over
+  schedule.clear(0);
+  EXPECT_EQ(schedule.count(0), 0u);
+  EXPECT_EQ(schedule.size(), 0u);
 }
 
 }  // namespace

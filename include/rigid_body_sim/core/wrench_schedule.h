@@ -13,10 +13,15 @@ namespace rigid_body_sim::core {
 /// length h from t receives every wrench weighted by the fraction of
 /// [t, t + h) its window covers, so a window of any length delivers exactly
 /// force × length of impulse, even when it does not line up with the steps.
-/// Wrenches add up.
+/// Wrenches add up. A step costs O(wrenches acting), not O(wrenches
+/// scheduled): those yet to start wait apart, in order of start, and each
+/// body holds at most kMaxPerBody.
 class WrenchSchedule {
  public:
   static constexpr double kForever = std::numeric_limits<double>::infinity();
+  /// Wrenches one body may hold, acting or yet to start (50,000 future
+  /// wrenches once made a paused step 453 µs).
+  static constexpr std::size_t kMaxPerBody = 1000;
 
   struct Entry {
     int body = 0;
@@ -29,24 +34,30 @@ class WrenchSchedule {
     int axes_body = -1;
   };
 
-  void add(int body, const Wrench& wrench, double start, double end, int axes_body = -1) {
-    entries_.push_back({body, wrench, start, end, axes_body});
-  }
+  /// Schedules a wrench on `body` over [start, end); false (and nothing
+  /// added) when the body already holds kMaxPerBody.
+  bool add(int body, const Wrench& wrench, double start, double end, int axes_body = -1);
 
   /// Removes the wrenches of `body` (every body if body < 0).
   void clear(int body);
 
-  /// Forgets wrenches whose window ended by time t.
+  /// Forgets wrenches whose window ended by time t, and counts those that
+  /// started before t as acting.
   void dropFinished(double t);
 
   /// The loads of the step [t, t + h) from `state` (at t), one per body of
   /// `model`; empty if no wrench touches the step.
   void loadsFor(const Model& model, const State& state, double t, double h, Loads& out) const;
 
-  const std::vector<Entry>& entries() const { return entries_; }
+  /// Wrenches held for `body`, acting or yet to start.
+  std::size_t count(int body) const;
+  /// Wrenches held in all.
+  std::size_t size() const { return acting_.size() + waiting_.size(); }
 
  private:
-  std::vector<Entry> entries_;
+  std::vector<Entry> acting_;       ///< started before the last dropFinished(), in order of start
+  std::vector<Entry> waiting_;      ///< yet to start, sorted by start (ties in order of add)
+  std::vector<std::size_t> count_;  ///< per body
 };
 
 }  // namespace rigid_body_sim::core
