@@ -45,7 +45,12 @@ bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res)
     }
   }
   const double end = duration > 0.0 ? start + duration : core::WrenchSchedule::kForever;
-  schedule_.add(body, {force, torque, point, axes.frame}, start, end, axes.other);
+  if (!schedule_.add(body, {force, torque, point, axes.frame}, start, end, axes.other)) {
+    res.message = "body '" + model_.body(body).name + "' already holds " +
+                  std::to_string(core::WrenchSchedule::kMaxPerBody) +
+                  " wrenches, acting or yet to start (the most per body): wait for some to end, or clear_wrenches";
+    return true;
+  }
   res.success = true;
   std::ostringstream os;
   os << "wrench on '" << model_.body(body).name << "' " << when << " "
@@ -68,8 +73,10 @@ bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& r
   core::Impulse impulse{linear, angular, point, axes.frame};
   if (axes.other >= 0) impulse = core::inWorldAxes(impulse, orientationOf(axes, body));
   core::applyImpulse(model_.body(body), after, impulse);
-  const std::string speed = checkVector(after.v_WB, kMaxSpeed, "resulting velocity", "m/s");
-  const std::string spin = checkVector(after.w_B, kMaxAngularSpeed, "resulting angular velocity", "rad/s");
+  const std::string speed =
+      checkSpeed(after.v_WB, model_.limits().linear, "resulting velocity", "limits.max_linear_speed", "m/s");
+  const std::string spin =
+      checkSpeed(after.w_B, model_.limits().angular, "resulting angular velocity", "limits.max_angular_speed", "rad/s");
   if (!speed.empty() || !spin.empty()) {
     res.message = speed.empty() ? spin : speed;
     return true;

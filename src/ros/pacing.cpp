@@ -33,12 +33,33 @@ void SimNode::stepOnce() {
     }
   }
   core::step(model_, state_, loads_, &workspace_);
+  if (!workspace_.speed_limited.empty() || !workspace_.diverged.empty()) reportStep();
   ++steps_;
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
   schedule_.dropFinished(simTime());
   if (steps_ % publish_every_ == 0) {
     publishClock();
     publish();
+  }
+}
+
+void SimNode::reportStep() {
+  for (const core::Divergence& d : workspace_.diverged) {
+    // Its loads made it diverge, or will again: they go with it.
+    schedule_.clear(d.body);
+    held_wrenches_[d.body].reset();
+    ROS_WARN(
+        "sim_node: body '%s': %s stopped being finite at t = %s; it is back at its last finite pose, at rest, "
+        "and its wrenches are cleared",
+        model_.body(d.body).name.c_str(), d.what.c_str(), now().c_str());
+  }
+  for (const int i : workspace_.speed_limited) {
+    if (speed_limited_[i]) continue;
+    speed_limited_[i] = 1;
+    ROS_WARN(
+        "sim_node: body '%s' reached the speed limits at t = %s (limits.max_linear_speed %g m/s, "
+        "limits.max_angular_speed %g rad/s): its velocity is held to them (said once per body)",
+        model_.body(i).name.c_str(), now().c_str(), model_.limits().linear, model_.limits().angular);
   }
 }
 

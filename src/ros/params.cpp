@@ -10,7 +10,10 @@
 namespace rigid_body_sim::node {
 namespace {
 
-double positive(const XmlRpc::XmlRpcValue& v, const std::string& key, bool allow_zero) {
+/// A number parameter within [lo, hi]: anything outside is refused with the
+/// range (a rate of 1e-9 Hz would sleep 30 years between ticks and never
+/// answer SIGINT; 1e300 would spin the loop at full CPU).
+double number(const XmlRpc::XmlRpcValue& v, const std::string& key, double lo, double hi, const std::string& unit) {
   double x = 0.0;
   if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) {
     x = static_cast<double>(const_cast<XmlRpc::XmlRpcValue&>(v));
@@ -19,11 +22,11 @@ double positive(const XmlRpc::XmlRpcValue& v, const std::string& key, bool allow
   } else {
     throw io::ConfigError("parameter '~" + key + "': expected a number, got " + v.toXml());
   }
-  if (!std::isfinite(x) || x < 0.0 || (!allow_zero && x == 0.0)) {
+  if (!std::isfinite(x) || x < lo || x > hi) {
     std::ostringstream os;
-    os << x;
-    throw io::ConfigError("parameter '~" + key + "' = " + os.str() + ": must be finite and " +
-                          (allow_zero ? ">= 0" : "> 0"));
+    os << "parameter '~" << key << "' = " << x << ": must be within [" << lo << ", " << hi << "]"
+       << (unit.empty() ? "" : " " + unit);
+    throw io::ConfigError(os.str());
   }
   return x;
 }
@@ -67,9 +70,14 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   const std::set<std::string> node_keys{"rate",        "realtime_factor", "publish_rate",
                                         "world_frame", "wrench_timeout",  "covariance",
                                         "scene_size",  "report_timing",   "config_file"};
-  if (all.hasMember("rate")) n.rate = positive(all["rate"], "rate", false);
-  if (all.hasMember("realtime_factor")) n.realtime_factor = positive(all["realtime_factor"], "realtime_factor", true);
-  if (all.hasMember("publish_rate")) n.publish_rate = positive(all["publish_rate"], "publish_rate", false);
+  using R = NodeSettings;
+  if (all.hasMember("rate")) n.rate = number(all["rate"], "rate", R::kMinRate, R::kMaxRate, "Hz");
+  if (all.hasMember("realtime_factor")) {
+    n.realtime_factor = number(all["realtime_factor"], "realtime_factor", 0.0, R::kMaxRealtimeFactor, "");
+  }
+  if (all.hasMember("publish_rate")) {
+    n.publish_rate = number(all["publish_rate"], "publish_rate", R::kMinPublishRate, R::kMaxRate, "Hz");
+  }
   if (all.hasMember("world_frame")) {
     if (all["world_frame"].getType() != XmlRpc::XmlRpcValue::TypeString || std::string(all["world_frame"]).empty()) {
       throw io::ConfigError("parameter '~world_frame': expected a non-empty frame name");
@@ -77,13 +85,11 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
     n.world_frame = static_cast<std::string>(all["world_frame"]);
   }
   if (all.hasMember("wrench_timeout")) {
-    auto& v = all["wrench_timeout"];
-    const double x = v.getType() == XmlRpc::XmlRpcValue::TypeInt ? static_cast<int>(v) : static_cast<double>(v);
-    if (!std::isfinite(x)) throw io::ConfigError("parameter '~wrench_timeout': must be finite");
-    n.wrench_timeout = x;
+    n.wrench_timeout =
+        number(all["wrench_timeout"], "wrench_timeout", 0.0, R::kMaxDuration, "s (0: held until cleared)");
   }
-  if (all.hasMember("covariance")) n.covariance = positive(all["covariance"], "covariance", true);
-  if (all.hasMember("scene_size")) n.scene_size = positive(all["scene_size"], "scene_size", false);
+  if (all.hasMember("covariance")) n.covariance = number(all["covariance"], "covariance", 0.0, 1e6, "");
+  if (all.hasMember("scene_size")) n.scene_size = number(all["scene_size"], "scene_size", 1e-3, 1e6, "m");
   if (all.hasMember("report_timing")) {
     if (all["report_timing"].getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
       throw io::ConfigError("parameter '~report_timing': expected true or false");

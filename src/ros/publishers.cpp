@@ -10,14 +10,17 @@ namespace rigid_body_sim::node {
 
 using core::Quat;
 
+// Every publisher stops once ROS is shutting down (a SIGINT): roscpp aborts
+// on a publish after shutdown.
 void SimNode::publishClock() {
-  if (!use_sim_time_) return;
+  if (!use_sim_time_ || !ros::ok()) return;
   rosgraph_msgs::Clock clock;
   clock.clock = stamp();
   clock_pub_.publish(clock);
 }
 
 void SimNode::publish() {
+  if (!ros::ok()) return;
   const ros::Time now = stamp();
   // Never the same stamp twice (tf2 would warn of repeated data) and never
   // an older one: on sim time a paused set_state waits for the next step.
@@ -50,6 +53,7 @@ void SimNode::publish() {
 }
 
 void SimNode::publishFixedFrames() {
+  if (!ros::ok()) return;
   // Links fixed to a body: their frames under the body's prefix, as
   // robot_state_publisher publishes them for one robot (static: they never move).
   std::vector<geometry_msgs::TransformStamped> fixed;

@@ -13,14 +13,12 @@ namespace rigid_body_sim::node {
 using core::Vec3;
 
 // What a request may ask for at most: beyond these it is refused as absurd.
-inline constexpr double kMaxForce = 1e6;         // N
-inline constexpr double kMaxTorque = 1e6;        // N·m
-inline constexpr double kMaxImpulse = 1e5;       // N·s and N·m·s
-inline constexpr double kMaxPosition = 1e6;      // m, also for points of application
-inline constexpr double kMaxSpeed = 1e4;         // m/s
-inline constexpr double kMaxAngularSpeed = 1e4;  // rad/s
-inline constexpr int kMaxSteps = 1000000;        // per ~step call
-inline constexpr double kMaxLeadTime = 1e6;      // s, how far ahead a start_time may be
+inline constexpr double kMaxForce = 1e6;     // N
+inline constexpr double kMaxTorque = 1e6;    // N·m
+inline constexpr double kMaxImpulse = 1e5;   // N·s and N·m·s
+inline constexpr double kMaxPosition = 1e6;  // m, also for points of application
+inline constexpr int kMaxSteps = 1000000;    // per ~step call
+inline constexpr double kMaxLeadTime = 1e6;  // s, how far ahead a start_time may be
 
 /// "" if v is finite and |v| ≤ limit, else why not.
 inline std::string checkVector(const Vec3& v, double limit, const std::string& what, const std::string& unit) {
@@ -31,6 +29,21 @@ inline std::string checkVector(const Vec3& v, double limit, const std::string& w
     os << what << " is absurd: |" << what << "| = " << v.norm() << " " << unit << " > " << limit << " " << unit;
   }
   return os.str();
+}
+
+/// "" if v is finite and |v| ≤ the model's speed limit `limit` (config key
+/// `key`), else why not: a state the step would only scale back.
+inline std::string checkSpeed(const Vec3& v, double limit, const std::string& what, const std::string& key,
+                              const std::string& unit) {
+  if (!v.allFinite() || !(v.norm() <= limit)) {
+    const std::string finite = checkVector(v, limit, what, unit);
+    if (!v.allFinite()) return finite;
+    std::ostringstream os;
+    os << what << " is above the speed limit: |" << what << "| = " << v.norm() << " " << unit << " > " << key << " = "
+       << limit << " " << unit;
+    return os.str();
+  }
+  return {};
 }
 
 /// The first non-empty complaint, or "".

@@ -51,6 +51,19 @@ io::World loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
   });
 }
 
+/// The world frame must be none of a body's frames: tf would get base_link
+/// → base_link, a loop every listener refuses.
+void requireOwnWorldFrame(const std::string& world, const std::string& prefix, const core::BodyModel& body) {
+  std::vector<std::string> frames{prefix + body.link};
+  for (const core::FixedLink& link : body.fixed_links) frames.push_back(prefix + link.name);
+  for (const std::string& frame : frames) {
+    if (frame == world) {
+      throw io::ConfigError("parameter '~world_frame' = '" + world + "': is also a frame of body '" + body.name +
+                            "'; tf would publish " + world + " -> " + world + " (name the world frame otherwise)");
+    }
+  }
+}
+
 }  // namespace
 
 SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
@@ -60,12 +73,16 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
       world_(loadWorld(params_, nh_)),
       use_sim_time_(ros::param::param("/use_sim_time", false)),
       clock_(model_.dt(), !use_sim_time_) {
+  // A SIGINT while the world loaded (a big mesh takes seconds): ROS is
+  // shutting down, and nothing may be advertised or published any more.
+  if (!ros::ok()) return;
   initial_ = state_;
   clock_.anchor(0, static_cast<int64_t>(ros::WallTime::now().toNSec()));
   publish_every_ = std::max(1LL, std::llround(1.0 / (settings_.publish_rate * model_.dt())));
   // One body keeps the single-body names; several get theirs under their name.
   const bool several = model_.bodyCount() > 1;
   held_wrenches_.resize(model_.bodyCount());
+  speed_limited_.assign(model_.bodyCount(), 0);
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
     const core::BodyModel& body = model_.body(i);
     const std::string prefix = several ? body.name + "/" : "";
@@ -74,6 +91,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     const int index = static_cast<int>(i);
     wrench_subs_.push_back(pnh_.subscribe<geometry_msgs::WrenchStamped>(
         prefix + "wrench", 10, [this, index](const geometry_msgs::WrenchStamped::ConstPtr& m) { onWrench(index, m); }));
+    requireOwnWorldFrame(settings_.world_frame, prefix, body);
     ROS_INFO("sim_node: body '%s' (frame '%s'), %.6g kg, %zu collision points", body.name.c_str(),
              frames_.back().c_str(), body.mass, body.contact_points.size());
   }

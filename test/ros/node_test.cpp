@@ -417,6 +417,32 @@ TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
   EXPECT_NE(out.find("dt = -0.001"), std::string::npos) << out;
 }
 
+TEST_F(BadUrdf, TimingParametersOutOfRangeStopTheNodeNamingTheKey) {
+  // Each was accepted: 1e-9 Hz slept 30 years between ticks (no service, no
+  // SIGINT), 1e-300 and 1e300 spun at full CPU, wrench_timeout -1 silently
+  // meant forever, and a world frame equal to the body's gave tf base → base.
+  const std::string good = "<robot name='r'><link name='base'><inertial><mass value='1'/>" + std::string(kInertia) +
+                           "</inertial>" + kCollision + "</link></robot>";
+  const struct {
+    std::string ns, key;
+    XmlRpc::XmlRpcValue value;
+    std::string expected;
+  } cases[] = {
+      {"/slow", "rate", 1e-9, "parameter '~rate' = 1e-09: must be within [1, 10000] Hz"},
+      {"/tiny", "rate", 1e-300, "parameter '~rate' = 1e-300"},
+      {"/fast", "rate", 1e300, "parameter '~rate' = 1e+300"},
+      {"/publish", "publish_rate", 1e-300, "parameter '~publish_rate' = 1e-300: must be within [0.01, 10000] Hz"},
+      {"/timeout", "wrench_timeout", -1.0, "parameter '~wrench_timeout' = -1: must be within [0, 1e+06]"},
+      {"/frame", "world_frame", "base", "parameter '~world_frame' = 'base': is also a frame of body 'base'"},
+  };
+  for (const auto& c : cases) {
+    ros::param::set(c.ns + "/sim_node/" + c.key, c.value);
+    const auto [code, out] = runNode(c.ns, good);
+    EXPECT_EQ(code, 1) << c.ns << ": " << out;
+    EXPECT_NE(out.find(c.expected), std::string::npos) << c.ns << ": " << out;
+  }
+}
+
 /// Fails loudly when a .test's --gtest_filter names no suite of this file
 /// (gtest would otherwise run nothing and report success).
 class UnknownSuite : public ::testing::Test {

@@ -12,18 +12,27 @@
 namespace rigid_body_sim::node {
 
 /// Settings of the node itself (not of the simulation).
+/// Each number has a range, refused outside it at start naming the key.
 struct NodeSettings {
-  double rate = 1000.0;               ///< ~rate: Hz of wall clock at which the loop ticks
-  double realtime_factor = 1.0;       ///< ~realtime_factor: sim s per wall s; 0 = as fast as possible
-  double publish_rate = 100.0;        ///< ~publish_rate: Hz of sim time for odom, tf and /clock
-  std::string world_frame = "world";  ///< ~world_frame: parent frame of the body's transform
-  double wrench_timeout = 1.0;        ///< ~wrench_timeout: s of sim time a ~wrench message is held; <= 0: forever
-  double covariance = 1e-9;           ///< ~covariance: diagonal of the odometry covariances (ground truth)
-  double scene_size = 20.0;           ///< ~scene_size: m, extent drawn for planes and unbounded shapes
-  bool report_timing = false;         ///< ~report_timing: log the tick-period jitter at shutdown
+  double rate = 1000.0;               ///< ~rate: Hz of wall clock at which the loop ticks, [1, 1e4]
+  double realtime_factor = 1.0;       ///< ~realtime_factor: sim s per wall s, [0, 1000]; 0 = as fast as possible
+  double publish_rate = 100.0;        ///< ~publish_rate: Hz of sim time for odom, tf and /clock, [0.01, 1e4]
+  std::string world_frame = "world";  ///< ~world_frame: parent frame of the body's transform (no body's own frame)
+  double wrench_timeout = 1.0;  ///< ~wrench_timeout: s of sim time a ~wrench message is held, [0, 1e6]; 0: forever
+  double covariance = 1e-9;     ///< ~covariance: diagonal of the odometry covariances (ground truth)
+  double scene_size = 20.0;     ///< ~scene_size: m, extent drawn for planes and unbounded shapes
+  bool report_timing = false;   ///< ~report_timing: log the tick-period jitter at shutdown
   /// ~config_file: the file these parameters were loaded from (the launch
   /// files set it); relative `urdf` paths in `bodies` resolve from its folder.
   std::string config_file;
+
+  // The ranges. A tick at least every second keeps SIGINT and the services
+  // answered; at most 1e4 a second keeps the loop from spinning.
+  static constexpr double kMinRate = 1.0;            ///< Hz
+  static constexpr double kMaxRate = 1e4;            ///< Hz (also the most publish_rate)
+  static constexpr double kMinPublishRate = 0.01;    ///< Hz
+  static constexpr double kMaxRealtimeFactor = 1e3;  ///< sim s per wall s
+  static constexpr double kMaxDuration = 1e6;        ///< s (wrench_timeout)
 };
 
 struct NodeParams {

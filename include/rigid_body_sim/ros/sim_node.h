@@ -48,6 +48,9 @@ class SimNode {
   /// stamp() for messages: "S.NNNNNNNNN s".
   std::string now() const { return formatStamp(clock_.stampAt(steps_)) + " s"; }
   void stepOnce();
+  /// Says what the step reported: bodies the speed limits held (once each),
+  /// bodies the guard put back (their wrenches cleared).
+  void reportStep();
   void publish();
   void publishClock();
   void publishFixedFrames();  ///< links fixed to a body, on /tf_static
@@ -110,6 +113,7 @@ class SimNode {
     Axes axes;        ///< another body's axes are re-expressed at each step
   };
   std::vector<std::optional<HeldWrench>> held_wrenches_;  ///< per body, from its ~wrench topic
+  std::vector<char> speed_limited_;                       ///< per body: the speed limits have held it (warned)
 
   bool paused_ = false;
   bool use_sim_time_ = false;
