@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include "scratch.h"
 
@@ -17,15 +18,6 @@ bool clampLength(Vec3& x, double limit) {
   if (n2 <= limit * limit || !x.allFinite()) return false;
   x *= limit / (std::isfinite(n2) ? std::sqrt(n2) : x.stableNorm());
   return true;
-}
-
-bool finite(const BodyState& s) {
-  // One sum of every component is finite when they all are (NaN and ±∞
-  // carry through a sum); only a finite but overflowing sum needs a closer look.
-  const double sum = s.p_WB.sum() + s.v_WB.sum() + s.q_WB.coeffs().sum() + s.w_B.sum() + s.still_time;
-  if (std::isfinite(sum)) return true;
-  return s.p_WB.allFinite() && s.v_WB.allFinite() && s.q_WB.coeffs().allFinite() && s.w_B.allFinite() &&
-         std::isfinite(s.still_time);
 }
 
 std::string whatDiverged(const BodyState& s) {
@@ -45,7 +37,7 @@ std::string whatDiverged(const BodyState& s) {
 
 }  // namespace
 
-void limitSpeeds(const Model& model, int i, BodyState& s, Workspace& ws) {
+void holdToLimits(const Model& model, int i, BodyState& s, Workspace& ws) {
   const SpeedLimits& limits = model.limits();
   const bool linear = clampLength(s.v_WB, limits.linear);
   const bool angular = clampLength(s.w_B, limits.angular);  // |ω| is the same in B as in W
@@ -54,28 +46,25 @@ void limitSpeeds(const Model& model, int i, BodyState& s, Workspace& ws) {
   }
 }
 
-void keepPoses(const State& state, Workspace& ws) {
-  std::vector<detail::KeptPose>& kept = ws.scratch->kept_poses;
-  kept.resize(state.bodies.size());
-  for (std::size_t i = 0; i < state.bodies.size(); ++i) kept[i] = {state.bodies[i].p_WB, state.bodies[i].q_WB};
+void putBack(int i, BodyState& s, Workspace& ws) {
+  Divergence d{i, whatDiverged(s)};
+  BodyState back;  // at rest, awake
+  if (s.p_WB.allFinite() && s.q_WB.coeffs().allFinite()) {
+    back.p_WB = s.p_WB;
+    back.q_WB = s.q_WB;
+  } else {  // no finite pose to go back to
+    d.what += " (no finite pose to keep: the world origin)";
+  }
+  s = back;
+  const std::lock_guard<std::mutex> lock(ws.scratch->guard_mutex);
+  ws.diverged.push_back(std::move(d));
 }
 
-void guardFinite(State& state, Workspace& ws) {
-  const std::vector<detail::KeptPose>& kept = ws.scratch->kept_poses;
-  for (std::size_t i = 0; i < state.bodies.size(); ++i) {
-    BodyState& s = state.bodies[i];
-    if (finite(s)) continue;
-    const int body = static_cast<int>(i);
-    ws.diverged.push_back({body, whatDiverged(s)});
-    BodyState back;  // at rest, awake
-    if (i < kept.size() && kept[i].p_WB.allFinite() && kept[i].q_WB.coeffs().allFinite()) {
-      back.p_WB = kept[i].p_WB;
-      back.q_WB = kept[i].q_WB;
-    } else {  // it came in non-finite: no finite pose to go back to
-      ws.diverged.back().what += " (no finite pose to go back to: the world origin)";
-    }
-    s = back;
-    const auto involves = [body](const ContactKey& c) { return c.body == body || c.other == body; };
+void finishGuard(State& state, Workspace& ws) {
+  std::sort(ws.diverged.begin(), ws.diverged.end(),
+            [](const Divergence& a, const Divergence& b) { return a.body < b.body; });
+  for (const Divergence& d : ws.diverged) {
+    const auto involves = [&d](const ContactKey& c) { return c.body == d.body || c.other == d.body; };
     auto& impulses = state.contact_impulses;
     impulses.erase(std::remove_if(impulses.begin(), impulses.end(), involves), impulses.end());
     ws.contacts.erase(std::remove_if(ws.contacts.begin(), ws.contacts.end(), involves), ws.contacts.end());

@@ -1,5 +1,7 @@
 // The speed limits and the finite-state guard (docs/physics.md §5.9): what
-// keeps every state a step returns finite. Private to the core.
+// keeps every state a step returns finite. Private to the core. Both run
+// inside the stages' own loops over the bodies, where the body is already
+// at hand: a separate pass cost the one-body step a third more.
 #pragma once
 
 #include "rigid_body_sim/core/model.h"
@@ -11,19 +13,38 @@
 #pragma GCC visibility push(hidden)
 namespace rigid_body_sim::core {
 
-/// Scales body `i`'s v and ω back to the model's speed limits, keeping their
-/// directions, and lists the body in ws.speed_limited when it does. A
-/// velocity with a non-finite component is left to the guard.
-void limitSpeeds(const Model& model, int i, BodyState& s, Workspace& ws);
+/// Scales v and ω back to the limits, keeping their directions, and lists
+/// body `i` in ws.speed_limited (the slow path of limitSpeeds).
+void holdToLimits(const Model& model, int i, BodyState& s, Workspace& ws);
 
-/// Keeps every body's pose before the stages change it: the last finite
-/// state the guard puts a body back to.
-void keepPoses(const State& state, Workspace& ws);
+/// Body `i`'s v and ω within the model's speed limits: scaled back to them
+/// when faster. A velocity with a non-finite component is left to the guard.
+inline void limitSpeeds(const Model& model, int i, BodyState& s, Workspace& ws) {
+  const SpeedLimits& l = model.limits();
+  if (s.v_WB.squaredNorm() <= l.linear * l.linear && s.w_B.squaredNorm() <= l.angular * l.angular) return;
+  holdToLimits(model, i, s, ws);
+}
 
-/// The guard, as MuJoCo's mj_checkPos and mj_checkVel: every body whose
-/// state is no longer finite goes back to the pose keepPoses() kept, at rest
-/// and awake, its contact impulses dropped, and is listed in ws.diverged.
-void guardFinite(State& state, Workspace& ws);
+/// Whether every component of the body's state is finite: one vector sum
+/// (NaN and ±∞ carry through it); only a finite sum that overflows, never
+/// seen in practice, needs the component checks.
+inline bool finiteState(const BodyState& s) {
+  const double sum = (s.p_WB + s.v_WB + s.w_B).sum() + s.q_WB.coeffs().sum() + s.still_time;
+  if (std::isfinite(sum)) return true;
+  return s.p_WB.allFinite() && s.v_WB.allFinite() && s.q_WB.coeffs().allFinite() && s.w_B.allFinite() &&
+         std::isfinite(s.still_time);
+}
+
+/// The guard, as MuJoCo's mj_checkPos and mj_checkVel: body `i`, found not
+/// finite, stays at its pose (the last finite one: the stages before the
+/// positions' change only velocities) at rest and awake, or goes to the
+/// origin when the pose itself is not finite, and is listed in ws.diverged
+/// (thread-safe: stages split over the cores call it). The slow path only.
+void putBack(int i, BodyState& s, Workspace& ws);
+
+/// After the stages, when the guard put bodies back: orders ws.diverged by
+/// body and drops their contact impulses and contacts.
+void finishGuard(State& state, Workspace& ws);
 
 }  // namespace rigid_body_sim::core
 #pragma GCC visibility pop

@@ -117,12 +117,19 @@ void integrateOrientation(const Quat& increment, BodyState& s) {
 
 namespace {
 
-/// The awake bodies in [begin, end): rotation (with the gyroscopic term),
-/// position, orientation, and the time they have been still.
-void integrateBodies(const Model& model, State& state, double h, std::size_t begin, std::size_t end) {
+/// The awake bodies in [begin, end): first the guard (§5.9), then rotation
+/// (with the gyroscopic term), position, orientation, and the time they
+/// have been still.
+void integrateBodies(const Model& model, State& state, double h, std::size_t begin, std::size_t end, Workspace& ws) {
   for (std::size_t i = begin; i < end; ++i) {
     BodyState& s = state.bodies[i];
     if (s.asleep) continue;
+    // The guard (§5.9): only the velocity stages ran since the step began,
+    // so a body not finite here still has its last finite pose, and keeps it.
+    if (!finiteState(s)) {
+      putBack(static_cast<int>(i), s, ws);
+      continue;
+    }
     integrateBody(model, model.body(i), h, s);
     updateStillTime(model, h, s);
   }
@@ -181,12 +188,12 @@ void integratePositions(const Model& model, State& state, double h, Workspace& w
   }
   const int parts = n > 1 ? detail::partsFor(ws, awake) : 1;
   if (parts == 1) {
-    integrateBodies(model, state, h, 0, n);
+    integrateBodies(model, state, h, 0, n, ws);
     return;
   }
   detail::runParts(ws, parts, [&](int part) {
     const Range r = partRange(n, part, parts);
-    integrateBodies(model, state, h, r.begin, r.end);
+    integrateBodies(model, state, h, r.begin, r.end, ws);
   });
 }
 

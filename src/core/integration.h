@@ -51,8 +51,8 @@ void integrateBody(const Model& model, const BodyModel& b, double h, BodyState& 
 void integrateVelocities(const Model& model, State& state, const Loads& loads, double h, Workspace& ws);
 
 /// Stage 6–7: rotation (with the gyroscopic term), position and orientation
-/// of every awake body, and the time it has been still (§6); split over the
-/// cores when enough bodies are awake.
+/// of every awake body, and the time it has been still (§6), then the guard
+/// (§5.9, guard.h); split over the cores when enough bodies are awake.
 void integratePositions(const Model& model, State& state, double h, Workspace& ws);
 
 }  // namespace rigid_body_sim::core

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -50,12 +51,6 @@ struct FixedPoint {
   bool kept = false;           ///< the input of the step being computed is kept above
 };
 
-/// A body's pose before the step (the guard's last finite state).
-struct KeptPose {
-  Vec3 p_WB = Vec3::Zero();
-  Quat q_WB = Quat::Identity();
-};
-
 struct StepScratch {
   /// Per body: touched the scene or another body this step (only bodies in contact may sleep).
   std::vector<char> in_contact;
@@ -82,7 +77,7 @@ struct StepScratch {
   std::vector<char> held_still;
   std::vector<int> correct_contacts;  ///< the contacts the position stage corrects
   std::vector<PartScratch> parts;     ///< one per part of a split stage
-  std::vector<KeptPose> kept_poses;   ///< guard.h: each body's pose before the step
+  std::mutex guard_mutex;             ///< guard.h: putBack() from the parts of a split stage
   std::shared_ptr<WorkerPool> pool;
   FixedPoint fixed_point;
 };

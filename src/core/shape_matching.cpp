@@ -75,6 +75,10 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
     integrateVelocity(model, b, accumulateForces(model, state, load, ws, static_cast<int>(i)), h, s);
     applyDamping(model, h, s);
     limitSpeeds(model, static_cast<int>(i), s, ws);
+    if (!finiteState(s)) {  // the guard (§5.9): the pose is still the last finite one
+      putBack(static_cast<int>(i), s, ws);
+      continue;
+    }
     const bool near = !model.scene().empty() && minSeparation(model, s, static_cast<int>(i),
                                                               (s.v_WB.norm() + s.w_B.norm() * b.bound_radius) * h) <
                                                     std::numeric_limits<double>::infinity();

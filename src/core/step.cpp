@@ -22,13 +22,11 @@ namespace {
 bool advance(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
   // The stages, as a table:
   // clang-format off
-  keepPoses(state, ws);                                            // §5.9    guard.cpp: the last finite poses
   detectContacts(model, state, h, ws);                             // §5.1    detection.cpp (wakes sleepers hit)
   integrateVelocities(model, state, loads, h, ws);                 // §5.2–4  integration.cpp: forces, v and ω, damping, limits
   const bool impulse = solveContactImpulses(model, state, h, ws);  // §5.5    contact_solver.cpp (then the limits)
-  integratePositions(model, state, h, ws);                         // §5.6–7  integration.cpp: gyroscopic, x and q
+  integratePositions(model, state, h, ws);                         // §5.6–7  integration.cpp: gyroscopic, x and q, guard
   if (impulse) correctPositions(model, state, ws);                 // §5.8    position_correction.cpp
-  guardFinite(state, ws);                                          // §5.9    guard.cpp: non-finite bodies go back
   sleepIslands(model, state, ws, impulse);                         // §6      sleep.cpp
   // clang-format on
   return impulse;
@@ -68,14 +66,12 @@ void step(const Model& model, State& state, const Loads& loads, Workspace* works
   Workspace& ws = workspace != nullptr ? *workspace : *local;
   const double h = model.dt();
   wakeLoadedBodies(state, loads);
-  ws.speed_limited.clear();
-  ws.diverged.clear();
+  if (!ws.speed_limited.empty()) ws.speed_limited.clear();
+  if (!ws.diverged.empty()) ws.diverged.clear();
   switch (model.contact().method) {
     case ContactMethod::kShapeMatching:  // replaces every stage (§7.3), under the same guard
       forgetFixedPoint(ws);
-      keepPoses(state, ws);
       stepShapeMatching(model, state, loads, h, ws);
-      guardFinite(state, ws);
       break;
     case ContactMethod::kPenaltyLogBarrier:  // advance() under step control (§7.2)
       forgetFixedPoint(ws);
@@ -86,9 +82,11 @@ void step(const Model& model, State& state, const Loads& loads, Workspace* works
       break;
   }
   state.time += h;
-  // The stages list a body each time they limit it: once each, ascending.
-  std::sort(ws.speed_limited.begin(), ws.speed_limited.end());
-  ws.speed_limited.erase(std::unique(ws.speed_limited.begin(), ws.speed_limited.end()), ws.speed_limited.end());
+  if (!ws.diverged.empty()) finishGuard(state, ws);
+  if (ws.speed_limited.size() > 1) {  // the stages list a body each time they limit it: once each, ascending
+    std::sort(ws.speed_limited.begin(), ws.speed_limited.end());
+    ws.speed_limited.erase(std::unique(ws.speed_limited.begin(), ws.speed_limited.end()), ws.speed_limited.end());
+  }
 }
 
 }  // namespace rigid_body_sim::core

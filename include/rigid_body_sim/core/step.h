@@ -23,6 +23,9 @@ namespace rigid_body_sim::core {
 ///   integrate orientations         q += [0, Δt/2 ω] × q, then normalize
 ///   correct positions              push penetrating bodies out (impulse method)
 ///   update sleep                   bodies at rest stop being integrated
+/// Velocities are held to the speed limits where loads and contacts change
+/// them, and a body whose state stops being finite goes back to its pose
+/// before the step, at rest (the guard; both reported in the workspace).
 /// Shape matching replaces every stage (shape_matching.h);
 /// the log-barrier method repeats a step as two halves when φ would cross 0.
 void step(const Model& model, State& state, const Loads& loads = {}, Workspace* workspace = nullptr);
