@@ -33,6 +33,7 @@ std::string join(const std::string& path, const std::string& key) { return path.
 void requireKnownKeys(const YAML::Node& map, const std::string& path, const std::set<std::string>& known) {
   if (!map.IsMap()) fail(path.empty() ? "<root>" : path, "expected a map, got " + show(map));
   for (const auto& kv : map) {
+    if (!kv.first.IsScalar()) fail(path.empty() ? "<root>" : path, "a key must be a plain name, got " + show(kv.first));
     const std::string key = kv.first.as<std::string>();
     if (!known.count(key)) {
       std::string list;
@@ -90,10 +91,15 @@ Quat orientation(const YAML::Node& node, const std::string& path) {
   return value.normalized();
 }
 
+std::string text(const YAML::Node& node, const std::string& key) {
+  if (!node.IsScalar() || node.as<std::string>().empty()) fail(key, "expected a non-empty string, got " + show(node));
+  return node.as<std::string>();
+}
+
 /// One scene entry: a primitive or a composition, with an optional pose.
 core::Sdf parseShape(const YAML::Node& node, const std::string& path) {
   if (!node.IsMap() || !node["type"]) fail(path, "expected a map with a 'type', got " + show(node));
-  const std::string type = node["type"].as<std::string>();
+  const std::string type = text(node["type"], join(path, "type"));
   const std::set<std::string> pose_keys{"type", "position", "rpy", "quaternion"};
   auto known = [&](std::initializer_list<std::string> extra) {
     std::set<std::string> keys = pose_keys;
@@ -243,11 +249,6 @@ void parseInitial(const YAML::Node& node, core::LinkState& s, const std::string&
   if (node["angular_velocity"]) s.w_W = vec3(node["angular_velocity"], path + ".angular_velocity");
 }
 
-std::string text(const YAML::Node& node, const std::string& key) {
-  if (!node.IsScalar() || node.as<std::string>().empty()) fail(key, "expected a non-empty string, got " + show(node));
-  return node.as<std::string>();
-}
-
 std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& base_dir) {
   if (!node.IsSequence() || node.size() == 0) fail("bodies", "expected a non-empty list of {name, urdf, initial}");
   std::vector<BodyEntry> bodies;
@@ -272,9 +273,7 @@ std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& ba
   return bodies;
 }
 
-}  // namespace
-
-SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
+SimConfig parseTree(const YAML::Node& root, const std::string& base_dir) {
   SimConfig c;
   c.base_dir = base_dir;
   c.model.scene = {core::Sdf::plane(Vec3::UnitZ())};  // the ground, z = 0
@@ -297,6 +296,16 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
     c.bodies = parseBodies(root["bodies"], base_dir);
   }
   return c;
+}
+
+}  // namespace
+
+SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
+  try {
+    return parseTree(root, base_dir);
+  } catch (const YAML::Exception& e) {  // a conversion no check above foresaw: still a ConfigError
+    throw ConfigError(std::string("config: ") + e.what());
+  }
 }
 
 YAML::Node loadYamlFile(const std::string& path) {

@@ -42,6 +42,8 @@ TEST(Config, ShippedDefaultsAreTheCodeDefaults) {
   EXPECT_EQ(fc.penalty_buffer, cc.penalty_buffer);
   EXPECT_EQ(fc.barrier_strength, cc.barrier_strength);
   EXPECT_EQ(fc.barrier_buffer, cc.barrier_buffer);
+  EXPECT_EQ(file.model.limits.linear, code.model.limits.linear);
+  EXPECT_EQ(file.model.limits.angular, code.model.limits.angular);
   const core::SleepSettings &fs = file.model.sleep, &cs = code.model.sleep;
   EXPECT_EQ(fs.enabled, cs.enabled);
   EXPECT_EQ(fs.linear_velocity, cs.linear_velocity);
@@ -228,6 +230,19 @@ TEST(Config, RefusalsNameTheKeyAndTheValue) {
   expectRefused("initial: {quaternion: [0, 0, 0, 2]}", {"'initial.quaternion'", "norm 2"});
   expectRefused("initial: {quaternion: [0, 0, 1]}", {"[x, y, z, w]"});
   expectRefused("[1, 2]", {"expected a map"});
+  // yaml-cpp's own "bad conversion" named no key.
+  expectRefused("scene: [{type: {a: 1}}]", {"'scene[0].type'", "expected a non-empty string"});
+  expectRefused("damping: {[1, 2]: 3}", {"'damping'", "a key must be a plain name"});
+  expectRefused("limits: {max_linear_speed: fast}", {"'limits.max_linear_speed'", "expected a number"});
+  expectRefused("limits: {max_speed: 3}", {"'limits.max_speed'", "unknown key"});
+}
+
+TEST(Config, SpeedLimitsAreKeys) {
+  const io::SimConfig c = parse("limits: {max_linear_speed: 20, max_angular_speed: 7}");
+  EXPECT_EQ(c.model.limits.linear, 20.0);
+  EXPECT_EQ(c.model.limits.angular, 7.0);
+  const io::SimConfig d = parse("dt: 0.001");
+  EXPECT_EQ(d.model.limits.linear, core::SpeedLimits().linear);
 }
 
 TEST(Config, BodiesListNamesUrdfsAndInitialStates) {
