@@ -30,6 +30,10 @@ RBS_APT_PACKAGES=(
   python3-visualization-msgs  # rostopic echo of the marker topics
 )
 
+# What scripts/fuzz.sh and scripts/sanitize.sh add: clang 14 and its
+# libFuzzer (the sanitizer runtimes of GCC come with build-essential).
+RBS_FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev libfuzzer-14-dev)
+
 # Runs a phase: says what it does, keeps its output in .ws/LOG, says how
 # long it took, or shows the end of the log when it fails.
 rbs_phase() {
@@ -86,7 +90,8 @@ rbs_link_sources() {
 }
 
 # Builds into .ws/ (catkin_make, $RBS_BUILD_TYPE); extra arguments are
-# catkin_make targets, e.g. `tests`. RBS_WERROR=ON makes the project's
+# catkin_make targets, e.g. `tests`. The array RBS_CMAKE_ARGS: more CMake
+# arguments (scripts/sanitize.sh passes its flags through it). RBS_WERROR=ON makes the project's
 # warnings errors (the tests and CI set it); compile_commands.json is kept
 # for clang-tidy.
 rbs_build() {
@@ -97,5 +102,5 @@ rbs_build() {
   [ ! -f "$RBS_WS/devel/lib/rigid_body_sim/$probe" ] || what="building ${*:-the package} (only what changed)"
   rbs_phase "$what" "build${1:+_$1}.log" \
     catkin_make -C "$RBS_WS" -j2 $RBS_PYFLAGS -DCMAKE_BUILD_TYPE="$RBS_BUILD_TYPE" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
-    ${RBS_WERROR:+-DRBS_WERROR="$RBS_WERROR"} "$@"
+    ${RBS_WERROR:+-DRBS_WERROR="$RBS_WERROR"} ${RBS_CMAKE_ARGS[@]+"${RBS_CMAKE_ARGS[@]}"} "$@"
 }

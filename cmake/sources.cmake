@@ -1,0 +1,35 @@
+# The core's and the io layer's sources: one list, for this build and for
+# the fuzzers' own (fuzz/CMakeLists.txt, built with clang).
+set(RBS_CORE_SOURCES
+  ${RBS_SOURCE_ROOT}/src/core/broad_phase.cpp
+  ${RBS_SOURCE_ROOT}/src/core/collision.cpp
+  ${RBS_SOURCE_ROOT}/src/core/contact_solver.cpp
+  ${RBS_SOURCE_ROOT}/src/core/detection.cpp
+  ${RBS_SOURCE_ROOT}/src/core/diagnostics.cpp
+  ${RBS_SOURCE_ROOT}/src/core/fixed_point.cpp
+  ${RBS_SOURCE_ROOT}/src/core/guard.cpp
+  ${RBS_SOURCE_ROOT}/src/core/inertia.cpp
+  ${RBS_SOURCE_ROOT}/src/core/integration.cpp
+  ${RBS_SOURCE_ROOT}/src/core/island.cpp
+  ${RBS_SOURCE_ROOT}/src/core/loads.cpp
+  ${RBS_SOURCE_ROOT}/src/core/model.cpp
+  ${RBS_SOURCE_ROOT}/src/core/parallel.cpp
+  ${RBS_SOURCE_ROOT}/src/core/penalty.cpp
+  ${RBS_SOURCE_ROOT}/src/core/position_correction.cpp
+  ${RBS_SOURCE_ROOT}/src/core/sdf.cpp
+  ${RBS_SOURCE_ROOT}/src/core/sdf_grid.cpp
+  ${RBS_SOURCE_ROOT}/src/core/sdf_surface.cpp
+  ${RBS_SOURCE_ROOT}/src/core/shape_matching.cpp
+  ${RBS_SOURCE_ROOT}/src/core/sleep.cpp
+  ${RBS_SOURCE_ROOT}/src/core/state.cpp
+  ${RBS_SOURCE_ROOT}/src/core/step.cpp
+  ${RBS_SOURCE_ROOT}/src/core/workspace.cpp
+  ${RBS_SOURCE_ROOT}/src/core/wrench_schedule.cpp
+)
+set(RBS_IO_SOURCES
+  ${RBS_SOURCE_ROOT}/src/io/config.cpp
+  ${RBS_SOURCE_ROOT}/src/io/input_bounds.cpp
+  ${RBS_SOURCE_ROOT}/src/io/mesh_loader.cpp
+  ${RBS_SOURCE_ROOT}/src/io/urdf_loader.cpp
+  ${RBS_SOURCE_ROOT}/src/io/world.cpp
+)

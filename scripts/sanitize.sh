@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# The tests under the sanitizers, each build in its own workspace under .ws/:
+#  - .ws/asan: the whole package with AddressSanitizer and UndefinedBehaviorSanitizer
+#    (GCC's), every gtest suite and every rostest (the node runs instrumented);
+#  - .ws/tsan: the core with ThreadSanitizer, the suites that step on several
+#    threads (core_bodies_test, core_broad_phase_test, core_workspace_test, core_parallel_test).
+# Non-zero on any report: leaks, out-of-bounds, undefined behaviour, races.
+#
+#   bash scripts/sanitize.sh          # both (CI runs it; about 10 minutes on 2 cores)
+#   bash scripts/sanitize.sh asan     # or tsan
+set -euo pipefail
+source "$(dirname "$0")/common.sh"
+which=${1:-all}
+rbs_install_packages
+root_ws=$RBS_WS
+status=0
+if [ "$which" = all ] || [ "$which" = asan ]; then
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:exitcode=23
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  # Build type "Sanitize" has no flags of its own: -O1 and line tables only,
+  # which build in about half the time of -O2 -g and still name the line.
+  RBS_CMAKE_ARGS=(-DRBS_LTO=OFF
+    "-DCMAKE_CXX_FLAGS=-O1 -g1 -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer")
+  RBS_WS=$root_ws/asan RBS_BUILD_TYPE=Sanitize RBS_WERROR=OFF rbs_build tests
+  echo "sanitize: every test under ASan and UBSan (ctest, 2 at a time)" >&2
+  ctest --test-dir "$root_ws/asan/build" --output-on-failure -j2 >"$root_ws/asan/ctest.log" 2>&1 || status=$?
+  grep -E "tests passed|tests failed" "$root_ws/asan/ctest.log" | tail -n 1 | sed 's/^/sanitize: asan: /' >&2
+  [ "$status" -eq 0 ] || grep -E "Failed|ERROR: |runtime error" "$root_ws/asan/ctest.log" | head -n 40 >&2
+  unset ASAN_OPTIONS UBSAN_OPTIONS
+fi
+if [ "$which" = all ] || [ "$which" = tsan ]; then
+  suites=(core_bodies_test core_broad_phase_test core_workspace_test core_parallel_test)
+  RBS_CMAKE_ARGS=(-DRBS_LTO=OFF "-DCMAKE_CXX_FLAGS=-O1 -g1 -fsanitize=thread")
+  RBS_WS=$root_ws/tsan RBS_BUILD_TYPE=Sanitize RBS_WERROR=OFF rbs_build "${suites[@]}"
+  echo "sanitize: the threaded core suites under TSan" >&2
+  for s in "${suites[@]}"; do
+    TSAN_OPTIONS=halt_on_error=1 RBS_THREADS=2 "$root_ws/tsan/devel/lib/rigid_body_sim/$s" >"$root_ws/tsan/$s.log" 2>&1 || {
+      status=1
+      echo "sanitize: tsan: $s FAILED; the end of its log:" >&2
+      tail -n 30 "$root_ws/tsan/$s.log" >&2
+      continue
+    }
+    echo "sanitize: tsan: $s passed" >&2
+  done
+fi
+exit "$status"
