@@ -1,7 +1,6 @@
 #include "rigid_body_sim/io/config.h"
 
 #include <cmath>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -309,15 +308,7 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
 }
 
 YAML::Node loadYamlFile(const std::string& path) {
-  const std::string problem = fileProblem(path, InputCaps::kConfigBytes);
-  if (!problem.empty()) throw ConfigError("config " + problem);
-  std::string text;
-  try {
-    text = readFile(path, InputCaps::kConfigBytes);
-  } catch (const std::runtime_error& e) {
-    throw ConfigError(std::string("config ") + e.what());
-  }
-  return loadYamlText(text, "config '" + path + "'");
+  return loadYamlText(readInput<ConfigError>(path, InputCaps::kConfigBytes, "config"), "config '" + path + "'");
 }
 
 YAML::Node loadYamlText(const std::string& text, const std::string& source) {

@@ -3,11 +3,8 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -217,15 +214,8 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
 }
 
 core::BodySpec loadUrdfFile(const std::string& path) {
-  const std::string problem = fileProblem(path, InputCaps::kUrdfBytes);
-  if (!problem.empty()) throw UrdfError("URDF " + problem);
-  std::string text;
-  try {
-    text = readFile(path, InputCaps::kUrdfBytes);
-  } catch (const std::runtime_error& e) {
-    throw UrdfError(std::string("URDF ") + e.what());
-  }
-  return loadUrdfString(text, path, std::filesystem::path(path).parent_path().string());
+  return loadUrdfString(readInput<UrdfError>(path, InputCaps::kUrdfBytes, "URDF"), path,
+                        std::filesystem::path(path).parent_path().string());
 }
 
 }  // namespace rigid_body_sim::io

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 
 namespace rigid_body_sim::io {
@@ -29,6 +30,19 @@ std::string fileProblem(const std::string& path, std::uintmax_t max_bytes);
 /// std::runtime_error naming the file if it cannot be read or grew past
 /// `max_bytes` since (at most max_bytes + 1 bytes are ever read).
 std::string readFile(const std::string& path, std::uintmax_t max_bytes);
+
+/// fileProblem() then readFile(), each refusal thrown as the loader's own
+/// `Error`, its message starting with `what` ("config", "URDF").
+template <class Error>
+std::string readInput(const std::string& path, std::uintmax_t max_bytes, const std::string& what) {
+  const std::string problem = fileProblem(path, max_bytes);
+  if (!problem.empty()) throw Error(what + " " + problem);
+  try {
+    return readFile(path, max_bytes);
+  } catch (const std::runtime_error& e) {
+    throw Error(what + " " + e.what());
+  }
+}
 
 /// Why a YAML text is refused before a tree is built from it: an alias or
 /// anchor (an alias bomb expands exponentially; write the value out), a
