@@ -13,11 +13,9 @@ SECONDS_PER_RUN=${1:-10}
 rbs_install_packages
 RBS_BUILD_TYPE=Release rbs_build >/dev/null
 set +u; source "$RBS_WS/devel/setup.bash"; set -u
-export ROS_MASTER_URI=http://localhost:11497
-roscore -p 11497 >/dev/null 2>&1 &
-core=$!
+rbs_start_master 11497
+core=$RBS_MASTER_PID
 trap 'kill -INT $core 2>/dev/null; wait $core 2>/dev/null || true' EXIT
-until rosparam list >/dev/null 2>&1; do sleep 0.2; done
 rosparam set --textfile "$RBS_ROOT/urdf/box.urdf" /robot_description
 ticks=$(getconf CLK_TCK)
 # Someone listening, so the messages are really serialized and sent.

@@ -104,3 +104,13 @@ rbs_build() {
     catkin_make -C "$RBS_WS" -j2 $RBS_PYFLAGS -DCMAKE_BUILD_TYPE="$RBS_BUILD_TYPE" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
     ${RBS_WERROR:+-DRBS_WERROR="$RBS_WERROR"} ${RBS_CMAKE_ARGS[@]+"${RBS_CMAKE_ARGS[@]}"} "$@"
 }
+
+# For the benches that run the node: a ROS master of their own on port $1
+# (ROS_MASTER_URI set), waited for; RBS_MASTER_PID is its process, for the
+# caller's trap to stop.
+rbs_start_master() {
+  export ROS_MASTER_URI=http://localhost:$1
+  roscore -p "$1" >/dev/null 2>&1 &
+  RBS_MASTER_PID=$!
+  until rosparam list >/dev/null 2>&1; do sleep 0.2; done
+}
