@@ -35,9 +35,8 @@ inline std::string checkVector(const Vec3& v, double limit, const std::string& w
 /// `key`), else why not: a state the step would only scale back.
 inline std::string checkSpeed(const Vec3& v, double limit, const std::string& what, const std::string& key,
                               const std::string& unit) {
-  if (!v.allFinite() || !(v.norm() <= limit)) {
-    const std::string finite = checkVector(v, limit, what, unit);
-    if (!v.allFinite()) return finite;
+  if (!v.allFinite()) return checkVector(v, limit, what, unit);
+  if (!(v.norm() <= limit)) {
     std::ostringstream os;
     os << what << " is above the speed limit: |" << what << "| = " << v.norm() << " " << unit << " > " << key << " = "
        << limit << " " << unit;

@@ -34,7 +34,7 @@ constexpr int kMaxIterations = 10000;  ///< impulse sweeps and position passes p
 
 // -- the mesh distance grid (bodies in a world)
 constexpr int kMaxGridResolution = 256;  ///< cells along the longest side
-/// Cells × triangles the grid may cost to build (about 80 ns each here: 8 s);
+/// Cells × triangles the grid may cost to build (100–140 ns each here: at most 10–14 s);
 /// the resolution comes down to fit, and a mesh too big for 8 cells is refused.
 constexpr double kMaxGridWork = 1e8;
 constexpr int kMinGridResolution = 8;
