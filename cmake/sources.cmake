@@ -1,6 +1,7 @@
 # The core's and the io layer's sources: one list, for this build and for
 # the fuzzers' own (fuzz/CMakeLists.txt, built with clang).
 set(RBS_CORE_SOURCES
+  ${RBS_SOURCE_ROOT}/src/core/barrier.cpp
   ${RBS_SOURCE_ROOT}/src/core/broad_phase.cpp
   ${RBS_SOURCE_ROOT}/src/core/collision.cpp
   ${RBS_SOURCE_ROOT}/src/core/contact_solver.cpp

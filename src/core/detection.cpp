@@ -234,7 +234,9 @@ void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandi
   const auto margin = [&](int body) {
     if (state.bodies[body].asleep) return std::max(cs.position_slop, model.solver().min_margin);
     if (cs.method == ContactMethod::kPenaltyQuadratic) return cs.penalty_buffer;
-    if (cs.method == ContactMethod::kPenaltyLogBarrier) return cs.barrier_buffer;
+    if (cs.method == ContactMethod::kPenaltyLogBarrier) {  // and what the step may bring into it (barrier.h)
+      return cs.barrier_buffer + speculativeMargin(model.body(body), state.bodies[body], h, 0.0, 0.0);
+    }
     return speculativeMargin(model.body(body), state.bodies[body], h, cs.position_slop, model.solver().min_margin);
   };
   // Body against body, both ways: a's points against o's solid for every

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "barrier.h"
 #include "rigid_body_sim/core/inertia.h"
 #include "rigid_body_sim/core/ranges.h"
 #include "rigid_body_sim/core/sdf_grid.h"
@@ -257,6 +258,34 @@ void validatePenalty(const ContactSettings& c, double dt, const std::vector<Body
   }
 }
 
+/// The log barrier can only stop what its potential can hold: U(φ) down to
+/// the floor at one contact point must exceed the kinetic energy a body can
+/// bring to one point at the speed limits, ½ m (v + ω R)² (against another
+/// body, the closing speed of both), plus gravity's work across the buffer
+/// (docs/physics.md §7.2). Otherwise the speeds it cannot stop are refused.
+void validateBarrier(const ModelSpec& spec, const std::vector<BodyModel>& bodies) {
+  const ContactSettings& c = spec.contact;
+  if (c.method != ContactMethod::kPenaltyLogBarrier) return;
+  const double holds = barrierPotential(c, kBarrierFloor);
+  const auto reach = [&](const BodyModel& b) { return spec.limits.linear + spec.limits.angular * b.bound_radius; };
+  double fastest = 0.0;
+  if (bodies.size() > 1) {
+    for (const BodyModel& b : bodies) fastest = std::max(fastest, reach(b));
+  }
+  for (const BodyModel& b : bodies) {
+    const double closing = reach(b) + fastest;
+    const double brings = 0.5 * b.mass * closing * closing + b.mass * spec.gravity_W.norm() * c.barrier_buffer;
+    if (brings > holds) {
+      detail::fail("contact.barrier_strength", detail::str(c.barrier_strength),
+                   "holds at most " + detail::str(holds) + " J at a contact point, but body '" + b.name +
+                       "' can bring " + detail::str(brings) + " J to one at limits.max_linear_speed " +
+                       detail::str(spec.limits.linear) + " m/s and limits.max_angular_speed " +
+                       detail::str(spec.limits.angular) + " rad/s; raise it to at least " +
+                       detail::str(c.barrier_strength * brings / holds) + " or lower the limits");
+    }
+  }
+}
+
 void validateSleep(const SleepSettings& s) {
   detail::requireWithin(s.linear_velocity, 0.0, ranges::kMaxThresholdSpeed, "sleep.linear_velocity", "m/s");
   detail::requireWithin(s.angular_velocity, 0.0, ranges::kMaxThresholdSpeed, "sleep.angular_velocity", "rad/s");
@@ -331,6 +360,7 @@ Model::Model(const ModelSpec& spec)
   restitution_threshold_ = std::max(spec.contact.restitution_threshold, 2.0 * gravity_W_.norm() * dt_);
   validateDamping(spec.damping, spec.dt, bodies_);
   validatePenalty(spec.contact, spec.dt, bodies_);
+  validateBarrier(spec, bodies_);
   linear_decay_ = std::exp(-spec.damping.linear_rate * spec.dt);
   angular_decay_ = std::exp(-spec.damping.angular_rate * spec.dt);
 }

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "barrier.h"
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/workspace.h"
+#include "scratch.h"
 
 namespace rigid_body_sim::core {
 
@@ -13,15 +15,19 @@ void accumulatePenaltyForces(const Model& model, const State& state, const Works
   const ContactSettings& cs = model.contact();
   const bool barrier = cs.method == ContactMethod::kPenaltyLogBarrier;
   const double stiction_speed =
-      model.solver().stiction_speed;  // m/s: friction is viscous below it (regularised Coulomb)
-  for (const Contact& c : ws.contacts) {
+      model.solver().stiction_speed;                         // m/s: friction is viscous below it (regularised Coulomb)
+  const std::vector<double>& end = ws.scratch->barrier_end;  // filled in the barrier's later passes
+  const bool have_end = barrier && end.size() == ws.contacts.size();
+  for (std::size_t k = 0; k < ws.contacts.size(); ++k) {
+    const Contact& c = ws.contacts[k];
     if (c.body != body && c.other != body) continue;
     const double phi = c.separation;
     double fn = 0.0;
     if (barrier) {
-      if (phi >= cs.barrier_buffer) continue;
-      // ρ/φ, shifted to vanish at the buffer's edge; φ > 0 is kept by step control (docs/physics.md §7.2).
-      fn = cs.barrier_strength * (1.0 / std::max(phi, 1e-9) - 1.0 / cs.barrier_buffer);
+      // ρ/φ, shifted to vanish at the buffer's edge, as the exact work of its
+      // potential over the step; φ > 0 is kept by step control (docs/physics.md §7.2).
+      fn = barrierForce(cs, phi, have_end ? end[k] : phi);
+      if (fn <= 0.0) continue;
     } else {
       if (phi >= cs.penalty_buffer) continue;
       fn = cs.penalty_stiffness * (cs.penalty_buffer - phi);

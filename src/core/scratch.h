@@ -76,8 +76,12 @@ struct StepScratch {
   /// by this step's impulse solve: in equilibrium, so it may sleep at once.
   std::vector<char> held_still;
   std::vector<int> correct_contacts;  ///< the contacts the position stage corrects
-  std::vector<PartScratch> parts;     ///< one per part of a split stage
-  std::mutex guard_mutex;             ///< guard.h: putBack() from the parts of a split stage
+  /// Log barrier (barrier.h): each contact's separation at the end of the
+  /// step's previous pass (m; empty in a first pass), where the last pass
+  /// ended, and per body the sums Σ k w and Σ c w of its step control.
+  std::vector<double> barrier_end, barrier_settled, barrier_stiffness, barrier_damping;
+  std::vector<PartScratch> parts;  ///< one per part of a split stage
+  std::mutex guard_mutex;          ///< guard.h: putBack() from the parts of a split stage
   std::shared_ptr<WorkerPool> pool;
   FixedPoint fixed_point;
 };

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 
+#include "barrier.h"
 #include "fixed_point.h"
 #include "guard.h"
 #include "integration.h"
@@ -32,32 +33,6 @@ bool advance(const Model& model, State& state, const Loads& loads, double h, Wor
   return impulse;
 }
 
-/// The log-barrier method needs φ > 0 at every contact point at all times,
-/// and its force ρ/φ is stiff: taken explicitly over a step in which φ
-/// changes a lot, it pumps energy in. So a step is taken again as two half
-/// steps (step control) if any body's smallest φ inside the buffer would
-/// reach 0, or shrink or grow by more than a factor of two.
-void advanceKeepingBarrier(const Model& model, State& state, const Loads& loads, double h, Workspace& ws, int depth) {
-  const SolverSettings& solver = model.solver();
-  const double growth = solver.barrier_step_factor;
-  const double buffer = model.contact().barrier_buffer;
-  const State before = state;
-  advance(model, state, loads, h, ws);
-  bool redo = false;
-  for (std::size_t i = 0; i < model.bodyCount() && !redo; ++i) {
-    const int body = static_cast<int>(i);
-    const double was = minSeparation(model, before.bodies[i], body, buffer);
-    const double now = minSeparation(model, state.bodies[i], body, buffer);
-    if (std::isinf(was) && std::isinf(now)) continue;  // outside the buffer throughout
-    redo = !(now > 0.0) || (!std::isinf(was) && !std::isinf(now) && (now < was / growth || now > growth * was)) ||
-           (std::isinf(was) && now < buffer / growth);
-  }
-  if (!redo || depth >= solver.barrier_max_halvings) return;
-  state = before;
-  advanceKeepingBarrier(model, state, loads, 0.5 * h, ws, depth + 1);
-  advanceKeepingBarrier(model, state, loads, 0.5 * h, ws, depth + 1);
-}
-
 }  // namespace
 
 void step(const Model& model, State& state, const Loads& loads, Workspace* workspace) {
@@ -75,7 +50,7 @@ void step(const Model& model, State& state, const Loads& loads, Workspace* works
       break;
     case ContactMethod::kPenaltyLogBarrier:  // advance() under step control (§7.2)
       forgetFixedPoint(ws);
-      advanceKeepingBarrier(model, state, loads, h, ws, 0);
+      advanceKeepingBarrier(model, state, loads, h, ws, advance);
       break;
     default:  // advance(), unless the last step was a fixed point (fixed_point.cpp)
       advanceOrRepeat(model, state, loads, h, ws, advance);

@@ -363,7 +363,10 @@ TEST(Determinism, EveryMethodIsBitIdenticalRunToRun) {
                                      core::ContactMethod::kPenaltyLogBarrier, core::ContactMethod::kShapeMatching}) {
     core::ContactSettings c = impulse(0.3, 0.5);
     c.method = method;
-    const core::Model model(onGround(boxBody(kHalf), c));
+    c.barrier_strength = 2.0;  // N·m: holds what the box brings at 5 m/s and 5 rad/s (§7.2)
+    core::ModelSpec ms = onGround(boxBody(kHalf), c);
+    ms.limits.linear = ms.limits.angular = 5.0;
+    const core::Model model(ms);
     auto run = [&] {
       core::State s = at(model, Vec3(0, 0, 0.5), Quat(Eigen::AngleAxisd(0.5, Vec3(1, 2, 0.3).normalized())),
                          Vec3(0.5, 0, 0), Vec3(1, 2, 3));

@@ -1,8 +1,10 @@
-// The penalty responses keep a resting body inside their buffer; the log
-// barrier never lets φ reach 0.
+// The penalty responses keep a resting body inside their buffer and never
+// gain energy in an impact; the log barrier never lets φ reach 0, and its
+// model refuses the speeds it cannot stop.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "../test_util.h"
 #include "rigid_body_sim/core/contact.h"
@@ -14,13 +16,60 @@ namespace {
 
 const Vec3 kHalf(0.2, 0.1, 0.05);
 
-core::Model penaltyModel(core::ContactMethod method) {
+const double kReach = kHalf.norm();  // m, the box's corners from its centre
+
+core::ModelSpec penaltySpec(core::ContactMethod method) {
   core::ContactSettings c;
   c.method = method;
   core::ModelSpec ms = onGround(boxBody(kHalf), c);
   ms.sleep.enabled = false;
-  return core::Model(ms);
+  return ms;
 }
+
+core::Model penaltyModel(core::ContactMethod method) { return core::Model(penaltySpec(method)); }
+
+/// J: what the barrier's potential ρ (ln(ε/φ) − 1 + φ/ε) holds at one point
+/// down to its floor, 1e-9 m (docs/physics.md §7.2).
+double barrierHolds(const core::ContactSettings& c) {
+  const double floor = 1e-9;
+  return c.barrier_strength * (std::log(c.barrier_buffer / floor) - 1.0 + floor / c.barrier_buffer);
+}
+
+/// A barrier of strength ρ on the 1 kg box, with its angular limit 1 rad/s
+/// and the linear one a hair below the largest it can stop at one corner:
+/// ½ m (v + ω R)² + m g ε = U(floor).
+core::ModelSpec barrierSpec(double rho) {
+  core::ModelSpec ms = penaltySpec(core::ContactMethod::kPenaltyLogBarrier);
+  ms.contact.barrier_strength = rho;
+  ms.limits.angular = 1.0;
+  const double holds = barrierHolds(ms.contact) - 9.81 * ms.contact.barrier_buffer;
+  ms.limits.linear = (1 - 1e-9) * (std::sqrt(2 * holds) - ms.limits.angular * kReach);
+  return ms;
+}
+
+core::State dropped(const core::Model& model, double speed, const Vec3& rpy) {
+  core::LinkState link;
+  link.p_WL = Vec3(0, 0, 0.5);
+  link.q_WL = Eigen::AngleAxisd(rpy.z(), Vec3::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Vec3::UnitY()) *
+              Eigen::AngleAxisd(rpy.x(), Vec3::UnitX());
+  link.v_WL = Vec3(0, 0, -speed);
+  return stateOf(model, link);
+}
+
+/// The most energy (kinetic and gravity's) the box has over 2 s after being
+/// dropped from 0.5 m at `speed`, turned by rpy, and the energy it started with.
+std::pair<double, double> mostEnergyAfterADrop(const core::Model& model, double speed, const Vec3& rpy) {
+  core::State s = dropped(model, speed, rpy);
+  const double e0 = core::totalEnergy(model, s);
+  double most = e0;
+  for (int n = 0; n < 2000; ++n) {
+    core::step(model, s);
+    most = std::max(most, core::totalEnergy(model, s));
+  }
+  return {most, e0};
+}
+
+const Vec3 kTurns[] = {Vec3(0, 0, 0), Vec3(0.3, 0.2, 0.1), Vec3(1.0, 0.5, 0.0), Vec3(0.7, 1.3, 0.2)};
 
 /// Smallest and largest φ of the body's corners (the box's lowest points).
 std::pair<double, double> cornerGap(const core::Model& model, const core::State& s) {
@@ -41,22 +90,48 @@ TEST(Penalty, QuadraticNeverGainsEnergyInAFastImpact) {
   // than it brought. Dropped at up to 400 m/s, turned or flat.
   const core::Model model = penaltyModel(core::ContactMethod::kPenaltyQuadratic);
   for (const double speed : {10.0, 100.0, 400.0}) {
-    for (const Vec3& rpy : {Vec3(0, 0, 0), Vec3(0.3, 0.2, 0.1), Vec3(1.0, 0.5, 0.0)}) {
-      core::LinkState link;
-      link.p_WL = Vec3(0, 0, 0.5);
-      link.q_WL = Eigen::AngleAxisd(rpy.z(), Vec3::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Vec3::UnitY()) *
-                  Eigen::AngleAxisd(rpy.x(), Vec3::UnitX());
-      link.v_WL = Vec3(0, 0, -speed);
-      core::State s = stateOf(model, link);
-      const double e0 = core::totalEnergy(model, s);
-      double most = e0;
-      for (int n = 0; n < 2000; ++n) {
-        core::step(model, s);
-        most = std::max(most, core::totalEnergy(model, s));
-      }
+    for (const Vec3& rpy : kTurns) {
+      const auto [most, e0] = mostEnergyAfterADrop(model, speed, rpy);
       EXPECT_LE(most, e0 * (1 + 1e-12)) << speed << " m/s, rpy " << rpy.transpose();
     }
   }
+}
+
+TEST(Penalty, LogBarrierNeverGainsEnergyAtTheSpeedsItAccepts) {
+  // Each contact's force is the exact work of the barrier's potential over
+  // the step, and the step halves where the spring is too stiff for it: a
+  // body leaves with at most the energy it brought, weak barrier or strong,
+  // from a drop up to the fastest its model accepts. (Before, taken at the
+  // start of each step, ρ = 4 at 5 m/s turned gained 5×.)
+  for (const double rho : {0.1, 4.0, 100.0}) {
+    const core::Model model(barrierSpec(rho));
+    for (const double share : {0.0, 0.5, 1.0}) {
+      for (const Vec3& rpy : kTurns) {
+        const double speed = share * model.limits().linear;
+        const auto [most, e0] = mostEnergyAfterADrop(model, speed, rpy);
+        EXPECT_LE(most, e0 * (1 + 1e-12)) << "rho " << rho << ", " << speed << " m/s, rpy " << rpy.transpose();
+      }
+    }
+  }
+}
+
+TEST(Penalty, LogBarrierRefusesSpeedLimitsItCannotStop) {
+  // At the largest limits its potential holds the box is accepted; a little
+  // faster, or with the default limits (500 m/s), it is refused, naming the
+  // key and the strength that would do.
+  core::ModelSpec ms = barrierSpec(0.5);
+  EXPECT_NO_THROW(core::Model{ms});
+  ms.limits.linear *= 1.001;
+  expectThrowsWith<std::invalid_argument>([&] { core::Model m(ms); },
+                                          {"contact.barrier_strength = 0.5: holds at most ", "body 'box' can bring",
+                                           "raise it to at least", "or lower the limits"});
+  EXPECT_THROW(core::Model{penaltySpec(core::ContactMethod::kPenaltyLogBarrier)}, std::invalid_argument);
+  // A second body: the closing speed of both counts.
+  core::ModelSpec two = barrierSpec(0.5);
+  core::BodySpec other = boxBody(kHalf);
+  other.name = "other";
+  two.bodies.push_back(other);
+  EXPECT_THROW(core::Model{two}, std::invalid_argument);
 }
 
 TEST(Penalty, QuadraticKeepsARestingBodyInsideItsBuffer) {
@@ -80,7 +155,7 @@ TEST(Penalty, QuadraticKeepsARestingBodyInsideItsBuffer) {
 }
 
 TEST(Penalty, LogBarrierNeverLetsPhiReachZero) {
-  const core::Model model = penaltyModel(core::ContactMethod::kPenaltyLogBarrier);
+  const core::Model model(barrierSpec(core::ContactSettings{}.barrier_strength));
   const double buffer = model.contact().barrier_buffer;
   core::LinkState link;
   link.p_WL = Vec3(0, 0, 0.3);  // dropped from 25 cm above its resting height

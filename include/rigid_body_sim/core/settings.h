@@ -134,6 +134,9 @@ struct SolverSettings {
   /// grow by more than this factor, at most `barrier_max_halvings` times.
   double barrier_step_factor = 2.0;
   int barrier_max_halvings = 20;
+  /// Log barrier: passes after the first that take each contact's force as
+  /// the exact work of its potential to where the last pass ended.
+  int barrier_passes = 2;
 
   // -- shape matching (§7.3)
   /// Passes projecting the fitted pose's penetrating vertices out and fitting again.
