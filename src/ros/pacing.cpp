@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "rigid_body_sim/ros/interrupt.h"
 #include "rigid_body_sim/ros/sim_node.h"
 
 namespace rigid_body_sim::node {
@@ -81,7 +82,7 @@ void SimNode::run() {
   auto last_tick = next_tick;
   const double rtf = settings_.realtime_factor;
   if (settings_.report_timing) tick_periods_.reserve(1 << 20);
-  while (ros::ok()) {
+  while (ros::ok() && !interrupted()) {
     const auto tick_start = Clock::now();
     if (settings_.report_timing) tick_periods_.push_back(std::chrono::duration<double>(tick_start - last_tick).count());
     last_tick = tick_start;

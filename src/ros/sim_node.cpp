@@ -32,6 +32,7 @@ io::World loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
     }
     return io::loadUrdfString(xml, nh.resolveName("robot_description"));
   };
+  ROS_INFO("sim_node: loading the world (a big mesh takes seconds; Ctrl-C stops it)");
   return io::loadWorld(params.sim, robot_description, [&](const io::BodyEntry& entry) {
     std::string xml;
     try {
@@ -73,8 +74,8 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
       world_(loadWorld(params_, nh_)),
       use_sim_time_(ros::param::param("/use_sim_time", false)),
       clock_(model_.dt(), !use_sim_time_) {
-  // A SIGINT while the world loaded (a big mesh takes seconds): ROS is
-  // shutting down, and nothing may be advertised or published any more.
+  // ROS shut down while the world loaded (rosnode kill; SIGINT ends the
+  // process then, interrupt.h): nothing may be advertised or published.
   if (!ros::ok()) return;
   initial_ = state_;
   clock_.anchor(0, static_cast<int64_t>(ros::WallTime::now().toNSec()));

@@ -1,0 +1,188 @@
+// SIGINT at start-up and while running (issue 13): Ctrl-C during a long load
+// once waited for the load, then published after ROS had shut down
+// (SIGTRAP). Now the node ends at once while it loads (exit 130, nothing
+// advertised) and stops cleanly once it runs (exit 0). Each case starts its
+// own sim_node and signals it.
+#include <gtest/gtest.h>
+#include <poll.h>
+#include <ros/ros.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+
+namespace rbs_test {
+namespace {
+
+std::chrono::steady_clock::time_point deadline(double seconds) {
+  return std::chrono::steady_clock::now() +
+         std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+/// A sim_node started in namespace `ns`, its stdout and stderr on a pipe.
+class Child {
+ public:
+  explicit Child(const std::string& ns) {
+    const std::string remap = "__ns:=" + ns;            // before fork: the child only execs
+    setenv("ROSCONSOLE_STDOUT_LINE_BUFFERED", "1", 1);  // its INFO lines as they come, not at exit
+    int fds[2];
+    if (pipe(fds) != 0) return;
+    pid_ = fork();
+    if (pid_ == 0) {
+      dup2(fds[1], STDOUT_FILENO);
+      dup2(fds[1], STDERR_FILENO);
+      close(fds[0]);
+      execl(RBS_SIM_NODE, RBS_SIM_NODE, remap.c_str(), static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    close(fds[1]);
+    out_ = fds[0];
+  }
+  ~Child() {
+    if (pid_ > 0 && !reaped_) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+    }
+    if (out_ >= 0) close(out_);
+  }
+  Child(const Child&) = delete;
+  Child& operator=(const Child&) = delete;
+
+  /// Reads its output until it contains `text` (true), or until it ends or
+  /// `seconds` pass (false).
+  bool waitFor(const std::string& text, double seconds) {
+    const auto until = deadline(seconds);
+    while (output_.find(text) == std::string::npos) {
+      if (std::chrono::steady_clock::now() > until || !readSome(until)) return false;
+    }
+    return true;
+  }
+
+  void signal(int sig) const { kill(pid_, sig); }
+
+  /// Reads to the end and reaps it; the raw wait status, or -1 if it did not
+  /// end within `seconds` (then it is killed).
+  int finish(double seconds) {
+    const auto until = deadline(seconds);
+    while (std::chrono::steady_clock::now() < until && readSome(until)) {
+    }
+    int status = 0;
+    for (;;) {
+      const pid_t done = waitpid(pid_, &status, WNOHANG);
+      if (done == pid_) break;
+      if (std::chrono::steady_clock::now() > until) return -1;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    reaped_ = true;
+    return status;
+  }
+
+  const std::string& output() const { return output_; }
+
+ private:
+  /// One read of available output before `until`; false at its end.
+  bool readSome(std::chrono::steady_clock::time_point until) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(until - std::chrono::steady_clock::now());
+    pollfd p{out_, POLLIN, 0};
+    if (poll(&p, 1, static_cast<int>(std::max<long>(0, left.count()))) <= 0) return false;
+    char buf[4096];
+    const ssize_t n = read(out_, buf, sizeof buf);
+    if (n <= 0) return false;
+    output_.append(buf, static_cast<std::size_t>(n));
+    return true;
+  }
+
+  pid_t pid_ = -1;
+  int out_ = -1;
+  bool reaped_ = false;
+  std::string output_;
+};
+
+const char* kInertia = "<inertia ixx='0.016' iyy='0.016' izz='0.016' ixy='0' ixz='0' iyz='0'/>";
+
+/// A sphere of radius 0.2 m as an OBJ of about 100,000 triangles: in a world
+/// of two, each body's distance grid takes seconds to build.
+void writeBigMesh(const std::filesystem::path& path) {
+  std::ofstream obj(path);
+  const int rings = 200, segments = 250;
+  for (int i = 0; i <= rings; ++i) {
+    const double theta = M_PI * i / rings;
+    for (int j = 0; j < segments; ++j) {
+      const double phi = 2 * M_PI * j / segments;
+      obj << "v " << 0.2 * std::sin(theta) * std::cos(phi) << ' ' << 0.2 * std::sin(theta) * std::sin(phi) << ' '
+          << 0.2 * std::cos(theta) << '\n';
+    }
+  }
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < segments; ++j) {
+      const int a = i * segments + j + 1, b = i * segments + (j + 1) % segments + 1;
+      const int c = a + segments, d = b + segments;
+      if (i > 0) obj << "f " << a << ' ' << c << ' ' << b << '\n';
+      if (i < rings - 1) obj << "f " << b << ' ' << c << ' ' << d << '\n';
+    }
+  }
+}
+
+XmlRpc::XmlRpcValue body(const std::string& name, const std::string& urdf, double x) {
+  XmlRpc::XmlRpcValue b, initial, position;
+  b["name"] = name;
+  b["urdf"] = urdf;
+  position[0] = x;
+  position[1] = 0.0;
+  position[2] = 0.5;
+  initial["position"] = position;
+  b["initial"] = initial;
+  return b;
+}
+
+TEST(StartUp, SigintWhileLoadingEndsTheNodeAtOnce) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("rbs_startup_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  writeBigMesh(dir / "ball.obj");
+  std::ofstream(dir / "ball.urdf") << "<robot name='ball'><link name='base'><inertial><mass value='1'/>" << kInertia
+                                   << "</inertial><collision><geometry><mesh filename='" << (dir / "ball.obj").string()
+                                   << "'/></geometry></collision></link></robot>";
+  XmlRpc::XmlRpcValue bodies;
+  bodies[0] = body("a", (dir / "ball.urdf").string(), 0.0);
+  bodies[1] = body("b", (dir / "ball.urdf").string(), 1.0);
+  ros::param::set("/loading/sim_node/bodies", bodies);
+  Child node("/loading");
+  ASSERT_TRUE(node.waitFor("loading the world", 30.0)) << node.output();
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // inside the load (seconds long)
+  node.signal(SIGINT);
+  const int status = node.finish(30.0);
+  ASSERT_NE(status, -1) << "still running 30 s after SIGINT:\n" << node.output();
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status) << ":\n" << node.output();
+  EXPECT_EQ(WEXITSTATUS(status), 130) << node.output();
+  EXPECT_NE(node.output().find("interrupted while loading the world"), std::string::npos) << node.output();
+  // It ended inside the load: nothing after it ran.
+  EXPECT_EQ(node.output().find("simulation keys given"), std::string::npos) << node.output();
+  std::filesystem::remove_all(dir);
+}
+
+TEST(StartUp, SigintWhileRunningStopsTheNodeCleanly) {
+  ros::param::set(
+      "/running/robot_description",
+      "<robot name='r'><link name='base'><inertial><mass value='1'/>" + std::string(kInertia) +
+          "</inertial><collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision></link></robot>");
+  Child node("/running");
+  ASSERT_TRUE(node.waitFor("simulation keys given", 30.0)) << node.output();
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // stepping and publishing
+  node.signal(SIGINT);
+  const int status = node.finish(30.0);
+  ASSERT_NE(status, -1) << "still running 30 s after SIGINT:\n" << node.output();
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status) << ":\n" << node.output();
+  EXPECT_EQ(WEXITSTATUS(status), 0) << node.output();
+}
+
+}  // namespace
+}  // namespace rbs_test
