@@ -42,6 +42,7 @@ void SimNode::stepOnce() {
     publishClock();
     publish();
   }
+  if (steps_ % body_states_every_ == 0) publishBodyStates();
 }
 
 void SimNode::reportStep() {

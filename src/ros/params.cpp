@@ -31,6 +31,13 @@ double number(const XmlRpc::XmlRpcValue& v, const std::string& key, double lo, d
   return x;
 }
 
+bool flag(const XmlRpc::XmlRpcValue& v, const std::string& key) {
+  if (v.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
+    throw io::ConfigError("parameter '~" + key + "': expected true or false, got " + v.toXml());
+  }
+  return static_cast<bool>(const_cast<XmlRpc::XmlRpcValue&>(v));
+}
+
 }  // namespace
 
 YAML::Node toYaml(const XmlRpc::XmlRpcValue& value) {
@@ -67,9 +74,9 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   }
   NodeParams p;
   NodeSettings& n = p.node;
-  const std::set<std::string> node_keys{"rate",        "realtime_factor", "publish_rate",
-                                        "world_frame", "wrench_timeout",  "covariance",
-                                        "scene_size",  "report_timing",   "config_file"};
+  const std::set<std::string> node_keys{"rate",           "realtime_factor", "publish_rate",     "world_frame",
+                                        "wrench_timeout", "covariance",      "scene_size",       "report_timing",
+                                        "config_file",    "publish_tf",      "body_states_rate", "body_states_twist"};
   using R = NodeSettings;
   if (all.hasMember("rate")) n.rate = number(all["rate"], "rate", R::kMinRate, R::kMaxRate, "Hz");
   if (all.hasMember("realtime_factor")) {
@@ -90,11 +97,21 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   }
   if (all.hasMember("covariance")) n.covariance = number(all["covariance"], "covariance", 0.0, 1e6, "");
   if (all.hasMember("scene_size")) n.scene_size = number(all["scene_size"], "scene_size", 1e-3, 1e6, "m");
-  if (all.hasMember("report_timing")) {
-    if (all["report_timing"].getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
-      throw io::ConfigError("parameter '~report_timing': expected true or false");
+  if (all.hasMember("report_timing")) n.report_timing = flag(all["report_timing"], "report_timing");
+  if (all.hasMember("publish_tf")) n.publish_tf = flag(all["publish_tf"], "publish_tf");
+  if (all.hasMember("body_states_rate")) {
+    n.body_states_rate = number(all["body_states_rate"], "body_states_rate", R::kMinPublishRate, R::kMaxRate, "Hz");
+  }
+  if (all.hasMember("body_states_twist")) {
+    XmlRpc::XmlRpcValue& v = all["body_states_twist"];
+    if (v.getType() != XmlRpc::XmlRpcValue::TypeString) {
+      throw io::ConfigError("parameter '~body_states_twist': expected 'body' or 'world', got " + v.toXml());
     }
-    n.report_timing = static_cast<bool>(all["report_timing"]);
+    const std::string twist = static_cast<std::string>(v);
+    if (twist != "body" && twist != "world") {
+      throw io::ConfigError("parameter '~body_states_twist' = '" + twist + "': expected 'body' or 'world'");
+    }
+    n.body_states_twist_in_world = twist == "world";
   }
   if (all.hasMember("config_file")) {
     if (all["config_file"].getType() != XmlRpc::XmlRpcValue::TypeString) {

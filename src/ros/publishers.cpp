@@ -1,5 +1,5 @@
-// What the node publishes: tf and odometry of every body, /clock, the
-// fixed links on /tf_static, and the state messages of the services.
+// What the node publishes: tf and odometry of every body, ~body_states,
+// /clock, the fixed links on /tf_static, and the state messages of the services.
 #include <nav_msgs/Odometry.h>
 #include <rosgraph_msgs/Clock.h>
 
@@ -34,7 +34,7 @@ void SimNode::publish() {
     tf.header.frame_id = settings_.world_frame;
     tf.child_frame_id = frames_[i];
     tf.transform = toTransform(link.p_WL, link.q_WL);
-    tf_.sendTransform(tf);
+    if (settings_.publish_tf) tf_.sendTransform(tf);
 
     nav_msgs::Odometry odom;
     odom.header = tf.header;
@@ -50,6 +50,33 @@ void SimNode::publish() {
     odom_pubs_[i].publish(odom);
   }
   resendMarkersIfDue();
+}
+
+void SimNode::publishBodyStates() {
+  if (!ros::ok() || body_states_pub_.getNumSubscribers() == 0) return;
+  BodyStates msg;
+  msg.header.stamp = stamp();
+  msg.header.frame_id = settings_.world_frame;
+  const std::size_t n = model_.bodyCount();
+  msg.names.reserve(n);
+  msg.poses.reserve(n);
+  msg.twist_frames.reserve(n);
+  msg.twists.reserve(n);
+  msg.asleep.reserve(n);
+  const bool in_world = settings_.body_states_twist_in_world;
+  for (std::size_t i = 0; i < n; ++i) {
+    const core::LinkState link = core::linkState(model_.body(i), state_.bodies[i]);
+    const Quat q = in_world ? Quat::Identity() : link.q_WL.conjugate();
+    msg.names.push_back(model_.body(i).name);
+    msg.poses.push_back(toPose(link.p_WL, link.q_WL));
+    msg.twist_frames.push_back(in_world ? settings_.world_frame : frames_[i]);
+    geometry_msgs::Twist twist;
+    twist.linear = toVector3(q * link.v_WL);
+    twist.angular = toVector3(q * link.w_W);
+    msg.twists.push_back(twist);
+    msg.asleep.push_back(state_.bodies[i].asleep);
+  }
+  body_states_pub_.publish(msg);
 }
 
 void SimNode::publishFixedFrames() {

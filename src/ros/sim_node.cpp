@@ -80,6 +80,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   initial_ = state_;
   clock_.anchor(0, static_cast<int64_t>(ros::WallTime::now().toNSec()));
   publish_every_ = std::max(1LL, std::llround(1.0 / (settings_.publish_rate * model_.dt())));
+  body_states_every_ = std::max(1LL, std::llround(1.0 / (settings_.body_states_rate * model_.dt())));
   // One body keeps the single-body names; several get theirs under their name.
   const bool several = model_.bodyCount() > 1;
   held_wrenches_.resize(model_.bodyCount());
@@ -98,9 +99,12 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   }
   ROS_INFO("sim_node: ~rate %g Hz, ~dt %g s, ~realtime_factor %g, ~publish_rate %g Hz (every %lld steps)",
            settings_.rate, model_.dt(), settings_.realtime_factor, settings_.publish_rate, publish_every_);
-  ROS_INFO("sim_node: ~world_frame '%s', ~wrench_timeout %g s, ~covariance %g, /use_sim_time %s",
-           settings_.world_frame.c_str(), settings_.wrench_timeout, settings_.covariance,
-           use_sim_time_ ? "true" : "false");
+  ROS_INFO("sim_node: ~world_frame '%s', ~publish_tf %s, ~wrench_timeout %g s, ~covariance %g, /use_sim_time %s",
+           settings_.world_frame.c_str(), settings_.publish_tf ? "true" : "false", settings_.wrench_timeout,
+           settings_.covariance, use_sim_time_ ? "true" : "false");
+  ROS_INFO("sim_node: ~body_states at ~body_states_rate %g Hz (every %lld steps), twists in %s axes",
+           settings_.body_states_rate, body_states_every_,
+           settings_.body_states_twist_in_world ? "the world's" : "each body's");
   YAML::Emitter sim;
   sim << YAML::Flow << params_.sim_yaml;
   ROS_INFO("sim_node: simulation keys given: %s (others at config/default.yaml's defaults)", sim.c_str());
@@ -115,6 +119,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   scene_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, on_subscriber, {}, {}, true);
   body_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("body_markers", 1, on_subscriber, {}, {}, true);
   if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+  body_states_pub_ = pnh_.advertise<BodyStates>("body_states", 10);
   services_ = {pnh_.advertiseService("apply_wrench", &SimNode::applyWrench, this),
                pnh_.advertiseService("apply_impulse", &SimNode::applyImpulse, this),
                pnh_.advertiseService("clear_wrenches", &SimNode::clearWrenches, this),

@@ -22,6 +22,13 @@ struct NodeSettings {
   double covariance = 1e-9;     ///< ~covariance: diagonal of the odometry covariances (ground truth)
   double scene_size = 20.0;     ///< ~scene_size: m, extent drawn for planes and unbounded shapes
   bool report_timing = false;   ///< ~report_timing: log the tick-period jitter at shutdown
+  /// ~publish_tf: send each body's world → root link transform; false leaves
+  /// that to the user's own estimator (REP 105). Fixed links stay on /tf_static.
+  bool publish_tf = true;
+  double body_states_rate = 100.0;  ///< ~body_states_rate: Hz of sim time of ~body_states, [0.01, 1e4]
+  /// ~body_states_twist: "body" (each twist in its root link frame, as
+  /// nav_msgs/Odometry) or "world" (in ~world_frame's axes, as Gazebo's model_states).
+  bool body_states_twist_in_world = false;
   /// ~config_file: the file these parameters were loaded from (the launch
   /// files set it); relative `urdf` paths in `bodies` resolve from its folder.
   std::string config_file;

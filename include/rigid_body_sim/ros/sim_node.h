@@ -18,6 +18,7 @@
 #include "rigid_body_sim/ApplyImpulse.h"
 #include "rigid_body_sim/ApplyWrench.h"
 #include "rigid_body_sim/BodyState.h"
+#include "rigid_body_sim/BodyStates.h"
 #include "rigid_body_sim/ClearWrenches.h"
 #include "rigid_body_sim/GetState.h"
 #include "rigid_body_sim/SetState.h"
@@ -53,6 +54,7 @@ class SimNode {
   void reportStep();
   void publish();
   void publishClock();
+  void publishBodyStates();   ///< ~body_states, while someone subscribes
   void publishFixedFrames();  ///< links fixed to a body, on /tf_static
   void resendMarkersIfDue();
 
@@ -120,6 +122,7 @@ class SimNode {
   long long steps_ = 0;  ///< steps since start: sim time = steps × dt, also across resets
   SimClock clock_;       ///< what every stamp and every time a user reads or gives is on
   long long publish_every_ = 1;
+  long long body_states_every_ = 1;
   ros::Time last_published_;
 
   // Pacing: sim time follows wall time × realtime factor from a reference.
@@ -128,7 +131,7 @@ class SimNode {
   std::vector<double> tick_periods_;  ///< s, when ~report_timing
 
   std::vector<ros::Publisher> odom_pubs_;  ///< per body
-  ros::Publisher clock_pub_, scene_pub_, body_pub_;
+  ros::Publisher clock_pub_, scene_pub_, body_pub_, body_states_pub_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
   visualization_msgs::MarkerArray scene_markers_, body_markers_;
