@@ -11,7 +11,18 @@ int intervals(double length, double spacing) {
   return std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9)));
 }
 
-void sampleBox(const Vec3& size, double spacing, std::vector<Vec3>& out, std::vector<bool>& extreme) {
+/// A sample's position, whether it is extreme, and its face normal (zero: none), in the shape's frame.
+struct Sample {
+  std::vector<Vec3> at, normal;
+  std::vector<bool> extreme;
+  void add(const Vec3& p, bool is_extreme, const Vec3& n = Vec3::Zero()) {
+    at.push_back(p);
+    extreme.push_back(is_extreme);
+    normal.push_back(n);
+  }
+};
+
+void sampleBox(const Vec3& size, double spacing, Sample& out) {
   const Vec3 h = 0.5 * size;
   const int n[3] = {intervals(size.x(), spacing), intervals(size.y(), spacing), intervals(size.z(), spacing)};
   // A lattice point (i, j, k) lies on the surface when one index is at an end;
@@ -20,15 +31,23 @@ void sampleBox(const Vec3& size, double spacing, std::vector<Vec3>& out, std::ve
     for (int j = 0; j <= n[1]; ++j) {
       for (int k = 0; k <= n[2]; ++k) {
         const int ends = (i == 0 || i == n[0]) + (j == 0 || j == n[1]) + (k == 0 || k == n[2]);
-        if (ends == 0) continue;  // inside the box
-        out.emplace_back(-h.x() + size.x() * i / n[0], -h.y() + size.y() * j / n[1], -h.z() + size.z() * k / n[2]);
-        extreme.push_back(ends == 3);  // a corner
+        if (ends == 0) continue;     // inside the box
+        Vec3 normal = Vec3::Zero();  // on one face only: its normal
+        if (ends == 1) {
+          const int index[3] = {i, j, k};
+          for (int axis = 0; axis < 3; ++axis) {
+            if (index[axis] == 0) normal[axis] = -1.0;
+            if (index[axis] == n[axis]) normal[axis] = 1.0;
+          }
+        }
+        out.add(Vec3(-h.x() + size.x() * i / n[0], -h.y() + size.y() * j / n[1], -h.z() + size.z() * k / n[2]),
+                ends == 3, normal);  // extreme: a corner
       }
     }
   }
 }
 
-void sampleCylinder(double radius, double length, double spacing, std::vector<Vec3>& out, std::vector<bool>& extreme) {
+void sampleCylinder(double radius, double length, double spacing, Sample& out) {
   const int around = std::max(8, intervals(2.0 * M_PI * radius, spacing));
   const int along = intervals(length, spacing);
   const int rings = intervals(radius, spacing);
@@ -36,33 +55,34 @@ void sampleCylinder(double radius, double length, double spacing, std::vector<Ve
     const double z = -0.5 * length + length * k / along;
     for (int a = 0; a < around; ++a) {
       const double t = 2.0 * M_PI * a / around;
-      out.emplace_back(radius * std::cos(t), radius * std::sin(t), z);
-      extreme.push_back(k == 0 || k == along);  // the rims
+      const bool rim = k == 0 || k == along;
+      out.add(Vec3(radius * std::cos(t), radius * std::sin(t), z), rim,
+              rim ? Vec3::Zero() : Vec3(std::cos(t), std::sin(t), 0.0));
     }
   }
   for (double z : {-0.5 * length, 0.5 * length}) {  // caps: centre and inner rings
-    out.emplace_back(0.0, 0.0, z);
-    extreme.push_back(false);
+    const Vec3 cap(0.0, 0.0, z > 0.0 ? 1.0 : -1.0);
+    out.add(Vec3(0.0, 0.0, z), false, cap);
     for (int r = 1; r < rings; ++r) {
       const double rr = radius * r / rings;
       const int m = std::max(6, intervals(2.0 * M_PI * rr, spacing));
       for (int a = 0; a < m; ++a) {
         const double t = 2.0 * M_PI * a / m;
-        out.emplace_back(rr * std::cos(t), rr * std::sin(t), z);
-        extreme.push_back(false);
+        out.add(Vec3(rr * std::cos(t), rr * std::sin(t), z), false, cap);
       }
     }
   }
 }
 
 /// Evenly spread points on a sphere (a Fibonacci lattice).
-void sampleSphereSurface(double radius, double spacing, std::vector<Vec3>& out) {
+void sampleSphereSurface(double radius, double spacing, Sample& out) {
   const int n = std::max(12, static_cast<int>(std::ceil(4.0 * M_PI * radius * radius / (spacing * spacing))));
   const double golden = M_PI * (3.0 - std::sqrt(5.0));
   for (int i = 0; i < n; ++i) {
     const double z = 1.0 - 2.0 * (i + 0.5) / n;
     const double r = std::sqrt(1.0 - z * z);
-    out.emplace_back(radius * r * std::cos(golden * i), radius * r * std::sin(golden * i), radius * z);
+    const Vec3 normal(r * std::cos(golden * i), r * std::sin(golden * i), z);
+    out.add(radius * normal, true, normal);
   }
 }
 
@@ -96,33 +116,33 @@ double sampleCount(const CollisionShape& shape, double spacing, bool sample_sphe
 
 std::vector<ContactPoint> sampleShape(const CollisionShape& shape, const Pose& X_BL, double spacing,
                                       bool sample_spheres) {
-  std::vector<Vec3> local;
-  std::vector<bool> extreme;
+  Sample local;
   double radius = 0.0;
   switch (shape.kind) {
     case CollisionShape::Kind::kBox:
-      sampleBox(shape.size, spacing, local, extreme);
+      sampleBox(shape.size, spacing, local);
       break;
     case CollisionShape::Kind::kCylinder:
-      sampleCylinder(shape.radius, shape.length, spacing, local, extreme);
+      sampleCylinder(shape.radius, shape.length, spacing, local);
       break;
     case CollisionShape::Kind::kSphere:
       if (sample_spheres) {
         sampleSphereSurface(shape.radius, spacing, local);
       } else {
-        local.emplace_back(Vec3::Zero());
+        local.add(Vec3::Zero(), true);
         radius = shape.radius;
       }
       break;
     case CollisionShape::Kind::kPoints:
-      local = shape.mesh.vertices;
+      for (const Vec3& v : shape.mesh.vertices) local.add(v, true);
       break;
   }
   std::vector<ContactPoint> points;
-  points.reserve(local.size());
+  points.reserve(local.at.size());
   const Pose X_BS = X_BL * shape.X_LS;
-  extreme.resize(local.size(), true);  // sphere centres and samples, mesh vertices
-  for (std::size_t i = 0; i < local.size(); ++i) points.push_back({X_BS * local[i], radius, extreme[i]});
+  for (std::size_t i = 0; i < local.at.size(); ++i) {
+    points.push_back({X_BS * local.at[i], radius, local.extreme[i], X_BS.rotation * local.normal[i]});
+  }
   return points;
 }
 

@@ -30,6 +30,12 @@ struct ContactPoint {
   /// centres, mesh vertices). Against a plane only these can be deepest, so
   /// the plane test skips the others (a box's edge and face samples).
   bool extreme = true;
+  /// The outward normal of the face the point samples (unit, B): box and
+  /// cap faces, cylinder sides, sampled sphere surfaces. Zero where the
+  /// surface has no one normal: corners, edges, rims, sphere centres, mesh
+  /// vertices. Detection uses it to drop contacts another body's solid gives
+  /// a face point along its own edges (§5.1).
+  Vec3 normal_B = Vec3::Zero();
 };
 
 /// How many points sampleShape() gives, at most, computed without sampling
