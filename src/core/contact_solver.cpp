@@ -52,12 +52,12 @@ inline void applyImpulse(const SolverContact& c, double ln, double l1, double l2
 
 /// Starts a contact from the impulse it carried last step (if it existed,
 /// see matchLastImpulses), applied to the bodies before the first sweep.
-void warmStart(const Model& model, const Contact& contact, const State& state, Velocities& vel, SolverContact& c) {
+void warmStart(const Contact& contact, const State& state, Velocities& vel, SolverContact& c) {
   if (contact.last_impulse < 0) return;
   const ContactImpulse last = state.contact_impulses[contact.last_impulse];
   c.normal_impulse = last.normal;
   c.tangent_impulse = Eigen::Vector2d(c.tangent1_W.dot(last.tangent_W), c.tangent2_W.dot(last.tangent_W));
-  const double limit = model.contact().friction * c.normal_impulse;
+  const double limit = c.friction * c.normal_impulse;
   if (c.tangent_impulse.norm() > limit) c.tangent_impulse *= limit / c.tangent_impulse.norm();
   applyImpulse(c, c.normal_impulse, c.tangent_impulse.x(), c.tangent_impulse.y(), vel);
 }
@@ -188,6 +188,8 @@ void prepareContact(const Model& model, const State& state, const std::vector<Ma
   c.body = contact.body;
   c.other = contact.other;
   c.normal_W = n;
+  c.friction = model.friction(c.body, c.other);
+  c.restitution = model.restitution(c.body, c.other);
   if (previous != nullptr && previous->normal_W == n) {  // the points of one region share n and its tangents
     c.tangent1_W = previous->tangent1_W;
     c.tangent2_W = previous->tangent2_W;
@@ -233,7 +235,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
     c.contact = sc.island_contacts[k];
     prepareContact(model, state, sc.inverse_inertias, h, contact, k > first ? &c - 1 : nullptr, c);
     fastest = std::max(fastest, contactVelocity(c, vel).squaredNorm());
-    warmStart(model, contact, state, vel, c);
+    warmStart(contact, state, vel, c);
   }
   // Sweeps stop once none changes a velocity by more than the velocity
   // tolerance (1e-7 m/s: 1e-10 m of drift a step, what a resting stack
@@ -247,7 +249,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
   // of touching bodies), they collide in the next pass: Newton's cradle.
   // Each pass has its own impulses, so a collision, once resolved, does not
   // keep pushing.
-  if (cs.restitution > 0.0) {
+  if (model.bounces()) {
     const int max_passes = 2 * (last - first) + 2;
     std::vector<int>& hit = scratch.impact_contacts;
     for (int pass = 0; pass < max_passes; ++pass) {
@@ -255,8 +257,8 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
       for (SolverContact* c = begin; c != end; ++c) {
         const double vn = normalVelocity(*c, vel);
         const bool arrives = c->separation <= 0.0 || vn * h < -c->separation;
-        if (arrives && vn < -threshold) {
-          c->impact_target = -cs.restitution * vn;
+        if (arrives && vn < -threshold && c->restitution > 0.0) {
+          c->impact_target = -c->restitution * vn;
           c->impact_normal = 0.0;
           c->impact_tangent.setZero();
           hit.push_back(static_cast<int>(c - begin));
@@ -268,7 +270,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
         for (int k : hit) {
           SolverContact& c = begin[k];
           largest = std::max(
-              largest, sweepContact(settings, c, c.impact_normal, c.impact_tangent, c.impact_target, cs.friction, vel));
+              largest, sweepContact(settings, c, c.impact_normal, c.impact_tangent, c.impact_target, c.friction, vel));
         }
         if (largest < tolerance) break;
       }
@@ -281,7 +283,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
     double largest = 0.0;
     for (SolverContact* c = begin; c != end; ++c) {
       largest = std::max(largest, sweepContact(settings, *c, c->normal_impulse, c->tangent_impulse,
-                                               c->target_normal_velocity, cs.friction, vel));
+                                               c->target_normal_velocity, c->friction, vel));
     }
     if (largest < tolerance) break;
     // Stalled: four sweeps took off less than a tenth (by default). Gauss-Seidel on

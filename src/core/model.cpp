@@ -286,6 +286,15 @@ void validateBarrier(const ModelSpec& spec, const std::vector<BodyModel>& bodies
   }
 }
 
+/// A body's surface: its own coefficients, or the scene's.
+void resolveSurface(const BodySpec& spec, const ContactSettings& c, BodyModel& body) {
+  const std::string key = "body '" + spec.name + "': contact.";
+  body.friction = spec.friction.value_or(c.friction);
+  body.restitution = spec.restitution.value_or(c.restitution);
+  detail::requireWithin(body.friction, 0.0, ranges::kMaxFriction, key + "friction", "");
+  detail::requireWithin(body.restitution, 0.0, 1.0, key + "restitution", "");
+}
+
 void validateSleep(const SleepSettings& s) {
   detail::requireWithin(s.linear_velocity, 0.0, ranges::kMaxThresholdSpeed, "sleep.linear_velocity", "m/s");
   detail::requireWithin(s.angular_velocity, 0.0, ranges::kMaxThresholdSpeed, "sleep.angular_velocity", "rad/s");
@@ -342,9 +351,12 @@ Model::Model(const ModelSpec& spec)
     }
   }
   bodies_.reserve(spec.bodies.size());
+  bounces_ = spec.contact.restitution > 0.0;
   for (const BodySpec& b : spec.bodies) {
     bodies_.push_back(buildBody(b));
     BodyModel& body = bodies_.back();
+    resolveSurface(b, spec.contact, body);
+    bounces_ = bounces_ || body.restitution > 0.0;
     buildContactPoints(b, spec.contact, spec.solver, body);
     if (spec.bodies.size() > 1) buildSolid(b, spec.solver, body);
     if (!scene_.empty() && body.contact_points.empty()) {

@@ -55,7 +55,6 @@ double scenePhi(const std::vector<Sdf>& scene, const Vec3& p, Vec3& n) {
 }  // namespace
 
 void stepShapeMatching(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
-  const ContactSettings& cs = model.contact();
   ws.contacts.clear();
   ws.deepest_penetration = 0.0;
   detail::StepScratch& sc = *ws.scratch;
@@ -64,6 +63,8 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
     BodyState& s = state.bodies[i];
     if (s.asleep) continue;
     const BodyModel& b = model.body(i);
+    const double friction = model.friction(static_cast<int>(i), -1),
+                 restitution = model.restitution(static_cast<int>(i), -1);
     const double deepest = minSeparation(model, s, static_cast<int>(i), 0.0);
     if (deepest < 0.0) ws.deepest_penetration = std::max(ws.deepest_penetration, -deepest);
 
@@ -108,7 +109,7 @@ void stepShapeMatching(const Model& model, State& state, const Loads& loads, dou
       Vec3 n;
       if (near && scenePhi(model.scene(), y_i, n) < 0.0) {
         sc.in_contact[i] = 1;
-        v_i = respond(v_i, n, cs.restitution, cs.friction, model.restitutionThreshold());
+        v_i = respond(v_i, n, restitution, friction, model.restitutionThreshold());
         y_i = x_i + h * v_i;
         const double phi = scenePhi(model.scene(), y_i, n);
         if (phi < 0.0) y_i -= phi * n;  // onto the surface

@@ -43,7 +43,9 @@ struct SolverContact {
   };
   int contact = 0;  ///< index in Workspace::contacts
   int body = 0;
-  int other = -1;  ///< -1 for the scene; a sleeping other body has no mass terms (it is ground)
+  int other = -1;            ///< -1 for the scene; a sleeping other body has no mass terms (it is ground)
+  double friction = 0.0;     ///< μ_T of the pair (Model::friction)
+  double restitution = 0.0;  ///< μ_N of the pair (Model::restitution)
   Vec3 normal_W = Vec3::UnitZ(), tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();
   Side a, o;                                                   ///< `body`'s side and the other's
   double normal_mass = 0.0;                                    ///< 1 / (nᵀ K n), kg

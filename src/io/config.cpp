@@ -167,12 +167,26 @@ core::ContactMethod contactMethod(const YAML::Node& node) {
        "unknown method '" + m + "' (impulse, penalty_quadratic, penalty_log_barrier, shape_matching)");
 }
 
+core::CombineRule combineRule(const YAML::Node& node, const std::string& key) {
+  const std::string r = node.IsScalar() ? node.as<std::string>() : show(node);
+  if (r == "min") return core::CombineRule::kMin;
+  if (r == "max") return core::CombineRule::kMax;
+  if (r == "average") return core::CombineRule::kAverage;
+  if (r == "multiply") return core::CombineRule::kMultiply;
+  if (r == "geometric") return core::CombineRule::kGeometric;
+  fail(key, "unknown rule '" + r + "' (min, max, average, multiply, geometric)");
+}
+
 void parseContact(const YAML::Node& node, core::ContactSettings& c) {
-  requireKnownKeys(
-      node, "contact",
-      {"method", "restitution", "friction", "restitution_threshold", "sample_spacing", "iterations", "position_slop",
-       "penalty_stiffness", "penalty_damping", "penalty_buffer", "barrier_strength", "barrier_buffer"});
+  requireKnownKeys(node, "contact",
+                   {"method", "restitution", "friction", "friction_combine", "restitution_combine",
+                    "restitution_threshold", "sample_spacing", "iterations", "position_slop", "penalty_stiffness",
+                    "penalty_damping", "penalty_buffer", "barrier_strength", "barrier_buffer"});
   if (node["method"]) c.method = contactMethod(node["method"]);
+  if (node["friction_combine"]) c.friction_combine = combineRule(node["friction_combine"], "contact.friction_combine");
+  if (node["restitution_combine"]) {
+    c.restitution_combine = combineRule(node["restitution_combine"], "contact.restitution_combine");
+  }
   const std::pair<const char*, double*> numbers[] = {{"restitution", &c.restitution},
                                                      {"friction", &c.friction},
                                                      {"restitution_threshold", &c.restitution_threshold},
@@ -254,7 +268,7 @@ std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& ba
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = "bodies[" + std::to_string(i) + "]";
     const YAML::Node entry = node[i];
-    requireKnownKeys(entry, path, {"name", "urdf", "initial"});
+    requireKnownKeys(entry, path, {"name", "urdf", "initial", "contact"});
     if (!entry["name"]) fail(path + ".name", "every body needs a name");
     if (!entry["urdf"]) fail(path + ".urdf", "every body needs a urdf (a file, or for the node a parameter)");
     BodyEntry b;
@@ -267,6 +281,12 @@ std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& ba
         b.urdf.front() != '/' && b.urdf.rfind("package://", 0) != 0 && b.urdf.rfind("file://", 0) != 0;
     if (relative && !base_dir.empty()) b.urdf = base_dir + "/" + b.urdf;
     if (entry["initial"]) parseInitial(entry["initial"], b.initial, path + ".initial");
+    if (entry["contact"]) {  // the body's own surface
+      const YAML::Node surface = entry["contact"];
+      requireKnownKeys(surface, path + ".contact", {"friction", "restitution"});
+      if (surface["friction"]) b.friction = number(surface["friction"], path + ".contact.friction");
+      if (surface["restitution"]) b.restitution = number(surface["restitution"], path + ".contact.restitution");
+    }
     bodies.push_back(b);
   }
   return bodies;

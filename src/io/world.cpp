@@ -50,6 +50,8 @@ World buildWorld(const SimConfig& config, const BodyLoader& load) {
   for (const BodyEntry& entry : config.bodies) {
     core::BodySpec body = load ? load(entry) : loadUrdfFile(resolveMeshUri(entry.urdf, config.base_dir));
     body.name = entry.name;
+    body.friction = entry.friction;
+    body.restitution = entry.restitution;
     spec.bodies.push_back(body);
   }
   World world{core::Model(spec), {}};

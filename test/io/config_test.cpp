@@ -33,6 +33,8 @@ TEST(Config, ShippedDefaultsAreTheCodeDefaults) {
   EXPECT_EQ(fc.method, cc.method);
   EXPECT_EQ(fc.restitution, cc.restitution);
   EXPECT_EQ(fc.friction, cc.friction);
+  EXPECT_EQ(fc.friction_combine, cc.friction_combine);
+  EXPECT_EQ(fc.restitution_combine, cc.restitution_combine);
   EXPECT_EQ(fc.restitution_threshold, cc.restitution_threshold);
   EXPECT_EQ(fc.sample_spacing, cc.sample_spacing);
   EXPECT_EQ(fc.iterations, cc.iterations);
@@ -262,6 +264,34 @@ bodies:
   EXPECT_EQ(c.bodies[2].urdf, "package://rigid_body_sim/urdf/bunny.urdf");
   EXPECT_EQ(c.bodies[2].initial.v_WL, Vec3(1, 0, 0));
   EXPECT_TRUE(parse("").bodies.empty());
+}
+
+TEST(Config, BodiesHaveTheirOwnSurfacesCombinedByARule) {
+  const io::SimConfig c = parse(R"(
+contact: {friction: 0.9, restitution: 0.1, friction_combine: multiply, restitution_combine: average}
+bodies:
+  - {name: a, urdf: a.urdf, contact: {friction: 0.2, restitution: 0.7}}
+  - {name: b, urdf: b.urdf, contact: {friction: 0.4}}
+  - {name: c, urdf: c.urdf}
+)");
+  EXPECT_EQ(c.model.contact.friction_combine, core::CombineRule::kMultiply);
+  EXPECT_EQ(c.model.contact.restitution_combine, core::CombineRule::kAverage);
+  EXPECT_EQ(c.bodies[0].friction, 0.2);
+  EXPECT_EQ(c.bodies[0].restitution, 0.7);
+  EXPECT_EQ(c.bodies[1].friction, 0.4);
+  EXPECT_FALSE(c.bodies[1].restitution.has_value());
+  EXPECT_FALSE(c.bodies[2].friction.has_value());
+  const std::pair<const char*, core::CombineRule> rules[] = {{"min", core::CombineRule::kMin},
+                                                             {"max", core::CombineRule::kMax},
+                                                             {"average", core::CombineRule::kAverage},
+                                                             {"multiply", core::CombineRule::kMultiply},
+                                                             {"geometric", core::CombineRule::kGeometric}};
+  for (const auto& [name, rule] : rules) {
+    EXPECT_EQ(parse(std::string("contact: {friction_combine: ") + name + "}").model.contact.friction_combine, rule);
+  }
+  expectRefused("contact: {friction_combine: harmonic}", {"'contact.friction_combine'", "unknown rule 'harmonic'"});
+  expectRefused("bodies: [{name: a, urdf: x.urdf, contact: {friction: high}}]", {"'bodies[0].contact.friction'"});
+  expectRefused("bodies: [{name: a, urdf: x.urdf, contact: {grip: 1}}]", {"'bodies[0].contact.grip'", "unknown key"});
 }
 
 TEST(Config, BadBodiesAreRefusedByKey) {

@@ -5,6 +5,7 @@
 // construction, and never modified; step() takes it by const reference.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct BodySpec {
   Mat3 I_C_L = Mat3::Identity();
   std::vector<CollisionShape> collision;  ///< the URDF <collision> elements
   std::vector<FixedLink> fixed_links;     ///< links lumped into the body, in URDF order
+  /// Its surface (config bodies[i].contact); unset: the scene's,
+  /// contact.friction and contact.restitution.
+  std::optional<double> friction, restitution;
 };
 
 /// Creation settings of the whole model.
@@ -67,6 +71,8 @@ struct BodyModel {
   Mat3 I_C_L = Mat3::Identity();             ///< inertia about the centre of mass in L axes, as given
   std::vector<CollisionShape> collision;     ///< the collision shapes in L, as given (for drawing)
   std::vector<FixedLink> fixed_links;        ///< frames fixed to the body (for tf)
+  double friction = 0.5;                     ///< its surface's μ_T (its own, or the scene's)
+  double restitution = 0.0;                  ///< its surface's μ_N (its own, or the scene's)
   std::vector<ContactPoint> contact_points;  ///< collision samples, body frame B, extreme ones first
   std::size_t extreme_points = 0;            ///< how many of contact_points are extreme (see ContactPoint)
   /// The extreme points again as columns (x, y, z, radius), so the plane
@@ -111,6 +117,18 @@ class Model {
   const SleepSettings& sleep() const { return sleep_; }
   const SolverSettings& solver() const { return solver_; }
   const SpeedLimits& limits() const { return limits_; }
+  /// The coefficients of a contact between `body` and `other` (< 0: the
+  /// scene), by the contact settings' combine rules.
+  double friction(int body, int other) const {
+    return combine(contact_.friction_combine, bodies_[body].friction,
+                   other < 0 ? contact_.friction : bodies_[other].friction);
+  }
+  double restitution(int body, int other) const {
+    return combine(contact_.restitution_combine, bodies_[body].restitution,
+                   other < 0 ? contact_.restitution : bodies_[other].restitution);
+  }
+  /// Whether any contact can bounce (some pair's restitution > 0).
+  bool bounces() const { return bounces_; }
   /// max(restitution_threshold, 2 |g| Δt), m/s.
   double restitutionThreshold() const { return restitution_threshold_; }
   /// Per-step decay factors α = e^(−k Δt) of the damping rates.
@@ -129,6 +147,7 @@ class Model {
   SolverSettings solver_;
   SpeedLimits limits_;
   double restitution_threshold_;
+  bool bounces_ = false;
   double linear_decay_;
   double angular_decay_;
 };

@@ -5,6 +5,8 @@
 // `solver.velocity_tolerance`, ...); the fields below say which have none.
 #pragma once
 
+#include <cmath>
+
 namespace rigid_body_sim::core {
 
 /// Velocity damping. Two forms, which add up:
@@ -27,10 +29,45 @@ enum class ContactMethod {
   kShapeMatching,      ///< per-vertex update with collision and friction, then rigidify
 };
 
+/// How a contact's coefficient comes from its two surfaces' (a body's own,
+/// or the scene's: contact.friction and contact.restitution), as each engine
+/// chooses: ODE and Gazebo take the smaller friction, Bullet multiplies both,
+/// Box2D and Jolt take the geometric mean of frictions and the larger restitution.
+enum class CombineRule {
+  kMin,        ///< min(a, b)
+  kMax,        ///< max(a, b)
+  kAverage,    ///< (a + b) / 2
+  kMultiply,   ///< a b
+  kGeometric,  ///< √(a b)
+};
+
+/// The rule applied to two coefficients.
+inline double combine(CombineRule rule, double a, double b) {
+  switch (rule) {
+    case CombineRule::kMin:
+      return a < b ? a : b;
+    case CombineRule::kMax:
+      return a > b ? a : b;
+    case CombineRule::kAverage:
+      return 0.5 * (a + b);
+    case CombineRule::kMultiply:
+      return a * b;
+    case CombineRule::kGeometric:
+      return std::sqrt(a * b);
+  }
+  return a;
+}
+
 struct ContactSettings {
   ContactMethod method = ContactMethod::kImpulse;
+  /// The scene's surface, and every body's without its own (BodySpec).
   double restitution = 0.0;  ///< μ_N ∈ [0, 1]
   double friction = 0.5;     ///< μ_T (Coulomb) ≥ 0
+  /// How a pair's coefficients combine: the smaller friction, as ODE and
+  /// Gazebo; the larger restitution, as Box2D and Jolt (a ball bounces off
+  /// concrete as it would off itself).
+  CombineRule friction_combine = CombineRule::kMin;
+  CombineRule restitution_combine = CombineRule::kMax;
   /// Restitution applies only above this approach speed (m/s), so a resting
   /// body does not jitter; never below 2|g|Δt (docs/physics.md §5.5), whatever is set.
   double restitution_threshold = 0.1;

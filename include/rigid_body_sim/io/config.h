@@ -26,6 +26,8 @@ struct BodyEntry {
   std::string urdf;  ///< a URDF file (relative to the config's folder, or package://), or for
                      ///< the node the name of a parameter holding the URDF
   core::LinkState initial;
+  /// Its surface (bodies[i].contact); unset: the scene's, contact.friction and contact.restitution.
+  std::optional<double> friction, restitution;
 };
 
 struct SimConfig {
