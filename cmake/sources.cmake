@@ -31,6 +31,8 @@ set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/config.cpp
   ${RBS_SOURCE_ROOT}/src/io/input_bounds.cpp
   ${RBS_SOURCE_ROOT}/src/io/mesh_loader.cpp
+  ${RBS_SOURCE_ROOT}/src/io/scene_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/world.cpp
+  ${RBS_SOURCE_ROOT}/src/io/yaml_fields.cpp
 )

@@ -105,16 +105,16 @@ void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, co
 /// coarsest is refused.
 int gridResolution(const CollisionShape& shape, const SolverSettings& solver, const std::string& body) {
   const double triangles = static_cast<double>(shape.mesh.triangles.size());
-  int resolution =
+  const int wanted =
       triangles > solver.large_mesh_triangles ? solver.large_mesh_grid_resolution : solver.mesh_grid_resolution;
-  const int fits = static_cast<int>(std::cbrt(ranges::kMaxGridWork / triangles));
-  if (fits < ranges::kMinGridResolution) {
+  const int resolution = SdfGrid::resolutionWithin(triangles, wanted);
+  if (resolution == 0) {
     detail::fail("body '" + body + "': collision mesh '" + shape.name + "'", detail::str(triangles) + " triangles",
                  "too many for its distance grid in a world (at most " +
                      detail::str(std::floor(ranges::kMaxGridWork / std::pow(ranges::kMinGridResolution, 3))) +
                      "; simplify the mesh)");
   }
-  return std::min(resolution, fits);
+  return resolution;
 }
 
 /// The body's solid in B: the union of its collision shapes, each posed by

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "rigid_body_sim/core/ranges.h"
+
 namespace rigid_body_sim::core {
 
 double pointTriangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -41,6 +43,11 @@ double solidAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 }  // namespace
+
+int SdfGrid::resolutionWithin(double triangles, int wanted) {
+  const int fits = static_cast<int>(std::cbrt(ranges::kMaxGridWork / std::max(triangles, 1.0)));
+  return fits < ranges::kMinGridResolution ? 0 : std::min(wanted, fits);
+}
 
 std::shared_ptr<const SdfGrid> SdfGrid::fromMesh(const TriangleMesh& mesh, int resolution) {
   auto grid = std::make_shared<SdfGrid>();

@@ -9,153 +9,15 @@
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/orientation.h"
 #include "rigid_body_sim/io/urdf_loader.h"
+#include "scene_config.h"
+#include "yaml_fields.h"
 
 namespace rigid_body_sim::io {
 namespace {
 
 using core::Quat;
 using core::Vec3;
-
-std::string show(const YAML::Node& node) {
-  YAML::Emitter out;
-  out << YAML::Flow << node;
-  return out.c_str();
-}
-
-[[noreturn]] void fail(const std::string& key, const std::string& why) {
-  throw ConfigError("config key '" + key + "': " + why);
-}
-
-std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
-
-/// Refuses keys outside `known` (a typo must not silently fall back to a default).
-void requireKnownKeys(const YAML::Node& map, const std::string& path, const std::set<std::string>& known) {
-  if (!map.IsMap()) fail(path.empty() ? "<root>" : path, "expected a map, got " + show(map));
-  for (const auto& kv : map) {
-    if (!kv.first.IsScalar()) fail(path.empty() ? "<root>" : path, "a key must be a plain name, got " + show(kv.first));
-    const std::string key = kv.first.as<std::string>();
-    if (!known.count(key)) {
-      std::string list;
-      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-      fail(join(path, key), "unknown key (known here: " + list + ")");
-    }
-  }
-}
-
-double number(const YAML::Node& node, const std::string& key) {
-  double x = 0.0;
-  try {
-    if (!node.IsScalar()) throw YAML::Exception(YAML::Mark(), "");
-    x = node.as<double>();
-  } catch (const YAML::Exception&) {
-    fail(key, "expected a number, got " + show(node));
-  }
-  if (!std::isfinite(x)) fail(key, "expected a finite number, got " + show(node));
-  return x;
-}
-
-Vec3 vec3(const YAML::Node& node, const std::string& key) {
-  if (!node.IsSequence() || node.size() != 3) fail(key, "expected [x, y, z], got " + show(node));
-  return {number(node[0], key + "[0]"), number(node[1], key + "[1]"), number(node[2], key + "[2]")};
-}
-
-bool boolean(const YAML::Node& node, const std::string& key) {
-  try {
-    if (node.IsScalar()) return node.as<bool>();
-  } catch (const YAML::Exception&) {
-  }
-  fail(key, "expected true or false, got " + show(node));
-}
-
-double positiveNumber(const YAML::Node& node, const std::string& key) {
-  const double x = number(node, key);
-  if (!(x > 0.0)) fail(key, "must be > 0, got " + show(node));
-  return x;
-}
-
-Quat orientation(const YAML::Node& node, const std::string& path) {
-  if (node["rpy"] && node["quaternion"]) fail(path, "give " + path + ".rpy or " + path + ".quaternion, not both");
-  if (node["rpy"]) return quaternionFromRpy(vec3(node["rpy"], join(path, "rpy")));
-  if (!node["quaternion"]) return Quat::Identity();
-  const YAML::Node q = node["quaternion"];
-  const std::string key = join(path, "quaternion");
-  if (!q.IsSequence() || q.size() != 4) fail(key, "expected [x, y, z, w], got " + show(q));
-  const Quat value = quaternionFromXyzw(number(q[0], key + "[0]"), number(q[1], key + "[1]"), number(q[2], key + "[2]"),
-                                        number(q[3], key + "[3]"));
-  if (std::abs(value.norm() - 1.0) > 1e-3) {
-    std::ostringstream os;
-    os << value.norm();
-    fail(key, "norm " + os.str() + " is not 1 (within 1e-3): " + show(q));
-  }
-  return value.normalized();
-}
-
-std::string text(const YAML::Node& node, const std::string& key) {
-  if (!node.IsScalar() || node.as<std::string>().empty()) fail(key, "expected a non-empty string, got " + show(node));
-  return node.as<std::string>();
-}
-
-/// One scene entry: a primitive or a composition, with an optional pose.
-core::Sdf parseShape(const YAML::Node& node, const std::string& path) {
-  if (!node.IsMap() || !node["type"]) fail(path, "expected a map with a 'type', got " + show(node));
-  const std::string type = text(node["type"], join(path, "type"));
-  const std::set<std::string> pose_keys{"type", "position", "rpy", "quaternion"};
-  auto known = [&](std::initializer_list<std::string> extra) {
-    std::set<std::string> keys = pose_keys;
-    keys.insert(extra.begin(), extra.end());
-    requireKnownKeys(node, path, keys);
-  };
-  core::Sdf shape = core::Sdf::sphere(1.0);
-  if (type == "plane") {
-    known({"normal"});
-    const Vec3 normal = node["normal"] ? vec3(node["normal"], join(path, "normal")) : Vec3::UnitZ();
-    if (!(normal.norm() > 0.0)) fail(join(path, "normal"), "must not be zero");
-    shape = core::Sdf::plane(normal);
-  } else if (type == "box") {
-    known({"size"});
-    if (!node["size"]) fail(join(path, "size"), "a box needs size: [x, y, z] (m)");
-    const Vec3 size = vec3(node["size"], join(path, "size"));
-    if (!(size.minCoeff() > 0.0)) fail(join(path, "size"), "must be > 0, got " + show(node["size"]));
-    shape = core::Sdf::box(size);
-  } else if (type == "sphere") {
-    known({"radius"});
-    if (!node["radius"]) fail(join(path, "radius"), "a sphere needs a radius (m)");
-    shape = core::Sdf::sphere(positiveNumber(node["radius"], join(path, "radius")));
-  } else if (type == "capsule" || type == "cylinder") {
-    known({"radius", "length"});
-    if (!node["radius"] || !node["length"]) fail(path, "a " + type + " needs radius and length (m)");
-    const double r = positiveNumber(node["radius"], join(path, "radius"));
-    const double l = positiveNumber(node["length"], join(path, "length"));
-    shape = type == "capsule" ? core::Sdf::capsule(r, l) : core::Sdf::cylinder(r, l);
-  } else if (type == "union" || type == "intersection" || type == "difference") {
-    known({"shapes"});
-    const YAML::Node list = node["shapes"];
-    const std::size_t least = type == "difference" ? 2 : 1;
-    if (!list || !list.IsSequence() || list.size() < least) {
-      fail(join(path, "shapes"), "a " + type + " needs a list of at least " + std::to_string(least) + " shapes");
-    }
-    std::vector<core::Sdf> children;
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      children.push_back(parseShape(list[i], join(path, "shapes") + "[" + std::to_string(i) + "]"));
-    }
-    shape = type == "union"          ? core::Sdf::unite(std::move(children))
-            : type == "intersection" ? core::Sdf::intersect(std::move(children))
-                                     : core::Sdf::subtract(std::move(children));
-  } else {
-    fail(join(path, "type"),
-         "unknown shape '" + type + "' (plane, box, sphere, capsule, cylinder, union, intersection, difference)");
-  }
-  const Vec3 position = node["position"] ? vec3(node["position"], join(path, "position")) : Vec3::Zero();
-  return shape.transformed({orientation(node, path), position});
-}
-
-std::vector<core::Sdf> parseScene(const YAML::Node& node) {
-  if (!node.IsSequence()) fail("scene", "expected a list of shapes, got " + show(node));
-  std::vector<core::Sdf> scene;
-  for (std::size_t i = 0; i < node.size(); ++i)
-    scene.push_back(parseShape(node[i], "scene[" + std::to_string(i) + "]"));
-  return scene;
-}
+using namespace yaml_fields;
 
 core::ContactMethod contactMethod(const YAML::Node& node) {
   const std::string m = node.IsScalar() ? node.as<std::string>() : show(node);
@@ -305,7 +167,7 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir) {
   if (root["gyroscopic"]) c.model.gyroscopic = boolean(root["gyroscopic"], "gyroscopic");
   if (root["damping"]) parseDamping(root["damping"], c.model.damping);
   if (root["initial"]) parseInitial(root["initial"], c.initial);
-  if (root["scene"]) c.model.scene = parseScene(root["scene"]);
+  if (root["scene"]) c.model.scene = parseScene(root["scene"], base_dir);
   if (root["contact"]) parseContact(root["contact"], c.model.contact);
   if (root["sleep"]) parseSleep(root["sleep"], c.model.sleep);
   if (root["solver"]) parseSolver(root["solver"], c.model.solver);

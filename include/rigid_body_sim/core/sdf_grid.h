@@ -18,6 +18,11 @@ class SdfGrid {
   /// says inside (robust to small holes and flipped triangles).
   static std::shared_ptr<const SdfGrid> fromMesh(const TriangleMesh& mesh, int resolution);
 
+  /// The resolution to build a grid of `triangles` at: `wanted`, or less so
+  /// that resolution³ × triangles stays within ranges::kMaxGridWork (the
+  /// build's cost); 0 when even ranges::kMinGridResolution does not fit.
+  static int resolutionWithin(double triangles, int wanted);
+
   /// φ at p (grid frame, m), trilinear between the samples, and its gradient
   /// (normalized). Beyond the grid: the value at the nearest grid point plus
   /// the distance to it. Any input is safe: a point with a NaN or infinite

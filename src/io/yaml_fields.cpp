@@ -1,0 +1,93 @@
+// The config parser's typed fields (yaml_fields.h).
+#include "yaml_fields.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/orientation.h"
+
+namespace rigid_body_sim::io::yaml_fields {
+
+using core::Quat;
+using core::Vec3;
+
+std::string show(const YAML::Node& node) {
+  YAML::Emitter out;
+  out << YAML::Flow << node;
+  return out.c_str();
+}
+
+[[noreturn]] void fail(const std::string& key, const std::string& why) {
+  throw ConfigError("config key '" + key + "': " + why);
+}
+
+std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+void requireKnownKeys(const YAML::Node& map, const std::string& path, const std::set<std::string>& known) {
+  if (!map.IsMap()) fail(path.empty() ? "<root>" : path, "expected a map, got " + show(map));
+  for (const auto& kv : map) {
+    if (!kv.first.IsScalar()) fail(path.empty() ? "<root>" : path, "a key must be a plain name, got " + show(kv.first));
+    const std::string key = kv.first.as<std::string>();
+    if (!known.count(key)) {
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      fail(join(path, key), "unknown key (known here: " + list + ")");
+    }
+  }
+}
+
+double number(const YAML::Node& node, const std::string& key) {
+  double x = 0.0;
+  try {
+    if (!node.IsScalar()) throw YAML::Exception(YAML::Mark(), "");
+    x = node.as<double>();
+  } catch (const YAML::Exception&) {
+    fail(key, "expected a number, got " + show(node));
+  }
+  if (!std::isfinite(x)) fail(key, "expected a finite number, got " + show(node));
+  return x;
+}
+
+Vec3 vec3(const YAML::Node& node, const std::string& key) {
+  if (!node.IsSequence() || node.size() != 3) fail(key, "expected [x, y, z], got " + show(node));
+  return {number(node[0], key + "[0]"), number(node[1], key + "[1]"), number(node[2], key + "[2]")};
+}
+
+bool boolean(const YAML::Node& node, const std::string& key) {
+  try {
+    if (node.IsScalar()) return node.as<bool>();
+  } catch (const YAML::Exception&) {
+  }
+  fail(key, "expected true or false, got " + show(node));
+}
+
+double positiveNumber(const YAML::Node& node, const std::string& key) {
+  const double x = number(node, key);
+  if (!(x > 0.0)) fail(key, "must be > 0, got " + show(node));
+  return x;
+}
+
+Quat orientation(const YAML::Node& node, const std::string& path) {
+  if (node["rpy"] && node["quaternion"]) fail(path, "give " + path + ".rpy or " + path + ".quaternion, not both");
+  if (node["rpy"]) return quaternionFromRpy(vec3(node["rpy"], join(path, "rpy")));
+  if (!node["quaternion"]) return Quat::Identity();
+  const YAML::Node q = node["quaternion"];
+  const std::string key = join(path, "quaternion");
+  if (!q.IsSequence() || q.size() != 4) fail(key, "expected [x, y, z, w], got " + show(q));
+  const Quat value = quaternionFromXyzw(number(q[0], key + "[0]"), number(q[1], key + "[1]"), number(q[2], key + "[2]"),
+                                        number(q[3], key + "[3]"));
+  if (std::abs(value.norm() - 1.0) > 1e-3) {
+    std::ostringstream os;
+    os << value.norm();
+    fail(key, "norm " + os.str() + " is not 1 (within 1e-3): " + show(q));
+  }
+  return value.normalized();
+}
+
+std::string text(const YAML::Node& node, const std::string& key) {
+  if (!node.IsScalar() || node.as<std::string>().empty()) fail(key, "expected a non-empty string, got " + show(node));
+  return node.as<std::string>();
+}
+
+}  // namespace rigid_body_sim::io::yaml_fields
