@@ -24,6 +24,8 @@ RBS_APT_PACKAGES=(
   libgeometry-msgs-dev ros-geometry-msgs libnav-msgs-dev ros-nav-msgs libstd-srvs-dev ros-std-srvs
   libvisualization-msgs-dev ros-visualization-msgs libros-rosgraph-msgs-dev ros-std-msgs libstd-msgs-dev
   libtf2-ros-dev libtf2-dev librostest-dev python3-rostest python3-roslaunch
+  # the node's live tuning (~physics): the cfg generator and the C++ server
+  python3-dynamic-reconfigure libdynamic-reconfigure-config-init-mutex-dev
   # running and poking at the node (rosrun, roslaunch, rostopic, rosservice, the demo's printer)
   rosbash python3-rospy python3-rostopic python3-rosservice python3-rosnode
   python3-nav-msgs python3-geometry-msgs python3-std-srvs python3-tf2-msgs python3-rosgraph-msgs

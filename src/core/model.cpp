@@ -263,25 +263,25 @@ void validatePenalty(const ContactSettings& c, double dt, const std::vector<Body
 /// bring to one point at the speed limits, ½ m (v + ω R)² (against another
 /// body, the closing speed of both), plus gravity's work across the buffer
 /// (docs/physics.md §7.2). Otherwise the speeds it cannot stop are refused.
-void validateBarrier(const ModelSpec& spec, const std::vector<BodyModel>& bodies) {
-  const ContactSettings& c = spec.contact;
+void validateBarrier(const ContactSettings& c, const SpeedLimits& limits, const Vec3& gravity,
+                     const std::vector<BodyModel>& bodies) {
   if (c.method != ContactMethod::kPenaltyLogBarrier) return;
   const double holds = barrierPotential(c, kBarrierFloor);
-  const auto reach = [&](const BodyModel& b) { return spec.limits.linear + spec.limits.angular * b.bound_radius; };
+  const auto reach = [&](const BodyModel& b) { return limits.linear + limits.angular * b.bound_radius; };
   double fastest = 0.0;
   if (bodies.size() > 1) {
     for (const BodyModel& b : bodies) fastest = std::max(fastest, reach(b));
   }
   for (const BodyModel& b : bodies) {
     const double closing = reach(b) + fastest;
-    const double brings = 0.5 * b.mass * closing * closing + b.mass * spec.gravity_W.norm() * c.barrier_buffer;
+    const double brings = 0.5 * b.mass * closing * closing + b.mass * gravity.norm() * c.barrier_buffer;
     if (brings > holds) {
       detail::fail("contact.barrier_strength", detail::str(c.barrier_strength),
                    "holds at most " + detail::str(holds) + " J at a contact point, but body '" + b.name +
                        "' can bring " + detail::str(brings) + " J to one at limits.max_linear_speed " +
-                       detail::str(spec.limits.linear) + " m/s and limits.max_angular_speed " +
-                       detail::str(spec.limits.angular) + " rad/s; raise it to at least " +
-                       detail::str(c.barrier_strength * brings / holds) + " or lower the limits");
+                       detail::str(limits.linear) + " m/s and limits.max_angular_speed " + detail::str(limits.angular) +
+                       " rad/s; raise it to at least " + detail::str(c.barrier_strength * brings / holds) +
+                       " or lower the limits");
     }
   }
 }
@@ -291,8 +291,18 @@ void resolveSurface(const BodySpec& spec, const ContactSettings& c, BodyModel& b
   const std::string key = "body '" + spec.name + "': contact.";
   body.friction = spec.friction.value_or(c.friction);
   body.restitution = spec.restitution.value_or(c.restitution);
+  body.own_friction = spec.friction.has_value();
+  body.own_restitution = spec.restitution.has_value();
   detail::requireWithin(body.friction, 0.0, ranges::kMaxFriction, key + "friction", "");
   detail::requireWithin(body.restitution, 0.0, 1.0, key + "restitution", "");
+}
+
+void validateGravity(const Vec3& g) {
+  detail::requireFinite(g, "gravity");
+  if (g.norm() > ranges::kMaxGravity) {
+    detail::fail("gravity", detail::str(g),
+                 "|g| = " + detail::str(g.norm()) + " must be at most " + detail::str(ranges::kMaxGravity) + " m/s^2");
+  }
 }
 
 void validateSleep(const SleepSettings& s) {
@@ -332,12 +342,7 @@ Model::Model(const ModelSpec& spec)
       limits_(spec.limits) {
   if (spec.bodies.empty()) detail::fail("bodies", "[]", "the model needs at least one body");
   detail::requireWithin(spec.dt, ranges::kMinDt, ranges::kMaxDt, "dt", "s");
-  detail::requireFinite(spec.gravity_W, "gravity");
-  if (spec.gravity_W.norm() > ranges::kMaxGravity) {
-    detail::fail("gravity", detail::str(spec.gravity_W),
-                 "|g| = " + detail::str(spec.gravity_W.norm()) + " must be at most " +
-                     detail::str(ranges::kMaxGravity) + " m/s^2");
-  }
+  validateGravity(spec.gravity_W);
   validateLimits(spec.limits);
   validateContact(spec.contact);
   validateSleep(spec.sleep);
@@ -351,12 +356,10 @@ Model::Model(const ModelSpec& spec)
     }
   }
   bodies_.reserve(spec.bodies.size());
-  bounces_ = spec.contact.restitution > 0.0;
   for (const BodySpec& b : spec.bodies) {
     bodies_.push_back(buildBody(b));
     BodyModel& body = bodies_.back();
     resolveSurface(b, spec.contact, body);
-    bounces_ = bounces_ || body.restitution > 0.0;
     buildContactPoints(b, spec.contact, spec.solver, body);
     if (spec.bodies.size() > 1) buildSolid(b, spec.solver, body);
     if (!scene_.empty() && body.contact_points.empty()) {
@@ -369,12 +372,38 @@ Model::Model(const ModelSpec& spec)
                    "shape matching needs collision points that span three dimensions");
     }
   }
-  restitution_threshold_ = std::max(spec.contact.restitution_threshold, 2.0 * gravity_W_.norm() * dt_);
   validateDamping(spec.damping, spec.dt, bodies_);
   validatePenalty(spec.contact, spec.dt, bodies_);
-  validateBarrier(spec, bodies_);
-  linear_decay_ = std::exp(-spec.damping.linear_rate * spec.dt);
-  angular_decay_ = std::exp(-spec.damping.angular_rate * spec.dt);
+  validateBarrier(spec.contact, spec.limits, spec.gravity_W, bodies_);
+  deriveSettings();
+}
+
+void Model::deriveSettings() {
+  restitution_threshold_ = std::max(contact_.restitution_threshold, 2.0 * gravity_W_.norm() * dt_);
+  linear_decay_ = std::exp(-damping_.linear_rate * dt_);
+  angular_decay_ = std::exp(-damping_.angular_rate * dt_);
+  bounces_ = contact_.restitution > 0.0;
+  for (BodyModel& b : bodies_) {
+    if (!b.own_friction) b.friction = contact_.friction;
+    if (!b.own_restitution) b.restitution = contact_.restitution;
+    bounces_ = bounces_ || b.restitution > 0.0;
+  }
+}
+
+Model Model::retuned(const Tuning& t) const {
+  validateGravity(t.gravity_W);
+  ContactSettings contact = contact_;
+  contact.friction = t.friction;
+  contact.restitution = t.restitution;
+  validateContact(contact);
+  validateDamping(t.damping, dt_, bodies_);
+  validateBarrier(contact, limits_, t.gravity_W, bodies_);
+  Model m = *this;  // the bodies' distance grids are shared, not copied
+  m.gravity_W_ = t.gravity_W;
+  m.damping_ = t.damping;
+  m.contact_ = contact;
+  m.deriveSettings();
+  return m;
 }
 
 }  // namespace rigid_body_sim::core

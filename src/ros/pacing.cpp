@@ -81,10 +81,10 @@ void SimNode::run() {
   rebaseClock();
   auto next_tick = Clock::now();
   auto last_tick = next_tick;
-  const double rtf = settings_.realtime_factor;
   if (settings_.report_timing) tick_periods_.reserve(1 << 20);
   while (ros::ok() && !interrupted()) {
     const auto tick_start = Clock::now();
+    const double rtf = settings_.realtime_factor;  // ~physics may change it between ticks
     if (settings_.report_timing) tick_periods_.push_back(std::chrono::duration<double>(tick_start - last_tick).count());
     last_tick = tick_start;
     if (!paused_ && rtf > 0.0) {

@@ -8,6 +8,16 @@
 #include <sstream>
 
 namespace rigid_body_sim::node {
+
+void requireParamWithin(double x, const std::string& key, double lo, double hi, const std::string& unit) {
+  if (!std::isfinite(x) || x < lo || x > hi) {
+    std::ostringstream os;
+    os << "parameter '~" << key << "' = " << x << ": must be within [" << lo << ", " << hi << "]"
+       << (unit.empty() ? "" : " " + unit);
+    throw io::ConfigError(os.str());
+  }
+}
+
 namespace {
 
 /// A number parameter within [lo, hi]: anything outside is refused with the
@@ -22,12 +32,7 @@ double number(const XmlRpc::XmlRpcValue& v, const std::string& key, double lo, d
   } else {
     throw io::ConfigError("parameter '~" + key + "': expected a number, got " + v.toXml());
   }
-  if (!std::isfinite(x) || x < lo || x > hi) {
-    std::ostringstream os;
-    os << "parameter '~" << key << "' = " << x << ": must be within [" << lo << ", " << hi << "]"
-       << (unit.empty() ? "" : " " + unit);
-    throw io::ConfigError(os.str());
-  }
+  requireParamWithin(x, key, lo, hi, unit);
   return x;
 }
 
@@ -76,7 +81,8 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   NodeSettings& n = p.node;
   const std::set<std::string> node_keys{"rate",           "realtime_factor", "publish_rate",     "world_frame",
                                         "wrench_timeout", "covariance",      "scene_size",       "report_timing",
-                                        "config_file",    "publish_tf",      "body_states_rate", "body_states_twist"};
+                                        "config_file",    "publish_tf",      "body_states_rate", "body_states_twist",
+                                        "physics"};  // ~physics: the dynamic_reconfigure server's own
   using R = NodeSettings;
   if (all.hasMember("rate")) n.rate = number(all["rate"], "rate", R::kMinRate, R::kMaxRate, "Hz");
   if (all.hasMember("realtime_factor")) {

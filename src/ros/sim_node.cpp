@@ -129,6 +129,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
                pnh_.advertiseService("pause", &SimNode::pause, this),
                pnh_.advertiseService("unpause", &SimNode::unpause, this),
                pnh_.advertiseService("step", &SimNode::step, this)};
+  startReconfigure();
   scene_pub_.publish(scene_markers_);
   body_pub_.publish(body_markers_);
   publishFixedFrames();

@@ -70,17 +70,19 @@ bool SimNode::reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& re
 }
 
 bool SimNode::pause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
-  paused_ = true;
+  setPaused(true);
+  showPhysics();
   res.success = true;
   res.message = "paused at t = " + now();
   return true;
 }
 
 bool SimNode::unpause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
-  paused_ = false;
   // Do not make up for the paused time; the wall-anchored clock resumes at
   // wall time, or, if steps taken while paused put it ahead, waits for it.
+  paused_ = false;
   const double lead = rebaseClock();
+  showPhysics();
   res.success = true;
   res.message = "running from t = " + now();
   if (lead > 0.0 && settings_.realtime_factor > 0.0) {

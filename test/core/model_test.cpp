@@ -3,9 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 #include "../test_util.h"
+#include "rigid_body_sim/core/step.h"
 
 namespace rigid_body_sim::test {
 namespace {
@@ -148,6 +150,65 @@ TEST(Model, PrincipalFrameOfANonDiagonalInertia) {
   const core::Model m(s);
   const Mat3 P = m.body(0).q_LB.toRotationMatrix();
   EXPECT_LT((P * m.body(0).inertia_B.asDiagonal() * P.transpose() - s.bodies[0].I_C_L).norm(), 1e-14);
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
+
+namespace rigid_body_sim::test {
+namespace {
+
+TEST(ModelTuning, RetunedChangesTheSettingsAndKeepsEachBodysOwnSurface) {
+  core::ModelSpec s = spec(boxBody(Vec3(0.2, 0.1, 0.05)), 1e-3, Vec3(0, 0, -9.81));
+  core::BodySpec ball = ballBody(0.1);
+  ball.friction = 0.9;  // its own
+  s.bodies.push_back(ball);
+  s.scene = {core::Sdf::plane(Vec3::UnitZ())};
+  const core::Model model(s);
+  core::Tuning t = model.tuning();
+  EXPECT_EQ(t.gravity_W, Vec3(0, 0, -9.81));
+  t.gravity_W = Vec3(0, 0, -2);
+  t.damping.linear_rate = 0.5;
+  t.friction = 0.3;
+  t.restitution = 0.4;
+  const core::Model tuned = model.retuned(t);
+  EXPECT_EQ(tuned.gravity(), Vec3(0, 0, -2));
+  EXPECT_EQ(tuned.linearDecay(), std::exp(-0.5 * 1e-3));
+  EXPECT_EQ(tuned.friction(0, -1), 0.3);  // the box follows the scene's surface
+  EXPECT_EQ(tuned.friction(1, -1), 0.3);  // min(0.9, 0.3)
+  EXPECT_EQ(tuned.body(1).friction, 0.9);
+  EXPECT_TRUE(tuned.bounces());
+  EXPECT_EQ(tuned.restitutionThreshold(), model.restitutionThreshold());  // 0.1 m/s > 2 |g| dt either way
+  // The original is untouched.
+  EXPECT_EQ(model.gravity(), Vec3(0, 0, -9.81));
+  EXPECT_EQ(model.friction(0, -1), 0.5);
+  EXPECT_FALSE(model.bounces());
+  // A free fall under the new gravity: the Euler-Cromer velocity exactly.
+  // A free fall under the new gravity and decay: v_N = h g α (1 − α^N) / (1 − α).
+  core::State state;
+  core::LinkState high;
+  high.p_WL = Vec3(0, 0, 100);
+  state.bodies.push_back(core::bodyStateFromLink(tuned.body(0), high));
+  high.p_WL = Vec3(5, 0, 100);
+  state.bodies.push_back(core::bodyStateFromLink(tuned.body(1), high));
+  const int steps = 1000;
+  for (int n = 0; n < steps; ++n) core::step(tuned, state);
+  const double a = tuned.linearDecay(), expected = 1e-3 * -2.0 * a * (1 - std::pow(a, steps)) / (1 - a);
+  EXPECT_NEAR(state.bodies[0].v_WB.z(), expected, 1e-12 * std::abs(expected));
+}
+
+TEST(ModelTuning, ARefusedTuningNamesTheKeyAndChangesNothing) {
+  const core::Model model(spec(boxBody(Vec3(0.2, 0.1, 0.05)), 1e-3, Vec3(0, 0, -9.81)));
+  core::Tuning t = model.tuning();
+  t.gravity_W = Vec3(1000, 1000, 0);
+  expectThrowsWith<std::invalid_argument>([&] { (void)model.retuned(t); }, {"gravity", "must be at most 1000"});
+  t = model.tuning();
+  t.friction = std::nan("");
+  expectThrowsWith<std::invalid_argument>([&] { (void)model.retuned(t); }, {"contact.friction"});
+  t = model.tuning();
+  t.damping.linear_rate = -1.0;
+  expectThrowsWith<std::invalid_argument>([&] { (void)model.retuned(t); }, {"damping.linear"});
+  EXPECT_EQ(model.gravity(), Vec3(0, 0, -9.81));
 }
 
 }  // namespace

@@ -60,21 +60,22 @@ struct ModelSpec {
 
 /// One body as the integrator uses it: derived and validated quantities.
 struct BodyModel {
-  std::string name;                          ///< the body's name in the world
-  std::string link;                          ///< its URDF root link name
-  double mass = 1.0;                         ///< kg
-  double inv_mass = 1.0;                     ///< 1/kg
-  Vec3 inertia_B = Vec3::Ones();             ///< principal moments, kg·m²
-  Vec3 inv_inertia_B = Vec3::Ones();         ///< 1/(kg·m²)
-  Vec3 p_LB = Vec3::Zero();                  ///< B's origin (the centre of mass) in L (m)
-  Quat q_LB = Quat::Identity();              ///< principal axes B in L
-  Mat3 I_C_L = Mat3::Identity();             ///< inertia about the centre of mass in L axes, as given
-  std::vector<CollisionShape> collision;     ///< the collision shapes in L, as given (for drawing)
-  std::vector<FixedLink> fixed_links;        ///< frames fixed to the body (for tf)
-  double friction = 0.5;                     ///< its surface's μ_T (its own, or the scene's)
-  double restitution = 0.0;                  ///< its surface's μ_N (its own, or the scene's)
-  std::vector<ContactPoint> contact_points;  ///< collision samples, body frame B, extreme ones first
-  std::size_t extreme_points = 0;            ///< how many of contact_points are extreme (see ContactPoint)
+  std::string name;                                    ///< the body's name in the world
+  std::string link;                                    ///< its URDF root link name
+  double mass = 1.0;                                   ///< kg
+  double inv_mass = 1.0;                               ///< 1/kg
+  Vec3 inertia_B = Vec3::Ones();                       ///< principal moments, kg·m²
+  Vec3 inv_inertia_B = Vec3::Ones();                   ///< 1/(kg·m²)
+  Vec3 p_LB = Vec3::Zero();                            ///< B's origin (the centre of mass) in L (m)
+  Quat q_LB = Quat::Identity();                        ///< principal axes B in L
+  Mat3 I_C_L = Mat3::Identity();                       ///< inertia about the centre of mass in L axes, as given
+  std::vector<CollisionShape> collision;               ///< the collision shapes in L, as given (for drawing)
+  std::vector<FixedLink> fixed_links;                  ///< frames fixed to the body (for tf)
+  double friction = 0.5;                               ///< its surface's μ_T (its own, or the scene's)
+  double restitution = 0.0;                            ///< its surface's μ_N (its own, or the scene's)
+  bool own_friction = false, own_restitution = false;  ///< its own (BodySpec), not the scene's
+  std::vector<ContactPoint> contact_points;            ///< collision samples, body frame B, extreme ones first
+  std::size_t extreme_points = 0;                      ///< how many of contact_points are extreme (see ContactPoint)
   /// The extreme points again as columns (x, y, z, radius), so the plane
   /// test over a large mesh runs as vector arithmetic.
   std::vector<double> extreme_x, extreme_y, extreme_z, extreme_radius;
@@ -99,6 +100,15 @@ struct BodyModel {
   Mat3 points_inv_spread = Mat3::Zero();
 };
 
+/// The settings that may change between steps without rebuilding the
+/// bodies (the node's dynamic_reconfigure server, ~physics).
+struct Tuning {
+  Vec3 gravity_W = Vec3(0.0, 0.0, -9.81);  ///< m/s²
+  Damping damping;
+  double friction = 0.5;     ///< the scene's surface, and every body's without its own
+  double restitution = 0.0;  ///< likewise
+};
+
 class Model {
  public:
   /// Validates `spec` and derives the principal-axes form of every body.
@@ -117,6 +127,10 @@ class Model {
   const SleepSettings& sleep() const { return sleep_; }
   const SolverSettings& solver() const { return solver_; }
   const SpeedLimits& limits() const { return limits_; }
+  Tuning tuning() const { return {gravity_W_, damping_, contact_.friction, contact_.restitution}; }
+  /// This model with `t`'s settings, validated as the constructor validates
+  /// a spec (std::invalid_argument naming the key); this one is unchanged.
+  Model retuned(const Tuning& t) const;
   /// The coefficients of a contact between `body` and `other` (< 0: the
   /// scene), by the contact settings' combine rules.
   double friction(int body, int other) const {
@@ -146,6 +160,10 @@ class Model {
   SleepSettings sleep_;
   SolverSettings solver_;
   SpeedLimits limits_;
+  /// What follows from the settings: the restitution threshold, the decay
+  /// factors, every body's surface that is the scene's, whether anything bounces.
+  void deriveSettings();
+
   double restitution_threshold_;
   bool bounces_ = false;
   double linear_decay_;

@@ -54,6 +54,11 @@ struct NodeParams {
 /// key's name (io::ConfigError).
 NodeParams readParams(const ros::NodeHandle& private_nh);
 
+/// Refuses x outside [lo, hi] (or not finite) with a message naming the
+/// parameter `~key` and the range: the check of every number parameter, at
+/// start and when ~physics changes one.
+void requireParamWithin(double x, const std::string& key, double lo, double hi, const std::string& unit);
+
 /// A parameter tree as YAML (structs → maps, arrays → sequences).
 YAML::Node toYaml(const XmlRpc::XmlRpcValue& value);
 

@@ -3,6 +3,7 @@
 // turns services and the ~wrench topic into loads, impulses and new states.
 #pragma once
 
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/WrenchStamped.h>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
@@ -11,6 +12,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +23,7 @@
 #include "rigid_body_sim/BodyStates.h"
 #include "rigid_body_sim/ClearWrenches.h"
 #include "rigid_body_sim/GetState.h"
+#include "rigid_body_sim/PhysicsConfig.h"
 #include "rigid_body_sim/SetState.h"
 #include "rigid_body_sim/Step.h"
 #include "rigid_body_sim/core/step.h"
@@ -70,6 +73,17 @@ class SimNode {
   bool step(Step::Request& req, Step::Response& res);
   void onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& msg);
 
+  // Live tuning (reconfigure.cpp): the dynamic_reconfigure server ~physics.
+  void startReconfigure();
+  /// The settings ~physics shows: the model's and the node's as they are now.
+  PhysicsConfig physicsNow() const;
+  /// Applies what it can of `config` between steps; a value the checks
+  /// refuse is put back to the one in force, with a warning naming it.
+  void onReconfigure(PhysicsConfig& config, uint32_t level);
+  /// Tells ~physics of a change made elsewhere (the pause services).
+  void showPhysics();
+  void setPaused(bool paused);
+
   /// The body named `name` ("" = the only body), or an error message.
   std::optional<int> findBody(const std::string& name, std::string& error) const;
   /// The axes a request's vectors are given in, for the body it addresses.
@@ -98,7 +112,7 @@ class SimNode {
 
   ros::NodeHandle nh_, pnh_;
   NodeParams params_;
-  const NodeSettings& settings_ = params_.node;
+  const NodeSettings& settings_ = params_.node;  ///< ~physics changes params_.node
   io::World world_;
   const core::Model& model_ = world_.model;
   core::State& state_ = world_.state;
@@ -142,6 +156,8 @@ class SimNode {
   std::optional<MarkersResend> markers_resend_;
   std::vector<ros::Subscriber> wrench_subs_;  ///< per body
   std::vector<ros::ServiceServer> services_;
+  boost::recursive_mutex reconfigure_mutex_;
+  std::unique_ptr<dynamic_reconfigure::Server<PhysicsConfig>> reconfigure_;
 };
 
 }  // namespace rigid_body_sim::node

@@ -1,0 +1,105 @@
+// Live tuning: the dynamic_reconfigure server ~physics (cfg/Physics.cfg).
+// Its callbacks run in the loop's spinOnce, between steps: a new model
+// (core::Model::retuned, validated as a config is) replaces the old one
+// there, as Gazebo's set_physics_properties does, and every body wakes.
+#include <functional>
+
+#include "rigid_body_sim/ros/sim_node.h"
+
+namespace rigid_body_sim::node {
+
+void SimNode::startReconfigure() {
+  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<PhysicsConfig>>(reconfigure_mutex_,
+                                                                              ros::NodeHandle(pnh_, "physics"));
+  // What is in force, not the cfg's defaults or a previous run's parameters.
+  reconfigure_->updateConfig(physicsNow());
+  reconfigure_->setCallback(std::bind(&SimNode::onReconfigure, this, std::placeholders::_1, std::placeholders::_2));
+}
+
+PhysicsConfig SimNode::physicsNow() const {
+  const core::Tuning t = model_.tuning();
+  PhysicsConfig c;
+  c.gravity_x = t.gravity_W.x();
+  c.gravity_y = t.gravity_W.y();
+  c.gravity_z = t.gravity_W.z();
+  c.friction = t.friction;
+  c.restitution = t.restitution;
+  c.linear_damping = t.damping.linear_rate;
+  c.angular_damping = t.damping.angular_rate;
+  c.realtime_factor = settings_.realtime_factor;
+  c.publish_rate = settings_.publish_rate;
+  c.paused = paused_;
+  return c;
+}
+
+void SimNode::showPhysics() {
+  if (reconfigure_) reconfigure_->updateConfig(physicsNow());
+}
+
+void SimNode::setPaused(bool paused) {
+  paused_ = paused;
+  if (!paused) rebaseClock();  // do not make up for the paused time
+}
+
+void SimNode::onReconfigure(PhysicsConfig& config, uint32_t) {
+  const PhysicsConfig now = physicsNow();
+  // The model's settings: all or none (gravity's magnitude is one check).
+  core::Tuning t = model_.tuning();
+  t.gravity_W = core::Vec3(config.gravity_x, config.gravity_y, config.gravity_z);
+  t.friction = config.friction;
+  t.restitution = config.restitution;
+  t.damping.linear_rate = config.linear_damping;
+  t.damping.angular_rate = config.angular_damping;
+  const core::Tuning was = model_.tuning();
+  const bool changed = t.gravity_W != was.gravity_W || t.friction != was.friction || t.restitution != was.restitution ||
+                       t.damping.linear_rate != was.damping.linear_rate ||
+                       t.damping.angular_rate != was.damping.angular_rate;
+  if (changed) {
+    try {
+      world_.model = model_.retuned(t);
+      // The fixed-point cache and sleep assumed the old settings.
+      const core::Workspace fresh_knobs;
+      workspace_ = core::Workspace();
+      workspace_.threads = fresh_knobs.threads;
+      for (core::BodyState& b : state_.bodies) {
+        b.asleep = false;
+        b.still_time = 0.0;
+      }
+      ROS_INFO("sim_node: ~physics: gravity (%g, %g, %g) m/s^2, friction %g, restitution %g, damping %g %g 1/s",
+               t.gravity_W.x(), t.gravity_W.y(), t.gravity_W.z(), t.friction, t.restitution, t.damping.linear_rate,
+               t.damping.angular_rate);
+    } catch (const std::exception& e) {
+      ROS_WARN("sim_node: ~physics refused: %s; the model keeps its settings", e.what());
+      config.gravity_x = now.gravity_x;
+      config.gravity_y = now.gravity_y;
+      config.gravity_z = now.gravity_z;
+      config.friction = now.friction;
+      config.restitution = now.restitution;
+      config.linear_damping = now.linear_damping;
+      config.angular_damping = now.angular_damping;
+    }
+  }
+  // The node's settings, each checked as its parameter is at start.
+  using R = NodeSettings;
+  try {
+    requireParamWithin(config.realtime_factor, "realtime_factor", 0.0, R::kMaxRealtimeFactor, "");
+    if (config.realtime_factor != settings_.realtime_factor) {
+      params_.node.realtime_factor = config.realtime_factor;
+      rebaseClock();
+    }
+  } catch (const std::exception& e) {
+    ROS_WARN("sim_node: ~physics refused: %s", e.what());
+    config.realtime_factor = now.realtime_factor;
+  }
+  try {
+    requireParamWithin(config.publish_rate, "publish_rate", R::kMinPublishRate, R::kMaxRate, "Hz");
+    params_.node.publish_rate = config.publish_rate;
+    publish_every_ = std::max(1LL, std::llround(1.0 / (config.publish_rate * model_.dt())));
+  } catch (const std::exception& e) {
+    ROS_WARN("sim_node: ~physics refused: %s", e.what());
+    config.publish_rate = now.publish_rate;
+  }
+  if (config.paused != paused_) setPaused(config.paused);
+}
+
+}  // namespace rigid_body_sim::node
