@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "barrier.h"
+#include "model_checks.h"
 #include "rigid_body_sim/core/inertia.h"
 #include "rigid_body_sim/core/ranges.h"
 #include "rigid_body_sim/core/sdf_grid.h"
@@ -201,91 +201,6 @@ BodyModel buildBody(const BodySpec& spec) {
   return b;
 }
 
-void validateDamping(const Damping& d, double dt, const std::vector<BodyModel>& bodies) {
-  detail::requireNonNegative(d.linear_rate, "damping.linear", "1/s");
-  detail::requireNonNegative(d.angular_rate, "damping.angular", "1/s");
-  detail::requireNonNegative(d.linear_drag, "damping.linear_drag", "N*s/m");
-  detail::requireNonNegative(d.angular_drag, "damping.angular_drag", "N*m*s/rad");
-  // The explicit drag step v ← v (1 − σΔt/M) reverses v when σΔt/M ≥ 1.
-  for (const BodyModel& b : bodies) {
-    const double lin = d.linear_drag * dt * b.inv_mass;
-    const double ang = d.angular_drag * dt * b.inv_inertia_B.maxCoeff();
-    if (lin >= 1.0) {
-      detail::fail("damping.linear_drag", detail::str(d.linear_drag),
-                   "sigma*dt/mass = " + detail::str(lin) + " >= 1 for body '" + b.name +
-                       "' (explicit drag would reverse the velocity; use damping.linear, a decay rate)");
-    }
-    if (ang >= 1.0) {
-      detail::fail("damping.angular_drag", detail::str(d.angular_drag),
-                   "sigma*dt/I_min = " + detail::str(ang) + " >= 1 for body '" + b.name +
-                       "' (explicit drag would reverse the spin; use damping.angular, a decay rate)");
-    }
-  }
-}
-
-void validateContact(const ContactSettings& c) {
-  detail::requireWithin(c.restitution, 0.0, 1.0, "contact.restitution", "");
-  detail::requireWithin(c.friction, 0.0, ranges::kMaxFriction, "contact.friction", "");
-  detail::requireWithin(c.restitution_threshold, 0.0, ranges::kMaxThresholdSpeed, "contact.restitution_threshold",
-                        "m/s");
-  detail::requireWithin(c.sample_spacing, ranges::kMinSampleSpacing, ranges::kMaxExtent, "contact.sample_spacing", "m");
-  detail::requireCount(c.iterations, 1, ranges::kMaxIterations, "contact.iterations");
-  detail::requireWithin(c.position_slop, 0.0, ranges::kMaxBuffer, "contact.position_slop", "m");
-  detail::requirePositive(c.penalty_stiffness, "contact.penalty_stiffness", "N/m");  // per body: validatePenalty
-  detail::requireNonNegative(c.penalty_damping, "contact.penalty_damping", "N*s/m");
-  detail::requirePositiveAtMost(c.penalty_buffer, ranges::kMaxBuffer, "contact.penalty_buffer", "m");
-  detail::requirePositiveAtMost(c.barrier_strength, ranges::kMaxBarrierStrength, "contact.barrier_strength", "N*m");
-  detail::requirePositiveAtMost(c.barrier_buffer, ranges::kMaxBuffer, "contact.barrier_buffer", "m");
-}
-
-/// The penalty spring and damper act explicitly on each body: k h²/m and
-/// c h/m must stay small, or the force overshoots (as validateDamping's drag).
-void validatePenalty(const ContactSettings& c, double dt, const std::vector<BodyModel>& bodies) {
-  if (c.method != ContactMethod::kPenaltyQuadratic && c.method != ContactMethod::kPenaltyLogBarrier) return;
-  for (const BodyModel& b : bodies) {
-    const double stiff = c.penalty_stiffness * dt * dt * b.inv_mass;
-    if (c.method == ContactMethod::kPenaltyQuadratic && stiff > ranges::kMaxPenaltyStiffnessRatio) {
-      detail::fail("contact.penalty_stiffness", detail::str(c.penalty_stiffness),
-                   "k*dt^2/mass = " + detail::str(stiff) + " > " + detail::str(ranges::kMaxPenaltyStiffnessRatio) +
-                       " for body '" + b.name + "' (the explicit spring would be unstable; lower k or dt)");
-    }
-    const double damp = c.penalty_damping * dt * b.inv_mass;
-    if (damp >= 1.0) {
-      detail::fail("contact.penalty_damping", detail::str(c.penalty_damping),
-                   "c*dt/mass = " + detail::str(damp) + " >= 1 for body '" + b.name +
-                       "' (the explicit damper would reverse the velocity)");
-    }
-  }
-}
-
-/// The log barrier can only stop what its potential can hold: U(φ) down to
-/// the floor at one contact point must exceed the kinetic energy a body can
-/// bring to one point at the speed limits, ½ m (v + ω R)² (against another
-/// body, the closing speed of both), plus gravity's work across the buffer
-/// (docs/physics.md §7.2). Otherwise the speeds it cannot stop are refused.
-void validateBarrier(const ContactSettings& c, const SpeedLimits& limits, const Vec3& gravity,
-                     const std::vector<BodyModel>& bodies) {
-  if (c.method != ContactMethod::kPenaltyLogBarrier) return;
-  const double holds = barrierPotential(c, kBarrierFloor);
-  const auto reach = [&](const BodyModel& b) { return limits.linear + limits.angular * b.bound_radius; };
-  double fastest = 0.0;
-  if (bodies.size() > 1) {
-    for (const BodyModel& b : bodies) fastest = std::max(fastest, reach(b));
-  }
-  for (const BodyModel& b : bodies) {
-    const double closing = reach(b) + fastest;
-    const double brings = 0.5 * b.mass * closing * closing + b.mass * gravity.norm() * c.barrier_buffer;
-    if (brings > holds) {
-      detail::fail("contact.barrier_strength", detail::str(c.barrier_strength),
-                   "holds at most " + detail::str(holds) + " J at a contact point, but body '" + b.name +
-                       "' can bring " + detail::str(brings) + " J to one at limits.max_linear_speed " +
-                       detail::str(limits.linear) + " m/s and limits.max_angular_speed " + detail::str(limits.angular) +
-                       " rad/s; raise it to at least " + detail::str(c.barrier_strength * brings / holds) +
-                       " or lower the limits");
-    }
-  }
-}
-
 /// A body's surface: its own coefficients, or the scene's.
 void resolveSurface(const BodySpec& spec, const ContactSettings& c, BodyModel& body) {
   const std::string key = "body '" + spec.name + "': contact.";
@@ -295,37 +210,6 @@ void resolveSurface(const BodySpec& spec, const ContactSettings& c, BodyModel& b
   body.own_restitution = spec.restitution.has_value();
   detail::requireWithin(body.friction, 0.0, ranges::kMaxFriction, key + "friction", "");
   detail::requireWithin(body.restitution, 0.0, 1.0, key + "restitution", "");
-}
-
-void validateGravity(const Vec3& g) {
-  detail::requireFinite(g, "gravity");
-  if (g.norm() > ranges::kMaxGravity) {
-    detail::fail("gravity", detail::str(g),
-                 "|g| = " + detail::str(g.norm()) + " must be at most " + detail::str(ranges::kMaxGravity) + " m/s^2");
-  }
-}
-
-void validateSleep(const SleepSettings& s) {
-  detail::requireWithin(s.linear_velocity, 0.0, ranges::kMaxThresholdSpeed, "sleep.linear_velocity", "m/s");
-  detail::requireWithin(s.angular_velocity, 0.0, ranges::kMaxThresholdSpeed, "sleep.angular_velocity", "rad/s");
-  detail::requireWithin(s.time, 0.0, 1e6, "sleep.time", "s");
-}
-
-void validateLimits(const SpeedLimits& l) {
-  detail::requirePositiveAtMost(l.linear, ranges::kMaxSpeedLimit, "limits.max_linear_speed", "m/s");
-  detail::requirePositiveAtMost(l.angular, ranges::kMaxSpeedLimit, "limits.max_angular_speed", "rad/s");
-}
-
-void validateSolver(const SolverSettings& s) {
-  detail::requirePositive(s.velocity_tolerance, "solver.velocity_tolerance", "m/s");
-  detail::requireNonNegative(s.relative_tolerance, "solver.relative_tolerance", "");
-  detail::requireNonNegative(s.resting_speed, "solver.resting_speed", "m/s");
-  detail::requireNonNegative(s.rounding_speed, "solver.rounding_speed", "m/s");
-  detail::requireCount(s.position_iterations, 0, ranges::kMaxIterations, "solver.position_iterations");
-  detail::requireCount(s.mesh_grid_resolution, 2, ranges::kMaxGridResolution, "solver.mesh_grid_resolution");
-  detail::requireCount(s.large_mesh_grid_resolution, 2, ranges::kMaxGridResolution, "solver.mesh_grid_resolution");
-  if (s.point_group_size < 1)
-    detail::fail("solver.point_group_size", std::to_string(s.point_group_size), "must be >= 1");
 }
 
 }  // namespace
