@@ -214,6 +214,23 @@ void resolveSurface(const BodySpec& spec, const ContactSettings& c, BodyModel& b
 
 }  // namespace
 
+BodyModel Model::makeBody(const BodySpec& b, bool with_solid) const {
+  BodyModel body = buildBody(b);
+  resolveSurface(b, contact_, body);
+  buildContactPoints(b, contact_, solver_, body);
+  if (with_solid) buildSolid(b, solver_, body);
+  if (!scene_.empty() && body.contact_points.empty()) {
+    detail::fail("body '" + b.name + "': collision", "none",
+                 "contacts are on (the scene is not empty) but the body has no <collision> geometry; "
+                 "add one to the URDF or set scene: []");
+  }
+  if (contact_.method == ContactMethod::kShapeMatching && !scene_.empty() && body.points_inv_spread.isZero(0.0)) {
+    detail::fail("body '" + b.name + "': collision", std::to_string(body.contact_points.size()) + " points",
+                 "shape matching needs collision points that span three dimensions");
+  }
+  return body;
+}
+
 Model::Model(const ModelSpec& spec)
     : dt_(spec.dt),
       gravity_W_(spec.gravity_W),
@@ -240,22 +257,7 @@ Model::Model(const ModelSpec& spec)
     }
   }
   bodies_.reserve(spec.bodies.size());
-  for (const BodySpec& b : spec.bodies) {
-    bodies_.push_back(buildBody(b));
-    BodyModel& body = bodies_.back();
-    resolveSurface(b, spec.contact, body);
-    buildContactPoints(b, spec.contact, spec.solver, body);
-    if (spec.bodies.size() > 1) buildSolid(b, spec.solver, body);
-    if (!scene_.empty() && body.contact_points.empty()) {
-      detail::fail("body '" + b.name + "': collision", "none",
-                   "contacts are on (the scene is not empty) but the body has no <collision> geometry; "
-                   "add one to the URDF or set scene: []");
-    }
-    if (spec.contact.method == ContactMethod::kShapeMatching && !scene_.empty() && body.points_inv_spread.isZero(0.0)) {
-      detail::fail("body '" + b.name + "': collision", std::to_string(body.contact_points.size()) + " points",
-                   "shape matching needs collision points that span three dimensions");
-    }
-  }
+  for (const BodySpec& b : spec.bodies) bodies_.push_back(makeBody(b, spec.bodies.size() > 1));
   validateDamping(spec.damping, spec.dt, bodies_);
   validatePenalty(spec.contact, spec.dt, bodies_);
   validateBarrier(spec.contact, spec.limits, spec.gravity_W, bodies_);
@@ -272,6 +274,39 @@ void Model::deriveSettings() {
     if (!b.own_restitution) b.restitution = contact_.restitution;
     bounces_ = bounces_ || b.restitution > 0.0;
   }
+}
+
+Model Model::withBody(const BodySpec& spec) const {
+  for (const BodyModel& b : bodies_) {
+    if (b.name == spec.name) {
+      detail::fail("name", "'" + spec.name + "'", "another body has this name; names must be unique");
+    }
+  }
+  Model m = *this;  // the other bodies' distance grids are shared, not copied
+  m.bodies_.push_back(makeBody(spec, true));
+  for (BodyModel& b : m.bodies_) {  // a one-body world had no solids: contact between bodies needs them
+    if (b.solid_B.empty()) {
+      BodySpec shapes;
+      shapes.name = b.name;
+      shapes.collision = b.collision;
+      buildSolid(shapes, solver_, b);
+    }
+  }
+  validateDamping(damping_, dt_, m.bodies_);
+  validatePenalty(contact_, dt_, m.bodies_);
+  validateBarrier(contact_, limits_, gravity_W_, m.bodies_);
+  m.deriveSettings();
+  return m;
+}
+
+Model Model::withoutBody(std::size_t i) const {
+  if (i >= bodies_.size()) {
+    detail::fail("body", std::to_string(i), "no such body (" + std::to_string(bodies_.size()) + " in the model)");
+  }
+  Model m = *this;
+  m.bodies_.erase(m.bodies_.begin() + static_cast<std::ptrdiff_t>(i));
+  m.deriveSettings();
+  return m;
 }
 
 Model Model::retuned(const Tuning& t) const {

@@ -29,6 +29,33 @@ bool atRest(const Model& model, const BodyState& s) {
   return s.asleep || (s.still_time > 0.0 && s.still_time >= model.sleep().time);
 }
 
+void removeBody(const Model& model, State& state, int i) {
+  const auto wake = [&](int j) {
+    state.bodies[j].asleep = false;
+    state.bodies[j].still_time = 0.0;
+  };
+  const double reach = model.body(i).bound_radius + 0.01;  // m
+  for (std::size_t j = 0; j < state.bodies.size(); ++j) {
+    const double gap = (state.bodies[j].p_WB - state.bodies[i].p_WB).norm() - model.body(j).bound_radius;
+    if (static_cast<int>(j) != i && gap <= reach) wake(static_cast<int>(j));
+  }
+  std::vector<ContactImpulse>& impulses = state.contact_impulses;
+  std::vector<ContactImpulse> kept;
+  kept.reserve(impulses.size());
+  for (ContactImpulse c : impulses) {
+    if (c.body == i || c.other == i) {
+      const int partner = c.body == i ? c.other : c.body;
+      if (partner >= 0) wake(partner);
+      continue;
+    }
+    if (c.body > i) --c.body;  // a monotone renaming: the list stays sorted by key
+    if (c.other > i) --c.other;
+    kept.push_back(c);
+  }
+  impulses = std::move(kept);
+  state.bodies.erase(state.bodies.begin() + i);
+}
+
 State restState(const Model& model) {
   State state;
   for (const BodyModel& b : model.bodies()) state.bodies.push_back(bodyStateFromLink(b, LinkState{}));

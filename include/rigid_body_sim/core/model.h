@@ -131,6 +131,14 @@ class Model {
   /// This model with `t`'s settings, validated as the constructor validates
   /// a spec (std::invalid_argument naming the key); this one is unchanged.
   Model retuned(const Tuning& t) const;
+  /// This model with one more body, last, built and validated as the
+  /// constructor builds one (its name must be new); this one is unchanged.
+  /// The other bodies keep their index. Pair it with a new BodyState, and
+  /// step an edited model with a fresh Workspace (its caches assume the old one).
+  Model withBody(const BodySpec& spec) const;
+  /// This model without body i (the later ones move down by one); it may
+  /// leave no body at all. Pair it with removeBody() on the state.
+  Model withoutBody(std::size_t i) const;
   /// The coefficients of a contact between `body` and `other` (< 0: the
   /// scene), by the contact settings' combine rules.
   double friction(int body, int other) const {
@@ -160,6 +168,8 @@ class Model {
   SleepSettings sleep_;
   SolverSettings solver_;
   SpeedLimits limits_;
+  /// A body as the constructor builds it, with its solid if `with_solid`.
+  BodyModel makeBody(const BodySpec& b, bool with_solid) const;
   /// What follows from the settings: the restitution threshold, the decay
   /// factors, every body's surface that is the scene's, whether anything bounces.
   void deriveSettings();

@@ -86,6 +86,13 @@ LinkState linkState(const BodyModel& body, const BodyState& s);
 /// The body state whose link frame has the given pose and twist.
 BodyState bodyStateFromLink(const BodyModel& body, const LinkState& link);
 
+/// Takes body i of `model` out of the state, as model.withoutBody(i) takes
+/// it out of the model: its last contact impulses go, the later bodies'
+/// indices in the others move down by one (their warm starts kept), and
+/// every body that may touch it wakes (within both bounding radii plus 1 cm
+/// of it, or holding a contact impulse with it): what rested on it falls.
+void removeBody(const Model& model, State& state, int i);
+
 /// A state with every body at rest at the identity pose, time 0.
 State restState(const Model& model);
 

@@ -1,0 +1,145 @@
+// Bodies added and removed between steps (issue 14's spawn and delete, in
+// the core): Model::withBody and withoutBody with removeBody on the state.
+// A spawned body collides from the next step; a deleted one takes its
+// contacts with it, wakes what rested on it, and changes no bit of bodies
+// that never touched it; the same edits at the same steps give the same bits.
+#include <gtest/gtest.h>
+
+#include "../test_util.h"
+#include "rigid_body_sim/core/step.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+const Vec3 kHalf(0.2, 0.1, 0.05);
+
+core::BodySpec named(core::BodySpec b, const std::string& name) {
+  b.name = name;
+  return b;
+}
+
+core::BodyState at(const core::Model& model, int i, const Vec3& p, const Vec3& v = Vec3::Zero()) {
+  core::LinkState link;
+  link.p_WL = p;
+  link.v_WL = v;
+  return core::bodyStateFromLink(model.body(i), link);
+}
+
+core::ModelSpec ground(std::vector<core::BodySpec> bodies) {
+  core::ModelSpec s = onGround(bodies.front(), impulse(0.0, 0.5));
+  s.bodies = std::move(bodies);
+  return s;
+}
+
+void run(const core::Model& model, core::State& s, core::Workspace& ws, int steps) {
+  for (int n = 0; n < steps; ++n) core::step(model, s, {}, &ws);
+}
+
+TEST(WorldEdit, AFarBodysDeletionChangesNoBitOfTheOthers) {
+  // a slides on the ground, b falls far away, c rests: deleting b at step 500
+  // leaves a and c exactly where a world without b ever puts them.
+  const std::vector<core::BodySpec> three = {named(boxBody(kHalf), "a"), named(boxBody(kHalf), "b"),
+                                             named(boxBody(kHalf), "c")};
+  const core::Model with_b(ground(three));
+  core::State s;
+  s.bodies = {at(with_b, 0, Vec3(0, 0, kHalf.z()), Vec3(1, 0, 0)), at(with_b, 1, Vec3(20, 20, 5)),
+              at(with_b, 2, Vec3(0, 5, kHalf.z()))};
+  const core::Model without_b(ground({three[0], three[2]}));
+  core::State t;
+  t.bodies = {s.bodies[0], s.bodies[2]};
+  core::Workspace ws, wt;
+  ws.threads = wt.threads = 1;
+  run(with_b, s, ws, 500);
+  const core::Model edited = with_b.withoutBody(1);
+  core::removeBody(with_b, s, 1);
+  core::Workspace fresh;
+  fresh.threads = 1;
+  run(edited, s, fresh, 500);
+  run(without_b, t, wt, 1000);
+  ASSERT_EQ(edited.bodyCount(), 2u);
+  EXPECT_EQ(edited.body(1).name, "c");
+  EXPECT_TRUE(bitIdentical(s, t));
+}
+
+TEST(WorldEdit, ABodyRestingOnADeletedOneWakesAndFalls) {
+  const core::Model model(ground({named(boxBody(Vec3(0.5, 0.5, 0.1), 10.0), "base"), named(boxBody(kHalf), "top")}));
+  core::State s;
+  s.bodies = {at(model, 0, Vec3(0, 0, 0.1)), at(model, 1, Vec3(0, 0, 0.2 + kHalf.z()))};
+  core::Workspace ws;
+  run(model, s, ws, 2000);
+  ASSERT_TRUE(s.bodies[1].asleep);  // resting on the base
+  const core::Model edited = model.withoutBody(0);
+  core::removeBody(model, s, 0);
+  EXPECT_FALSE(s.bodies[0].asleep);
+  for (const core::ContactImpulse& c : s.contact_impulses) EXPECT_EQ(c.other, -1);  // none with the base
+  core::Workspace fresh;
+  run(edited, s, fresh, 1000);
+  EXPECT_NEAR(s.bodies[0].p_WB.z(), kHalf.z(), 1e-3);  // fell onto the ground
+}
+
+TEST(WorldEdit, ASpawnedBodyCollidesFromTheNextStep) {
+  // A one-body world (no solids yet) gains a ball above its box: the box
+  // gets its solid, and the ball comes to rest on it.
+  const core::Model one(ground({named(boxBody(kHalf), "box")}));
+  core::State s;
+  s.bodies = {at(one, 0, Vec3(0, 0, kHalf.z()))};
+  core::Workspace ws;
+  run(one, s, ws, 10);
+  const double radius = 0.05;
+  const core::Model two = one.withBody(named(ballBody(radius), "ball"));
+  ASSERT_EQ(two.bodyCount(), 2u);
+  EXPECT_FALSE(two.body(0).solid_B.empty());
+  s.bodies.push_back(at(two, 1, Vec3(0, 0, 0.5)));
+  core::Workspace fresh;
+  run(two, s, fresh, 2000);
+  EXPECT_NEAR(s.bodies[1].p_WB.z(), 2 * kHalf.z() + radius, 2e-3);  // on the box, not through it
+  EXPECT_NEAR(s.bodies[0].p_WB.z(), kHalf.z(), 1e-3);
+}
+
+TEST(WorldEdit, TheSameEditsAtTheSameStepsGiveTheSameBits) {
+  const auto once = [] {
+    core::Model model(ground({named(boxBody(kHalf), "a"), named(boxBody(kHalf), "b")}));
+    core::State s;
+    s.bodies = {at(model, 0, Vec3(0, 0, 0.5)), at(model, 1, Vec3(0.1, 0, 1.0))};
+    core::Workspace ws;
+    run(model, s, ws, 100);
+    model = model.withBody(named(ballBody(0.1), "c"));
+    s.bodies.push_back(at(model, 2, Vec3(0, 0.05, 2.0), Vec3(0.5, 0, 0)));
+    run(model, s, ws, 200);
+    core::removeBody(model, s, 0);
+    model = model.withoutBody(0);
+    run(model, s, ws, 300);
+    return s;
+  };
+  EXPECT_TRUE(bitIdentical(once(), once()));
+}
+
+TEST(WorldEdit, DeletingTheLastBodyLeavesAWorldThatSteps) {
+  const core::Model one(ground({named(boxBody(kHalf), "box")}));
+  core::State s;
+  s.bodies = {at(one, 0, Vec3(0, 0, 1))};
+  const core::Model none = one.withoutBody(0);
+  core::removeBody(one, s, 0);
+  EXPECT_EQ(none.bodyCount(), 0u);
+  for (int n = 0; n < 10; ++n) core::step(none, s);
+  EXPECT_NEAR(s.time, 0.01, 1e-15);
+  // And gains one again.
+  const core::Model again = none.withBody(named(boxBody(kHalf), "box"));
+  s.bodies.push_back(at(again, 0, Vec3(0, 0, kHalf.z())));
+  core::step(again, s);
+  EXPECT_EQ(again.bodyCount(), 1u);
+}
+
+TEST(WorldEdit, BadEditsAreRefusedAndChangeNothing) {
+  const core::Model model(ground({named(boxBody(kHalf), "box")}));
+  expectThrowsWith<std::invalid_argument>([&] { (void)model.withBody(named(boxBody(kHalf), "box")); },
+                                          {"name = 'box'", "another body has this name"});
+  core::BodySpec heavy = named(boxBody(kHalf), "heavy");
+  heavy.mass = -1.0;
+  expectThrowsWith<std::invalid_argument>([&] { (void)model.withBody(heavy); }, {"body 'heavy': mass"});
+  expectThrowsWith<std::invalid_argument>([&] { (void)model.withoutBody(3); }, {"no such body"});
+  EXPECT_EQ(model.bodyCount(), 1u);
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
