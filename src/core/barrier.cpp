@@ -116,7 +116,8 @@ void advanceKeepingBarrier(const Model& model, State& state, const Loads& loads,
   detail::StepScratch& sc = *ws.scratch;
   sc.barrier_end.clear();
   advance(model, state, loads, h, ws);
-  for (int pass = 0; pass < solver.barrier_passes; ++pass) {
+  // Without contacts there is no barrier force: the passes would repeat the first.
+  for (int pass = 0; pass < solver.barrier_passes && !ws.contacts.empty(); ++pass) {
     endSeparations(before, state, sc.barrier_end, ws);
     state = before;
     advance(model, state, loads, h, ws);

@@ -3,6 +3,7 @@
 // (core::Model::retuned, validated as a config is) replaces the old one
 // there, as Gazebo's set_physics_properties does, and every body wakes.
 #include <functional>
+#include <utility>
 
 #include "rigid_body_sim/ros/sim_node.h"
 
@@ -57,10 +58,13 @@ void SimNode::onReconfigure(PhysicsConfig& config, uint32_t) {
   if (changed) {
     try {
       world_.model = model_.retuned(t);
-      // The fixed-point cache and sleep assumed the old settings.
-      const core::Workspace fresh_knobs;
-      workspace_ = core::Workspace();
-      workspace_.threads = fresh_knobs.threads;
+      // The fixed-point cache and sleep assumed the old settings: a fresh
+      // workspace (with the same knobs) and every body awake.
+      core::Workspace fresh;
+      fresh.threads = workspace_.threads;
+      fresh.min_parallel_work = workspace_.min_parallel_work;
+      fresh.skip_fixed_points = workspace_.skip_fixed_points;
+      workspace_ = std::move(fresh);
       for (core::BodyState& b : state_.bodies) {
         b.asleep = false;
         b.still_time = 0.0;
