@@ -19,7 +19,9 @@ void SimNode::startReconfigure() {
 
 PhysicsConfig SimNode::physicsNow() const {
   const core::Tuning t = model_.tuning();
-  PhysicsConfig c;
+  // From the cfg's defaults, so that every member is set (a default-built
+  // PhysicsConfig leaves its groups' bools uninitialized; UBSan saw them copied).
+  PhysicsConfig c = PhysicsConfig::__getDefault__();
   c.gravity_x = t.gravity_W.x();
   c.gravity_y = t.gravity_W.y();
   c.gravity_z = t.gravity_W.z();
