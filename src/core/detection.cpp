@@ -100,7 +100,7 @@ template <class Visit>
     }
     Vec3 n_O;
     const double separation = solid.eval(p_O, &n_O) - p.radius;
-    if (separation >= margin) continue;
+    if (!(separation < margin)) continue;  // also a NaN distance (a degenerate mesh's grid): no contact
     // A point of a's face meets o's solid head on, or not at all: near o's
     // edges o's gradient turns sideways (a box sliding over another's face
     // samples would stop at each one), and o's own points against a's solid

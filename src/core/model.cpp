@@ -135,7 +135,7 @@ void buildSolid(const BodySpec& spec, const SolverSettings& solver, BodyModel& b
         parts.push_back(Sdf::cylinder(shape.radius, shape.length).transformed(X_BS));
         break;
       case CollisionShape::Kind::kPoints:
-        if (shape.mesh.triangles.empty()) break;  // a point cloud has no inside
+        if (!SdfGrid::hasArea(shape.mesh)) break;  // a point cloud (or degenerate triangles) has no inside
         parts.push_back(
             Sdf::grid(SdfGrid::fromMesh(shape.mesh, gridResolution(shape, solver, spec.name))).transformed(X_BS));
         break;

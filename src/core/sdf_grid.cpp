@@ -44,6 +44,14 @@ double solidAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 }  // namespace
 
+bool SdfGrid::hasArea(const TriangleMesh& mesh) {
+  for (const auto& t : mesh.triangles) {
+    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    if ((b - a).cross(c - a).squaredNorm() > 0.0) return true;
+  }
+  return false;
+}
+
 int SdfGrid::resolutionWithin(double triangles, int wanted) {
   const int fits = static_cast<int>(std::cbrt(ranges::kMaxGridWork / std::max(triangles, 1.0)));
   return fits < ranges::kMinGridResolution ? 0 : std::min(wanted, fits);

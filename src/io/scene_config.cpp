@@ -48,7 +48,7 @@ core::Sdf meshShape(const YAML::Node& node, const std::string& path, const std::
   } catch (const std::exception& e) {
     fail(join(path, "file"), e.what());
   }
-  if (mesh.triangles.empty())
+  if (!core::SdfGrid::hasArea(mesh))
     fail(join(path, "file"), "'" + file + "' has no triangles: a scene mesh needs a closed surface");
   double extent = 0.0;  // m from the mesh's origin
   for (const Vec3& v : mesh.vertices) extent = std::max(extent, v.cwiseAbs().maxCoeff());

@@ -23,6 +23,10 @@ class SdfGrid {
   /// build's cost); 0 when even ranges::kMinGridResolution does not fit.
   static int resolutionWithin(double triangles, int wanted);
 
+  /// Whether some triangle of the mesh has an area: a mesh of none (no
+  /// triangles, or only degenerate ones) has no inside and no grid.
+  static bool hasArea(const TriangleMesh& mesh);
+
   /// φ at p (grid frame, m), trilinear between the samples, and its gradient
   /// (normalized). Beyond the grid: the value at the nearest grid point plus
   /// the distance to it. Any input is safe: a point with a NaN or infinite
