@@ -49,7 +49,7 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
         if (o->asleep) o = nullptr;  // a sleeper stays put, like the ground
       }
       const double C = separation + slop;
-      if (C >= 0.0) continue;
+      if (!(C < 0.0)) continue;  // also a NaN distance: no correction (the guard ran before this stage)
       deepest = std::min(deepest, C);
       const Vec3 r = arm - p.radius * n;
       const Mat3 inv_I = detail::worldInverseInertia(b, s.q_WB);
@@ -63,7 +63,8 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
         const Vec3 on = r_o.cross(n);
         k += model.body(c.other).inv_mass + on.dot(inv_I_o * on);
       }
-      const Vec3 P = (-C / k) * n;  // positional impulse that closes C to first order
+      const Vec3 P = (-C / k) * n;   // positional impulse that closes C to first order
+      if (!P.allFinite()) continue;  // a degenerate normal or mass: never a non-finite pose
       const auto move = [](BodyState& x, double inv_mass, const Mat3& inv_I_W, const Vec3& arm_W, const Vec3& impulse) {
         x.p_WB += inv_mass * impulse;
         const Vec3 half_turn = 0.5 * (inv_I_W * arm_W.cross(impulse));
