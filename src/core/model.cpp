@@ -168,7 +168,7 @@ void validateShape(const CollisionShape& shape, const std::string& where) {
   }
 }
 
-BodyModel buildBody(const BodySpec& spec) {
+BodyModel validatedBody(const BodySpec& spec) {
   const std::string where = "body '" + spec.name + "': ";
   detail::requireWithin(spec.mass, ranges::kMinMass, ranges::kMaxMass, where + "mass", "kg");
   detail::requireFinite(spec.p_LC, where + "centre of mass");
@@ -214,17 +214,17 @@ void resolveSurface(const BodySpec& spec, const ContactSettings& c, BodyModel& b
 
 }  // namespace
 
-BodyModel Model::makeBody(const BodySpec& b, bool with_solid) const {
-  BodyModel body = buildBody(b);
+BodyModel BodyBuilder::buildBody(const BodySpec& b, bool with_solid) const {
+  BodyModel body = validatedBody(b);
   resolveSurface(b, contact_, body);
   buildContactPoints(b, contact_, solver_, body);
   if (with_solid) buildSolid(b, solver_, body);
-  if (!scene_.empty() && body.contact_points.empty()) {
+  if (!scene_empty_ && body.contact_points.empty()) {
     detail::fail("body '" + b.name + "': collision", "none",
                  "contacts are on (the scene is not empty) but the body has no <collision> geometry; "
                  "add one to the URDF or set scene: []");
   }
-  if (contact_.method == ContactMethod::kShapeMatching && !scene_.empty() && body.points_inv_spread.isZero(0.0)) {
+  if (contact_.method == ContactMethod::kShapeMatching && !scene_empty_ && body.points_inv_spread.isZero(0.0)) {
     detail::fail("body '" + b.name + "': collision", std::to_string(body.contact_points.size()) + " points",
                  "shape matching needs collision points that span three dimensions");
   }
@@ -241,7 +241,6 @@ Model::Model(const ModelSpec& spec)
       sleep_(spec.sleep),
       solver_(spec.solver),
       limits_(spec.limits) {
-  if (spec.bodies.empty()) detail::fail("bodies", "[]", "the model needs at least one body");
   detail::requireWithin(spec.dt, ranges::kMinDt, ranges::kMaxDt, "dt", "s");
   validateGravity(spec.gravity_W);
   validateLimits(spec.limits);
@@ -257,7 +256,8 @@ Model::Model(const ModelSpec& spec)
     }
   }
   bodies_.reserve(spec.bodies.size());
-  for (const BodySpec& b : spec.bodies) bodies_.push_back(makeBody(b, spec.bodies.size() > 1));
+  const BodyBuilder builder = bodyBuilder();
+  for (const BodySpec& b : spec.bodies) bodies_.push_back(builder.buildBody(b, spec.bodies.size() > 1));
   validateDamping(spec.damping, spec.dt, bodies_);
   validatePenalty(spec.contact, spec.dt, bodies_);
   validateBarrier(spec.contact, spec.limits, spec.gravity_W, bodies_);
@@ -276,14 +276,19 @@ void Model::deriveSettings() {
   }
 }
 
-Model Model::withBody(const BodySpec& spec) const {
+PreparedBody BodyBuilder::build(const BodySpec& spec) const {
+  PreparedBody prepared;
+  prepared.body_ = buildBody(spec, true);
+  return prepared;
+}
+
+Model Model::withBody(const PreparedBody& body) const {
+  const std::string& name = body.body().name;
   for (const BodyModel& b : bodies_) {
-    if (b.name == spec.name) {
-      detail::fail("name", "'" + spec.name + "'", "another body has this name; names must be unique");
-    }
+    if (b.name == name) detail::fail("name", "'" + name + "'", "another body has this name; names must be unique");
   }
   Model m = *this;  // the other bodies' distance grids are shared, not copied
-  m.bodies_.push_back(makeBody(spec, true));
+  m.bodies_.push_back(body.body());
   for (BodyModel& b : m.bodies_) {  // a one-body world had no solids: contact between bodies needs them
     if (b.solid_B.empty()) {
       BodySpec shapes;

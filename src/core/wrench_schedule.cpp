@@ -28,6 +28,24 @@ void WrenchSchedule::clear(int body) {
   }
 }
 
+std::size_t WrenchSchedule::removeBody(int body) {
+  const std::size_t before = size();
+  const auto gone = [body](const Entry& e) { return e.body == body || e.axes_body == body; };
+  const auto renumber = [&](std::vector<Entry>& entries) {
+    entries.erase(std::remove_if(entries.begin(), entries.end(), gone), entries.end());
+    for (Entry& e : entries) {
+      if (e.body > body) --e.body;
+      if (e.axes_body > body) --e.axes_body;
+    }
+  };
+  renumber(acting_);
+  renumber(waiting_);
+  count_.assign(count_.size() > static_cast<std::size_t>(body) ? count_.size() - 1 : count_.size(), 0);
+  for (const Entry& e : acting_) ++count_[e.body];
+  for (const Entry& e : waiting_) ++count_[e.body];
+  return before - size();
+}
+
 void WrenchSchedule::dropFinished(double t) {
   // The waiting wrenches that started are a prefix of waiting_.
   const auto started = std::find_if(waiting_.begin(), waiting_.end(), [t](const Entry& e) { return !(e.start < t); });

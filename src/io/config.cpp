@@ -125,7 +125,7 @@ void parseInitial(const YAML::Node& node, core::LinkState& s, const std::string&
 }
 
 std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& base_dir) {
-  if (!node.IsSequence() || node.size() == 0) fail("bodies", "expected a non-empty list of {name, urdf, initial}");
+  if (!node.IsSequence()) fail("bodies", "expected a list of {name, urdf, initial} ([] for an empty world)");
   std::vector<BodyEntry> bodies;
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = "bodies[" + std::to_string(i) + "]";
@@ -175,6 +175,7 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir) {
   if (root["bodies"]) {
     if (root["initial"]) fail("initial", "with a bodies list, give each body its own bodies[i].initial");
     c.bodies = parseBodies(root["bodies"], base_dir);
+    c.bodies_listed = true;
   }
   return c;
 }

@@ -63,7 +63,7 @@ World buildWorld(const SimConfig& config, const BodyLoader& load) {
 }
 
 World loadWorld(const SimConfig& config, const std::function<core::BodySpec()>& single_body, const BodyLoader& load) {
-  if (!config.bodies.empty()) return buildWorld(config, load);
+  if (config.bodies_listed) return buildWorld(config, load);
   if (!single_body) throw ConfigError("bodies: the config lists no bodies, and no single body was given");
   World world{buildModel(config, single_body()), {}};
   world.state.bodies = {startState(world.model, 0, config.initial, "initial")};

@@ -238,6 +238,11 @@ int run(const Args& args) {
   const std::string config_dir = args.config.empty() ? "" : std::filesystem::path(args.config).parent_path().string();
   const io::SimConfig config = io::parseConfig(tree, config_dir.empty() ? "." : config_dir);
   // One body from --urdf, or the config's bodies list: a world.
+  if (config.bodies_listed && config.bodies.empty()) {
+    throw UsageError(
+        "the config's bodies list is empty: nothing to simulate (an empty world is for sim_node's "
+        "~spawn_body to fill)");
+  }
   if (config.bodies.empty() && args.urdf.empty()) {
     throw UsageError("--urdf FILE is required (or a --config with a bodies list; see rbsim --help)");
   }

@@ -136,10 +136,16 @@ TEST(ModelValidation, Damping) {
   expectRefused(s, {"damping.angular_drag = 10", "sigma*dt/I_min"});
 }
 
-TEST(ModelValidation, NoBodies) {
+TEST(Model, AnEmptyWorldStepsItsClock) {
   core::ModelSpec s = good();
   s.bodies.clear();
-  expectRefused(s, {"bodies = []", "at least one body"});
+  const core::Model m(s);
+  EXPECT_EQ(m.bodyCount(), 0u);
+  core::State state;
+  core::Workspace ws;
+  for (int k = 0; k < 10; ++k) core::step(m, state, {}, &ws);
+  EXPECT_TRUE(state.bodies.empty());
+  EXPECT_DOUBLE_EQ(state.time, 10 * m.dt());
 }
 
 TEST(Model, PrincipalFrameOfANonDiagonalInertia) {

@@ -5,6 +5,9 @@
 // that never touched it; the same edits at the same steps give the same bits.
 #include <gtest/gtest.h>
 
+#include <optional>
+#include <thread>
+
 #include "../test_util.h"
 #include "rigid_body_sim/core/step.h"
 
@@ -112,6 +115,33 @@ TEST(WorldEdit, TheSameEditsAtTheSameStepsGiveTheSameBits) {
     return s;
   };
   EXPECT_TRUE(bitIdentical(once(), once()));
+}
+
+TEST(WorldEdit, ABodyBuiltOnAnotherThreadIsTheBodyWithBodyBuilds) {
+  // The node builds a spawned body off its loop (a mesh's grid takes
+  // seconds) from a builder taken at start, while the model is retuned:
+  // inserted later, it gives the bits of a body built at once. A retuned
+  // scene surface reaches the prepared body too.
+  const core::Model model(ground({named(boxBody(kHalf), "box")}));
+  const core::BodyBuilder builder = model.bodyBuilder();
+  std::optional<core::PreparedBody> prepared;
+  std::thread([&] { prepared = builder.build(named(ballBody(0.1), "ball")); }).join();
+  core::Tuning t = model.tuning();
+  t.friction = 0.9;
+  const core::Model retuned = model.retuned(t);
+  const core::Model direct = retuned.withBody(named(ballBody(0.1), "ball"));
+  const core::Model later = retuned.withBody(*prepared);
+  EXPECT_EQ(later.body(1).friction, 0.9);
+  const auto run_from = [&](const core::Model& m) {
+    core::State s;
+    s.bodies = {at(m, 0, Vec3(0, 0, kHalf.z())), at(m, 1, Vec3(0.05, 0, 0.4), Vec3(0.3, 0, 0))};
+    core::Workspace ws;
+    run(m, s, ws, 800);
+    return s;
+  };
+  const core::State a = run_from(direct), b = run_from(later);
+  EXPECT_TRUE(bitIdentical(a, b));
+  EXPECT_GT(a.contact_impulses.size(), 0u);  // the ball ends on the box: both solids took part
 }
 
 TEST(WorldEdit, DeletingTheLastBodyLeavesAWorldThatSteps) {

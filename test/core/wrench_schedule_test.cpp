@@ -48,6 +48,41 @@ TEST(WrenchSchedule, WrenchesAddAndClearPerBody) {
   EXPECT_TRUE(loads.empty());
 }
 
+TEST(WrenchSchedule, ADeletedBodyTakesItsWrenchesAndThoseInItsAxes) {
+  // Three boxes; wrenches on each, one on c given in b's axes. Deleting b
+  // drops b's and the one in b's axes; c's other wrench now acts on index 1.
+  core::BodySpec a = shippedBox(), b = shippedBox(), c = shippedBox();
+  a.name = "a";
+  b.name = "b";
+  c.name = "c";
+  core::ModelSpec three = spec(a, 1e-3, Vec3::Zero());
+  three.bodies = {a, b, c};
+  const core::Model model(three);
+  const double forever = core::WrenchSchedule::kForever;
+  const auto push = [](double x) {
+    return core::Wrench{Vec3(x, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld};
+  };
+  core::WrenchSchedule schedule;
+  schedule.add(0, push(1), 0.0, forever);
+  schedule.add(1, push(2), 0.0, forever);
+  schedule.add(2, push(3), 0.0, forever);
+  schedule.add(2, push(4), 0.0, forever, 1);  // in b's axes
+  schedule.add(2, push(5), 7.0, forever);     // yet to start
+  schedule.dropFinished(1.0);
+  EXPECT_EQ(schedule.removeBody(1), 2u);
+  const core::Model two = model.withoutBody(1);
+  core::State s = core::restState(model);
+  core::removeBody(model, s, 1);
+  core::Loads loads;
+  schedule.loadsFor(two, s, 8.0, 0.5, loads);  // a step of 0.5 s: whole fractions
+  ASSERT_EQ(loads.size(), 2u);
+  EXPECT_EQ(loads[0].force_W, Vec3(1, 0, 0));
+  EXPECT_EQ(loads[1].force_W, Vec3(8, 0, 0));  // c's own two
+  EXPECT_EQ(schedule.count(0), 1u);
+  EXPECT_EQ(schedule.count(1), 2u);
+  EXPECT_EQ(schedule.count(2), 0u);
+}
+
 TEST(WrenchSchedule, AWrenchInAnotherBodysAxesTurnsWithThatBody) {
   // 2 N on body 0 (1 kg) along body 1's x axis, while body 1 spins about its
   // z axis (a principal axis: ω stays constant). Each step holds the force

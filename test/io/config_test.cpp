@@ -295,7 +295,7 @@ bodies:
 }
 
 TEST(Config, BadBodiesAreRefusedByKey) {
-  expectRefused("bodies: []", {"'bodies'", "non-empty list"});
+  expectRefused("bodies: {name: a}", {"'bodies'", "expected a list"});
   expectRefused("bodies: [{urdf: a.urdf}]", {"'bodies[0].name'", "needs a name"});
   expectRefused("bodies: [{name: a}]", {"'bodies[0].urdf'", "needs a urdf"});
   expectRefused("bodies: [{name: a, urdf: x.urdf}, {name: a, urdf: y.urdf}]", {"'bodies[1].name'", "already"});

@@ -54,5 +54,14 @@ TEST(World, ABodiesListIsLoadedThroughTheLoaderGivenAndTheSingleBodyIsNotAsked) 
   EXPECT_EQ(core::linkState(w.model.body(1), w.state.bodies[1]).p_WL, Vec3(0, 0, 5));
 }
 
+TEST(World, AnEmptyBodiesListIsAnEmptyWorld) {
+  const io::SimConfig c = io::parseConfig(YAML::Load("bodies: []"));
+  EXPECT_TRUE(c.bodies_listed);
+  const io::World w = io::loadWorld(c, []() -> core::BodySpec { throw std::logic_error("not asked for"); });
+  EXPECT_EQ(w.model.bodyCount(), 0u);
+  EXPECT_TRUE(w.state.bodies.empty());
+  EXPECT_FALSE(io::parseConfig(YAML::Load("dt: 0.001")).bodies_listed);
+}
+
 }  // namespace
 }  // namespace rigid_body_sim::test

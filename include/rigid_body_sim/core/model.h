@@ -109,9 +109,46 @@ struct Tuning {
   double restitution = 0.0;  ///< likewise
 };
 
+class Model;
+
+/// A body built for a model but not yet in it: what Model::withBody adds.
+/// Only a BodyBuilder makes one.
+class PreparedBody {
+ public:
+  const BodyModel& body() const { return body_; }
+
+ private:
+  friend class BodyBuilder;
+  friend class Model;
+  BodyModel body_;
+};
+
+/// Builds bodies as a model builds them: validates a spec and derives its
+/// principal axes, contact points and solid (a mesh's distance grid: the
+/// slow part of adding a body, seconds for a big mesh). It holds copies of
+/// the settings it reads, which no edit of the model changes (retuned()
+/// changes only surfaces, and withBody() sets those again), so a caller
+/// may build on another thread while the model steps.
+class BodyBuilder {
+ public:
+  /// Throws std::invalid_argument whose message names the field and value.
+  PreparedBody build(const BodySpec& spec) const;
+
+ private:
+  friend class Model;
+  BodyBuilder(const ContactSettings& contact, const SolverSettings& solver, bool scene_empty)
+      : contact_(contact), solver_(solver), scene_empty_(scene_empty) {}
+  /// The body, with its solid (for other bodies' points) if `with_solid`.
+  BodyModel buildBody(const BodySpec& spec, bool with_solid) const;
+  ContactSettings contact_;
+  SolverSettings solver_;
+  bool scene_empty_;
+};
+
 class Model {
  public:
-  /// Validates `spec` and derives the principal-axes form of every body.
+  /// Validates `spec` and derives the principal-axes form of every body; a
+  /// model may have no bodies (an empty world, to add them to later).
   /// Throws std::invalid_argument whose message names the field and value.
   explicit Model(const ModelSpec& spec);
 
@@ -135,7 +172,13 @@ class Model {
   /// constructor builds one (its name must be new); this one is unchanged.
   /// The other bodies keep their index. Pair it with a new BodyState, and
   /// step an edited model with a fresh Workspace (its caches assume the old one).
-  Model withBody(const BodySpec& spec) const;
+  Model withBody(const BodySpec& spec) const { return withBody(bodyBuilder().build(spec)); }
+  /// The same with a body built beforehand by bodyBuilder() of this model or
+  /// of one it was edited from. What is left is quick: the checks that
+  /// involve the other bodies, and the solid of a one-body world's body.
+  Model withBody(const PreparedBody& body) const;
+  /// What builds bodies for this model (and for those edited from it).
+  BodyBuilder bodyBuilder() const { return BodyBuilder(contact_, solver_, scene_.empty()); }
   /// This model without body i (the later ones move down by one); it may
   /// leave no body at all. Pair it with removeBody() on the state.
   Model withoutBody(std::size_t i) const;
@@ -168,8 +211,6 @@ class Model {
   SleepSettings sleep_;
   SolverSettings solver_;
   SpeedLimits limits_;
-  /// A body as the constructor builds it, with its solid if `with_solid`.
-  BodyModel makeBody(const BodySpec& b, bool with_solid) const;
   /// What follows from the settings: the restitution threshold, the decay
   /// factors, every body's surface that is the scene's, whether anything bounces.
   void deriveSettings();

@@ -41,6 +41,11 @@ class WrenchSchedule {
   /// Removes the wrenches of `body` (every body if body < 0).
   void clear(int body);
 
+  /// Follows Model::withoutBody(body): drops the wrenches on `body` and
+  /// those given in its axes (they have none left), and moves the later
+  /// bodies' indices down by one. Returns how many it dropped.
+  std::size_t removeBody(int body);
+
   /// Forgets wrenches whose window ended by time t, and counts those that
   /// started before t as acting.
   void dropFinished(double t);

@@ -38,6 +38,9 @@ struct SimConfig {
   /// The world's bodies, when the config lists them (`bodies`); empty for
   /// one body given separately (rbsim --urdf, the node's robot_description).
   std::vector<BodyEntry> bodies;
+  /// The config has a `bodies` list, maybe an empty one (`bodies: []`: an
+  /// empty world, which the node's ~spawn_body fills).
+  bool bodies_listed = false;
   /// The config file's folder (parseConfig's base_dir): package:// URDFs are
   /// also looked for above it, so a package's own worlds load without ROS.
   std::string base_dir;

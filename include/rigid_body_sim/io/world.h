@@ -29,8 +29,8 @@ core::Model buildModel(const SimConfig& config, const core::BodySpec& body);
 /// builds the model and the initial state.
 World buildWorld(const SimConfig& config, const BodyLoader& load = {});
 
-/// The world a config describes: its `bodies` list (buildWorld), or, when it
-/// lists none, the one body `single_body` gives (rbsim's --urdf, the node's
+/// The world a config describes: its `bodies` list (buildWorld; `[]` gives
+/// a world without bodies), or, when it has no list, the one body `single_body` gives (rbsim's --urdf, the node's
 /// robot_description) at the config's `initial` pose. `single_body` is only
 /// called then; without one, a config with no bodies list is an error.
 World loadWorld(const SimConfig& config, const std::function<core::BodySpec()>& single_body,
