@@ -7,6 +7,10 @@ namespace rigid_body_sim::node {
 using core::Quat;
 
 std::optional<int> SimNode::findBody(const std::string& name, std::string& error) const {
+  if (model_.bodyCount() == 0) {
+    error = "the world has no bodies (~spawn_body adds one)";
+    return std::nullopt;
+  }
   if (name.empty() && model_.bodyCount() == 1) return 0;
   std::string names;
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
@@ -20,12 +24,27 @@ std::optional<int> SimNode::findBody(const std::string& name, std::string& error
 
 std::optional<SimNode::Axes> SimNode::findFrame(const std::string& frame, int body, std::string& error) const {
   if (frame.empty() || frame == settings_.world_frame || frame == "world") return Axes{};
-  if (frame == frames_[body] || frame == model_.body(body).link) return Axes{core::Frame::kBody, -1};
-  for (std::size_t i = 0; i < frames_.size(); ++i) {
-    if (frame == frames_[i]) return Axes{core::Frame::kWorld, static_cast<int>(i)};
+  if (frame == ports_[body].frame || frame == model_.body(body).link) return Axes{core::Frame::kBody, -1};
+  for (std::size_t i = 0; i < ports_.size(); ++i) {
+    if (frame == ports_[i].frame) return Axes{core::Frame::kWorld, static_cast<int>(i)};
   }
-  error = "unknown frame '" + frame + "' (use '" + settings_.world_frame + "', the body's frame '" + frames_[body] +
-          "'" + (frames_.size() > 1 ? " or another body's tf frame" : "") + ")";
+  error = "unknown frame '" + frame + "' (use '" + settings_.world_frame + "', the body's frame '" +
+          ports_[body].frame + "'" + (ports_.size() > 1 ? " or another body's tf frame" : "") + ")";
+  return std::nullopt;
+}
+
+std::optional<core::Pose> SimNode::findPose(const std::string& frame, std::string& error) const {
+  if (frame.empty() || frame == settings_.world_frame || frame == "world") return core::Pose{};
+  std::string frames;
+  for (std::size_t i = 0; i < ports_.size(); ++i) {
+    if (frame == ports_[i].frame) {
+      const core::LinkState link = core::linkState(model_.body(i), state_.bodies[i]);
+      return core::Pose{link.q_WL, link.p_WL};
+    }
+    frames += ", '" + ports_[i].frame + "'";
+  }
+  error = "frame: unknown frame '" + frame + "' (use '" + settings_.world_frame + "'" +
+          (frames.empty() ? "" : " or a body's tf frame" + frames) + ")";
   return std::nullopt;
 }
 

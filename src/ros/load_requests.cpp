@@ -98,16 +98,19 @@ bool SimNode::clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response
     body = *found;
   }
   schedule_.clear(body);
-  for (std::size_t i = 0; i < held_wrenches_.size(); ++i) {
-    if (body < 0 || static_cast<int>(i) == body) held_wrenches_[i].reset();
+  for (std::size_t i = 0; i < ports_.size(); ++i) {
+    if (body < 0 || static_cast<int>(i) == body) ports_[i].held.reset();
   }
   res.success = true;
   res.message = "wrenches cleared";
   return true;
 }
 
-void SimNode::onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& msg) {
+void SimNode::onWrench(const std::string& name, const geometry_msgs::WrenchStamped::ConstPtr& msg) {
   std::string why;
+  const auto found = findBody(name, why);
+  if (!found) return;  // deleted, its message already queued
+  const int body = *found;
   const auto axes = findFrame(msg->header.frame_id, body, why);
   const Vec3 force = fromVector3(msg->wrench.force), torque = fromVector3(msg->wrench.torque);
   if (why.empty()) why = checkVector(force, kMaxForce, "force", "N");
@@ -116,7 +119,7 @@ void SimNode::onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& m
     ROS_WARN_THROTTLE(1.0, "sim_node: wrench for '%s' ignored: %s", model_.body(body).name.c_str(), why.c_str());
     return;
   }
-  held_wrenches_[body] = HeldWrench{{force, torque, Vec3::Zero(), axes->frame}, simTime(), *axes};
+  ports_[body].held = HeldWrench{{force, torque, Vec3::Zero(), axes->frame}, simTime(), *axes};
 }
 
 }  // namespace rigid_body_sim::node

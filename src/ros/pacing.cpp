@@ -21,8 +21,8 @@ constexpr int kMaxStepsPerTick = 1000;  // beyond this the loop gives up catchin
 void SimNode::stepOnce() {
   const double t = simTime(), h = model_.dt();
   schedule_.loadsFor(model_, state_, t, h, loads_);
-  for (std::size_t i = 0; i < held_wrenches_.size(); ++i) {
-    std::optional<HeldWrench>& held = held_wrenches_[i];
+  for (std::size_t i = 0; i < ports_.size(); ++i) {
+    std::optional<HeldWrench>& held = ports_[i].held;
     if (!held) continue;
     if (settings_.wrench_timeout > 0.0 && t - held->received > settings_.wrench_timeout) {
       held.reset();
@@ -49,15 +49,15 @@ void SimNode::reportStep() {
   for (const core::Divergence& d : workspace_.diverged) {
     // Its loads made it diverge, or will again: they go with it.
     schedule_.clear(d.body);
-    held_wrenches_[d.body].reset();
+    ports_[d.body].held.reset();
     ROS_WARN(
         "sim_node: body '%s': %s stopped being finite at t = %s; it is back at its last finite pose, at rest, "
         "and its wrenches are cleared",
         model_.body(d.body).name.c_str(), d.what.c_str(), now().c_str());
   }
   for (const int i : workspace_.speed_limited) {
-    if (speed_limited_[i]) continue;
-    speed_limited_[i] = 1;
+    if (ports_[i].speed_limited) continue;
+    ports_[i].speed_limited = true;
     ROS_WARN(
         "sim_node: body '%s' reached the speed limits at t = %s (limits.max_linear_speed %g m/s, "
         "limits.max_angular_speed %g rad/s): its velocity is held to them (said once per body)",
@@ -107,6 +107,7 @@ void SimNode::run() {
       } while (Clock::now() < slice_end);
     }
     ros::spinOnce();
+    insertPendingBodies();
     if (rtf > 0.0 || paused_) {
       next_tick += tick;
       const auto now = Clock::now();

@@ -82,7 +82,7 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   const std::set<std::string> node_keys{"rate",           "realtime_factor", "publish_rate",     "world_frame",
                                         "wrench_timeout", "covariance",      "scene_size",       "report_timing",
                                         "config_file",    "publish_tf",      "body_states_rate", "body_states_twist",
-                                        "physics"};  // ~physics: the dynamic_reconfigure server's own
+                                        "paused",         "physics"};  // ~physics: the dynamic_reconfigure server's own
   using R = NodeSettings;
   if (all.hasMember("rate")) n.rate = number(all["rate"], "rate", R::kMinRate, R::kMaxRate, "Hz");
   if (all.hasMember("realtime_factor")) {
@@ -105,6 +105,7 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   if (all.hasMember("scene_size")) n.scene_size = number(all["scene_size"], "scene_size", 1e-3, 1e6, "m");
   if (all.hasMember("report_timing")) n.report_timing = flag(all["report_timing"], "report_timing");
   if (all.hasMember("publish_tf")) n.publish_tf = flag(all["publish_tf"], "publish_tf");
+  if (all.hasMember("paused")) n.paused = flag(all["paused"], "paused");
   if (all.hasMember("body_states_rate")) {
     n.body_states_rate = number(all["body_states_rate"], "body_states_rate", R::kMinPublishRate, R::kMaxRate, "Hz");
   }

@@ -32,13 +32,13 @@ void SimNode::publish() {
     geometry_msgs::TransformStamped tf;
     tf.header.stamp = now;
     tf.header.frame_id = settings_.world_frame;
-    tf.child_frame_id = frames_[i];
+    tf.child_frame_id = ports_[i].frame;
     tf.transform = toTransform(link.p_WL, link.q_WL);
     if (settings_.publish_tf) tf_.sendTransform(tf);
 
     nav_msgs::Odometry odom;
     odom.header = tf.header;
-    odom.child_frame_id = frames_[i];  // the twist is in this frame (nav_msgs/Odometry)
+    odom.child_frame_id = ports_[i].frame;  // the twist is in this frame (nav_msgs/Odometry)
     odom.pose.pose = toPose(link.p_WL, link.q_WL);
     const Quat q_LW = link.q_WL.conjugate();
     odom.twist.twist.linear = toVector3(q_LW * link.v_WL);
@@ -47,7 +47,7 @@ void SimNode::publish() {
       odom.pose.covariance[k * 7] = settings_.covariance;
       odom.twist.covariance[k * 7] = settings_.covariance;
     }
-    odom_pubs_[i].publish(odom);
+    ports_[i].odom.publish(odom);
   }
   resendMarkersIfDue();
 }
@@ -69,7 +69,7 @@ void SimNode::publishBodyStates() {
     const Quat q = in_world ? Quat::Identity() : link.q_WL.conjugate();
     msg.names.push_back(model_.body(i).name);
     msg.poses.push_back(toPose(link.p_WL, link.q_WL));
-    msg.twist_frames.push_back(in_world ? settings_.world_frame : frames_[i]);
+    msg.twist_frames.push_back(in_world ? settings_.world_frame : ports_[i].frame);
     geometry_msgs::Twist twist;
     twist.linear = toVector3(q * link.v_WL);
     twist.angular = toVector3(q * link.w_W);
@@ -86,8 +86,7 @@ void SimNode::publishFixedFrames() {
   std::vector<geometry_msgs::TransformStamped> fixed;
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
     const core::BodyModel& body = model_.body(i);
-    // frames_[i] is the body's prefix ("NAME/" or "") followed by its root link.
-    const std::string prefix = frames_[i].substr(0, frames_[i].size() - body.link.size());
+    const std::string& prefix = ports_[i].prefix;
     for (const core::FixedLink& link : body.fixed_links) {
       geometry_msgs::TransformStamped tf;
       tf.header.stamp = stamp();
@@ -97,7 +96,7 @@ void SimNode::publishFixedFrames() {
       fixed.push_back(tf);
     }
   }
-  if (!fixed.empty()) static_tf_.sendTransform(fixed);
+  if (!fixed.empty()) static_tf_->sendTransform(fixed);
 }
 
 BodyState SimNode::bodyState(int body, const Axes& axes) const {
@@ -107,8 +106,8 @@ BodyState SimNode::bodyState(int body, const Axes& axes) const {
   msg.body = b.name;
   msg.stamp = stamp();
   msg.pose = toPose(link.p_WL, link.q_WL);
-  msg.twist_frame = axes.other >= 0                    ? frames_[axes.other]
-                    : axes.frame == core::Frame::kBody ? frames_[body]
+  msg.twist_frame = axes.other >= 0                    ? ports_[axes.other].frame
+                    : axes.frame == core::Frame::kBody ? ports_[body].frame
                                                        : settings_.world_frame;
   const Quat q = orientationOf(axes, body).conjugate();
   msg.twist.linear = toVector3(q * link.v_WL);

@@ -61,12 +61,8 @@ void SimNode::onReconfigure(PhysicsConfig& config, uint32_t) {
     try {
       world_.model = model_.retuned(t);
       // The fixed-point cache and sleep assumed the old settings: a fresh
-      // workspace (with the same knobs) and every body awake.
-      core::Workspace fresh;
-      fresh.threads = workspace_.threads;
-      fresh.min_parallel_work = workspace_.min_parallel_work;
-      fresh.skip_fixed_points = workspace_.skip_fixed_points;
-      workspace_ = std::move(fresh);
+      // workspace and every body awake.
+      freshWorkspace();
       for (core::BodyState& b : state_.bodies) {
         b.asleep = false;
         b.still_time = 0.0;

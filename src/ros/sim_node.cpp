@@ -78,25 +78,20 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   // process then, interrupt.h): nothing may be advertised or published.
   if (!ros::ok()) return;
   initial_ = state_;
+  paused_ = settings_.paused;
   clock_.anchor(0, static_cast<int64_t>(ros::WallTime::now().toNSec()));
   publish_every_ = std::max(1LL, std::llround(1.0 / (settings_.publish_rate * model_.dt())));
   body_states_every_ = std::max(1LL, std::llround(1.0 / (settings_.body_states_rate * model_.dt())));
   // One body keeps the single-body names; several get theirs under their name.
   const bool several = model_.bodyCount() > 1;
-  held_wrenches_.resize(model_.bodyCount());
-  speed_limited_.assign(model_.bodyCount(), 0);
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
     const core::BodyModel& body = model_.body(i);
-    const std::string prefix = several ? body.name + "/" : "";
-    frames_.push_back(prefix + body.link);
-    odom_pubs_.push_back(nh_.advertise<nav_msgs::Odometry>(prefix + "odom", 10));
-    const int index = static_cast<int>(i);
-    wrench_subs_.push_back(pnh_.subscribe<geometry_msgs::WrenchStamped>(
-        prefix + "wrench", 10, [this, index](const geometry_msgs::WrenchStamped::ConstPtr& m) { onWrench(index, m); }));
-    requireOwnWorldFrame(settings_.world_frame, prefix, body);
+    requireOwnWorldFrame(settings_.world_frame, several ? body.name + "/" : "", body);
+    ports_.push_back(openPorts(i, several ? body.name + "/" : ""));
     ROS_INFO("sim_node: body '%s' (frame '%s'), %.6g kg, %zu collision points", body.name.c_str(),
-             frames_.back().c_str(), body.mass, body.contact_points.size());
+             ports_.back().frame.c_str(), body.mass, body.contact_points.size());
   }
+  if (model_.bodyCount() == 0) ROS_INFO("sim_node: an empty world (bodies: []); ~spawn_body adds bodies");
   ROS_INFO("sim_node: ~rate %g Hz, ~dt %g s, ~realtime_factor %g, ~publish_rate %g Hz (every %lld steps)",
            settings_.rate, model_.dt(), settings_.realtime_factor, settings_.publish_rate, publish_every_);
   ROS_INFO("sim_node: ~world_frame '%s', ~publish_tf %s, ~wrench_timeout %g s, ~covariance %g, /use_sim_time %s",
@@ -115,7 +110,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     markers_resend_ = MarkersResend{ros::WallTime::now(), 0};
   };
   scene_markers_ = sceneMarkers(model_.scene(), settings_.world_frame, settings_.scene_size);
-  body_markers_ = bodyMarkers(model_, frames_);
+  body_markers_ = bodyMarkers(model_, frames());
   scene_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, on_subscriber, {}, {}, true);
   body_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("body_markers", 1, on_subscriber, {}, {}, true);
   if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
@@ -128,13 +123,44 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
                pnh_.advertiseService("reset", &SimNode::reset, this),
                pnh_.advertiseService("pause", &SimNode::pause, this),
                pnh_.advertiseService("unpause", &SimNode::unpause, this),
-               pnh_.advertiseService("step", &SimNode::step, this)};
+               pnh_.advertiseService("step", &SimNode::step, this),
+               pnh_.advertiseService("delete_body", &SimNode::deleteBody, this)};
+  ros::NodeHandle spawn_nh(pnh_);
+  spawn_nh.setCallbackQueue(&spawn_queue_);
+  spawn_service_ = spawn_nh.advertiseService("spawn_body", &SimNode::spawnBody, this);
+  spawn_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &spawn_queue_);
+  spawn_spinner_->start();
+  static_tf_.emplace();
   startReconfigure();
   scene_pub_.publish(scene_markers_);
   body_pub_.publish(body_markers_);
   publishFixedFrames();
   publishClock();
   publish();
+}
+
+SimNode::~SimNode() {
+  stopping_ = true;
+  if (spawn_spinner_) spawn_spinner_->stop();
+}
+
+SimNode::BodyPorts SimNode::openPorts(std::size_t i, const std::string& prefix) {
+  BodyPorts ports;
+  ports.prefix = prefix;
+  ports.frame = prefix + model_.body(i).link;
+  ports.odom = nh_.advertise<nav_msgs::Odometry>(prefix + "odom", 10);
+  // By name: a deletion moves the later bodies' indices.
+  const std::string name = model_.body(i).name;
+  ports.wrench = pnh_.subscribe<geometry_msgs::WrenchStamped>(
+      prefix + "wrench", 10, [this, name](const geometry_msgs::WrenchStamped::ConstPtr& m) { onWrench(name, m); });
+  return ports;
+}
+
+std::vector<std::string> SimNode::frames() const {
+  std::vector<std::string> frames;
+  frames.reserve(ports_.size());
+  for (const BodyPorts& p : ports_) frames.push_back(p.frame);
+  return frames;
 }
 
 }  // namespace rigid_body_sim::node

@@ -61,7 +61,7 @@ bool SimNode::reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& re
   state_ = initial_;
   state_.time = simTime();
   schedule_.clear(-1);
-  for (auto& held : held_wrenches_) held.reset();
+  for (BodyPorts& p : ports_) p.held.reset();
   rebaseClock();
   publish();
   res.success = true;

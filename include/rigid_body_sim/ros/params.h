@@ -22,6 +22,7 @@ struct NodeSettings {
   double covariance = 1e-9;     ///< ~covariance: diagonal of the odometry covariances (ground truth)
   double scene_size = 20.0;     ///< ~scene_size: m, extent drawn for planes and unbounded shapes
   bool report_timing = false;   ///< ~report_timing: log the tick-period jitter at shutdown
+  bool paused = false;          ///< ~paused: start paused (Gazebo's paused:=true), for ~step or ~unpause
   /// ~publish_tf: send each body's world → root link transform; false leaves
   /// that to the user's own estimator (REP 105). Fixed links stay on /tf_static.
   bool publish_tf = true;

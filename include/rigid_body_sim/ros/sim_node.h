@@ -5,14 +5,18 @@
 
 #include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/WrenchStamped.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <atomic>
 #include <chrono>
+#include <future>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,9 +26,11 @@
 #include "rigid_body_sim/BodyState.h"
 #include "rigid_body_sim/BodyStates.h"
 #include "rigid_body_sim/ClearWrenches.h"
+#include "rigid_body_sim/DeleteBody.h"
 #include "rigid_body_sim/GetState.h"
 #include "rigid_body_sim/PhysicsConfig.h"
 #include "rigid_body_sim/SetState.h"
+#include "rigid_body_sim/SpawnBody.h"
 #include "rigid_body_sim/Step.h"
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/core/wrench_schedule.h"
@@ -40,6 +46,9 @@ class SimNode {
   /// Throws std::exception with a message naming the problem (bad URDF, bad
   /// parameter); main() reports it with ROS_FATAL and exits.
   SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
+
+  /// Stops the spawn thread (a spawn waiting for the loop is refused).
+  ~SimNode();
 
   /// Steps and publishes until ROS shuts down.
   void run();
@@ -71,7 +80,27 @@ class SimNode {
   bool pause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool unpause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool step(Step::Request& req, Step::Response& res);
-  void onWrench(int body, const geometry_msgs::WrenchStamped::ConstPtr& msg);
+  void onWrench(const std::string& body, const geometry_msgs::WrenchStamped::ConstPtr& msg);
+
+  // World editing (world_requests.cpp). ~spawn_body runs on its own thread:
+  // it reads and checks the request and builds the body (the slow part), then
+  // hands it to the loop, which adds it between two steps (insertBody) and
+  // answers through the promise.
+  bool spawnBody(SpawnBody::Request& req, SpawnBody::Response& res);
+  bool deleteBody(DeleteBody::Request& req, DeleteBody::Response& res);
+  struct PendingSpawn {
+    SpawnBody::Request request;
+    core::PreparedBody body;
+    std::promise<SpawnBody::Response> done;  ///< what the loop answers
+  };
+  /// Adds the spawns built since the last tick (loop thread, between steps).
+  void insertPendingBodies();
+  /// The body of `spawn` into the model, state and topics, or why not.
+  SpawnBody::Response insertBody(const PendingSpawn& spawn);
+  /// After an edit of the model: a fresh workspace, the markers and fixed frames again.
+  void afterEdit(bool deleted);
+  /// A new workspace with the same knobs: its caches assumed the old model.
+  void freshWorkspace();
 
   // Live tuning (reconfigure.cpp): the dynamic_reconfigure server ~physics.
   void startReconfigure();
@@ -86,6 +115,9 @@ class SimNode {
 
   /// The body named `name` ("" = the only body), or an error message.
   std::optional<int> findBody(const std::string& name, std::string& error) const;
+  /// The pose of `frame` ("" or the world frame: the identity, else a
+  /// body's tf frame as it is now) in the world, or an error message.
+  std::optional<core::Pose> findPose(const std::string& frame, std::string& error) const;
   /// The axes a request's vectors are given in, for the body it addresses.
   struct Axes {
     core::Frame frame = core::Frame::kWorld;  ///< kBody: the body's own root link, turning with it
@@ -117,8 +149,6 @@ class SimNode {
   const core::Model& model_ = world_.model;
   core::State& state_ = world_.state;
   core::State initial_;
-  /// Per body: its tf frame (the root link; "<name>/<link>" with several bodies).
-  std::vector<std::string> frames_;
   core::Workspace workspace_;
   core::WrenchSchedule schedule_;
   core::Loads loads_;
@@ -128,8 +158,23 @@ class SimNode {
     double received;  ///< sim time
     Axes axes;        ///< another body's axes are re-expressed at each step
   };
-  std::vector<std::optional<HeldWrench>> held_wrenches_;  ///< per body, from its ~wrench topic
-  std::vector<char> speed_limited_;                       ///< per body: the speed limits have held it (warned)
+  /// What the node keeps per body beside the model, in the model's order.
+  /// A body's names are fixed when it is created: the one body of a world
+  /// that starts with one has the single-body names for life (its frame
+  /// the root link, `odom`, `~wrench`); every other body, listed in a world
+  /// or spawned, has them under its name ("NAME/").
+  struct BodyPorts {
+    std::string prefix;              ///< "" or "NAME/", before its frames and topics
+    std::string frame;               ///< its tf frame: prefix + root link
+    ros::Publisher odom;             ///< PREFIXodom
+    ros::Subscriber wrench;          ///< ~PREFIXwrench
+    std::optional<HeldWrench> held;  ///< from its ~wrench topic
+    bool speed_limited = false;      ///< the speed limits have held it (warned once)
+  };
+  std::vector<BodyPorts> ports_;
+  /// The topics and frame of body i of the model, under `prefix`.
+  BodyPorts openPorts(std::size_t i, const std::string& prefix);
+  std::vector<std::string> frames() const;
 
   bool paused_ = false;
   bool use_sim_time_ = false;
@@ -144,18 +189,26 @@ class SimNode {
   double ref_sim_ = 0.0;
   std::vector<double> tick_periods_;  ///< s, when ~report_timing
 
-  std::vector<ros::Publisher> odom_pubs_;  ///< per body
   ros::Publisher clock_pub_, scene_pub_, body_pub_, body_states_pub_;
   tf2_ros::TransformBroadcaster tf_;
-  tf2_ros::StaticTransformBroadcaster static_tf_;
+  /// Made again when a body goes: tf2_ros keeps every static transform it was given.
+  std::optional<tf2_ros::StaticTransformBroadcaster> static_tf_;
   visualization_msgs::MarkerArray scene_markers_, body_markers_;
   struct MarkersResend {
     ros::WallTime connected;  ///< when a subscriber to the markers connected
     int publishes = 0;        ///< tf publications since
   };
   std::optional<MarkersResend> markers_resend_;
-  std::vector<ros::Subscriber> wrench_subs_;  ///< per body
   std::vector<ros::ServiceServer> services_;
+
+  // The spawn thread: ~spawn_body on its own queue.
+  const core::BodyBuilder builder_ = model_.bodyBuilder();
+  ros::CallbackQueue spawn_queue_;
+  ros::ServiceServer spawn_service_;
+  std::unique_ptr<ros::AsyncSpinner> spawn_spinner_;
+  std::mutex pending_mutex_;
+  std::vector<std::shared_ptr<PendingSpawn>> pending_;  ///< built, for the loop to add
+  std::atomic<bool> stopping_{false};                   ///< the loop has ended: spawns are refused
   boost::recursive_mutex reconfigure_mutex_;
   std::unique_ptr<dynamic_reconfigure::Server<PhysicsConfig>> reconfigure_;
 };
