@@ -15,7 +15,9 @@
 
 #include "node_fixture.h"
 #include "rigid_body_sim/ClearWrenches.h"
+#include "rigid_body_sim/DeleteBody.h"
 #include "rigid_body_sim/SetState.h"
+#include "rigid_body_sim/SpawnBody.h"
 
 namespace rbs_test {
 namespace {
@@ -291,6 +293,72 @@ TEST_F(Attack, SeededRandomRequestsNeverBreakIt) {
   expectAllFiniteAndWithinLimits();
   ros::spinOnce();
   EXPECT_GT(odom_count_, 0);
+  EXPECT_EQ(non_finite_, 0);
+}
+
+TEST_F(Attack, SeededRandomSpawnsAndDeletesNeverBreakIt) {
+  // Spawns of bodies s0..s4 with random names, URDFs, poses and twists, and
+  // deletes of them: the world's four bodies are never named for deletion,
+  // so a refused spawn or delete must leave them bit for bit as they were.
+  Values r(14);
+  const std::vector<std::string> names = {"s0", "s1", "s2", "s3", "s4", "box", "", "two words", "s/x", "\"\\"};
+  const std::vector<std::string> files = {"package://rigid_body_sim/urdf/ball.urdf",
+                                          "package://rigid_body_sim/urdf/box.urdf", "package://rigid_body_sim/urdf/x",
+                                          "relative.urdf", "/dev/null", ""};
+  int refused = 0, accepted = 0;
+  for (int n = 0; n < 300; ++n) {
+    const std::vector<BodyState> before = all();
+    bool ok = true;
+    std::string what;
+    const std::size_t kind = r.pick(5);
+    if (kind < 3) {
+      rigid_body_sim::SpawnBody s;
+      s.request.name = names[r.pick(3) == 0 ? r.pick(names.size()) : r.pick(5)];
+      s.request.urdf_file = files[r.pick(3) == 0 ? r.pick(files.size()) : r.pick(2)];
+      if (r.pick(6) == 0) s.request.urdf_xml = "<robot name='r'><link name='l'/></robot>";
+      s.request.pose.position.x = r.pick(3) == 0 ? r.any(1e6) : 3.0 + 0.5 * static_cast<double>(n % 7);
+      s.request.pose.position.z = 1.0 + std::abs(r.any(3.0));
+      s.request.pose.orientation.w = r.pick(5) == 0 ? r.any(1.0) : 1.0;
+      s.request.twist.linear = r.pick(3) == 0 ? r.vector(500.0) : vec(0, 0, 0);
+      s.request.frame = r.pick(4) == 0 ? r.frame() : "";
+      s.request.own_friction = r.pick(3) == 0;
+      s.request.friction = r.any(10.0);
+      s = call("spawn_body", s);
+      ok = s.response.success;
+      what = "spawn_body: " + s.response.message;
+    } else if (kind == 3) {
+      rigid_body_sim::DeleteBody d;
+      d.request.name = std::vector<std::string>{"s0", "s1", "s2", "s3", "s4", "nobody", ""}[r.pick(7)];
+      d = call("delete_body", d);
+      ok = d.response.success;
+      what = "delete_body: " + d.response.message;
+    } else {
+      ASSERT_TRUE(step(1 + static_cast<int>(r.pick(50))).success);
+      continue;
+    }
+    ros::spinOnce();
+    if (ok) {
+      ++accepted;
+      continue;
+    }
+    ++refused;
+    const std::vector<BodyState> after = all();
+    for (std::size_t i = 0; i < after.size(); ++i) {
+      ASSERT_TRUE(same(before[i], after[i]))
+          << "request " << n << " was refused yet changed '" << kBodies[i] << "': " << what;
+    }
+  }
+  EXPECT_GT(refused, 50);
+  EXPECT_GT(accepted, 20);
+  ASSERT_TRUE(step(200).success);
+  expectAllFiniteAndWithinLimits();
+  for (const std::string name : {"s0", "s1", "s2", "s3", "s4"}) {
+    rigid_body_sim::GetState g;
+    g.request.body = name;
+    g = call("get_state", g);
+    if (g.response.success) EXPECT_TRUE(finite(g.response.state.pose) && finite(g.response.state.twist)) << name;
+  }
+  ros::spinOnce();
   EXPECT_EQ(non_finite_, 0);
 }
 
