@@ -10,10 +10,7 @@
 set -euo pipefail
 source "$(dirname "$0")/../scripts/common.sh"
 SECONDS_PER_RUN=${1:-10}
-rbs_install_packages
-RBS_BUILD_TYPE=Release rbs_build >/dev/null
-set +u; source "$RBS_WS/devel/setup.bash"; set -u
-rbs_start_master 11497
+rbs_bench_node_setup 11497
 core=$RBS_MASTER_PID
 trap 'kill -INT $core 2>/dev/null; wait $core 2>/dev/null || true' EXIT
 rosparam set --textfile "$RBS_ROOT/urdf/box.urdf" /robot_description

@@ -9,10 +9,7 @@
 set -euo pipefail
 source "$(dirname "$0")/../scripts/common.sh"
 CALLS=${1:-4000} ROUNDS=${2:-2}
-rbs_install_packages
-RBS_BUILD_TYPE=Release rbs_build >/dev/null
-set +u; source "$RBS_WS/devel/setup.bash"; set -u
-rbs_start_master 11498
+rbs_bench_node_setup 11499
 core=$RBS_MASTER_PID
 lib=$RBS_WS/devel/lib/rigid_body_sim
 roslaunch rigid_body_sim world.launch >"$ROS_HOME/service_churn_world.log" 2>&1 &

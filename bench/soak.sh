@@ -12,10 +12,7 @@ set -euo pipefail
 source "$(dirname "$0")/../scripts/common.sh"
 SIM_SECONDS=${1:-3600}
 RTF=${2:-20}
-rbs_install_packages
-RBS_BUILD_TYPE=Release rbs_build >/dev/null
-set +u; source "$RBS_WS/devel/setup.bash"; set -u
-rbs_start_master 11498
+rbs_bench_node_setup 11498
 core=$RBS_MASTER_PID
 trap 'kill -INT $core 2>/dev/null; wait $core 2>/dev/null || true' EXIT
 rosparam set /sim_node/realtime_factor "$RTF"

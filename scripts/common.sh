@@ -116,3 +116,15 @@ rbs_start_master() {
   RBS_MASTER_PID=$!
   until rosparam list >/dev/null 2>&1; do sleep 0.2; done
 }
+
+# The start of every bench that runs the node: packages, a Release build,
+# its environment, and a master of its own on port $1 (each bench has its
+# own port, so two can run at once).
+rbs_bench_node_setup() {
+  rbs_install_packages
+  RBS_BUILD_TYPE=Release rbs_build >/dev/null
+  set +u
+  source "$RBS_WS/devel/setup.bash"
+  set -u
+  rbs_start_master "$1"
+}

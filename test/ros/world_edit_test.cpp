@@ -127,7 +127,8 @@ class NodeSpawn : public WorldEdit {};
 
 TEST_F(NodeSpawn, TheScriptSpawnsAsGazebosSpawnModelDoes) {
   // spawn.test: `spawn_body -urdf -param crate_description -model crate -x 1
-  // -y 2 -z 0.5 -Y pi/2` into an empty world without gravity.
+  // -y 2 -z 0.5 -Y pi/2 -unpause` into an empty, paused world without
+  // gravity. Odometry comes only from steps: it flows once unpaused.
   nav_msgs::Odometry odom;
   bool got = false;
   const ros::Subscriber sub =
