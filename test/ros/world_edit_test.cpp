@@ -187,6 +187,30 @@ TEST_F(NodeSpawn, ASpawnedBodyExistsFromTheNextStepForEveryTopicAndService) {
   EXPECT_NEAR(before, 0.2, 1e-9);
 }
 
+/// The child frames of the latched /tf_static a new subscriber gets (none
+/// when no body has fixed links: then nothing is latched).
+std::set<std::string> staticFrames(ros::NodeHandle& nh) {
+  std::set<std::string> frames;
+  const ros::Subscriber sub = nh.subscribe<tf2_msgs::TFMessage>("/tf_static", 10, [&](const tf2_msgs::TFMessage::ConstPtr& m) {
+    for (const auto& t : m->transforms) frames.insert(t.child_frame_id);
+  });
+  EXPECT_TRUE(spinUntil([&] { return sub.getNumPublishers() > 0; }, 10.0));
+  spinUntil([&] { return !frames.empty(); }, 2.0);
+  return frames;
+}
+
+TEST_F(NodeSpawn, ASpawnedBodysFixedLinksAreOnTfStaticUntilItIsDeleted) {
+  ASSERT_TRUE(spinUntil([] { return advertised("/crate/odom"); }, 30.0));
+  ASSERT_TRUE(trigger("pause"));
+  // two_boxes.urdf: base_link with second_box fixed to it.
+  const SpawnBody::Response res = spawn(spawnRequest("pair", "package://rigid_body_sim/urdf/two_boxes.urdf", 0, -3, 0));
+  ASSERT_TRUE(res.success) << res.message;
+  EXPECT_EQ(staticFrames(nh_).count("pair/second_box"), 1u);
+  ASSERT_TRUE(remove("pair").success);
+  EXPECT_EQ(staticFrames(nh_).count("pair/second_box"), 0u);  // a late subscriber no longer gets it
+  EXPECT_FALSE(get("pair").success);
+}
+
 TEST_F(NodeSpawn, BadRequestsAreRefusedNamingTheFieldAndChangeNothing) {
   ASSERT_TRUE(spinUntil([] { return advertised("/crate/odom"); }, 30.0));
   ASSERT_TRUE(trigger("pause"));
