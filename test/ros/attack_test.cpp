@@ -303,8 +303,11 @@ TEST_F(Attack, SeededRandomSpawnsAndDeletesNeverBreakIt) {
   Values r(14);
   const std::vector<std::string> names = {"s0", "s1", "s2", "s3", "s4", "box", "", "two words", "s/x", "\"\\"};
   const std::vector<std::string> files = {"package://rigid_body_sim/urdf/ball.urdf",
-                                          "package://rigid_body_sim/urdf/box.urdf", "package://rigid_body_sim/urdf/x",
-                                          "relative.urdf", "/dev/null", ""};
+                                          "package://rigid_body_sim/urdf/box.urdf",
+                                          "package://rigid_body_sim/urdf/x",
+                                          "relative.urdf",
+                                          "/dev/null",
+                                          ""};
   int refused = 0, accepted = 0;
   for (int n = 0; n < 300; ++n) {
     const std::vector<BodyState> before = all();

@@ -191,9 +191,10 @@ TEST_F(NodeSpawn, ASpawnedBodyExistsFromTheNextStepForEveryTopicAndService) {
 /// when no body has fixed links: then nothing is latched).
 std::set<std::string> staticFrames(ros::NodeHandle& nh) {
   std::set<std::string> frames;
-  const ros::Subscriber sub = nh.subscribe<tf2_msgs::TFMessage>("/tf_static", 10, [&](const tf2_msgs::TFMessage::ConstPtr& m) {
-    for (const auto& t : m->transforms) frames.insert(t.child_frame_id);
-  });
+  const ros::Subscriber sub =
+      nh.subscribe<tf2_msgs::TFMessage>("/tf_static", 10, [&](const tf2_msgs::TFMessage::ConstPtr& m) {
+        for (const auto& t : m->transforms) frames.insert(t.child_frame_id);
+      });
   EXPECT_TRUE(spinUntil([&] { return sub.getNumPublishers() > 0; }, 10.0));
   spinUntil([&] { return !frames.empty(); }, 2.0);
   return frames;
