@@ -94,8 +94,25 @@ class Attack : public Node {
     }
   }
 
+  /// Counts request n's answer; a refused request must have changed no body
+  /// (`before`: every body's state before it).
+  void judge(int n, bool ok, const std::vector<BodyState>& before, const std::string& what) {
+    ros::spinOnce();
+    if (ok) {
+      ++accepted_;
+      return;
+    }
+    ++refused_;
+    const std::vector<BodyState> after = all();
+    for (std::size_t i = 0; i < after.size(); ++i) {
+      ASSERT_TRUE(same(before[i], after[i]))
+          << "request " << n << " was refused yet changed '" << kBodies[i] << "': " << what;
+    }
+  }
+
   std::vector<ros::Subscriber> odom_subs_;
   ros::Subscriber tf_sub_;
+  int accepted_ = 0, refused_ = 0;
   int odom_count_ = 0;
   int non_finite_ = 0;
 };
@@ -185,7 +202,6 @@ TEST_F(Attack, SeededRandomRequestsNeverBreakIt) {
   for (const std::string& name : kBodies) {
     wrench_pubs.push_back(nh_.advertise<geometry_msgs::WrenchStamped>("/sim_node/" + name + "/wrench", 10));
   }
-  int refused = 0, accepted = 0;
   for (int n = 0; n < 1500; ++n) {
     const std::vector<BodyState> before = all();
     bool ok = true;
@@ -275,20 +291,11 @@ TEST_F(Attack, SeededRandomRequestsNeverBreakIt) {
         continue;
       }
     }
-    ros::spinOnce();
-    if (ok) {
-      ++accepted;
-      continue;
-    }
-    ++refused;
-    const std::vector<BodyState> after = all();
-    for (std::size_t i = 0; i < after.size(); ++i) {
-      ASSERT_TRUE(same(before[i], after[i]))
-          << "request " << n << " was refused yet changed '" << kBodies[i] << "': " << what;
-    }
+    judge(n, ok, before, what);
+    if (HasFatalFailure()) return;
   }
-  EXPECT_GT(refused, 200);
-  EXPECT_GT(accepted, 200);
+  EXPECT_GT(refused_, 200);
+  EXPECT_GT(accepted_, 200);
   ASSERT_TRUE(step(200).success);
   expectAllFiniteAndWithinLimits();
   ros::spinOnce();
@@ -308,7 +315,6 @@ TEST_F(Attack, SeededRandomSpawnsAndDeletesNeverBreakIt) {
                                           "relative.urdf",
                                           "/dev/null",
                                           ""};
-  int refused = 0, accepted = 0;
   for (int n = 0; n < 300; ++n) {
     const std::vector<BodyState> before = all();
     bool ok = true;
@@ -339,20 +345,11 @@ TEST_F(Attack, SeededRandomSpawnsAndDeletesNeverBreakIt) {
       ASSERT_TRUE(step(1 + static_cast<int>(r.pick(50))).success);
       continue;
     }
-    ros::spinOnce();
-    if (ok) {
-      ++accepted;
-      continue;
-    }
-    ++refused;
-    const std::vector<BodyState> after = all();
-    for (std::size_t i = 0; i < after.size(); ++i) {
-      ASSERT_TRUE(same(before[i], after[i]))
-          << "request " << n << " was refused yet changed '" << kBodies[i] << "': " << what;
-    }
+    judge(n, ok, before, what);
+    if (HasFatalFailure()) return;
   }
-  EXPECT_GT(refused, 50);
-  EXPECT_GT(accepted, 20);
+  EXPECT_GT(refused_, 50);
+  EXPECT_GT(accepted_, 20);
   ASSERT_TRUE(step(200).success);
   expectAllFiniteAndWithinLimits();
   for (const std::string name : {"s0", "s1", "s2", "s3", "s4"}) {
