@@ -9,6 +9,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/diagnostics.cpp
   ${RBS_SOURCE_ROOT}/src/core/fixed_point.cpp
   ${RBS_SOURCE_ROOT}/src/core/guard.cpp
+  ${RBS_SOURCE_ROOT}/src/core/imu.cpp
   ${RBS_SOURCE_ROOT}/src/core/inertia.cpp
   ${RBS_SOURCE_ROOT}/src/core/integration.cpp
   ${RBS_SOURCE_ROOT}/src/core/island.cpp
@@ -33,6 +34,7 @@ set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/input_bounds.cpp
   ${RBS_SOURCE_ROOT}/src/io/mesh_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/scene_config.cpp
+  ${RBS_SOURCE_ROOT}/src/io/sensor_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/world.cpp
   ${RBS_SOURCE_ROOT}/src/io/yaml_fields.cpp

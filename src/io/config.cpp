@@ -10,6 +10,7 @@
 #include "rigid_body_sim/io/orientation.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "scene_config.h"
+#include "sensor_config.h"
 #include "yaml_fields.h"
 
 namespace rigid_body_sim::io {
@@ -78,13 +79,6 @@ void parseSleep(const YAML::Node& node, core::SleepSettings& s) {
   if (node["time"]) s.time = number(node["time"], "sleep.time");
 }
 
-/// An integer key: a number with no fraction.
-int integer(const YAML::Node& node, const std::string& key) {
-  const double x = number(node, key);
-  if (x != std::floor(x) || std::abs(x) > 1e9) fail(key, "expected an integer, got " + show(node));
-  return static_cast<int>(x);
-}
-
 void parseSolver(const YAML::Node& node, core::SolverSettings& s) {
   requireKnownKeys(
       node, "solver",
@@ -130,7 +124,7 @@ std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& ba
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = "bodies[" + std::to_string(i) + "]";
     const YAML::Node entry = node[i];
-    requireKnownKeys(entry, path, {"name", "urdf", "initial", "contact"});
+    requireKnownKeys(entry, path, {"name", "urdf", "initial", "contact", "imu"});
     if (!entry["name"]) fail(path + ".name", "every body needs a name");
     if (!entry["urdf"]) fail(path + ".urdf", "every body needs a urdf (a file, or for the node a parameter)");
     BodyEntry b;
@@ -149,6 +143,7 @@ std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& ba
       if (surface["friction"]) b.friction = number(surface["friction"], path + ".contact.friction");
       if (surface["restitution"]) b.restitution = number(surface["restitution"], path + ".contact.restitution");
     }
+    if (entry["imu"]) b.imu = parseImu(entry["imu"], path + ".imu");
     bodies.push_back(b);
   }
   return bodies;
@@ -159,9 +154,9 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir) {
   c.base_dir = base_dir;
   c.model.scene = {core::Sdf::plane(Vec3::UnitZ())};  // the ground, z = 0
   if (!root || root.IsNull()) return c;
-  requireKnownKeys(
-      root, "",
-      {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver", "limits", "bodies"});
+  requireKnownKeys(root, "",
+                   {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver",
+                    "limits", "bodies", "imu"});
   if (root["dt"]) c.model.dt = number(root["dt"], "dt");
   if (root["gravity"]) c.model.gravity_W = vec3(root["gravity"], "gravity");
   if (root["gyroscopic"]) c.model.gyroscopic = boolean(root["gyroscopic"], "gyroscopic");
@@ -177,6 +172,15 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir) {
     c.bodies = parseBodies(root["bodies"], base_dir);
     c.bodies_listed = true;
   }
+  if (root["imu"]) {
+    if (root["bodies"]) fail("imu", "with a bodies list, give each body its own bodies[i].imu");
+    c.imu = parseImu(root["imu"], "imu");
+  }
+  // Sensors sample at most once a step: checked against the dt just read.
+  if (c.imu) validateImuEntry(*c.imu, c.model.dt, "imu");
+  for (std::size_t i = 0; i < c.bodies.size(); ++i) {
+    if (c.bodies[i].imu) validateImuEntry(*c.bodies[i].imu, c.model.dt, "bodies[" + std::to_string(i) + "].imu");
+  }
   return c;
 }
 
@@ -187,6 +191,16 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
     return parseTree(root, base_dir);
   } catch (const YAML::Exception& e) {  // a conversion no check above foresaw: still a ConfigError
     throw ConfigError(std::string("config: ") + e.what());
+  }
+}
+
+ImuEntry parseImuText(const std::string& yaml, const std::string& path, double dt) {
+  try {
+    const ImuEntry imu = parseImu(loadYamlText(yaml, path), path);
+    validateImuEntry(imu, dt, path);
+    return imu;
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path + ": " + e.what());
   }
 }
 

@@ -68,6 +68,12 @@ double positiveNumber(const YAML::Node& node, const std::string& key) {
   return x;
 }
 
+int integer(const YAML::Node& node, const std::string& key) {
+  const double x = number(node, key);
+  if (x != std::floor(x) || std::abs(x) > 1e9) fail(key, "expected an integer, got " + show(node));
+  return static_cast<int>(x);
+}
+
 Quat orientation(const YAML::Node& node, const std::string& path) {
   if (node["rpy"] && node["quaternion"]) fail(path, "give " + path + ".rpy or " + path + ".quaternion, not both");
   if (node["rpy"]) return quaternionFromRpy(vec3(node["rpy"], join(path, "rpy")));

@@ -294,6 +294,44 @@ bodies:
   expectRefused("bodies: [{name: a, urdf: x.urdf, contact: {grip: 1}}]", {"'bodies[0].contact.grip'", "unknown key"});
 }
 
+TEST(Config, AnImuIsReadForTheOneBodyOrEachBodyOfAWorld) {
+  const io::SimConfig one = parse(
+      "imu: {frame_id: gyro, pose: {position: [0.1, 0, 0.2], rpy: [0, 0, 1]}, rate: 250, seed: 9, gyro_noise: 0.01, "
+      "accel_noise: 0.1, gyro_bias_walk: 0.001, accel_bias_walk: 0.02, orientation_noise: 0.005}");
+  ASSERT_TRUE(one.imu.has_value());
+  EXPECT_EQ(one.imu->frame_id, "gyro");
+  const core::ImuSettings& s = one.imu->settings;
+  EXPECT_EQ(s.X_LS.translation, Vec3(0.1, 0, 0.2));
+  EXPECT_NEAR(s.X_LS.rotation.angularDistance(Quat(Eigen::AngleAxisd(1.0, Vec3::UnitZ()))), 0.0, 1e-15);
+  EXPECT_EQ(s.rate, 250.0);
+  EXPECT_EQ(s.seed, 9u);
+  EXPECT_EQ(s.gyro_noise, 0.01);
+  EXPECT_EQ(s.accel_noise, 0.1);
+  EXPECT_EQ(s.gyro_bias_walk, 0.001);
+  EXPECT_EQ(s.accel_bias_walk, 0.02);
+  EXPECT_EQ(s.orientation_noise, 0.005);
+  EXPECT_FALSE(parse("").imu.has_value());
+  const io::SimConfig world = parse("bodies: [{name: a, urdf: x.urdf}, {name: b, urdf: y.urdf, imu: {rate: 50}}]");
+  EXPECT_FALSE(world.bodies[0].imu.has_value());
+  ASSERT_TRUE(world.bodies[1].imu.has_value());
+  EXPECT_EQ(world.bodies[1].imu->settings.rate, 50.0);
+  EXPECT_EQ(world.bodies[1].imu->frame_id, "imu_link");
+}
+
+TEST(Config, BadImusAreRefusedByKey) {
+  expectRefused("imu: {rate: 0}", {"imu.rate = 0"});
+  expectRefused("dt: 0.01\nimu: {rate: 200}", {"imu.rate = 200", "1/dt"});
+  expectRefused("imu: {gyro_noise: -0.1}", {"imu.gyro_noise = -0.1"});
+  expectRefused("imu: {seed: -3}", {"'imu.seed'"});
+  expectRefused("imu: {frame: x}", {"'imu.frame'", "unknown key"});
+  expectRefused("imu: {pose: {position: [0, 0, nan]}}", {"'imu.pose.position[2]'"});
+  expectRefused("bodies: [{name: a, urdf: x.urdf, imu: {accel_noise: .inf}}]", {"bodies[0].imu.accel_noise"});
+  expectRefused("bodies: [{name: a, urdf: x.urdf}]\nimu: {rate: 10}", {"'imu'", "bodies[i].imu"});
+  expectThrowsWith<io::ConfigError>([] { io::parseImuText("{rate: -1}", "imu", 1e-3); }, {"imu.rate = -1"});
+  expectThrowsWith<io::ConfigError>([] { io::parseImuText("[1, 2", "imu", 1e-3); }, {"imu"});
+  EXPECT_EQ(io::parseImuText("{rate: 20}", "imu", 1e-3).settings.rate, 20.0);
+}
+
 TEST(Config, BadBodiesAreRefusedByKey) {
   expectRefused("bodies: {name: a}", {"'bodies'", "expected a list"});
   expectRefused("bodies: [{urdf: a.urdf}]", {"'bodies[0].name'", "needs a name"});

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "rigid_body_sim/core/imu.h"
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/state.h"
 
@@ -20,6 +21,13 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// An IMU on a body (`imu` for one body, `bodies[i].imu`): the core's
+/// settings, and the frame the node names it by.
+struct ImuEntry {
+  core::ImuSettings settings;
+  std::string frame_id = "imu_link";  ///< under the body's prefix in a world ("NAME/imu_link")
+};
+
 /// One entry of the `bodies` list: a body of the world.
 struct BodyEntry {
   std::string name;  ///< unique in the world
@@ -28,6 +36,7 @@ struct BodyEntry {
   core::LinkState initial;
   /// Its surface (bodies[i].contact); unset: the scene's, contact.friction and contact.restitution.
   std::optional<double> friction, restitution;
+  std::optional<ImuEntry> imu;  ///< bodies[i].imu
 };
 
 struct SimConfig {
@@ -41,6 +50,8 @@ struct SimConfig {
   /// The config has a `bodies` list, maybe an empty one (`bodies: []`: an
   /// empty world, which the node's ~spawn_body fills).
   bool bodies_listed = false;
+  /// The one body's IMU (`imu`), without a bodies list.
+  std::optional<ImuEntry> imu;
   /// The config file's folder (parseConfig's base_dir): package:// URDFs are
   /// also looked for above it, so a package's own worlds load without ROS.
   std::string base_dir;
@@ -50,6 +61,10 @@ struct SimConfig {
 /// config/default.yaml; unknown keys and bad values throw ConfigError.
 /// Relative URDF paths in `bodies` resolve against `base_dir`.
 SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir = "");
+
+/// An IMU from the YAML text of an `imu` map (the node's ~spawn_body), for a
+/// model of step `dt`; ConfigError naming `path`.KEY.
+ImuEntry parseImuText(const std::string& yaml, const std::string& path, double dt);
 
 /// Reads a YAML file: ConfigError if it is not a readable regular file of at
 /// most InputCaps::kConfigBytes, or its text is refused by loadYamlText.

@@ -1,0 +1,47 @@
+#include "sensor_config.h"
+
+#include "yaml_fields.h"
+
+namespace rigid_body_sim::io {
+
+using namespace yaml_fields;
+
+ImuEntry parseImu(const YAML::Node& node, const std::string& path) {
+  requireKnownKeys(node, path,
+                   {"frame_id", "pose", "rate", "seed", "gyro_noise", "accel_noise", "gyro_bias_walk",
+                    "accel_bias_walk", "orientation_noise"});
+  ImuEntry imu;
+  core::ImuSettings& s = imu.settings;
+  if (node["frame_id"]) imu.frame_id = text(node["frame_id"], path + ".frame_id");
+  if (node["pose"]) {
+    const YAML::Node pose = node["pose"];
+    requireKnownKeys(pose, path + ".pose", {"position", "rpy", "quaternion"});
+    if (pose["position"]) s.X_LS.translation = vec3(pose["position"], path + ".pose.position");
+    s.X_LS.rotation = orientation(pose, path + ".pose");
+  }
+  const auto read = [&](const char* key, double& field) {
+    if (node[key]) field = number(node[key], path + "." + key);
+  };
+  read("rate", s.rate);
+  read("gyro_noise", s.gyro_noise);
+  read("accel_noise", s.accel_noise);
+  read("gyro_bias_walk", s.gyro_bias_walk);
+  read("accel_bias_walk", s.accel_bias_walk);
+  read("orientation_noise", s.orientation_noise);
+  if (node["seed"]) {
+    const int seed = integer(node["seed"], path + ".seed");
+    if (seed < 0) fail(path + ".seed", "expected an integer >= 0, got " + show(node["seed"]));
+    s.seed = static_cast<std::uint64_t>(seed);
+  }
+  return imu;
+}
+
+void validateImuEntry(const ImuEntry& imu, double dt, const std::string& path) {
+  try {
+    core::validateImu(imu.settings, dt, path);
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(std::string("config key ") + e.what());
+  }
+}
+
+}  // namespace rigid_body_sim::io

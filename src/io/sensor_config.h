@@ -1,0 +1,20 @@
+// The config's sensors (`imu`, `bodies[i].imu`), private to io.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+#include "rigid_body_sim/io/config.h"
+
+namespace rigid_body_sim::io {
+
+/// An `imu` map at `path`: frame_id, pose {position, rpy | quaternion},
+/// rate, seed, gyro_noise, accel_noise, gyro_bias_walk, accel_bias_walk,
+/// orientation_noise (units in config/default.yaml).
+ImuEntry parseImu(const YAML::Node& node, const std::string& path);
+
+/// The core's checks of an IMU for a model of step `dt`, as a ConfigError naming `path`.
+void validateImuEntry(const ImuEntry& imu, double dt, const std::string& path);
+
+}  // namespace rigid_body_sim::io
