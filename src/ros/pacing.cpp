@@ -37,6 +37,7 @@ void SimNode::stepOnce() {
   if (!workspace_.speed_limited.empty() || !workspace_.diverged.empty()) reportStep();
   ++steps_;
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
+  sampleSensors();
   schedule_.dropFinished(simTime());
   if (steps_ % publish_every_ == 0) {
     publishClock();

@@ -1,5 +1,5 @@
 // What the node publishes: tf and odometry of every body, ~body_states,
-// /clock, the fixed links on /tf_static, and the state messages of the services.
+// /clock, the fixed links and IMU frames on /tf_static, and the state messages of the services.
 #include <nav_msgs/Odometry.h>
 #include <rosgraph_msgs/Clock.h>
 
@@ -93,6 +93,15 @@ void SimNode::publishFixedFrames() {
       tf.header.frame_id = prefix + link.parent;
       tf.child_frame_id = prefix + link.name;
       tf.transform = toTransform(link.X_PK.translation, link.X_PK.rotation);
+      fixed.push_back(tf);
+    }
+    if (ports_[i].imu) {  // the IMU's frame, fixed to the root link
+      const core::Pose& X_LS = ports_[i].imu->settings().X_LS;
+      geometry_msgs::TransformStamped tf;
+      tf.header.stamp = stamp();
+      tf.header.frame_id = ports_[i].frame;
+      tf.child_frame_id = ports_[i].imu_frame;
+      tf.transform = toTransform(X_LS.translation, X_LS.rotation);
       fixed.push_back(tf);
     }
   }

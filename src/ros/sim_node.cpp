@@ -5,6 +5,7 @@
 
 #include <nav_msgs/Odometry.h>
 #include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/Imu.h>
 
 #include <algorithm>
 #include <cmath>
@@ -87,7 +88,8 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
     const core::BodyModel& body = model_.body(i);
     requireOwnWorldFrame(settings_.world_frame, several ? body.name + "/" : "", body);
-    ports_.push_back(openPorts(i, several ? body.name + "/" : ""));
+    const auto& imu = params_.sim.bodies_listed ? params_.sim.bodies[i].imu : params_.sim.imu;
+    ports_.push_back(openPorts(i, several ? body.name + "/" : "", imu));
     ROS_INFO("sim_node: body '%s' (frame '%s'), %.6g kg, %zu collision points", body.name.c_str(),
              ports_.back().frame.c_str(), body.mass, body.contact_points.size());
   }
@@ -144,10 +146,24 @@ SimNode::~SimNode() {
   if (spawn_spinner_) spawn_spinner_->stop();
 }
 
-SimNode::BodyPorts SimNode::openPorts(std::size_t i, const std::string& prefix) {
+SimNode::BodyPorts SimNode::openPorts(std::size_t i, const std::string& prefix,
+                                      const std::optional<io::ImuEntry>& imu) {
   BodyPorts ports;
   ports.prefix = prefix;
   ports.frame = prefix + model_.body(i).link;
+  if (imu) {
+    const core::BodyModel& body = model_.body(i);
+    ports.imu_frame = prefix + imu->frame_id;
+    bool taken = imu->frame_id == body.link;
+    for (const core::FixedLink& link : body.fixed_links) taken = taken || imu->frame_id == link.name;
+    if (taken || ports.imu_frame == settings_.world_frame) {
+      throw io::ConfigError("imu.frame_id '" + imu->frame_id + "' of body '" + body.name +
+                            "': is already a frame (of the body, or the world); name the sensor's own frame");
+    }
+    ports.imu.emplace(imu->settings, state_.bodies[i]);
+    ports.imu_every = std::max(1LL, std::llround(1.0 / (imu->settings.rate * model_.dt())));
+    ports.imu_pub = nh_.advertise<sensor_msgs::Imu>(prefix + "imu", 100);
+  }
   ports.odom = nh_.advertise<nav_msgs::Odometry>(prefix + "odom", 10);
   // By name: a deletion moves the later bodies' indices.
   const std::string name = model_.body(i).name;

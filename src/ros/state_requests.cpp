@@ -50,6 +50,7 @@ bool SimNode::setState(SetState::Request& req, SetState::Response& res) {
   link.w_W = q_frame * w;
   state_.bodies[body] = core::bodyStateFromLink(model_.body(body), link);
   state_.contact_impulses.clear();  // nothing carries over to a new pose
+  restartSensors(body);             // the jump is no acceleration
   res.success = true;
   res.message = "state set";
   publish();
@@ -62,6 +63,7 @@ bool SimNode::reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& re
   state_.time = simTime();
   schedule_.clear(-1);
   for (BodyPorts& p : ports_) p.held.reset();
+  for (std::size_t i = 0; i < ports_.size(); ++i) restartSensors(static_cast<int>(i));
   rebaseClock();
   publish();
   res.success = true;

@@ -114,6 +114,14 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
     res.message = e.what();
     return true;
   }
+  if (!req.imu.empty()) {
+    try {
+      pending->imu = io::parseImuText(req.imu, "imu", dt_);
+    } catch (const std::exception& e) {
+      res.message = std::string("imu: ") + e.what();
+      return true;
+    }
+  }
   pending->request = req;
   std::future<SpawnBody::Response> added = pending->done.get_future();
   {
@@ -150,6 +158,14 @@ SpawnBody::Response SimNode::insertBody(const PendingSpawn& spawn) {
   const std::string prefix = req.name + "/";
   std::vector<std::string> new_frames{prefix + body.link};
   for (const core::FixedLink& link : body.fixed_links) new_frames.push_back(prefix + link.name);
+  if (spawn.imu) {
+    const std::string imu_frame = prefix + spawn.imu->frame_id;
+    if (std::find(new_frames.begin(), new_frames.end(), imu_frame) != new_frames.end()) {
+      res.message = "imu: frame_id '" + spawn.imu->frame_id + "' is a frame of the body itself; name the sensor's own";
+      return res;
+    }
+    new_frames.push_back(imu_frame);
+  }
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
     const core::BodyModel& other = model_.body(i);
     if (other.name == req.name) {
@@ -193,7 +209,7 @@ SpawnBody::Response SimNode::insertBody(const PendingSpawn& spawn) {
     res.message = e.what();
     return res;
   }
-  ports_.push_back(openPorts(model_.bodyCount() - 1, prefix));
+  ports_.push_back(openPorts(model_.bodyCount() - 1, prefix, spawn.imu));
   afterEdit(false);
   res.success = true;
   res.message = "body '" + req.name + "' added at t = " + now() + ": frame '" + ports_.back().frame + "', topics '" +

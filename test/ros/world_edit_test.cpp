@@ -7,8 +7,10 @@
 #include <geometry_msgs/WrenchStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/Imu.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <cstring>
 #include <set>
@@ -145,6 +147,27 @@ TEST_F(NodeSpawn, TheScriptSpawnsAsGazebosSpawnModelDoes) {
   EXPECT_NEAR(odom.pose.pose.orientation.w, std::sqrt(0.5), 1e-12);
 }
 
+TEST_F(NodeSpawn, TheScriptTakesAFileAndRollPitchYawAsUrdfDoes) {
+  // spawn.test: `spawn_body -urdf -file package://.../ball.urdf -model rolled
+  // -x -3 -R 0.3 -P 0.2 -Y 0.1`: q = Rz(yaw) Ry(pitch) Rx(roll).
+  nav_msgs::Odometry odom;
+  bool got = false;
+  const ros::Subscriber sub =
+      nh_.subscribe<nav_msgs::Odometry>("/rolled/odom", 10, [&](const nav_msgs::Odometry::ConstPtr& m) {
+        odom = *m;
+        got = true;
+      });
+  ASSERT_TRUE(spinUntil([&] { return got; }, 30.0)) << "no /rolled/odom";
+  const Eigen::Quaterniond q = Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitZ()) *
+                               Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()) *
+                               Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX());
+  EXPECT_NEAR(odom.pose.pose.position.x, -3.0, 1e-12);
+  EXPECT_NEAR(odom.pose.pose.orientation.x, q.x(), 1e-12);
+  EXPECT_NEAR(odom.pose.pose.orientation.y, q.y(), 1e-12);
+  EXPECT_NEAR(odom.pose.pose.orientation.z, q.z(), 1e-12);
+  EXPECT_NEAR(odom.pose.pose.orientation.w, q.w(), 1e-12);
+}
+
 TEST_F(NodeSpawn, ASpawnedBodyExistsFromTheNextStepForEveryTopicAndService) {
   ASSERT_TRUE(spinUntil([] { return advertised("/crate/odom"); }, 30.0));
   ASSERT_TRUE(trigger("pause"));
@@ -153,6 +176,7 @@ TEST_F(NodeSpawn, ASpawnedBodyExistsFromTheNextStepForEveryTopicAndService) {
   SpawnBody::Request req = spawnRequest("ball", kBall, 0.5, 0.0, 0.0);
   req.frame = "crate/base_link";
   req.twist.linear.x = 1.0;
+  req.imu = "{rate: 100}";
   const SpawnBody::Response res = spawn(req);
   ASSERT_TRUE(res.success) << res.message;
   EXPECT_NE(res.message.find("ball/ball"), std::string::npos) << res.message;
@@ -170,6 +194,10 @@ TEST_F(NodeSpawn, ASpawnedBodyExistsFromTheNextStepForEveryTopicAndService) {
   EXPECT_GT(moved, 0.0);
   EXPECT_NEAR(odom.pose.pose.position.y, 2.5 + moved * 1.0, 1e-9);
   EXPECT_EQ(tfFrames(20).count("ball/ball"), 1u);
+  // Its IMU, under its name: in free flight without gravity it reads nothing.
+  const auto imu = nextMessage<sensor_msgs::Imu>(nh_, "/ball/imu", [&] { step(20); });
+  EXPECT_EQ(imu.header.frame_id, "ball/imu_link");
+  EXPECT_NEAR(std::hypot(imu.linear_acceleration.x, imu.linear_acceleration.y, imu.linear_acceleration.z), 0.0, 1e-9);
   const auto markers = latchedMarkers("/sim_node/body_markers");
   bool drawn = false;
   for (const auto& m : markers.markers) drawn = drawn || (m.ns == "ball" && m.header.frame_id == "ball/ball");
@@ -255,6 +283,11 @@ TEST_F(NodeSpawn, BadRequestsAreRefusedNamingTheFieldAndChangeNothing) {
   bounce.own_restitution = true;
   bounce.restitution = nan;
   refused(bounce, "restitution = nan");
+  SpawnBody::Request imu = spawnRequest("extra", kBox, 0, 0, 3);
+  imu.imu = "{rate: 0}";
+  refused(imu, "imu: config key imu.rate = 0");
+  imu.imu = "{frame_id: base_link}";
+  refused(imu, "imu: frame_id 'base_link' is a frame of the body itself");
   EXPECT_EQ(names(), before);
   EXPECT_FALSE(advertised("/extra/odom"));
 }

@@ -91,6 +91,7 @@ class SimNode {
   struct PendingSpawn {
     SpawnBody::Request request;
     core::PreparedBody body;
+    std::optional<io::ImuEntry> imu;
     std::promise<SpawnBody::Response> done;  ///< what the loop answers
   };
   /// Adds the spawns built since the last tick (loop thread, between steps).
@@ -170,10 +171,20 @@ class SimNode {
     ros::Subscriber wrench;          ///< ~PREFIXwrench
     std::optional<HeldWrench> held;  ///< from its ~wrench topic
     bool speed_limited = false;      ///< the speed limits have held it (warned once)
+    std::optional<core::Imu> imu;    ///< its IMU (sensors.cpp), sampled whether or not anyone listens
+    ros::Publisher imu_pub;          ///< PREFIXimu, sensor_msgs/Imu
+    std::string imu_frame;           ///< prefix + the IMU's frame_id
+    long long imu_every = 1;         ///< steps per IMU sample
   };
   std::vector<BodyPorts> ports_;
-  /// The topics and frame of body i of the model, under `prefix`.
-  BodyPorts openPorts(std::size_t i, const std::string& prefix);
+  /// The topics and frame of body i of the model, under `prefix`, and its
+  /// IMU if it has one (a frame_id that is one of the body's frames throws).
+  BodyPorts openPorts(std::size_t i, const std::string& prefix, const std::optional<io::ImuEntry>& imu);
+  /// Samples the IMUs due at this step and publishes them (sensors.cpp).
+  void sampleSensors();
+  /// The IMU of body i starts a new period at its state now (after set_state, reset).
+  void restartSensors(int body);
+  const double dt_ = model_.dt();  ///< for the spawn thread (no edit changes it)
   std::vector<std::string> frames() const;
 
   bool paused_ = false;
