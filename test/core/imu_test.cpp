@@ -1,7 +1,7 @@
 // The IMU (docs/physics.md §10.1) against closed forms, on bodies the step
 // moves: at rest it reads +g up turned by its mount, in free fall nothing,
 // spinning the centripetal −ω² r, pushed by F on frictionless ground F/m and
-// g; its noise has the configured statistics, its biases walk as σ_b² t.
+// g, an impulse as its mean over the sample; its noise has the configured statistics, its biases walk as σ_b² t.
 #include "rigid_body_sim/core/imu.h"
 
 #include <gtest/gtest.h>
@@ -93,6 +93,18 @@ TEST(Imu, PushedOnFrictionlessGroundItReadsForceOverMassAndG) {
   EXPECT_NEAR(r.f_S.x(), 1.5, 1e-6);
   EXPECT_NEAR(r.f_S.y(), 0.5, 1e-6);
   EXPECT_NEAR(r.f_S.z(), kG, 1e-6);
+}
+
+TEST(Imu, AnImpulseReadsAsItsMeanAccelerationOverTheSample) {
+  // 0.5 N·s on 2 kg between two samples of 10 ms: the next sample reads the
+  // velocity change 0.25 m/s over 10 ms, 25 m/s², then nothing again.
+  const core::Model model(spec(boxBody(kHalf, 2.0), 1e-3, Vec3::Zero()));
+  core::State s = stateOf(model, core::LinkState{});
+  core::Imu imu(mountedAt(Vec3::Zero()), s.bodies[0]);
+  run(model, s, imu, 0.05);
+  core::applyImpulse(model.body(0), s.bodies[0], core::Impulse{Vec3(0.5, 0, 0), Vec3::Zero(), Vec3::Zero()});
+  EXPECT_NEAR(run(model, s, imu, 0.01).f_S.x(), 25.0, 1e-9);
+  EXPECT_NEAR(run(model, s, imu, 0.01).f_S.x(), 0.0, 1e-9);
 }
 
 /// Mean and standard deviation of `x`.
