@@ -16,6 +16,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/loads.cpp
   ${RBS_SOURCE_ROOT}/src/core/model.cpp
   ${RBS_SOURCE_ROOT}/src/core/model_checks.cpp
+  ${RBS_SOURCE_ROOT}/src/core/odom_noise.cpp
   ${RBS_SOURCE_ROOT}/src/core/parallel.cpp
   ${RBS_SOURCE_ROOT}/src/core/penalty.cpp
   ${RBS_SOURCE_ROOT}/src/core/position_correction.cpp

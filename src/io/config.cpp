@@ -124,7 +124,7 @@ std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& ba
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = "bodies[" + std::to_string(i) + "]";
     const YAML::Node entry = node[i];
-    requireKnownKeys(entry, path, {"name", "urdf", "initial", "contact", "imu"});
+    requireKnownKeys(entry, path, {"name", "urdf", "initial", "contact", "imu", "odom_noise"});
     if (!entry["name"]) fail(path + ".name", "every body needs a name");
     if (!entry["urdf"]) fail(path + ".urdf", "every body needs a urdf (a file, or for the node a parameter)");
     BodyEntry b;
@@ -144,6 +144,7 @@ std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& ba
       if (surface["restitution"]) b.restitution = number(surface["restitution"], path + ".contact.restitution");
     }
     if (entry["imu"]) b.imu = parseImu(entry["imu"], path + ".imu");
+    if (entry["odom_noise"]) b.odom_noise = parseOdomNoise(entry["odom_noise"], path + ".odom_noise");
     bodies.push_back(b);
   }
   return bodies;
@@ -156,7 +157,7 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir) {
   if (!root || root.IsNull()) return c;
   requireKnownKeys(root, "",
                    {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver",
-                    "limits", "bodies", "imu"});
+                    "limits", "bodies", "imu", "odom_noise"});
   if (root["dt"]) c.model.dt = number(root["dt"], "dt");
   if (root["gravity"]) c.model.gravity_W = vec3(root["gravity"], "gravity");
   if (root["gyroscopic"]) c.model.gyroscopic = boolean(root["gyroscopic"], "gyroscopic");
@@ -175,6 +176,10 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir) {
   if (root["imu"]) {
     if (root["bodies"]) fail("imu", "with a bodies list, give each body its own bodies[i].imu");
     c.imu = parseImu(root["imu"], "imu");
+  }
+  if (root["odom_noise"]) {
+    if (root["bodies"]) fail("odom_noise", "with a bodies list, give each body its own bodies[i].odom_noise");
+    c.odom_noise = parseOdomNoise(root["odom_noise"], "odom_noise");
   }
   // Sensors sample at most once a step: checked against the dt just read.
   if (c.imu) validateImuEntry(*c.imu, c.model.dt, "imu");
@@ -199,6 +204,14 @@ ImuEntry parseImuText(const std::string& yaml, const std::string& path, double d
     const ImuEntry imu = parseImu(loadYamlText(yaml, path), path);
     validateImuEntry(imu, dt, path);
     return imu;
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path + ": " + e.what());
+  }
+}
+
+core::OdomNoiseSettings parseOdomNoiseText(const std::string& yaml, const std::string& path) {
+  try {
+    return parseOdomNoise(loadYamlText(yaml, path), path);
   } catch (const YAML::Exception& e) {
     throw ConfigError(path + ": " + e.what());
   }

@@ -36,6 +36,36 @@ ImuEntry parseImu(const YAML::Node& node, const std::string& path) {
   return imu;
 }
 
+core::OdomNoiseSettings parseOdomNoise(const YAML::Node& node, const std::string& path) {
+  requireKnownKeys(node, path, {"position", "orientation", "linear_velocity", "angular_velocity", "drift", "seed"});
+  core::OdomNoiseSettings s;
+  const auto read = [](const YAML::Node& map, const std::string& at, const char* key, double& field) {
+    if (map[key]) field = number(map[key], at + "." + key);
+  };
+  read(node, path, "position", s.position);
+  read(node, path, "orientation", s.orientation);
+  read(node, path, "linear_velocity", s.linear_velocity);
+  read(node, path, "angular_velocity", s.angular_velocity);
+  if (node["drift"]) {
+    const YAML::Node drift = node["drift"];
+    requireKnownKeys(drift, path + ".drift", {"x", "y", "yaw"});
+    read(drift, path + ".drift", "x", s.drift_x);
+    read(drift, path + ".drift", "y", s.drift_y);
+    read(drift, path + ".drift", "yaw", s.drift_yaw);
+  }
+  if (node["seed"]) {
+    const int seed = integer(node["seed"], path + ".seed");
+    if (seed < 0) fail(path + ".seed", "expected an integer >= 0, got " + show(node["seed"]));
+    s.seed = static_cast<std::uint64_t>(seed);
+  }
+  try {
+    core::validateOdomNoise(s, path);
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(std::string("config key ") + e.what());
+  }
+  return s;
+}
+
 void validateImuEntry(const ImuEntry& imu, double dt, const std::string& path) {
   try {
     core::validateImu(imu.settings, dt, path);

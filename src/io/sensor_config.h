@@ -1,4 +1,4 @@
-// The config's sensors (`imu`, `bodies[i].imu`), private to io.
+// The config's sensors (`imu`, `odom_noise`, and each body's), private to io.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -13,6 +13,10 @@ namespace rigid_body_sim::io {
 /// rate, seed, gyro_noise, accel_noise, gyro_bias_walk, accel_bias_walk,
 /// orientation_noise (units in config/default.yaml).
 ImuEntry parseImu(const YAML::Node& node, const std::string& path);
+
+/// An `odom_noise` map at `path`: position, orientation, linear_velocity,
+/// angular_velocity, drift {x, y, yaw}, seed; checked (ConfigError).
+core::OdomNoiseSettings parseOdomNoise(const YAML::Node& node, const std::string& path);
 
 /// The core's checks of an IMU for a model of step `dt`, as a ConfigError naming `path`.
 void validateImuEntry(const ImuEntry& imu, double dt, const std::string& path);

@@ -36,18 +36,28 @@ void SimNode::publish() {
     tf.transform = toTransform(link.p_WL, link.q_WL);
     if (settings_.publish_tf) tf_.sendTransform(tf);
 
-    nav_msgs::Odometry odom;
-    odom.header = tf.header;
-    odom.child_frame_id = ports_[i].frame;  // the twist is in this frame (nav_msgs/Odometry)
-    odom.pose.pose = toPose(link.p_WL, link.q_WL);
-    const Quat q_LW = link.q_WL.conjugate();
-    odom.twist.twist.linear = toVector3(q_LW * link.v_WL);
-    odom.twist.twist.angular = toVector3(q_LW * link.w_W);
-    for (int k = 0; k < 6; ++k) {
-      odom.pose.covariance[k * 7] = settings_.covariance;
-      odom.twist.covariance[k * 7] = settings_.covariance;
+    BodyPorts& p = ports_[i];
+    const auto odometry = [&](const core::OdomReport& r, bool exact) {
+      nav_msgs::Odometry odom;
+      odom.header = tf.header;
+      odom.child_frame_id = p.frame;  // the twist is in this frame (nav_msgs/Odometry)
+      odom.pose.pose = toPose(r.p_WL, r.q_WL);
+      odom.twist.twist.linear = toVector3(r.v_L);
+      odom.twist.twist.angular = toVector3(r.w_L);
+      for (int k = 0; k < 6; ++k) {
+        odom.pose.covariance[k * 7] = exact ? settings_.covariance : r.pose_variance[k];
+        odom.twist.covariance[k * 7] = exact ? settings_.covariance : r.twist_variance[k];
+      }
+      return odom;
+    };
+    const core::OdomReport exact = core::exactOdom(link);
+    if (p.odom_noise) {  // noisy odom, the exact state on ground_truth
+      p.odom.publish(odometry(p.odom_noise->report(link, simTime() - p.last_odom), false));
+      p.last_odom = simTime();
+      p.ground_truth.publish(odometry(exact, true));
+    } else {
+      p.odom.publish(odometry(exact, true));
     }
-    ports_[i].odom.publish(odom);
   }
   resendMarkersIfDue();
 }

@@ -89,7 +89,8 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     const core::BodyModel& body = model_.body(i);
     requireOwnWorldFrame(settings_.world_frame, several ? body.name + "/" : "", body);
     const auto& imu = params_.sim.bodies_listed ? params_.sim.bodies[i].imu : params_.sim.imu;
-    ports_.push_back(openPorts(i, several ? body.name + "/" : "", imu));
+    const auto& noise = params_.sim.bodies_listed ? params_.sim.bodies[i].odom_noise : params_.sim.odom_noise;
+    ports_.push_back(openPorts(i, several ? body.name + "/" : "", imu, noise));
     ROS_INFO("sim_node: body '%s' (frame '%s'), %.6g kg, %zu collision points", body.name.c_str(),
              ports_.back().frame.c_str(), body.mass, body.contact_points.size());
   }
@@ -146,11 +147,16 @@ SimNode::~SimNode() {
   if (spawn_spinner_) spawn_spinner_->stop();
 }
 
-SimNode::BodyPorts SimNode::openPorts(std::size_t i, const std::string& prefix,
-                                      const std::optional<io::ImuEntry>& imu) {
+SimNode::BodyPorts SimNode::openPorts(std::size_t i, const std::string& prefix, const std::optional<io::ImuEntry>& imu,
+                                      const std::optional<core::OdomNoiseSettings>& odom_noise) {
   BodyPorts ports;
   ports.prefix = prefix;
   ports.frame = prefix + model_.body(i).link;
+  if (odom_noise) {
+    ports.odom_noise.emplace(*odom_noise);
+    ports.ground_truth = nh_.advertise<nav_msgs::Odometry>(prefix + "ground_truth", 10);
+    ports.last_odom = simTime();
+  }
   if (imu) {
     const core::BodyModel& body = model_.body(i);
     ports.imu_frame = prefix + imu->frame_id;

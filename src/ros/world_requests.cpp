@@ -114,13 +114,17 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
     res.message = e.what();
     return true;
   }
-  if (!req.imu.empty()) {
-    try {
-      pending->imu = io::parseImuText(req.imu, "imu", dt_);
-    } catch (const std::exception& e) {
-      res.message = std::string("imu: ") + e.what();
-      return true;
-    }
+  try {
+    if (!req.imu.empty()) pending->imu = io::parseImuText(req.imu, "imu", dt_);
+  } catch (const std::exception& e) {
+    res.message = std::string("imu: ") + e.what();
+    return true;
+  }
+  try {
+    if (!req.odom_noise.empty()) pending->odom_noise = io::parseOdomNoiseText(req.odom_noise, "odom_noise");
+  } catch (const std::exception& e) {
+    res.message = std::string("odom_noise: ") + e.what();
+    return true;
   }
   pending->request = req;
   std::future<SpawnBody::Response> added = pending->done.get_future();
@@ -209,7 +213,7 @@ SpawnBody::Response SimNode::insertBody(const PendingSpawn& spawn) {
     res.message = e.what();
     return res;
   }
-  ports_.push_back(openPorts(model_.bodyCount() - 1, prefix, spawn.imu));
+  ports_.push_back(openPorts(model_.bodyCount() - 1, prefix, spawn.imu, spawn.odom_noise));
   afterEdit(false);
   res.success = true;
   res.message = "body '" + req.name + "' added at t = " + now() + ": frame '" + ports_.back().frame + "', topics '" +

@@ -332,6 +332,29 @@ TEST(Config, BadImusAreRefusedByKey) {
   EXPECT_EQ(io::parseImuText("{rate: 20}", "imu", 1e-3).settings.rate, 20.0);
 }
 
+TEST(Config, OdometryNoiseIsReadAndCheckedByKey) {
+  const io::SimConfig one = parse(
+      "odom_noise: {position: 0.01, orientation: 0.02, linear_velocity: 0.03, angular_velocity: 0.04, "
+      "drift: {x: 0.05, y: 0.06, yaw: 0.07}, seed: 5}");
+  ASSERT_TRUE(one.odom_noise.has_value());
+  const core::OdomNoiseSettings& s = *one.odom_noise;
+  EXPECT_EQ(s.position, 0.01);
+  EXPECT_EQ(s.orientation, 0.02);
+  EXPECT_EQ(s.linear_velocity, 0.03);
+  EXPECT_EQ(s.angular_velocity, 0.04);
+  EXPECT_EQ(s.drift_x, 0.05);
+  EXPECT_EQ(s.drift_y, 0.06);
+  EXPECT_EQ(s.drift_yaw, 0.07);
+  EXPECT_EQ(s.seed, 5u);
+  EXPECT_FALSE(parse("").odom_noise.has_value());
+  EXPECT_TRUE(parse("bodies: [{name: a, urdf: x.urdf, odom_noise: {position: 1}}]").bodies[0].odom_noise.has_value());
+  expectRefused("odom_noise: {position: -1}", {"odom_noise.position = -1"});
+  expectRefused("odom_noise: {drift: {z: 1}}", {"'odom_noise.drift.z'", "unknown key"});
+  expectRefused("bodies: [{name: a, urdf: x.urdf, odom_noise: {drift: {yaw: -0.1}}}]",
+                {"bodies[0].odom_noise.drift.yaw = -0.1"});
+  expectRefused("bodies: []\nodom_noise: {position: 1}", {"'odom_noise'", "bodies[i].odom_noise"});
+}
+
 TEST(Config, BadBodiesAreRefusedByKey) {
   expectRefused("bodies: {name: a}", {"'bodies'", "expected a list"});
   expectRefused("bodies: [{urdf: a.urdf}]", {"'bodies[0].name'", "needs a name"});

@@ -11,6 +11,7 @@
 
 #include "rigid_body_sim/core/imu.h"
 #include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/odom_noise.h"
 #include "rigid_body_sim/core/state.h"
 
 namespace rigid_body_sim::io {
@@ -36,7 +37,8 @@ struct BodyEntry {
   core::LinkState initial;
   /// Its surface (bodies[i].contact); unset: the scene's, contact.friction and contact.restitution.
   std::optional<double> friction, restitution;
-  std::optional<ImuEntry> imu;  ///< bodies[i].imu
+  std::optional<ImuEntry> imu;                        ///< bodies[i].imu
+  std::optional<core::OdomNoiseSettings> odom_noise;  ///< bodies[i].odom_noise
 };
 
 struct SimConfig {
@@ -50,8 +52,9 @@ struct SimConfig {
   /// The config has a `bodies` list, maybe an empty one (`bodies: []`: an
   /// empty world, which the node's ~spawn_body fills).
   bool bodies_listed = false;
-  /// The one body's IMU (`imu`), without a bodies list.
+  /// The one body's IMU (`imu`) and odometry noise (`odom_noise`), without a bodies list.
   std::optional<ImuEntry> imu;
+  std::optional<core::OdomNoiseSettings> odom_noise;
   /// The config file's folder (parseConfig's base_dir): package:// URDFs are
   /// also looked for above it, so a package's own worlds load without ROS.
   std::string base_dir;
@@ -65,6 +68,8 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir = "");
 /// An IMU from the YAML text of an `imu` map (the node's ~spawn_body), for a
 /// model of step `dt`; ConfigError naming `path`.KEY.
 ImuEntry parseImuText(const std::string& yaml, const std::string& path, double dt);
+/// Odometry noise from the YAML text of an `odom_noise` map (~spawn_body).
+core::OdomNoiseSettings parseOdomNoiseText(const std::string& yaml, const std::string& path);
 
 /// Reads a YAML file: ConfigError if it is not a readable regular file of at
 /// most InputCaps::kConfigBytes, or its text is refused by loadYamlText.

@@ -92,6 +92,7 @@ class SimNode {
     SpawnBody::Request request;
     core::PreparedBody body;
     std::optional<io::ImuEntry> imu;
+    std::optional<core::OdomNoiseSettings> odom_noise;
     std::promise<SpawnBody::Response> done;  ///< what the loop answers
   };
   /// Adds the spawns built since the last tick (loop thread, between steps).
@@ -165,21 +166,25 @@ class SimNode {
   /// the root link, `odom`, `~wrench`); every other body, listed in a world
   /// or spawned, has them under its name ("NAME/").
   struct BodyPorts {
-    std::string prefix;              ///< "" or "NAME/", before its frames and topics
-    std::string frame;               ///< its tf frame: prefix + root link
-    ros::Publisher odom;             ///< PREFIXodom
-    ros::Subscriber wrench;          ///< ~PREFIXwrench
-    std::optional<HeldWrench> held;  ///< from its ~wrench topic
-    bool speed_limited = false;      ///< the speed limits have held it (warned once)
-    std::optional<core::Imu> imu;    ///< its IMU (sensors.cpp), sampled whether or not anyone listens
-    ros::Publisher imu_pub;          ///< PREFIXimu, sensor_msgs/Imu
-    std::string imu_frame;           ///< prefix + the IMU's frame_id
-    long long imu_every = 1;         ///< steps per IMU sample
+    std::string prefix;                         ///< "" or "NAME/", before its frames and topics
+    std::string frame;                          ///< its tf frame: prefix + root link
+    ros::Publisher odom;                        ///< PREFIXodom
+    ros::Subscriber wrench;                     ///< ~PREFIXwrench
+    std::optional<HeldWrench> held;             ///< from its ~wrench topic
+    bool speed_limited = false;                 ///< the speed limits have held it (warned once)
+    std::optional<core::Imu> imu;               ///< its IMU (sensors.cpp), sampled whether or not anyone listens
+    ros::Publisher imu_pub;                     ///< PREFIXimu, sensor_msgs/Imu
+    std::string imu_frame;                      ///< prefix + the IMU's frame_id
+    long long imu_every = 1;                    ///< steps per IMU sample
+    std::optional<core::OdomNoise> odom_noise;  ///< noise on odom; the exact state then goes to ground_truth
+    ros::Publisher ground_truth;                ///< PREFIXground_truth, with odom_noise
+    double last_odom = 0.0;                     ///< s of sim time of its last odom report (for the drift)
   };
   std::vector<BodyPorts> ports_;
   /// The topics and frame of body i of the model, under `prefix`, and its
   /// IMU if it has one (a frame_id that is one of the body's frames throws).
-  BodyPorts openPorts(std::size_t i, const std::string& prefix, const std::optional<io::ImuEntry>& imu);
+  BodyPorts openPorts(std::size_t i, const std::string& prefix, const std::optional<io::ImuEntry>& imu,
+                      const std::optional<core::OdomNoiseSettings>& odom_noise);
   /// Samples the IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();
   /// The IMU of body i starts a new period at its state now (after set_state, reset).
