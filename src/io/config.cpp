@@ -201,7 +201,7 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
 
 ImuEntry parseImuText(const std::string& yaml, const std::string& path, double dt) {
   try {
-    const ImuEntry imu = parseImu(loadYamlText(yaml, path), path);
+    ImuEntry imu = parseImu(loadYamlText(yaml, path), path);
     validateImuEntry(imu, dt, path);
     return imu;
   } catch (const YAML::Exception& e) {
