@@ -4,6 +4,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/barrier.cpp
   ${RBS_SOURCE_ROOT}/src/core/broad_phase.cpp
   ${RBS_SOURCE_ROOT}/src/core/collision.cpp
+  ${RBS_SOURCE_ROOT}/src/core/contact_report.cpp
   ${RBS_SOURCE_ROOT}/src/core/contact_solver.cpp
   ${RBS_SOURCE_ROOT}/src/core/detection.cpp
   ${RBS_SOURCE_ROOT}/src/core/diagnostics.cpp

@@ -38,10 +38,12 @@ void SimNode::stepOnce() {
   ++steps_;
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
   sampleSensors();
+  keepContacts();
   schedule_.dropFinished(simTime());
   if (steps_ % publish_every_ == 0) {
     publishClock();
     publish();
+    publishContacts();
   }
   if (steps_ % body_states_every_ == 0) publishBodyStates();
 }

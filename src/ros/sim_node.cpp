@@ -118,6 +118,8 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   body_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("body_markers", 1, on_subscriber, {}, {}, true);
   if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
   body_states_pub_ = pnh_.advertise<BodyStates>("body_states", 10);
+  contacts_pub_ = pnh_.advertise<Contacts>("contacts", 10);
+  contact_markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("contact_markers", 10);
   services_ = {pnh_.advertiseService("apply_wrench", &SimNode::applyWrench, this),
                pnh_.advertiseService("apply_impulse", &SimNode::applyImpulse, this),
                pnh_.advertiseService("clear_wrenches", &SimNode::clearWrenches, this),

@@ -240,6 +240,7 @@ bool SimNode::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res) {
   core::removeBody(model_, initial_, i);
   world_.model = std::move(edited);
   const std::size_t dropped = schedule_.removeBody(i);
+  forgetContactsOf(i);
   ports_.erase(ports_.begin() + i);  // its publisher and subscriber go with it
   for (BodyPorts& p : ports_) {      // wrenches held in its axes go too
     if (!p.held || p.held->axes.other < i) continue;

@@ -3,6 +3,8 @@
 // reads the specific force +g up in its own axes, at its rate, in its own
 // frame, which /tf_static places on the body. odom_noise.test's box has
 // noisy odometry: its difference from ground_truth has the configured σs.
+// contacts.test's box rests on the ground: ~contacts says the ground holds
+// it up with m g, asleep or not.
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/Imu.h>
 #include <tf2_msgs/TFMessage.h>
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "node_fixture.h"
+#include "rigid_body_sim/Contacts.h"
 
 namespace rbs_test {
 namespace {
@@ -122,6 +125,36 @@ TEST_F(NodeOdomNoise, OdomLessGroundTruthHasTheConfiguredSigmasAndCovariances) {
   EXPECT_DOUBLE_EQ(last->twist.covariance[0], 0.03 * 0.03);
   EXPECT_DOUBLE_EQ(last->twist.covariance[35], 0.04 * 0.04);
   EXPECT_EQ(truth.begin()->second.pose.covariance[0], 1e-9);  // ground truth: ~covariance, as odom without noise
+}
+
+class NodeContacts : public Node {};
+
+TEST_F(NodeContacts, ARestingBoxIsHeldUpByTheGroundWithItsWeightAsleepOrNot) {
+  rigid_body_sim::Contacts last;
+  int count = 0;
+  const ros::Subscriber sub = nh_.subscribe<rigid_body_sim::Contacts>("/sim_node/contacts", 10,
+                                                                      [&](const rigid_body_sim::Contacts::ConstPtr& m) {
+                                                                        last = *m;
+                                                                        ++count;
+                                                                      });
+  visualization_msgs::MarkerArray drawn;
+  const ros::Subscriber markers = nh_.subscribe<visualization_msgs::MarkerArray>(
+      "/sim_node/contact_markers", 10, [&](const visualization_msgs::MarkerArray::ConstPtr& m) { drawn = *m; });
+  spinUntil([] { return false; }, 2.0);  // asleep after half a second at rest
+  ASSERT_GT(count, 10);
+  EXPECT_EQ(last.header.frame_id, "world");
+  ASSERT_EQ(last.pairs.size(), 1u);
+  const rigid_body_sim::ContactPair& p = last.pairs[0];
+  EXPECT_EQ(p.body, kLink);  // robot_description's body is named after its root link
+  EXPECT_EQ(p.other, "scene[0]");
+  EXPECT_NEAR(p.normal_force.z, kG, 1e-6 * kG);
+  EXPECT_NEAR(std::hypot(p.normal_force.x, p.normal_force.y), 0.0, 1e-9);
+  EXPECT_NEAR(p.normal.z, 1.0, 1e-9);
+  EXPECT_GE(p.points.size(), 3u);
+  EXPECT_GE(p.depth, 0.0);
+  ASSERT_GE(drawn.markers.size(), 2u);
+  EXPECT_EQ(drawn.markers.front().action, visualization_msgs::Marker::DELETEALL);
+  EXPECT_EQ(drawn.markers.back().type, visualization_msgs::Marker::SPHERE_LIST);
 }
 
 }  // namespace

@@ -26,6 +26,7 @@
 #include "rigid_body_sim/BodyState.h"
 #include "rigid_body_sim/BodyStates.h"
 #include "rigid_body_sim/ClearWrenches.h"
+#include "rigid_body_sim/Contacts.h"
 #include "rigid_body_sim/DeleteBody.h"
 #include "rigid_body_sim/GetState.h"
 #include "rigid_body_sim/PhysicsConfig.h"
@@ -185,6 +186,14 @@ class SimNode {
   /// IMU if it has one (a frame_id that is one of the body's frames throws).
   BodyPorts openPorts(std::size_t i, const std::string& prefix, const std::optional<io::ImuEntry>& imu,
                       const std::optional<core::OdomNoiseSettings>& odom_noise);
+  // Contacts (contacts.cpp): the touching contacts the loop carries from
+  // step to step (a sleeper keeps those it fell asleep with).
+  void keepContacts();
+  /// After body `body` was deleted: its contacts go, the later indices move down.
+  void forgetContactsOf(int body);
+  void publishContacts();  ///< ~contacts and ~contact_markers, while someone subscribes
+  std::vector<core::Contact> contacts_;
+  ros::Publisher contacts_pub_, contact_markers_pub_;
   /// Samples the IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();
   /// The IMU of body i starts a new period at its state now (after set_state, reset).
