@@ -28,6 +28,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/sleep.cpp
   ${RBS_SOURCE_ROOT}/src/core/state.cpp
   ${RBS_SOURCE_ROOT}/src/core/step.cpp
+  ${RBS_SOURCE_ROOT}/src/core/velocity_driver.cpp
   ${RBS_SOURCE_ROOT}/src/core/workspace.cpp
   ${RBS_SOURCE_ROOT}/src/core/wrench_schedule.cpp
 )
@@ -36,7 +37,7 @@ set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/input_bounds.cpp
   ${RBS_SOURCE_ROOT}/src/io/mesh_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/scene_config.cpp
-  ${RBS_SOURCE_ROOT}/src/io/sensor_config.cpp
+  ${RBS_SOURCE_ROOT}/src/io/device_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/world.cpp
   ${RBS_SOURCE_ROOT}/src/io/yaml_fields.cpp

@@ -5,12 +5,12 @@
 #include <sstream>
 #include <vector>
 
+#include "device_config.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/orientation.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "scene_config.h"
-#include "sensor_config.h"
 #include "yaml_fields.h"
 
 namespace rigid_body_sim::io {
@@ -124,7 +124,7 @@ std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& ba
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = "bodies[" + std::to_string(i) + "]";
     const YAML::Node entry = node[i];
-    requireKnownKeys(entry, path, {"name", "urdf", "initial", "contact", "imu", "odom_noise"});
+    requireKnownKeys(entry, path, {"name", "urdf", "initial", "contact", "imu", "odom_noise", "cmd_vel"});
     if (!entry["name"]) fail(path + ".name", "every body needs a name");
     if (!entry["urdf"]) fail(path + ".urdf", "every body needs a urdf (a file, or for the node a parameter)");
     BodyEntry b;
@@ -145,6 +145,7 @@ std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& ba
     }
     if (entry["imu"]) b.imu = parseImu(entry["imu"], path + ".imu");
     if (entry["odom_noise"]) b.odom_noise = parseOdomNoise(entry["odom_noise"], path + ".odom_noise");
+    if (entry["cmd_vel"]) b.cmd_vel = parseDriver(entry["cmd_vel"], path + ".cmd_vel");
     bodies.push_back(b);
   }
   return bodies;
@@ -157,7 +158,7 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir) {
   if (!root || root.IsNull()) return c;
   requireKnownKeys(root, "",
                    {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver",
-                    "limits", "bodies", "imu", "odom_noise"});
+                    "limits", "bodies", "imu", "odom_noise", "cmd_vel"});
   if (root["dt"]) c.model.dt = number(root["dt"], "dt");
   if (root["gravity"]) c.model.gravity_W = vec3(root["gravity"], "gravity");
   if (root["gyroscopic"]) c.model.gyroscopic = boolean(root["gyroscopic"], "gyroscopic");
@@ -180,6 +181,10 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir) {
   if (root["odom_noise"]) {
     if (root["bodies"]) fail("odom_noise", "with a bodies list, give each body its own bodies[i].odom_noise");
     c.odom_noise = parseOdomNoise(root["odom_noise"], "odom_noise");
+  }
+  if (root["cmd_vel"]) {
+    if (root["bodies"]) fail("cmd_vel", "with a bodies list, give each body its own bodies[i].cmd_vel");
+    c.cmd_vel = parseDriver(root["cmd_vel"], "cmd_vel");
   }
   // Sensors sample at most once a step: checked against the dt just read.
   if (c.imu) validateImuEntry(*c.imu, c.model.dt, "imu");
@@ -212,6 +217,14 @@ ImuEntry parseImuText(const std::string& yaml, const std::string& path, double d
 core::OdomNoiseSettings parseOdomNoiseText(const std::string& yaml, const std::string& path) {
   try {
     return parseOdomNoise(loadYamlText(yaml, path), path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path + ": " + e.what());
+  }
+}
+
+core::DriverSettings parseDriverText(const std::string& yaml, const std::string& path) {
+  try {
+    return parseDriver(loadYamlText(yaml, path), path);
   } catch (const YAML::Exception& e) {
     throw ConfigError(path + ": " + e.what());
   }

@@ -1,5 +1,5 @@
 // The requests that push bodies: timed wrenches, impulses, the ~wrench
-// topics, and clearing them. Each validates first: a refused request
+// topics, clearing them, and the velocity drivers' cmd_vel. Each validates first: a refused request
 // changes nothing.
 #include "request_checks.h"
 #include "rigid_body_sim/ros/conversions.h"
@@ -120,6 +120,25 @@ void SimNode::onWrench(const std::string& name, const geometry_msgs::WrenchStamp
     return;
   }
   ports_[body].held = HeldWrench{{force, torque, Vec3::Zero(), axes->frame}, simTime(), *axes};
+}
+
+void SimNode::onCmdVel(const std::string& name, const geometry_msgs::Twist::ConstPtr& msg) {
+  std::string why;
+  const auto found = findBody(name, why);
+  if (!found) return;  // deleted, its message already queued
+  BodyPorts& p = ports_[*found];
+  const Vec3 v = fromVector3(msg->linear), w = fromVector3(msg->angular);
+  if (!v.allFinite() || !w.allFinite()) {
+    ROS_WARN_THROTTLE(1.0, "sim_node: cmd_vel for '%s' ignored: not finite", name.c_str());
+    return;
+  }
+  if (p.driver->command(v, w, simTime()) && !p.clipped) {
+    p.clipped = true;
+    ROS_WARN(
+        "sim_node: cmd_vel for '%s' clipped to cmd_vel.max_linear_speed %g m/s, max_angular_speed %g rad/s "
+        "(said once per body)",
+        name.c_str(), p.driver->settings().max_linear_speed, p.driver->settings().max_angular_speed);
+  }
 }
 
 }  // namespace rigid_body_sim::node

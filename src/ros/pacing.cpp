@@ -33,6 +33,14 @@ void SimNode::stepOnce() {
                       held->axes.other < 0 ? w : core::inWorldAxes(w, orientationOf(held->axes, i)));
     }
   }
+  for (std::size_t i = 0; i < ports_.size(); ++i) {  // the velocity drivers' forces
+    if (!ports_[i].driver) continue;
+    const core::BodyLoad drive = ports_[i].driver->load(model_.body(i), state_.bodies[i], t, h);
+    if (drive.isZero()) continue;
+    if (loads_.empty()) loads_.resize(model_.bodyCount());
+    loads_[i].force_W += drive.force_W;
+    loads_[i].torque_W += drive.torque_W;
+  }
   core::step(model_, state_, loads_, &workspace_);
   if (!workspace_.speed_limited.empty() || !workspace_.diverged.empty()) reportStep();
   ++steps_;

@@ -88,9 +88,11 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
     const core::BodyModel& body = model_.body(i);
     requireOwnWorldFrame(settings_.world_frame, several ? body.name + "/" : "", body);
-    const auto& imu = params_.sim.bodies_listed ? params_.sim.bodies[i].imu : params_.sim.imu;
-    const auto& noise = params_.sim.bodies_listed ? params_.sim.bodies[i].odom_noise : params_.sim.odom_noise;
-    ports_.push_back(openPorts(i, several ? body.name + "/" : "", imu, noise));
+    const io::SimConfig& c = params_.sim;
+    const BodyDevices devices = c.bodies_listed
+                                    ? BodyDevices{c.bodies[i].imu, c.bodies[i].odom_noise, c.bodies[i].cmd_vel}
+                                    : BodyDevices{c.imu, c.odom_noise, c.cmd_vel};
+    ports_.push_back(openPorts(i, several ? body.name + "/" : "", devices));
     ROS_INFO("sim_node: body '%s' (frame '%s'), %.6g kg, %zu collision points", body.name.c_str(),
              ports_.back().frame.c_str(), body.mass, body.contact_points.size());
   }
@@ -149,11 +151,17 @@ SimNode::~SimNode() {
   if (spawn_spinner_) spawn_spinner_->stop();
 }
 
-SimNode::BodyPorts SimNode::openPorts(std::size_t i, const std::string& prefix, const std::optional<io::ImuEntry>& imu,
-                                      const std::optional<core::OdomNoiseSettings>& odom_noise) {
+SimNode::BodyPorts SimNode::openPorts(std::size_t i, const std::string& prefix, const BodyDevices& devices) {
+  const auto& [imu, odom_noise, cmd_vel] = devices;
   BodyPorts ports;
   ports.prefix = prefix;
   ports.frame = prefix + model_.body(i).link;
+  const std::string name = model_.body(i).name;  // by name: a deletion moves the later bodies' indices
+  if (cmd_vel) {
+    ports.driver.emplace(*cmd_vel);
+    ports.cmd_vel = nh_.subscribe<geometry_msgs::Twist>(
+        prefix + "cmd_vel", 10, [this, name](const geometry_msgs::Twist::ConstPtr& m) { onCmdVel(name, m); });
+  }
   if (odom_noise) {
     ports.odom_noise.emplace(*odom_noise);
     ports.ground_truth = nh_.advertise<nav_msgs::Odometry>(prefix + "ground_truth", 10);
@@ -173,8 +181,6 @@ SimNode::BodyPorts SimNode::openPorts(std::size_t i, const std::string& prefix, 
     ports.imu_pub = nh_.advertise<sensor_msgs::Imu>(prefix + "imu", 100);
   }
   ports.odom = nh_.advertise<nav_msgs::Odometry>(prefix + "odom", 10);
-  // By name: a deletion moves the later bodies' indices.
-  const std::string name = model_.body(i).name;
   ports.wrench = pnh_.subscribe<geometry_msgs::WrenchStamped>(
       prefix + "wrench", 10, [this, name](const geometry_msgs::WrenchStamped::ConstPtr& m) { onWrench(name, m); });
   return ports;

@@ -114,16 +114,27 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
     res.message = e.what();
     return true;
   }
-  try {
-    if (!req.imu.empty()) pending->imu = io::parseImuText(req.imu, "imu", dt_);
-  } catch (const std::exception& e) {
-    res.message = std::string("imu: ") + e.what();
-    return true;
-  }
-  try {
-    if (!req.odom_noise.empty()) pending->odom_noise = io::parseOdomNoiseText(req.odom_noise, "odom_noise");
-  } catch (const std::exception& e) {
-    res.message = std::string("odom_noise: ") + e.what();
+  // The devices, each given as the YAML of its config map ("" = none); an
+  // error starts with the field.
+  const auto parsed = [&res](const std::string& field, const std::string& yaml, const auto& parse, auto& into) {
+    if (yaml.empty()) return true;
+    try {
+      into = parse(yaml);
+      return true;
+    } catch (const std::exception& e) {
+      res.message = field + ": " + e.what();
+      return false;
+    }
+  };
+  BodyDevices& d = pending->devices;
+  const double dt = dt_;
+  if (!parsed(
+          "imu", req.imu, [dt](const std::string& y) { return io::parseImuText(y, "imu", dt); }, d.imu) ||
+      !parsed(
+          "odom_noise", req.odom_noise, [](const std::string& y) { return io::parseOdomNoiseText(y, "odom_noise"); },
+          d.odom_noise) ||
+      !parsed(
+          "cmd_vel", req.cmd_vel, [](const std::string& y) { return io::parseDriverText(y, "cmd_vel"); }, d.cmd_vel)) {
     return true;
   }
   pending->request = req;
@@ -162,10 +173,11 @@ SpawnBody::Response SimNode::insertBody(const PendingSpawn& spawn) {
   const std::string prefix = req.name + "/";
   std::vector<std::string> new_frames{prefix + body.link};
   for (const core::FixedLink& link : body.fixed_links) new_frames.push_back(prefix + link.name);
-  if (spawn.imu) {
-    const std::string imu_frame = prefix + spawn.imu->frame_id;
+  if (spawn.devices.imu) {
+    const std::string imu_frame = prefix + spawn.devices.imu->frame_id;
     if (std::find(new_frames.begin(), new_frames.end(), imu_frame) != new_frames.end()) {
-      res.message = "imu: frame_id '" + spawn.imu->frame_id + "' is a frame of the body itself; name the sensor's own";
+      res.message =
+          "imu: frame_id '" + spawn.devices.imu->frame_id + "' is a frame of the body itself; name the sensor's own";
       return res;
     }
     new_frames.push_back(imu_frame);
@@ -213,7 +225,7 @@ SpawnBody::Response SimNode::insertBody(const PendingSpawn& spawn) {
     res.message = e.what();
     return res;
   }
-  ports_.push_back(openPorts(model_.bodyCount() - 1, prefix, spawn.imu, spawn.odom_noise));
+  ports_.push_back(openPorts(model_.bodyCount() - 1, prefix, spawn.devices));
   afterEdit(false);
   res.success = true;
   res.message = "body '" + req.name + "' added at t = " + now() + ": frame '" + ports_.back().frame + "', topics '" +

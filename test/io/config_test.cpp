@@ -355,6 +355,29 @@ TEST(Config, OdometryNoiseIsReadAndCheckedByKey) {
   expectRefused("bodies: []\nodom_noise: {position: 1}", {"'odom_noise'", "bodies[i].odom_noise"});
 }
 
+TEST(Config, AVelocityDriverIsReadAndCheckedByKey) {
+  const io::SimConfig one = parse(
+      "cmd_vel: {max_force: 30, max_torque: 4, linear_gain: 20, linear_integral_gain: 100, angular_gain: 10, "
+      "angular_integral_gain: 25, max_linear_speed: 2, max_angular_speed: 1.5, timeout: 0.25, planar: true}");
+  ASSERT_TRUE(one.cmd_vel.has_value());
+  const core::DriverSettings& s = *one.cmd_vel;
+  EXPECT_EQ(s.max_force, 30.0);
+  EXPECT_EQ(s.max_torque, 4.0);
+  EXPECT_EQ(s.linear_gain, 20.0);
+  EXPECT_EQ(s.linear_integral_gain, 100.0);
+  EXPECT_EQ(s.angular_gain, 10.0);
+  EXPECT_EQ(s.angular_integral_gain, 25.0);
+  EXPECT_EQ(s.max_linear_speed, 2.0);
+  EXPECT_EQ(s.max_angular_speed, 1.5);
+  EXPECT_EQ(s.timeout, 0.25);
+  EXPECT_TRUE(s.planar);
+  EXPECT_FALSE(parse("").cmd_vel.has_value());
+  expectRefused("cmd_vel: {max_force: 0}", {"cmd_vel.max_force = 0"});
+  expectRefused("cmd_vel: {planar: maybe}", {"'cmd_vel.planar'"});
+  expectRefused("bodies: [{name: a, urdf: x.urdf, cmd_vel: {timeout: -1}}]", {"bodies[0].cmd_vel.timeout = -1"});
+  EXPECT_EQ(io::parseDriverText("{max_force: 3}", "cmd_vel").max_force, 3.0);
+}
+
 TEST(Config, BadBodiesAreRefusedByKey) {
   expectRefused("bodies: {name: a}", {"'bodies'", "expected a list"});
   expectRefused("bodies: [{urdf: a.urdf}]", {"'bodies[0].name'", "needs a name"});

@@ -13,6 +13,7 @@
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/odom_noise.h"
 #include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/core/velocity_driver.h"
 
 namespace rigid_body_sim::io {
 
@@ -39,6 +40,7 @@ struct BodyEntry {
   std::optional<double> friction, restitution;
   std::optional<ImuEntry> imu;                        ///< bodies[i].imu
   std::optional<core::OdomNoiseSettings> odom_noise;  ///< bodies[i].odom_noise
+  std::optional<core::DriverSettings> cmd_vel;        ///< bodies[i].cmd_vel
 };
 
 struct SimConfig {
@@ -55,6 +57,7 @@ struct SimConfig {
   /// The one body's IMU (`imu`) and odometry noise (`odom_noise`), without a bodies list.
   std::optional<ImuEntry> imu;
   std::optional<core::OdomNoiseSettings> odom_noise;
+  std::optional<core::DriverSettings> cmd_vel;  ///< the one body's velocity driver
   /// The config file's folder (parseConfig's base_dir): package:// URDFs are
   /// also looked for above it, so a package's own worlds load without ROS.
   std::string base_dir;
@@ -70,6 +73,8 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir = "");
 ImuEntry parseImuText(const std::string& yaml, const std::string& path, double dt);
 /// Odometry noise from the YAML text of an `odom_noise` map (~spawn_body).
 core::OdomNoiseSettings parseOdomNoiseText(const std::string& yaml, const std::string& path);
+/// A velocity driver from the YAML text of a `cmd_vel` map (~spawn_body).
+core::DriverSettings parseDriverText(const std::string& yaml, const std::string& path);
 
 /// Reads a YAML file: ConfigError if it is not a readable regular file of at
 /// most InputCaps::kConfigBytes, or its text is refused by loadYamlText.

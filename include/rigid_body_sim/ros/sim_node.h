@@ -4,6 +4,7 @@
 #pragma once
 
 #include <dynamic_reconfigure/server.h>
+#include <geometry_msgs/Twist.h>
 #include <geometry_msgs/WrenchStamped.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
@@ -34,6 +35,7 @@
 #include "rigid_body_sim/SpawnBody.h"
 #include "rigid_body_sim/Step.h"
 #include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/core/velocity_driver.h"
 #include "rigid_body_sim/core/wrench_schedule.h"
 #include "rigid_body_sim/io/world.h"
 #include "rigid_body_sim/ros/params.h"
@@ -89,11 +91,16 @@ class SimNode {
   // answers through the promise.
   bool spawnBody(SpawnBody::Request& req, SpawnBody::Response& res);
   bool deleteBody(DeleteBody::Request& req, DeleteBody::Response& res);
+  /// What a body carries besides its shape (config keys imu, odom_noise, cmd_vel).
+  struct BodyDevices {
+    std::optional<io::ImuEntry> imu;
+    std::optional<core::OdomNoiseSettings> odom_noise;
+    std::optional<core::DriverSettings> cmd_vel;
+  };
   struct PendingSpawn {
     SpawnBody::Request request;
     core::PreparedBody body;
-    std::optional<io::ImuEntry> imu;
-    std::optional<core::OdomNoiseSettings> odom_noise;
+    BodyDevices devices;
     std::promise<SpawnBody::Response> done;  ///< what the loop answers
   };
   /// Adds the spawns built since the last tick (loop thread, between steps).
@@ -167,25 +174,28 @@ class SimNode {
   /// the root link, `odom`, `~wrench`); every other body, listed in a world
   /// or spawned, has them under its name ("NAME/").
   struct BodyPorts {
-    std::string prefix;                         ///< "" or "NAME/", before its frames and topics
-    std::string frame;                          ///< its tf frame: prefix + root link
-    ros::Publisher odom;                        ///< PREFIXodom
-    ros::Subscriber wrench;                     ///< ~PREFIXwrench
-    std::optional<HeldWrench> held;             ///< from its ~wrench topic
-    bool speed_limited = false;                 ///< the speed limits have held it (warned once)
-    std::optional<core::Imu> imu;               ///< its IMU (sensors.cpp), sampled whether or not anyone listens
-    ros::Publisher imu_pub;                     ///< PREFIXimu, sensor_msgs/Imu
-    std::string imu_frame;                      ///< prefix + the IMU's frame_id
-    long long imu_every = 1;                    ///< steps per IMU sample
-    std::optional<core::OdomNoise> odom_noise;  ///< noise on odom; the exact state then goes to ground_truth
-    ros::Publisher ground_truth;                ///< PREFIXground_truth, with odom_noise
-    double last_odom = 0.0;                     ///< s of sim time of its last odom report (for the drift)
+    std::string prefix;                          ///< "" or "NAME/", before its frames and topics
+    std::string frame;                           ///< its tf frame: prefix + root link
+    ros::Publisher odom;                         ///< PREFIXodom
+    ros::Subscriber wrench;                      ///< ~PREFIXwrench
+    std::optional<HeldWrench> held;              ///< from its ~wrench topic
+    bool speed_limited = false;                  ///< the speed limits have held it (warned once)
+    std::optional<core::Imu> imu;                ///< its IMU (sensors.cpp), sampled whether or not anyone listens
+    ros::Publisher imu_pub;                      ///< PREFIXimu, sensor_msgs/Imu
+    std::string imu_frame;                       ///< prefix + the IMU's frame_id
+    long long imu_every = 1;                     ///< steps per IMU sample
+    std::optional<core::OdomNoise> odom_noise;   ///< noise on odom; the exact state then goes to ground_truth
+    ros::Publisher ground_truth;                 ///< PREFIXground_truth, with odom_noise
+    double last_odom = 0.0;                      ///< s of sim time of its last odom report (for the drift)
+    std::optional<core::VelocityDriver> driver;  ///< drives it toward its cmd_vel
+    ros::Subscriber cmd_vel;                     ///< PREFIXcmd_vel, geometry_msgs/Twist
+    bool clipped = false;                        ///< a command was clipped (warned once)
   };
   std::vector<BodyPorts> ports_;
   /// The topics and frame of body i of the model, under `prefix`, and its
   /// IMU if it has one (a frame_id that is one of the body's frames throws).
-  BodyPorts openPorts(std::size_t i, const std::string& prefix, const std::optional<io::ImuEntry>& imu,
-                      const std::optional<core::OdomNoiseSettings>& odom_noise);
+  BodyPorts openPorts(std::size_t i, const std::string& prefix, const BodyDevices& devices);
+  void onCmdVel(const std::string& body, const geometry_msgs::Twist::ConstPtr& msg);
   // Contacts (contacts.cpp): the touching contacts the loop carries from
   // step to step (a sleeper keeps those it fell asleep with).
   void keepContacts();

@@ -1,4 +1,5 @@
-// The config's sensors (`imu`, `odom_noise`, and each body's), private to io.
+// A body's devices in the config: its sensors (`imu`, `odom_noise`) and its
+// velocity driver (`cmd_vel`), top level for one body or each body's. Private to io.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -17,6 +18,9 @@ ImuEntry parseImu(const YAML::Node& node, const std::string& path);
 /// An `odom_noise` map at `path`: position, orientation, linear_velocity,
 /// angular_velocity, drift {x, y, yaw}, seed; checked (ConfigError).
 core::OdomNoiseSettings parseOdomNoise(const YAML::Node& node, const std::string& path);
+
+/// A `cmd_vel` map at `path`: the core::DriverSettings keys; checked (ConfigError).
+core::DriverSettings parseDriver(const YAML::Node& node, const std::string& path);
 
 /// The core's checks of an IMU for a model of step `dt`, as a ConfigError naming `path`.
 void validateImuEntry(const ImuEntry& imu, double dt, const std::string& path);

@@ -1,4 +1,4 @@
-#include "sensor_config.h"
+#include "device_config.h"
 
 #include "yaml_fields.h"
 
@@ -60,6 +60,32 @@ core::OdomNoiseSettings parseOdomNoise(const YAML::Node& node, const std::string
   }
   try {
     core::validateOdomNoise(s, path);
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(std::string("config key ") + e.what());
+  }
+  return s;
+}
+
+core::DriverSettings parseDriver(const YAML::Node& node, const std::string& path) {
+  requireKnownKeys(node, path,
+                   {"max_force", "max_torque", "linear_gain", "linear_integral_gain", "angular_gain",
+                    "angular_integral_gain", "max_linear_speed", "max_angular_speed", "timeout", "planar"});
+  core::DriverSettings s;
+  const auto read = [&](const char* key, double& field) {
+    if (node[key]) field = number(node[key], path + "." + key);
+  };
+  read("max_force", s.max_force);
+  read("max_torque", s.max_torque);
+  read("linear_gain", s.linear_gain);
+  read("linear_integral_gain", s.linear_integral_gain);
+  read("angular_gain", s.angular_gain);
+  read("angular_integral_gain", s.angular_integral_gain);
+  read("max_linear_speed", s.max_linear_speed);
+  read("max_angular_speed", s.max_angular_speed);
+  read("timeout", s.timeout);
+  if (node["planar"]) s.planar = boolean(node["planar"], path + ".planar");
+  try {
+    core::validateDriver(s, path);
   } catch (const std::invalid_argument& e) {
     throw ConfigError(std::string("config key ") + e.what());
   }
