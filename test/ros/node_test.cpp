@@ -417,6 +417,30 @@ TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
   EXPECT_NE(out.find("dt = -0.001"), std::string::npos) << out;
 }
 
+TEST_F(BadUrdf, BadDevicesStopTheNodeNamingTheKey) {
+  // A body's imu, odom_noise and cmd_vel (issue 15): a zero rate, a negative
+  // sigma, a sensor frame that is the body's own, a zero force limit.
+  const std::string good = "<robot name='r'><link name='base'><inertial><mass value='1'/>" + std::string(kInertia) +
+                           "</inertial>" + kCollision + "</link></robot>";
+  const struct {
+    std::string ns, device, key;
+    XmlRpc::XmlRpcValue value;
+    std::string expected;
+  } cases[] = {
+      {"/imu_rate", "imu", "rate", 0.0, "imu.rate = 0"},
+      {"/imu_noise", "imu", "gyro_noise", -0.1, "imu.gyro_noise = -0.1"},
+      {"/imu_frame", "imu", "frame_id", "base", "imu.frame_id 'base' of body 'base': is already a frame"},
+      {"/odom_sigma", "odom_noise", "position", -1.0, "odom_noise.position = -1"},
+      {"/drive", "cmd_vel", "max_force", 0.0, "cmd_vel.max_force = 0"},
+  };
+  for (const auto& c : cases) {
+    ros::param::set(c.ns + "/sim_node/" + c.device + "/" + c.key, c.value);
+    const auto [code, out] = runNode(c.ns, good);
+    EXPECT_EQ(code, 1) << c.ns << ": " << out;
+    EXPECT_NE(out.find(c.expected), std::string::npos) << c.ns << ": " << out;
+  }
+}
+
 TEST_F(BadUrdf, TimingParametersOutOfRangeStopTheNodeNamingTheKey) {
   // Each was accepted: 1e-9 Hz slept 30 years between ticks (no service, no
   // SIGINT), 1e-300 and 1e300 spun at full CPU, wrench_timeout -1 silently
