@@ -99,6 +99,10 @@ rbs_link_sources() {
 # for clang-tidy.
 rbs_build() {
   rbs_link_sources
+  # catkin writes the devel space's Python folder into the environment
+  # (PYTHONPATH) only if it exists when CMake first runs; without it a tests-only
+  # build (sanitize.sh) ran the spawn_body script unable to import its messages.
+  mkdir -p "$RBS_WS/devel/lib/python3/dist-packages"
   local what="building ${*:-the package} into ${RBS_WS#"$PWD"/} ($RBS_BUILD_TYPE; about 2-3 minutes the first time on 2 cores)"
   local probe=sim_node  # built already: only what changed is built again
   [ "${1:-}" != tests ] || probe=node_test

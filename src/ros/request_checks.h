@@ -2,6 +2,8 @@
 // refused request changes nothing). Private to the node.
 #pragma once
 
+#include <algorithm>
+#include <cctype>
 #include <initializer_list>
 #include <sstream>
 #include <string>
@@ -43,6 +45,28 @@ inline std::string checkSpeed(const Vec3& v, double limit, const std::string& wh
     return os.str();
   }
   return {};
+}
+
+inline constexpr std::size_t kMaxNameLength = 64;  // characters of a body's name
+
+/// "" if `name` may name a body (it names topics and tf frames), else why not.
+inline std::string checkName(const std::string& name) {
+  if (name.empty()) return "name is empty: give the body a name";
+  const bool letters = std::all_of(name.begin(), name.end(),
+                                   [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; });
+  if (!letters || std::isalpha(static_cast<unsigned char>(name.front())) == 0 || name.size() > kMaxNameLength) {
+    return "name '" + name + "': a body's name starts with a letter and holds only letters, digits and '_', at most " +
+           std::to_string(kMaxNameLength) + " (it names topics and tf frames)";
+  }
+  return {};
+}
+
+/// "" if `value` (request field `field`) is within [0, max], else why not.
+inline std::string checkCoefficient(double value, double max, const std::string& field) {
+  if (value >= 0.0 && value <= max) return {};
+  std::ostringstream os;
+  os << field << " = " << value << ": must be within [0, " << max << "]";
+  return os.str();
 }
 
 /// The first non-empty complaint, or "".
