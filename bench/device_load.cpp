@@ -31,15 +31,14 @@ int main(int argc, char** argv) {
   for (int i = 0; i < n; ++i) {
     const std::string prefix = n == 1 ? "/" : "/b" + std::to_string(i) + "/";
     if (imu) {
-      subs.push_back(nh.subscribe<sensor_msgs::Imu>(prefix + "imu", 100, [&](const sensor_msgs::Imu::ConstPtr&) {
-        ++count;
-      }));
+      subs.push_back(
+          nh.subscribe<sensor_msgs::Imu>(prefix + "imu", 100, [&](const sensor_msgs::Imu::ConstPtr&) { ++count; }));
     }
     if (drive) pubs.push_back(nh.advertise<geometry_msgs::Twist>(prefix + "cmd_vel", 1));
   }
   if (contacts) {
-    subs.push_back(nh.subscribe<rigid_body_sim::Contacts>(
-        "/sim_node/contacts", 10, [&](const rigid_body_sim::Contacts::ConstPtr&) { ++count; }));
+    subs.push_back(nh.subscribe<rigid_body_sim::Contacts>("/sim_node/contacts", 10,
+                                                          [&](const rigid_body_sim::Contacts::ConstPtr&) { ++count; }));
   }
   ros::Rate rate(10.0);
   geometry_msgs::Twist t;

@@ -66,6 +66,27 @@ void requireOwnWorldFrame(const std::string& world, const std::string& prefix, c
   }
 }
 
+/// The pose in the root link frame L of `link` (the root link itself when
+/// "", or a link fixed to it, through its chain of fixed joints); another
+/// name is refused naming `key`.link.
+core::Pose mountOf(const core::BodyModel& body, const std::string& link, const std::string& key) {
+  core::Pose X_LK;
+  std::string at = link;
+  std::string names = "'" + body.link + "'";
+  for (const core::FixedLink& f : body.fixed_links) names += ", '" + f.name + "'";
+  for (std::size_t hops = 0; !at.empty() && at != body.link; ++hops) {
+    const auto f = std::find_if(body.fixed_links.begin(), body.fixed_links.end(),
+                                [&](const core::FixedLink& l) { return l.name == at; });
+    if (f == body.fixed_links.end() || hops > body.fixed_links.size()) {
+      throw io::ConfigError("config key '" + key + ".link' = '" + link + "': no such link of body '" + body.name +
+                            "' (its links: " + names + ")");
+    }
+    X_LK = f->X_PK * X_LK;  // climb toward the root
+    at = f->parent;
+  }
+  return X_LK;
+}
+
 }  // namespace
 
 SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
@@ -173,10 +194,12 @@ SimNode::BodyPorts SimNode::openPorts(std::size_t i, const std::string& prefix, 
     bool taken = imu->frame_id == body.link;
     for (const core::FixedLink& link : body.fixed_links) taken = taken || imu->frame_id == link.name;
     if (taken || ports.imu_frame == settings_.world_frame) {
-      throw io::ConfigError("imu.frame_id '" + imu->frame_id + "' of body '" + body.name +
+      throw io::ConfigError(imu->key + ".frame_id '" + imu->frame_id + "' of body '" + body.name +
                             "': is already a frame (of the body, or the world); name the sensor's own frame");
     }
-    ports.imu.emplace(imu->settings, state_.bodies[i]);
+    core::ImuSettings settings = imu->settings;
+    settings.X_LS = mountOf(body, imu->link, imu->key) * imu->settings.X_LS;
+    ports.imu.emplace(settings, state_.bodies[i]);
     ports.imu_every = std::max(1LL, std::llround(1.0 / (imu->settings.rate * model_.dt())));
     ports.imu_pub = nh_.advertise<sensor_msgs::Imu>(prefix + "imu", 100);
   }

@@ -419,7 +419,8 @@ TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
 
 TEST_F(BadUrdf, BadDevicesStopTheNodeNamingTheKey) {
   // A body's imu, odom_noise and cmd_vel (issue 15): a zero rate, a negative
-  // sigma, a sensor frame that is the body's own, a zero force limit.
+  // sigma, a sensor frame that is the body's own, an unknown link to mount
+  // it on, a zero force limit.
   const std::string good = "<robot name='r'><link name='base'><inertial><mass value='1'/>" + std::string(kInertia) +
                            "</inertial>" + kCollision + "</link></robot>";
   const struct {
@@ -430,6 +431,7 @@ TEST_F(BadUrdf, BadDevicesStopTheNodeNamingTheKey) {
       {"/imu_rate", "imu", "rate", 0.0, "imu.rate = 0"},
       {"/imu_noise", "imu", "gyro_noise", -0.1, "imu.gyro_noise = -0.1"},
       {"/imu_frame", "imu", "frame_id", "base", "imu.frame_id 'base' of body 'base': is already a frame"},
+      {"/imu_link", "imu", "link", "mast", "config key 'imu.link' = 'mast': no such link of body 'base'"},
       {"/odom_sigma", "odom_noise", "position", -1.0, "odom_noise.position = -1"},
       {"/drive", "cmd_vel", "max_force", 0.0, "cmd_vel.max_force = 0"},
   };

@@ -232,9 +232,24 @@ TEST_F(NodeSpawn, ASpawnedBodysFixedLinksAreOnTfStaticUntilItIsDeleted) {
   ASSERT_TRUE(spinUntil([] { return advertised("/crate/odom"); }, 30.0));
   ASSERT_TRUE(trigger("pause"));
   // two_boxes.urdf: base_link with second_box fixed to it.
-  const SpawnBody::Response res = spawn(spawnRequest("pair", "package://rigid_body_sim/urdf/two_boxes.urdf", 0, -3, 0));
+  // An IMU mounted on the fixed link, 0.1 m above its origin (0.2 m along x
+  // of the root link): its frame sits at (0.2, 0, 0.1) in the root link.
+  SpawnBody::Request req = spawnRequest("pair", "package://rigid_body_sim/urdf/two_boxes.urdf", 0, -3, 0);
+  req.imu = "{link: second_box, pose: {position: [0, 0, 0.1]}}";
+  const SpawnBody::Response res = spawn(req);
   ASSERT_TRUE(res.success) << res.message;
   EXPECT_EQ(staticFrames(nh_).count("pair/second_box"), 1u);
+  bool mounted = false;
+  ros::Subscriber sub =
+      nh_.subscribe<tf2_msgs::TFMessage>("/tf_static", 10, [&](const tf2_msgs::TFMessage::ConstPtr& m) {
+        for (const auto& t : m->transforms) {
+          if (t.child_frame_id != "pair/imu_link") continue;
+          mounted = t.header.frame_id == "pair/base_link" && std::abs(t.transform.translation.x - 0.2) < 1e-12 &&
+                    std::abs(t.transform.translation.z - 0.1) < 1e-12;
+        }
+      });
+  EXPECT_TRUE(spinUntil([&] { return mounted; }, 10.0));
+  sub.shutdown();  // (a live subscription would hand a new one its cached latched message)
   ASSERT_TRUE(remove("pair").success);
   EXPECT_EQ(staticFrames(nh_).count("pair/second_box"), 0u);  // a late subscriber no longer gets it
   EXPECT_FALSE(get("pair").success);

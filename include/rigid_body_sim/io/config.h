@@ -26,8 +26,10 @@ class ConfigError : public std::runtime_error {
 /// An IMU on a body (`imu` for one body, `bodies[i].imu`): the core's
 /// settings, and the frame the node names it by.
 struct ImuEntry {
-  core::ImuSettings settings;
+  core::ImuSettings settings;         ///< its pose X_LS as given: in the frame of `link`
   std::string frame_id = "imu_link";  ///< under the body's prefix in a world ("NAME/imu_link")
+  std::string link;                   ///< the link it is mounted on: "" the root link, or a link fixed to it
+  std::string key = "imu";            ///< its config key, for messages ("bodies[2].imu")
 };
 
 /// One entry of the `bodies` list: a body of the world.
