@@ -4,9 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/state.h"
@@ -95,6 +98,15 @@ inline core::State stateOf(const core::Model& model, const core::LinkState& link
   core::State s;
   s.bodies = {core::bodyStateFromLink(model.body(0), link)};
   return s;
+}
+
+/// Mean and sample standard deviation of `x` (noise statistics).
+inline std::pair<double, double> meanAndSigma(const std::vector<double>& x) {
+  double mean = 0.0, sq = 0.0;
+  for (const double v : x) mean += v;
+  mean /= static_cast<double>(x.size());
+  for (const double v : x) sq += (v - mean) * (v - mean);
+  return {mean, std::sqrt(sq / static_cast<double>(x.size() - 1))};
 }
 
 /// Bit-for-bit equality of two states, the warm-start impulses included

@@ -1,10 +1,42 @@
 #include "device_config.h"
 
+#include <initializer_list>
+#include <utility>
+
 #include "yaml_fields.h"
 
 namespace rigid_body_sim::io {
+namespace {
 
 using namespace yaml_fields;
+
+/// Each key of `fields` that `node` has, into its number (path.key in errors).
+void readNumbers(const YAML::Node& node, const std::string& path,
+                 std::initializer_list<std::pair<const char*, double*>> fields) {
+  for (const auto& [key, field] : fields) {
+    if (node[key]) *field = number(node[key], path + "." + key);
+  }
+}
+
+/// `path`.seed: an integer ≥ 0.
+void readSeed(const YAML::Node& node, const std::string& path, std::uint64_t& seed) {
+  if (!node["seed"]) return;
+  const int value = integer(node["seed"], path + ".seed");
+  if (value < 0) fail(path + ".seed", "expected an integer >= 0, got " + show(node["seed"]));
+  seed = static_cast<std::uint64_t>(value);
+}
+
+/// The core's check `check`, its std::invalid_argument as a ConfigError.
+template <class Check>
+void checked(const Check& check) {
+  try {
+    check();
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(std::string("config key ") + e.what());
+  }
+}
+
+}  // namespace
 
 ImuEntry parseImu(const YAML::Node& node, const std::string& path) {
   requireKnownKeys(node, path,
@@ -21,50 +53,31 @@ ImuEntry parseImu(const YAML::Node& node, const std::string& path) {
     if (pose["position"]) s.X_LS.translation = vec3(pose["position"], path + ".pose.position");
     s.X_LS.rotation = orientation(pose, path + ".pose");
   }
-  const auto read = [&](const char* key, double& field) {
-    if (node[key]) field = number(node[key], path + "." + key);
-  };
-  read("rate", s.rate);
-  read("gyro_noise", s.gyro_noise);
-  read("accel_noise", s.accel_noise);
-  read("gyro_bias_walk", s.gyro_bias_walk);
-  read("accel_bias_walk", s.accel_bias_walk);
-  read("orientation_noise", s.orientation_noise);
-  if (node["seed"]) {
-    const int seed = integer(node["seed"], path + ".seed");
-    if (seed < 0) fail(path + ".seed", "expected an integer >= 0, got " + show(node["seed"]));
-    s.seed = static_cast<std::uint64_t>(seed);
-  }
+  readNumbers(node, path,
+              {{"rate", &s.rate},
+               {"gyro_noise", &s.gyro_noise},
+               {"accel_noise", &s.accel_noise},
+               {"gyro_bias_walk", &s.gyro_bias_walk},
+               {"accel_bias_walk", &s.accel_bias_walk},
+               {"orientation_noise", &s.orientation_noise}});
+  readSeed(node, path, s.seed);
   return imu;
 }
 
 core::OdomNoiseSettings parseOdomNoise(const YAML::Node& node, const std::string& path) {
   requireKnownKeys(node, path, {"position", "orientation", "linear_velocity", "angular_velocity", "drift", "seed"});
   core::OdomNoiseSettings s;
-  const auto read = [](const YAML::Node& map, const std::string& at, const char* key, double& field) {
-    if (map[key]) field = number(map[key], at + "." + key);
-  };
-  read(node, path, "position", s.position);
-  read(node, path, "orientation", s.orientation);
-  read(node, path, "linear_velocity", s.linear_velocity);
-  read(node, path, "angular_velocity", s.angular_velocity);
+  readNumbers(node, path,
+              {{"position", &s.position},
+               {"orientation", &s.orientation},
+               {"linear_velocity", &s.linear_velocity},
+               {"angular_velocity", &s.angular_velocity}});
   if (node["drift"]) {
-    const YAML::Node drift = node["drift"];
-    requireKnownKeys(drift, path + ".drift", {"x", "y", "yaw"});
-    read(drift, path + ".drift", "x", s.drift_x);
-    read(drift, path + ".drift", "y", s.drift_y);
-    read(drift, path + ".drift", "yaw", s.drift_yaw);
+    requireKnownKeys(node["drift"], path + ".drift", {"x", "y", "yaw"});
+    readNumbers(node["drift"], path + ".drift", {{"x", &s.drift_x}, {"y", &s.drift_y}, {"yaw", &s.drift_yaw}});
   }
-  if (node["seed"]) {
-    const int seed = integer(node["seed"], path + ".seed");
-    if (seed < 0) fail(path + ".seed", "expected an integer >= 0, got " + show(node["seed"]));
-    s.seed = static_cast<std::uint64_t>(seed);
-  }
-  try {
-    core::validateOdomNoise(s, path);
-  } catch (const std::invalid_argument& e) {
-    throw ConfigError(std::string("config key ") + e.what());
-  }
+  readSeed(node, path, s.seed);
+  checked([&] { core::validateOdomNoise(s, path); });
   return s;
 }
 
@@ -73,33 +86,23 @@ core::DriverSettings parseDriver(const YAML::Node& node, const std::string& path
                    {"max_force", "max_torque", "linear_gain", "linear_integral_gain", "angular_gain",
                     "angular_integral_gain", "max_linear_speed", "max_angular_speed", "timeout", "planar"});
   core::DriverSettings s;
-  const auto read = [&](const char* key, double& field) {
-    if (node[key]) field = number(node[key], path + "." + key);
-  };
-  read("max_force", s.max_force);
-  read("max_torque", s.max_torque);
-  read("linear_gain", s.linear_gain);
-  read("linear_integral_gain", s.linear_integral_gain);
-  read("angular_gain", s.angular_gain);
-  read("angular_integral_gain", s.angular_integral_gain);
-  read("max_linear_speed", s.max_linear_speed);
-  read("max_angular_speed", s.max_angular_speed);
-  read("timeout", s.timeout);
+  readNumbers(node, path,
+              {{"max_force", &s.max_force},
+               {"max_torque", &s.max_torque},
+               {"linear_gain", &s.linear_gain},
+               {"linear_integral_gain", &s.linear_integral_gain},
+               {"angular_gain", &s.angular_gain},
+               {"angular_integral_gain", &s.angular_integral_gain},
+               {"max_linear_speed", &s.max_linear_speed},
+               {"max_angular_speed", &s.max_angular_speed},
+               {"timeout", &s.timeout}});
   if (node["planar"]) s.planar = boolean(node["planar"], path + ".planar");
-  try {
-    core::validateDriver(s, path);
-  } catch (const std::invalid_argument& e) {
-    throw ConfigError(std::string("config key ") + e.what());
-  }
+  checked([&] { core::validateDriver(s, path); });
   return s;
 }
 
 void validateImuEntry(const ImuEntry& imu, double dt, const std::string& path) {
-  try {
-    core::validateImu(imu.settings, dt, path);
-  } catch (const std::invalid_argument& e) {
-    throw ConfigError(std::string("config key ") + e.what());
-  }
+  checked([&] { core::validateImu(imu.settings, dt, path); });
 }
 
 }  // namespace rigid_body_sim::io

@@ -107,15 +107,6 @@ TEST(Imu, AnImpulseReadsAsItsMeanAccelerationOverTheSample) {
   EXPECT_NEAR(run(model, s, imu, 0.01).f_S.x(), 0.0, 1e-9);
 }
 
-/// Mean and standard deviation of `x`.
-std::pair<double, double> stats(const std::vector<double>& x) {
-  double mean = 0.0, sq = 0.0;
-  for (const double v : x) mean += v;
-  mean /= static_cast<double>(x.size());
-  for (const double v : x) sq += (v - mean) * (v - mean);
-  return {mean, std::sqrt(sq / static_cast<double>(x.size() - 1))};
-}
-
 TEST(Imu, ItsWhiteNoiseHasTheConfiguredMeanAndSigma) {
   const core::Model model(spec(boxBody(kHalf), 1e-3, Vec3(0, 0, -kG)));
   const core::State s = stateOf(model, core::LinkState{});
@@ -140,9 +131,9 @@ TEST(Imu, ItsWhiteNoiseHasTheConfiguredMeanAndSigma) {
     }
   }
   for (int i = 0; i < 3; ++i) {
-    const auto [gm, gs] = stats(gyro[i]);
-    const auto [am, as] = stats(accel[i]);
-    const auto [tm, ts] = stats(tilt[i]);
+    const auto [gm, gs] = meanAndSigma(gyro[i]);
+    const auto [am, as] = meanAndSigma(accel[i]);
+    const auto [tm, ts] = meanAndSigma(tilt[i]);
     EXPECT_LT(std::abs(gm), 0.02 * settings.gyro_noise) << i;
     EXPECT_NEAR(gs, settings.gyro_noise, 0.02 * settings.gyro_noise) << i;
     EXPECT_LT(std::abs(am), 0.02 * settings.accel_noise) << i;
@@ -172,8 +163,8 @@ TEST(Imu, ItsBiasVarianceGrowsAsSigmaSquaredTimesTime) {
     gyro_one.push_back(imu.gyroBias().y());
     accel_one.push_back(imu.accelBias().z());
   }
-  const double var_q = std::pow(stats(gyro_quarter).second, 2), var_g = std::pow(stats(gyro_one).second, 2),
-               var_a = std::pow(stats(accel_one).second, 2);
+  const double var_q = std::pow(meanAndSigma(gyro_quarter).second, 2),
+               var_g = std::pow(meanAndSigma(gyro_one).second, 2), var_a = std::pow(meanAndSigma(accel_one).second, 2);
   EXPECT_NEAR(var_q, sigma_g * sigma_g * 0.25, 0.1 * sigma_g * sigma_g * 0.25);
   EXPECT_NEAR(var_g, sigma_g * sigma_g * 1.0, 0.1 * sigma_g * sigma_g);
   EXPECT_NEAR(var_a, sigma_a * sigma_a * 1.0, 0.1 * sigma_a * sigma_a);

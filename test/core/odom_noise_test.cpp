@@ -13,14 +13,6 @@
 namespace rigid_body_sim::test {
 namespace {
 
-std::pair<double, double> stats(const std::vector<double>& x) {
-  double mean = 0.0, sq = 0.0;
-  for (const double v : x) mean += v;
-  mean /= static_cast<double>(x.size());
-  for (const double v : x) sq += (v - mean) * (v - mean);
-  return {mean, std::sqrt(sq / static_cast<double>(x.size() - 1))};
-}
-
 core::LinkState moving() {
   core::LinkState link;
   link.p_WL = Vec3(1, -2, 0.5);
@@ -65,7 +57,7 @@ TEST(OdomNoise, TheDifferenceFromTheTruthHasTheConfiguredSigmas) {
     }
   }
   const auto check = [](const std::vector<double>& x, double sigma, const char* what) {
-    const auto [mean, sd] = stats(x);
+    const auto [mean, sd] = meanAndSigma(x);
     EXPECT_LT(std::abs(mean), 0.02 * sigma) << what;
     EXPECT_NEAR(sd, sigma, 0.02 * sigma) << what;
   };
@@ -103,9 +95,9 @@ TEST(OdomNoise, TheDriftsVarianceGrowsAsSigmaSquaredTimesTimeAndTheCovarianceSay
     const Quat turned = Quat(Eigen::AngleAxisd(noise.drift().z(), Vec3::UnitZ())) * link.q_WL;
     ASSERT_LT(turned.angularDistance(last.q_WL), 1e-12);
   }
-  EXPECT_NEAR(std::pow(stats(x).second, 2), s.drift_x * s.drift_x, 0.1 * s.drift_x * s.drift_x);
-  EXPECT_NEAR(std::pow(stats(y).second, 2), s.drift_y * s.drift_y, 0.1 * s.drift_y * s.drift_y);
-  EXPECT_NEAR(std::pow(stats(yaw).second, 2), s.drift_yaw * s.drift_yaw, 0.1 * s.drift_yaw * s.drift_yaw);
+  EXPECT_NEAR(std::pow(meanAndSigma(x).second, 2), s.drift_x * s.drift_x, 0.1 * s.drift_x * s.drift_x);
+  EXPECT_NEAR(std::pow(meanAndSigma(y).second, 2), s.drift_y * s.drift_y, 0.1 * s.drift_y * s.drift_y);
+  EXPECT_NEAR(std::pow(meanAndSigma(yaw).second, 2), s.drift_yaw * s.drift_yaw, 0.1 * s.drift_yaw * s.drift_yaw);
   EXPECT_NEAR(last.pose_variance[0], s.drift_x * s.drift_x * 1.0, 1e-15);
   EXPECT_NEAR(last.pose_variance[1], s.drift_y * s.drift_y * 1.0, 1e-15);
   EXPECT_NEAR(last.pose_variance[5], s.drift_yaw * s.drift_yaw * 1.0, 1e-15);

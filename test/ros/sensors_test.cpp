@@ -14,11 +14,14 @@
 #include <map>
 #include <vector>
 
+#include "../test_util.h"
 #include "node_fixture.h"
 #include "rigid_body_sim/Contacts.h"
 
 namespace rbs_test {
 namespace {
+
+using rigid_body_sim::test::meanAndSigma;
 
 class NodeImu : public Node {};
 
@@ -61,14 +64,6 @@ TEST_F(NodeImu, ARestingBodysImuReadsGUpInItsOwnAxesAtItsRate) {
 
 class NodeOdomNoise : public Node {};
 
-std::pair<double, double> stats(const std::vector<double>& x) {
-  double mean = 0.0, sq = 0.0;
-  for (const double v : x) mean += v;
-  mean /= static_cast<double>(x.size());
-  for (const double v : x) sq += (v - mean) * (v - mean);
-  return {mean, std::sqrt(sq / static_cast<double>(x.size() - 1))};
-}
-
 TEST_F(NodeOdomNoise, OdomLessGroundTruthHasTheConfiguredSigmasAndCovariances) {
   // 3000 pairs of the same stamp: the σs' sampling error is 1.3 %; within 6 %.
   std::map<ros::Time, nav_msgs::Odometry> noisy, truth;
@@ -109,7 +104,7 @@ TEST_F(NodeOdomNoise, OdomLessGroundTruthHasTheConfiguredSigmasAndCovariances) {
     last = &n;
   }
   const auto check = [](const std::vector<double>& x, double sigma, const char* what) {
-    const auto [mean, sd] = stats(x);
+    const auto [mean, sd] = meanAndSigma(x);
     EXPECT_LT(std::abs(mean), 0.1 * sigma) << what;  // 4.5 standard errors
     EXPECT_NEAR(sd, sigma, 0.06 * sigma) << what;
   };
