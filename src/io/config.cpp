@@ -204,30 +204,35 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
   }
 }
 
-ImuEntry parseImuText(const std::string& yaml, const std::string& path, double dt) {
+namespace {
+
+/// `parse` of the YAML text `yaml` (a map given in a request), any YAML
+/// error a ConfigError naming `path`.
+template <class Parse>
+auto fromText(const std::string& yaml, const std::string& path, const Parse& parse) {
   try {
-    ImuEntry imu = parseImu(loadYamlText(yaml, path), path);
-    validateImuEntry(imu, dt, path);
-    return imu;
+    return parse(loadYamlText(yaml, path));
   } catch (const YAML::Exception& e) {
     throw ConfigError(path + ": " + e.what());
   }
+}
+
+}  // namespace
+
+ImuEntry parseImuText(const std::string& yaml, const std::string& path, double dt) {
+  return fromText(yaml, path, [&](const YAML::Node& node) {
+    ImuEntry imu = parseImu(node, path);
+    validateImuEntry(imu, dt, path);
+    return imu;
+  });
 }
 
 core::OdomNoiseSettings parseOdomNoiseText(const std::string& yaml, const std::string& path) {
-  try {
-    return parseOdomNoise(loadYamlText(yaml, path), path);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(path + ": " + e.what());
-  }
+  return fromText(yaml, path, [&](const YAML::Node& node) { return parseOdomNoise(node, path); });
 }
 
 core::DriverSettings parseDriverText(const std::string& yaml, const std::string& path) {
-  try {
-    return parseDriver(loadYamlText(yaml, path), path);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(path + ": " + e.what());
-  }
+  return fromText(yaml, path, [&](const YAML::Node& node) { return parseDriver(node, path); });
 }
 
 YAML::Node loadYamlFile(const std::string& path) {
