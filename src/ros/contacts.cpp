@@ -3,6 +3,8 @@
 // bodies' contacts; a sleeping body keeps those it fell asleep with.
 #include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
+
 #include "rigid_body_sim/core/contact_report.h"
 #include "rigid_body_sim/ros/conversions.h"
 #include "rigid_body_sim/ros/sim_node.h"
@@ -14,21 +16,27 @@ using core::Vec3;
 
 constexpr double kForceScale = 0.01;  ///< m of arrow per N in ~contact_markers
 
+/// A contact that touches: it pushed, or it penetrates.
+bool touching(const core::Contact& c) { return c.normal_impulse > 0.0 || c.separation <= 0.0; }
+
 }  // namespace
 
 void SimNode::keepContacts() {
+  // contacts_ holds the sleeping bodies' contacts, which the step no longer
+  // reports: taken once, from the step in which the body fell asleep.
   const std::size_t n = model_.bodyCount();
-  std::vector<char> stepped(n, 0);  // bodies the step reported on
-  for (const core::Contact& c : workspace_.contacts) stepped[c.body] = 1;
-  std::vector<core::Contact> kept;
-  for (const core::Contact& c : contacts_) {
-    const bool asleep = state_.bodies[c.body].asleep && (c.other < 0 || state_.bodies[c.other].asleep);
-    if (asleep && !stepped[c.body]) kept.push_back(c);
+  kept_for_.resize(n, 0);
+  const auto asleep = [&](int b) { return b < 0 || state_.bodies[b].asleep; };
+  contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(),
+                                 [&](const core::Contact& c) { return !asleep(c.body) || !asleep(c.other); }),
+                  contacts_.end());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!state_.bodies[i].asleep) kept_for_[i] = 0;
   }
   for (const core::Contact& c : workspace_.contacts) {
-    if (c.normal_impulse > 0.0 || c.separation <= 0.0) kept.push_back(c);
+    if (!kept_for_[c.body] && asleep(c.body) && asleep(c.other) && touching(c)) contacts_.push_back(c);
   }
-  contacts_ = std::move(kept);
+  for (const core::Contact& c : contacts_) kept_for_[c.body] = 1;
 }
 
 void SimNode::forgetContactsOf(int body) {
@@ -40,12 +48,19 @@ void SimNode::forgetContactsOf(int body) {
     kept.push_back(c);
   }
   contacts_ = std::move(kept);
+  if (static_cast<std::size_t>(body) < kept_for_.size()) kept_for_.erase(kept_for_.begin() + body);
 }
 
 void SimNode::publishContacts() {
   const bool listed = contacts_pub_.getNumSubscribers() > 0, drawn = contact_markers_pub_.getNumSubscribers() > 0;
   if (!ros::ok() || (!listed && !drawn)) return;
-  const std::vector<core::ContactPairReport> pairs = core::contactPairs(model_, state_, contacts_);
+  // The awake bodies' contacts from the step, the sleepers' kept.
+  std::vector<core::Contact> touching_now = contacts_;
+  for (const core::Contact& c : workspace_.contacts) {
+    const bool awake = !state_.bodies[c.body].asleep || (c.other >= 0 && !state_.bodies[c.other].asleep);
+    if (awake && touching(c)) touching_now.push_back(c);
+  }
+  const std::vector<core::ContactPairReport> pairs = core::contactPairs(model_, state_, touching_now);
   Contacts msg;
   msg.header.stamp = stamp();
   msg.header.frame_id = settings_.world_frame;

@@ -196,13 +196,14 @@ class SimNode {
   /// IMU if it has one (a frame_id that is one of the body's frames throws).
   BodyPorts openPorts(std::size_t i, const std::string& prefix, const BodyDevices& devices);
   void onCmdVel(const std::string& body, const geometry_msgs::Twist::ConstPtr& msg);
-  // Contacts (contacts.cpp): the touching contacts the loop carries from
-  // step to step (a sleeper keeps those it fell asleep with).
+  // Contacts (contacts.cpp): the step reports the awake bodies' contacts;
+  // the loop keeps those a body fell asleep with (per step: a scan, no copy).
   void keepContacts();
   /// After body `body` was deleted: its contacts go, the later indices move down.
   void forgetContactsOf(int body);
-  void publishContacts();  ///< ~contacts and ~contact_markers, while someone subscribes
-  std::vector<core::Contact> contacts_;
+  void publishContacts();                ///< ~contacts and ~contact_markers, while someone subscribes
+  std::vector<core::Contact> contacts_;  ///< the sleeping bodies' contacts
+  std::vector<char> kept_for_;           ///< per body: asleep, its contacts in contacts_
   ros::Publisher contacts_pub_, contact_markers_pub_;
   /// Samples the IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();
