@@ -43,18 +43,20 @@ SpawnBody::Request spawnRequest(const std::string& name, const std::string& urdf
   return req;
 }
 
-/// The first message on `topic` after `trigger` runs (trigger may be empty).
+/// The first message on `topic` after `trigger` runs (trigger may be empty),
+/// waiting up to `seconds` for a publisher and again for the message.
 template <class Msg>
-Msg nextMessage(ros::NodeHandle& nh, const std::string& topic, const std::function<void()>& trigger = {}) {
+Msg nextMessage(ros::NodeHandle& nh, const std::string& topic, const std::function<void()>& trigger = {},
+                double seconds = 10.0) {
   Msg msg;
   bool got = false;
   const ros::Subscriber sub = nh.subscribe<Msg>(topic, 10, [&](const typename Msg::ConstPtr& m) {
     msg = *m;
     got = true;
   });
-  EXPECT_TRUE(spinUntil([&] { return sub.getNumPublishers() > 0; }, 10.0)) << topic;
+  EXPECT_TRUE(spinUntil([&] { return sub.getNumPublishers() > 0; }, seconds)) << topic;
   if (trigger) trigger();
-  EXPECT_TRUE(spinUntil([&] { return got; }, 10.0)) << topic;
+  EXPECT_TRUE(spinUntil([&] { return got; }, seconds)) << topic;
   return msg;
 }
 
@@ -131,14 +133,8 @@ TEST_F(NodeSpawn, TheScriptSpawnsAsGazebosSpawnModelDoes) {
   // spawn.test: `spawn_body -urdf -param crate_description -model crate -x 1
   // -y 2 -z 0.5 -Y pi/2 -unpause` into an empty, paused world without
   // gravity. Odometry comes only from steps: it flows once unpaused.
-  nav_msgs::Odometry odom;
-  bool got = false;
-  const ros::Subscriber sub =
-      nh_.subscribe<nav_msgs::Odometry>("/crate/odom", 10, [&](const nav_msgs::Odometry::ConstPtr& m) {
-        odom = *m;
-        got = true;
-      });
-  ASSERT_TRUE(spinUntil([&] { return got; }, 30.0)) << "no /crate/odom";
+  // (the script spawns it as the test starts: up to 30 s for it to come)
+  const auto odom = nextMessage<nav_msgs::Odometry>(nh_, "/crate/odom", {}, 30.0);
   EXPECT_EQ(odom.child_frame_id, "crate/base_link");
   EXPECT_NEAR(odom.pose.pose.position.x, 1.0, 1e-12);
   EXPECT_NEAR(odom.pose.pose.position.y, 2.0, 1e-12);
@@ -150,14 +146,8 @@ TEST_F(NodeSpawn, TheScriptSpawnsAsGazebosSpawnModelDoes) {
 TEST_F(NodeSpawn, TheScriptTakesAFileAndRollPitchYawAsUrdfDoes) {
   // spawn.test: `spawn_body -urdf -file package://.../ball.urdf -model rolled
   // -x -3 -R 0.3 -P 0.2 -Y 0.1`: q = Rz(yaw) Ry(pitch) Rx(roll).
-  nav_msgs::Odometry odom;
-  bool got = false;
-  const ros::Subscriber sub =
-      nh_.subscribe<nav_msgs::Odometry>("/rolled/odom", 10, [&](const nav_msgs::Odometry::ConstPtr& m) {
-        odom = *m;
-        got = true;
-      });
-  ASSERT_TRUE(spinUntil([&] { return got; }, 30.0)) << "no /rolled/odom";
+  // (the script spawns it as the test starts: up to 30 s for it to come)
+  const auto odom = nextMessage<nav_msgs::Odometry>(nh_, "/rolled/odom", {}, 30.0);
   const Eigen::Quaterniond q = Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitZ()) *
                                Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()) *
                                Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX());
