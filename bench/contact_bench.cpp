@@ -3,6 +3,9 @@
 //    dropped from 1 m, tumbling, onto the ground; 10 s at Δt = 1 ms, with and
 //    without sleeping. Counters: ns per step, deepest penetration (mm), time
 //    from the first impact until it stops moving (s).
+//  - BM_Rolling: a ball (0, for comparison), a cylinder (1) or a capsule
+//    (2), radius 0.1 m (length 0.3 m), 2 kg, rolling at 1 m/s on the ground
+//    for 5 s without sleeping: ns per step, and the speed kept (%).
 //  - BM_MeshDrop: a mesh body of N vertices (a UV sphere written as OBJ and
 //    loaded through the URDF loader and assimp) dropped from 0.3 m, 3 s,
 //    without sleeping: ns per step against N.
@@ -107,6 +110,26 @@ std::string writeSphereObj(int rings, int segments) {
   for (int j = 0; j < segments; ++j) out << "f " << last << " " << at(rings, j + 1) << " " << at(rings, j) << "\n";
   return path;
 }
+
+void BM_Rolling(benchmark::State& bench) {
+  const int shape = static_cast<int>(bench.range(0));
+  const std::string geometry = shape == 0 ? "sphere" : shape == 1 ? "cylinder" : "capsule";
+  const std::string urdf = R"(<robot name="round"><link name="round">
+    <inertial><mass value="2"/><inertia ixx="0.02" iyy="0.02" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><)" +
+                           geometry + R"( radius="0.1" length="0.3"/></geometry></collision></link></robot>)";
+  const core::BodySpec body = io::loadUrdfString(urdf, "round");
+  io::SimConfig config = io::parseConfig(
+      YAML::Load("initial: {position: [0, 0, 0.1], rpy: [-1.5707963267948966, 0, 0], linear_velocity: [1, 0, 0], "
+                 "angular_velocity: [0, 10, 0]}\nsleep: {enabled: false}"));
+  const core::Model model = io::buildModel(config, body);
+  const core::State start{0.0, {core::bodyStateFromLink(model.body(0), config.initial)}, {}};
+  measure(bench, model, start, 5000);
+  core::State s = start;
+  for (int n = 0; n < 5000; ++n) core::step(model, s);
+  bench.counters["speed_kept_pct"] = 100.0 * s.bodies[0].v_WB.x();
+}
+BENCHMARK(BM_Rolling)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 void BM_MeshDrop(benchmark::State& bench) {
   const int rings = static_cast<int>(bench.range(0)), segments = static_cast<int>(bench.range(1));

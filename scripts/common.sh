@@ -14,7 +14,7 @@ export ROS_HOSTNAME=${ROS_HOSTNAME:-localhost}
 # Debian 12 packages the project needs (ROS 1 from Debian, under /usr).
 RBS_APT_PACKAGES=(
   build-essential cmake catkin
-  libeigen3-dev liburdfdom-dev libyaml-cpp-dev libassimp-dev
+  libeigen3-dev liburdfdom-dev libtinyxml-dev libyaml-cpp-dev libassimp-dev
   # libassimp-dev's CMake config links libz.so but the package does not depend on zlib1g-dev
   zlib1g-dev
   nlohmann-json3-dev  # rbsim writes its JSON line through it

@@ -9,6 +9,7 @@
 
 #include "broad_phase.h"
 #include "rigid_body_sim/core/contact.h"
+#include "round_contact.h"
 #include "scratch.h"
 #include "sleep.h"
 
@@ -19,7 +20,7 @@ using detail::ContactCandidate;
 using detail::PartScratch;
 using detail::StepScratch;
 
-/// Calls visit(item, point, separation, normal_W) for every contact point of
+/// Calls visit(item, point, separation, normal_W, r_B) for every contact point of
 /// a body with φ − radius < margin against the scene. Scene items farther
 /// than the body's bounding radius are skipped: φ is 1-Lipschitz, so
 /// φ(point) ≥ φ(centre) − bound_radius. Planes take a fast path: with the
@@ -58,17 +59,29 @@ void scanScene(const Model& model, const BodyState& s, int body, double margin, 
         const int begin = static_cast<int>(g.begin), end = static_cast<int>(g.end);
         for (int i = begin; i < end; ++i) sep[i] = phi_centre + nx * x[i] + ny * y[i] + nz * z[i] - rad[i];
         for (int i = begin; i < end; ++i) {
-          if (sep[i] < margin) visit(item, i, sep[i], n_W);
+          if (sep[i] < margin) visit(item, i, sep[i], n_W, Vec3(x[i], y[i], z[i]));
         }
+      }
+      for (const int i : b.rim_points) {  // closed form
+        const ContactPoint& p = b.contact_points[i];
+        const detail::RoundHit hit = detail::rimOnPlane(b.round[p.round], p.phase, n_B, phi_centre);
+        if (hit.phi - p.radius < margin) visit(item, i, hit.phi - p.radius, n_W, hit.r_B);
       }
       continue;
     }
     for (int i = 0; i < n_points; ++i) {
       const ContactPoint& p = b.contact_points[i];
+      if (p.round >= 0) {
+        detail::RoundHit hit;
+        if (detail::roundOnSdf(b.round[p.round], p.phase, sdf, R, s.p_WB, hit) && hit.phi - p.radius < margin) {
+          visit(item, i, hit.phi - p.radius, hit.normal_F, hit.r_B);
+        }
+        continue;
+      }
       const Vec3 r_W = R * p.r_B;
       Vec3 normal_W;
       const double separation = sdf.eval(s.p_WB + r_W, &normal_W) - p.radius;
-      if (separation < margin) visit(item, i, separation, normal_W);
+      if (separation < margin) visit(item, i, separation, normal_W, p.r_B);
     }
   }
 }
@@ -93,20 +106,31 @@ template <class Visit>
   for (int i = 0; i < static_cast<int>(ba.contact_points.size()); ++i) {
     const ContactPoint& p = ba.contact_points[i];
     const Vec3 p_O = centre_O + R_OA * p.r_B;
+    const RoundFeature* round = p.round >= 0 ? &ba.round[p.round] : nullptr;
     // Outside the box around o's solid, grown by the margin: too far to touch.
-    const double reach = margin + p.radius;
+    const double reach = margin + p.radius + (round != nullptr ? round->rho + round->half_length : 0.0);
     if ((p_O.array() < bo.solid_lo_B.array() - reach).any() || (p_O.array() > bo.solid_hi_B.array() + reach).any()) {
       continue;
     }
     Vec3 n_O;
-    const double separation = solid.eval(p_O, &n_O) - p.radius;
+    double separation;
+    Vec3 r_B = p.r_B;
+    if (round != nullptr) {
+      detail::RoundHit hit;
+      if (!detail::roundOnSdf(*round, p.phase, solid, R_OA, centre_O, hit)) continue;
+      separation = hit.phi - p.radius;
+      n_O = hit.normal_F;
+      r_B = hit.r_B;
+    } else {
+      separation = solid.eval(p_O, &n_O) - p.radius;
+    }
     if (!(separation < margin)) continue;  // also a NaN distance (a degenerate mesh's grid): no contact
     // A point of a's face meets o's solid head on, or not at all: near o's
     // edges o's gradient turns sideways (a box sliding over another's face
     // samples would stop at each one), and o's own points against a's solid
     // give those contacts their true normal.
     if (p.normal_B.dot(p.normal_B) > 0.0 && (R_OA * p.normal_B).dot(n_O) > -kFaceContactCos) continue;
-    visit(i, separation, Vec3(R_WO * n_O));
+    visit(i, separation, Vec3(R_WO * n_O), r_B);
   }
 }
 
@@ -122,12 +146,12 @@ double speculativeMargin(const BodyModel& b, const BodyState& s, double h, doubl
 /// nanometre, or 1e-9 relative) go to the lowest point index, so the same
 /// points are kept from step to step, which lets the solver warm-start.
 /// Distances are rigid, so it works on the body-frame points.
-void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandidate>& cands, const BodyModel& b,
-                  const Vec3& n_B, std::vector<int>& members, std::vector<Vec3>& at) {
+void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandidate>& cands, const Vec3& n_B,
+                  std::vector<int>& members, std::vector<Vec3>& at) {
   const std::size_t n = members.size();
   if (n <= 4) return;
   at.resize(n);
-  for (std::size_t k = 0; k < n; ++k) at[k] = b.contact_points[cands[members[k]].point].r_B;
+  for (std::size_t k = 0; k < n; ++k) at[k] = cands[members[k]].r_B;
   // The index of the largest score (the first one on near-ties).
   const double relative = settings.reduction_tie_relative;
   const auto argmax = [n, relative](auto score, double tie) {
@@ -202,7 +226,7 @@ void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandi
     }
     start = static_cast<std::size_t>(out.region_members.front());  // regions begin in order
     if (reduce) {
-      reduceRegion(model.solver(), cands, b, q_BW * cands[out.region_members.front()].normal_W, out.region_members,
+      reduceRegion(model.solver(), cands, q_BW * cands[out.region_members.front()].normal_W, out.region_members,
                    out.region_points);
     }
     kept.insert(kept.end(), out.region_members.begin(), out.region_members.end());
@@ -222,7 +246,7 @@ void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandi
     c.item = cand.item;
     c.point = cand.point;
     c.normal_W = cand.normal_W;
-    c.r_W = R_WB * p.r_B - p.radius * cand.normal_W;
+    c.r_W = R_WB * cand.r_B - p.radius * cand.normal_W;
     if (c.other >= 0) c.r_other_W = s.p_WB + c.r_W - state.bodies[c.other].p_WB;
     c.separation = cand.separation;
     out.contacts.push_back(c);
@@ -277,8 +301,8 @@ void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandi
       if (!s.asleep && !model.scene().empty()) {
         out.candidates.clear();
         scanScene(model, s, body, multi ? sc.margins[body] : margin(body), out.separations,
-                  [&](int item, int point, double separation, const Vec3& normal) {
-                    out.candidates.push_back({-1, item, point, 0, separation, normal});
+                  [&](int item, int point, double separation, const Vec3& normal, const Vec3& r_B) {
+                    out.candidates.push_back({-1, item, point, 0, separation, normal, r_B});
                     out.deepest = std::max(out.deepest, -separation);
                   });
         if (!out.candidates.empty()) emitContacts(model, state, body, impulse, out);
@@ -287,8 +311,8 @@ void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandi
         const int o = dir->second;
         out.candidates.clear();
         scanBody(model, state, body, o, sc.margins[body] + sc.margins[o],
-                 [&](int point, double separation, const Vec3& normal) {
-                   out.candidates.push_back({o, -1, point, 0, separation, normal});
+                 [&](int point, double separation, const Vec3& normal, const Vec3& r_B) {
+                   out.candidates.push_back({o, -1, point, 0, separation, normal, r_B});
                    out.deepest = std::max(out.deepest, -separation);
                  });
         if (!out.candidates.empty()) emitContacts(model, state, body, impulse, out);
@@ -328,7 +352,7 @@ double minSeparation(const Model& model, const BodyState& s, int body, double ma
   double smallest = std::numeric_limits<double>::infinity();
   std::vector<double> scratch;
   scanScene(model, s, body, margin, scratch,
-            [&](int, int, double separation, const Vec3&) { smallest = std::min(smallest, separation); });
+            [&](int, int, double separation, const Vec3&, const Vec3&) { smallest = std::min(smallest, separation); });
   return smallest;
 }
 

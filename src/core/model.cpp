@@ -60,18 +60,21 @@ void groupExtremePoints(BodyModel& b, std::size_t group_size) {
 void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, const SolverSettings& solver,
                         BodyModel& b) {
   const Pose X_BL = Pose{b.q_LB, b.p_LB}.inverse();
-  const bool sample_spheres = contact.method == ContactMethod::kShapeMatching;
+  const bool sample_round = contact.method == ContactMethod::kShapeMatching;
   double count = 0.0;
-  for (const CollisionShape& shape : spec.collision)
-    count += sampleCount(shape, contact.sample_spacing, sample_spheres);
+  for (const CollisionShape& shape : spec.collision) count += sampleCount(shape, contact.sample_spacing, sample_round);
   if (count > ranges::kMaxContactPoints) {
     detail::fail("contact.sample_spacing", detail::str(contact.sample_spacing),
                  "body '" + spec.name + "' would get " + detail::str(count) + " contact points, more than " +
                      detail::str(ranges::kMaxContactPoints) + " (raise the spacing or simplify the mesh)");
   }
   for (const CollisionShape& shape : spec.collision) {
-    const auto points = sampleShape(shape, X_BL, contact.sample_spacing, sample_spheres);
-    b.contact_points.insert(b.contact_points.end(), points.begin(), points.end());
+    ShapeSamples samples = sampleShape(shape, X_BL, contact.sample_spacing, sample_round);
+    for (ContactPoint& p : samples.points) {
+      if (p.round >= 0) p.round += static_cast<int>(b.round.size());
+    }
+    b.contact_points.insert(b.contact_points.end(), samples.points.begin(), samples.points.end());
+    b.round.insert(b.round.end(), samples.round.begin(), samples.round.end());
   }
   const auto first_other = std::stable_partition(b.contact_points.begin(), b.contact_points.end(),
                                                  [](const ContactPoint& p) { return p.extreme; });
@@ -83,8 +86,12 @@ void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, co
     b.extreme_z.push_back(b.contact_points[i].r_B.z());
     b.extreme_radius.push_back(b.contact_points[i].radius);
   }
-  for (const ContactPoint& p : b.contact_points) {
-    b.bound_radius = std::max(b.bound_radius, p.r_B.norm() + p.radius);
+  for (std::size_t i = 0; i < b.contact_points.size(); ++i) {
+    const ContactPoint& p = b.contact_points[i];
+    const RoundFeature* f = p.round >= 0 ? &b.round[static_cast<std::size_t>(p.round)] : nullptr;
+    if (f != nullptr && f->kind == RoundFeature::Kind::kRim) b.rim_points.push_back(static_cast<int>(i));
+    const double reach = f != nullptr ? f->rho + f->half_length : 0.0;
+    b.bound_radius = std::max(b.bound_radius, p.r_B.norm() + reach + p.radius);
     b.points_centroid_B += p.r_B;
   }
   if (b.contact_points.empty()) return;
@@ -133,6 +140,9 @@ void buildSolid(const BodySpec& spec, const SolverSettings& solver, BodyModel& b
         break;
       case CollisionShape::Kind::kCylinder:
         parts.push_back(Sdf::cylinder(shape.radius, shape.length).transformed(X_BS));
+        break;
+      case CollisionShape::Kind::kCapsule:
+        parts.push_back(Sdf::capsule(shape.radius, shape.length).transformed(X_BS));
         break;
       case CollisionShape::Kind::kPoints:
         if (!SdfGrid::hasArea(shape.mesh)) break;  // a point cloud (or degenerate triangles) has no inside

@@ -1,6 +1,7 @@
 // The position correction after the impulse solve (docs/physics.md §5.8):
 // nonlinear Gauss-Seidel on positions, as Box2D does.
 #include "rigid_body_sim/core/contact.h"
+#include "round_contact.h"
 #include "scratch.h"
 
 namespace rigid_body_sim::core {
@@ -34,20 +35,28 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
       const BodyModel& b = model.body(c.body);
       BodyState& s = state.bodies[c.body];
       const ContactPoint& p = b.contact_points[c.point];
-      const Vec3 arm = s.q_WB * p.r_B;
-      Vec3 n;
-      double separation;
-      BodyState* o = nullptr;
-      if (c.other < 0) {
-        separation = model.scene()[c.item].eval(s.p_WB + arm, &n) - p.radius;
+      BodyState* o = c.other < 0 ? nullptr : &state.bodies[c.other];
+      // The surface, in its frame F: the scene item's (the world) or the other body's solid.
+      const Sdf& surface = o == nullptr ? model.scene()[c.item] : model.body(c.other).solid_B.front();
+      const Quat q_FW = o == nullptr ? Quat::Identity() : o->q_WB.conjugate();
+      const Vec3 p_FB = o == nullptr ? s.p_WB : Vec3(q_FW * (s.p_WB - o->p_WB));
+      Vec3 arm, n_F;
+      double phi;
+      if (p.round >= 0) {  // where the round feature is deepest now
+        detail::RoundHit hit;
+        if (!detail::roundOnSdf(b.round[p.round], p.phase, surface, (q_FW * s.q_WB).toRotationMatrix(), p_FB, hit)) {
+          continue;
+        }
+        arm = s.q_WB * hit.r_B;
+        phi = hit.phi;
+        n_F = hit.normal_F;
       } else {
-        o = &state.bodies[c.other];
-        Vec3 n_O;
-        separation =
-            model.body(c.other).solid_B.front().eval(o->q_WB.conjugate() * (s.p_WB + arm - o->p_WB), &n_O) - p.radius;
-        n = o->q_WB * n_O;
-        if (o->asleep) o = nullptr;  // a sleeper stays put, like the ground
+        arm = s.q_WB * p.r_B;
+        phi = surface.eval(o == nullptr ? Vec3(s.p_WB + arm) : Vec3(q_FW * (s.p_WB + arm - o->p_WB)), &n_F);
       }
+      const double separation = phi - p.radius;
+      const Vec3 n = o == nullptr ? n_F : Vec3(o->q_WB * n_F);
+      if (o != nullptr && o->asleep) o = nullptr;  // a sleeper stays put, like the ground
       const double C = separation + slop;
       if (!(C < 0.0)) continue;  // also a NaN distance: no correction (the guard ran before this stage)
       deepest = std::min(deepest, C);

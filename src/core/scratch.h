@@ -22,6 +22,7 @@ struct ContactCandidate {
   int region = 0;
   double separation = 0.0;        ///< m
   Vec3 normal_W = Vec3::UnitZ();  ///< ∇φ at the point
+  Vec3 r_B = Vec3::Zero();        ///< where: the contact point's r_B, or where its round feature touches (m)
 };
 
 /// Scratch memory of one part of a stage (one thread's share).

@@ -1,10 +1,12 @@
 #include "rigid_body_sim/io/urdf_loader.h"
 
+#include <tinyxml.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -46,9 +48,49 @@ const char* jointTypeName(int type) {
   }
 }
 
+/// The <collision>s that were capsules: (link name, index among the link's <collision>s).
+using CapsuleSet = std::set<std::pair<std::string, std::size_t>>;
+
+/// URDF has no capsule; SDFormat (1.8 on) and Drake's URDF parser read
+/// <capsule radius="r" length="l"/> in a <geometry>, l the length of its
+/// cylinder, and so does this loader. urdfdom refuses the element, so it
+/// reads a copy of the text where every capsule is a cylinder with the same
+/// attributes, and `capsules` says which collisions were capsules. Text
+/// without a capsule (or that is not XML: urdfdom then says why) is kept as
+/// it is.
+std::string capsulesAsCylinders(const std::string& xml, CapsuleSet& capsules) {
+  if (xml.find("capsule") == std::string::npos) return xml;
+  TiXmlDocument doc;
+  doc.Parse(xml.c_str());
+  TiXmlElement* robot = doc.RootElement();
+  if (doc.Error() || robot == nullptr) return xml;
+  bool any = false;
+  for (TiXmlElement* link = robot->FirstChildElement("link"); link; link = link->NextSiblingElement("link")) {
+    const char* name = link->Attribute("name");
+    for (const char* kind : {"collision", "visual"}) {
+      std::size_t index = 0;
+      for (TiXmlElement* e = link->FirstChildElement(kind); e; e = e->NextSiblingElement(kind), ++index) {
+        TiXmlElement* geometry = e->FirstChildElement("geometry");
+        TiXmlElement* capsule = geometry != nullptr ? geometry->FirstChildElement("capsule") : nullptr;
+        if (capsule == nullptr) continue;
+        capsule->SetValue("cylinder");
+        any = true;
+        if (std::string(kind) == "collision" && name != nullptr) capsules.insert({name, index});
+      }
+    }
+  }
+  if (!any) return xml;
+  TiXmlPrinter printer;
+  doc.Accept(&printer);
+  return printer.CStr();
+}
+
 class Lumper {
  public:
   Lumper(std::string source, std::string base_dir) : source_(std::move(source)), base_dir_(std::move(base_dir)) {}
+
+  /// Which collisions are capsules (read as cylinders by urdfdom).
+  void setCapsules(CapsuleSet capsules) { capsules_ = std::move(capsules); }
 
   [[noreturn]] void fail(const std::string& what) const { throw UrdfError(source_ + ": " + what); }
 
@@ -117,11 +159,12 @@ class Lumper {
         }
         case urdf::Geometry::CYLINDER: {
           const auto& cyl = static_cast<const urdf::Cylinder&>(*col.geometry);
-          shape.kind = core::CollisionShape::Kind::kCylinder;
+          const bool capsule = capsules_.count({link.name, i}) > 0;
+          shape.kind = capsule ? core::CollisionShape::Kind::kCapsule : core::CollisionShape::Kind::kCylinder;
           shape.radius = cyl.radius;
           shape.length = cyl.length;
-          positive(cyl.radius, "cylinder radius");
-          positive(cyl.length, "cylinder length");
+          positive(cyl.radius, capsule ? "capsule radius" : "cylinder radius");
+          positive(cyl.length, capsule ? "capsule length" : "cylinder length");
           break;
         }
         case urdf::Geometry::MESH: {
@@ -177,19 +220,22 @@ class Lumper {
  private:
   std::string source_;
   std::string base_dir_;
+  CapsuleSet capsules_;
 };
 
 }  // namespace
 
 core::BodySpec loadUrdfString(const std::string& xml, const std::string& source, const std::string& base_dir) {
-  const Lumper lumper(source, base_dir);
+  Lumper lumper(source, base_dir);
   if (xml.size() > InputCaps::kUrdfBytes) {
     lumper.fail("the URDF text is " + std::to_string(xml.size()) + " bytes, more than the " +
                 std::to_string(InputCaps::kUrdfBytes) + " a URDF may have");
   }
   const std::string problem = xmlProblem(xml);
   if (!problem.empty()) lumper.fail("refused before parsing: " + problem);
-  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
+  CapsuleSet capsules;
+  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(capsulesAsCylinders(xml, capsules));
+  lumper.setCapsules(std::move(capsules));
   if (!model) lumper.fail("not a valid URDF document (the parser's reason is printed above)");
   const urdf::LinkConstSharedPtr root = model->getRoot();
   if (!root) lumper.fail("no root link");

@@ -95,6 +95,16 @@ Marker shapeMarker(const core::CollisionShape& shape, const Marker& base) {
       m.scale.x = m.scale.y = 2.0 * shape.radius;
       m.scale.z = shape.length;
       break;
+    case Kind::kCapsule: {  // rviz has no capsule: its surface as triangles, 1/32 of its length a cell
+      const Vec3 half(shape.radius, shape.radius, shape.radius + 0.5 * shape.length);
+      m.type = Marker::TRIANGLE_LIST;
+      const core::Bounds bounds{-1.05 * half, 1.05 * half};
+      for (const Vec3& p :
+           core::surfaceTriangles(core::Sdf::capsule(shape.radius, shape.length), bounds, 2.1 * half.z() / 32.0)) {
+        m.points.push_back(toPoint(p));
+      }
+      break;
+    }
     case Kind::kPoints:
       if (shape.mesh.triangles.empty()) {  // a point cloud: its points, 5 mm across
         m.type = Marker::POINTS;

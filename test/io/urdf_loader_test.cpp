@@ -141,5 +141,26 @@ TEST(UrdfLoader, RefusesNonsenseAndMissingFiles) {
                                   {"URDF '/nonexistent/robot.urdf': no such file"});
 }
 
+TEST(UrdfLoader, ACapsuleIsReadAsSDFormatAndDrakeWriteIt) {
+  // <capsule radius length>: the length of its cylinder. Cylinders stay
+  // cylinders, visuals may be capsules too, and the second collision of a
+  // link is told from the first.
+  const std::string geometry =
+      "<collision><geometry><cylinder radius='0.05' length='0.2'/></geometry></collision>"
+      "<collision><origin xyz='0 0 0.5'/><geometry><capsule radius='0.1' length='0.3'/>"
+      "</geometry></collision>"
+      "<visual><geometry><capsule radius='0.1' length='0.3'/></geometry></visual>";
+  const core::BodySpec b = load(robot("<link name='base'>" + inertial(1.0) + geometry + "</link>"));
+  ASSERT_EQ(b.collision.size(), 2u);
+  EXPECT_EQ(b.collision[0].kind, core::CollisionShape::Kind::kCylinder);
+  EXPECT_EQ(b.collision[1].kind, core::CollisionShape::Kind::kCapsule);
+  EXPECT_EQ(b.collision[1].radius, 0.1);
+  EXPECT_EQ(b.collision[1].length, 0.3);
+  EXPECT_EQ(b.collision[1].X_LS.translation, Vec3(0, 0, 0.5));
+  expectRefused(robot("<link name='base'>" + inertial(1.0) +
+                      "<collision><geometry><capsule radius='-1' length='0.3'/></geometry></collision></link>"),
+                {"link 'base' <collision> 0", "capsule radius", "-1"});
+}
+
 }  // namespace
 }  // namespace rigid_body_sim::test

@@ -76,6 +76,8 @@ struct BodyModel {
   bool own_friction = false, own_restitution = false;  ///< its own (BodySpec), not the scene's
   std::vector<ContactPoint> contact_points;            ///< collision samples, body frame B, extreme ones first
   std::size_t extreme_points = 0;                      ///< how many of contact_points are extreme (see ContactPoint)
+  std::vector<RoundFeature> round;                     ///< the round features contact points refer to (B)
+  std::vector<int> rim_points;                         ///< the contact points on rims, which a plane tests too
   /// The extreme points again as columns (x, y, z, radius), so the plane
   /// test over a large mesh runs as vector arithmetic.
   std::vector<double> extreme_x, extreme_y, extreme_z, extreme_radius;
