@@ -1,7 +1,9 @@
-// The many-bodies scene of issue 5, shared by world_bench and rest_census:
-// N boxes (half extents 0.2 × 0.1 × 0.05 m, 1 kg) on a grid 0.6 m apart,
-// dropped from 0.5–1.5 m with random orientations (seed 42) onto the
-// ground; default contact and sleep settings.
+// The many-bodies scene of issue 5, shared by world_bench, rest_census and
+// the pile bench (pile_bench, bullet_pile): N boxes (half extents
+// 0.2 × 0.1 × 0.05 m, 1 kg) on a grid 0.6 m apart, dropped from 0.5–1.5 m
+// with random orientations (seed 42) onto the ground; default sleep
+// settings, and default contact settings unless given (the pile of issue 16
+// has restitution 0.5 and friction 0.5).
 #pragma once
 
 #include <cmath>
@@ -19,7 +21,7 @@ struct BoxGrid {
   core::State start;
 };
 
-inline BoxGrid boxGrid(int n) {
+inline BoxGrid boxGrid(int n, const core::ContactSettings& contact = {}) {
   using namespace core;
   ModelSpec spec;
   BodySpec box;
@@ -34,6 +36,7 @@ inline BoxGrid boxGrid(int n) {
     spec.bodies.push_back(box);
   }
   spec.scene = {Sdf::plane(Vec3::UnitZ())};
+  spec.contact = contact;
   BoxGrid s{Model(spec), {}};
   const int side = static_cast<int>(std::ceil(std::sqrt(n)));
   std::mt19937 rng(42);

@@ -62,6 +62,23 @@ void warmStart(const Contact& contact, const State& state, Velocities& vel, Solv
   applyImpulse(c, c.normal_impulse, c.tangent_impulse.x(), c.tangent_impulse.y(), vel);
 }
 
+/// A contact's pair as pressed_pairs names it.
+std::array<int, 3> pairOf(const ContactKey& k) {
+  return k.other < 0 ? std::array<int, 3>{k.body, -1, k.item}
+                     : std::array<int, 3>{std::min(k.body, k.other), std::max(k.body, k.other), -1};
+}
+
+/// The pairs that pressed on each other in the last step, sorted (scene
+/// items and bodies alike; both directions of a body pair are one pair).
+void findPressedPairs(const State& state, std::vector<std::array<int, 3>>& pairs) {
+  pairs.clear();
+  for (const ContactImpulse& c : state.contact_impulses) {
+    if (c.normal > 0.0) pairs.push_back(pairOf(c));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+}
+
 /// Finds each contact's impulse of the last step: both lists are sorted by
 /// key, so one merge walk does it.
 void matchLastImpulses(const State& state, std::vector<Contact>& contacts) {
@@ -182,14 +199,20 @@ double prepareSide(const Vec3& r, const SolverContact& c, double inv_mass, const
 /// terms added), and its target normal velocity. A sleeping body is part of
 /// the ground: no mass terms. `previous` is the solver contact before it
 /// in the island, if any.
-void prepareContact(const Model& model, const State& state, const std::vector<Mat3>& inv_I_W, double h,
-                    const Contact& contact, const SolverContact* previous, SolverContact& c) {
+void prepareContact(const Model& model, const State& state, const StepScratch& sc, double h, const Contact& contact,
+                    const SolverContact* previous, SolverContact& c) {
+  const std::vector<Mat3>& inv_I_W = sc.inverse_inertias;
   const Vec3& n = contact.normal_W;
   c.body = contact.body;
   c.other = contact.other;
   c.normal_W = n;
   c.friction = model.friction(c.body, c.other);
   c.restitution = model.restitution(c.body, c.other);
+  // A pair that pressed on each other last step meets again plastically:
+  // a rocking block's new corner, a box tipping onto its face (Housner).
+  if (c.restitution > 0.0 && std::binary_search(sc.pressed_pairs.begin(), sc.pressed_pairs.end(), pairOf(contact))) {
+    c.restitution = 0.0;
+  }
   if (previous != nullptr && previous->normal_W == n) {  // the points of one region share n and its tangents
     c.tangent1_W = previous->tangent1_W;
     c.tangent2_W = previous->tangent2_W;
@@ -233,7 +256,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
     const Contact& contact = ws.contacts[sc.island_contacts[k]];
     SolverContact& c = sc.solver_contacts[k];
     c.contact = sc.island_contacts[k];
-    prepareContact(model, state, sc.inverse_inertias, h, contact, k > first ? &c - 1 : nullptr, c);
+    prepareContact(model, state, sc, h, contact, k > first ? &c - 1 : nullptr, c);
     fastest = std::max(fastest, contactVelocity(c, vel).squaredNorm());
     warmStart(contact, state, vel, c);
   }
@@ -321,6 +344,11 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
   // convergence: a box still bouncing does not keep the others sweeping.
   // Islands share no body, so they split over the cores with the same result.
   matchLastImpulses(state, ws.contacts);
+  if (model.bounces()) {
+    findPressedPairs(state, sc.pressed_pairs);
+  } else {
+    sc.pressed_pairs.clear();
+  }
   groupContactsByIsland(model, state, ws);
   const int islands = static_cast<int>(sc.island_starts.size()) - 1;
   const int parts = islands > 1 ? detail::partsFor(ws, ws.contacts.size()) : 1;

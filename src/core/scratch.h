@@ -2,6 +2,7 @@
 // for each other and reuse from step to step. Workspace::scratch points here.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <mutex>
 #include <utility>
@@ -77,6 +78,10 @@ struct StepScratch {
   /// by this step's impulse solve: in equilibrium, so it may sleep at once.
   std::vector<char> held_still;
   std::vector<int> correct_contacts;  ///< the contacts the position stage corrects
+  /// The pairs that pressed on each other last step (λ_N > 0), sorted: an
+  /// impact between them is plastic (a rocking impact, docs/physics.md
+  /// §5.5). (lower body, higher body or −1 for the scene, scene item or −1).
+  std::vector<std::array<int, 3>> pressed_pairs;
   /// Log barrier (barrier.h): each contact's separation at the end of the
   /// step's previous pass (m; empty in a first pass), where the last pass
   /// ended, and per body the sums Σ k w and Σ c w of its step control.
