@@ -40,11 +40,15 @@ inline double normalVelocity(const SolverContact& c, const Velocities& vel) {
 }
 
 /// Applies the impulse λ_N n + λ₁ t₁ + λ₂ t₂ at a contact: + to `body`, − to the other.
+/// A sleeper (zero terms) is not written: it may sit in several islands
+/// solved at once.
 inline void applyImpulse(const SolverContact& c, double ln, double l1, double l2, Velocities& vel) {
   const Vec3 P = ln * c.normal_W + l1 * c.tangent1_W + l2 * c.tangent2_W;
-  vel[c.body].v_W += c.a.inv_mass * P;
-  vel[c.body].w_W += ln * c.a.turn_n + l1 * c.a.turn_t1 + l2 * c.a.turn_t2;
-  if (c.other >= 0) {
+  if (c.a.inv_mass > 0.0) {
+    vel[c.body].v_W += c.a.inv_mass * P;
+    vel[c.body].w_W += ln * c.a.turn_n + l1 * c.a.turn_t1 + l2 * c.a.turn_t2;
+  }
+  if (c.other >= 0 && c.o.inv_mass > 0.0) {
     vel[c.other].v_W -= c.o.inv_mass * P;
     vel[c.other].w_W -= ln * c.o.turn_n + l1 * c.o.turn_t1 + l2 * c.o.turn_t2;
   }
@@ -222,11 +226,19 @@ void prepareContact(const Model& model, const State& state, const StepScratch& s
   }
   Eigen::Matrix2d k = Eigen::Matrix2d::Zero();
   Eigen::Vector2d k_nt = Eigen::Vector2d::Zero();
-  double knn = prepareSide(contact.r_W, c, model.body(c.body).inv_mass, inv_I_W[c.body], c.a, k, k_nt);
+  // A sleeper is ground on either side: no terms (for the scene, other < 0,
+  // o is never read). Its own points against an awake body's solid make
+  // contacts whose `body` it is.
+  double knn = 0.0;
+  if (!state.bodies[c.body].asleep) {
+    knn = prepareSide(contact.r_W, c, model.body(c.body).inv_mass, inv_I_W[c.body], c.a, k, k_nt);
+  } else {
+    c.a = SolverContact::Side();
+  }
   if (c.other >= 0 && !state.bodies[c.other].asleep) {
     knn += prepareSide(contact.r_other_W, c, model.body(c.other).inv_mass, inv_I_W[c.other], c.o, k, k_nt);
   } else if (c.other >= 0) {
-    c.o = SolverContact::Side();  // a sleeper: ground, no terms (for the scene, other < 0, o is never read)
+    c.o = SolverContact::Side();
   }
   c.normal_mass = 1.0 / knn;
   c.tangent_k = k;

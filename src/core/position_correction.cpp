@@ -63,7 +63,8 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
       const Vec3 r = arm - p.radius * n;
       const Mat3 inv_I = detail::worldInverseInertia(b, s.q_WB);
       const Vec3 rn = r.cross(n);
-      double k = b.inv_mass + rn.dot(inv_I * rn);
+      const bool body_moves = !s.asleep;  // a sleeper's own points against an awake body: it stays put
+      double k = body_moves ? b.inv_mass + rn.dot(inv_I * rn) : 0.0;
       Vec3 r_o = Vec3::Zero();
       Mat3 inv_I_o = Mat3::Zero();
       if (o != nullptr) {
@@ -80,7 +81,7 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
         x.q_WB = Quat(1.0, half_turn.x(), half_turn.y(), half_turn.z()) * x.q_WB;
         x.q_WB.normalize();
       };
-      move(s, b.inv_mass, inv_I, r, P);
+      if (body_moves) move(s, b.inv_mass, inv_I, r, P);
       if (o != nullptr) move(*o, model.body(c.other).inv_mass, inv_I_o, r_o, -P);
     }
     if (deepest >= 0.0) break;
