@@ -278,11 +278,11 @@ void Model::deriveSettings() {
   restitution_threshold_ = std::max(contact_.restitution_threshold, 2.0 * gravity_W_.norm() * dt_);
   linear_decay_ = std::exp(-damping_.linear_rate * dt_);
   angular_decay_ = std::exp(-damping_.angular_rate * dt_);
-  bounces_ = contact_.restitution > 0.0;
+  max_restitution_ = contact_.restitution;
   for (BodyModel& b : bodies_) {
     if (!b.own_friction) b.friction = contact_.friction;
     if (!b.own_restitution) b.restitution = contact_.restitution;
-    bounces_ = bounces_ || b.restitution > 0.0;
+    max_restitution_ = std::max(max_restitution_, b.restitution);
   }
 }
 

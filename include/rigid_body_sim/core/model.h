@@ -195,7 +195,9 @@ class Model {
                    other < 0 ? contact_.restitution : bodies_[other].restitution);
   }
   /// Whether any contact can bounce (some pair's restitution > 0).
-  bool bounces() const { return bounces_; }
+  bool bounces() const { return max_restitution_ > 0.0; }
+  /// The largest restitution any pair can have (the largest of the surfaces').
+  double maxRestitution() const { return max_restitution_; }
   /// max(restitution_threshold, 2 |g| Δt), m/s.
   double restitutionThreshold() const { return restitution_threshold_; }
   /// Per-step decay factors α = e^(−k Δt) of the damping rates.
@@ -218,7 +220,7 @@ class Model {
   void deriveSettings();
 
   double restitution_threshold_;
-  bool bounces_ = false;
+  double max_restitution_ = 0.0;
   double linear_decay_;
   double angular_decay_;
 };
