@@ -14,16 +14,18 @@
 namespace rigid_body_sim::core {
 namespace {
 
-/// Orders the extreme points by recursive median splits along the widest
-/// axis into groups of at most `group_size`, and bounds each group by a sphere.
-void groupExtremePoints(BodyModel& b, std::size_t group_size) {
-  std::vector<std::pair<std::size_t, std::size_t>> todo{{0, b.extreme_points}};
+/// Orders the first `extreme` points by recursive median splits along the
+/// widest axis into groups of at most `group_size`, and bounds each group by a sphere.
+std::vector<BodyModel::PointGroup> groupExtremePoints(std::vector<ContactPoint>& points, std::size_t extreme,
+                                                      std::size_t group_size) {
+  std::vector<BodyModel::PointGroup> groups;
+  std::vector<std::pair<std::size_t, std::size_t>> todo{{0, extreme}};
   while (!todo.empty()) {
     const auto [begin, end] = todo.back();
     todo.pop_back();
     if (begin == end) continue;
-    const auto first = b.contact_points.begin() + static_cast<std::ptrdiff_t>(begin);
-    const auto last = b.contact_points.begin() + static_cast<std::ptrdiff_t>(end);
+    const auto first = points.begin() + static_cast<std::ptrdiff_t>(begin);
+    const auto last = points.begin() + static_cast<std::ptrdiff_t>(end);
     if (end - begin <= group_size) {
       BodyModel::PointGroup g;
       g.begin = begin;
@@ -31,7 +33,7 @@ void groupExtremePoints(BodyModel& b, std::size_t group_size) {
       for (auto it = first; it != last; ++it) g.centre_B += it->r_B;
       g.centre_B /= static_cast<double>(end - begin);
       for (auto it = first; it != last; ++it) g.radius = std::max(g.radius, (it->r_B - g.centre_B).norm() + it->radius);
-      b.extreme_groups.push_back(g);
+      groups.push_back(g);
       continue;
     }
     Vec3 lo = first->r_B, hi = first->r_B;
@@ -42,7 +44,7 @@ void groupExtremePoints(BodyModel& b, std::size_t group_size) {
     int axis = 0;
     (hi - lo).maxCoeff(&axis);
     const std::size_t mid = begin + (end - begin) / 2;
-    std::nth_element(first, b.contact_points.begin() + static_cast<std::ptrdiff_t>(mid), last,
+    std::nth_element(first, points.begin() + static_cast<std::ptrdiff_t>(mid), last,
                      [axis](const ContactPoint& x, const ContactPoint& y) {
                        return x.r_B(axis) != y.r_B(axis) ? x.r_B(axis) < y.r_B(axis)
                                                          : std::lexicographical_compare(x.r_B.data(), x.r_B.data() + 3,
@@ -51,8 +53,9 @@ void groupExtremePoints(BodyModel& b, std::size_t group_size) {
     todo.push_back({mid, end});
     todo.push_back({begin, mid});
   }
-  std::sort(b.extreme_groups.begin(), b.extreme_groups.end(),
+  std::sort(groups.begin(), groups.end(),
             [](const BodyModel::PointGroup& x, const BodyModel::PointGroup& y) { return x.begin < y.begin; });
+  return groups;
 }
 
 /// Samples the body's collision shapes into contact points in B, and the
@@ -68,42 +71,54 @@ void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, co
                  "body '" + spec.name + "' would get " + detail::str(count) + " contact points, more than " +
                      detail::str(ranges::kMaxContactPoints) + " (raise the spacing or simplify the mesh)");
   }
+  std::vector<ContactPoint> points;
+  std::vector<RoundFeature> round;
   for (const CollisionShape& shape : spec.collision) {
     ShapeSamples samples = sampleShape(shape, X_BL, contact.sample_spacing, sample_round);
     for (ContactPoint& p : samples.points) {
-      if (p.round >= 0) p.round += static_cast<int>(b.round.size());
+      if (p.round >= 0) p.round += static_cast<int>(round.size());
     }
-    b.contact_points.insert(b.contact_points.end(), samples.points.begin(), samples.points.end());
-    b.round.insert(b.round.end(), samples.round.begin(), samples.round.end());
+    points.insert(points.end(), samples.points.begin(), samples.points.end());
+    round.insert(round.end(), samples.round.begin(), samples.round.end());
   }
-  const auto first_other = std::stable_partition(b.contact_points.begin(), b.contact_points.end(),
-                                                 [](const ContactPoint& p) { return p.extreme; });
-  b.extreme_points = static_cast<std::size_t>(first_other - b.contact_points.begin());
-  groupExtremePoints(b, static_cast<std::size_t>(solver.point_group_size));
+  const auto first_other =
+      std::stable_partition(points.begin(), points.end(), [](const ContactPoint& p) { return p.extreme; });
+  b.extreme_points = static_cast<std::size_t>(first_other - points.begin());
+  b.extreme_groups = groupExtremePoints(points, b.extreme_points, static_cast<std::size_t>(solver.point_group_size));
+  std::vector<double> x, y, z, radius;
   for (std::size_t i = 0; i < b.extreme_points; ++i) {
-    b.extreme_x.push_back(b.contact_points[i].r_B.x());
-    b.extreme_y.push_back(b.contact_points[i].r_B.y());
-    b.extreme_z.push_back(b.contact_points[i].r_B.z());
-    b.extreme_radius.push_back(b.contact_points[i].radius);
+    x.push_back(points[i].r_B.x());
+    y.push_back(points[i].r_B.y());
+    z.push_back(points[i].r_B.z());
+    radius.push_back(points[i].radius);
   }
-  for (std::size_t i = 0; i < b.contact_points.size(); ++i) {
-    const ContactPoint& p = b.contact_points[i];
-    const RoundFeature* f = p.round >= 0 ? &b.round[static_cast<std::size_t>(p.round)] : nullptr;
-    if (f != nullptr && f->kind == RoundFeature::Kind::kRim) b.rim_points.push_back(static_cast<int>(i));
+  std::vector<int> rims;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const ContactPoint& p = points[i];
+    const RoundFeature* f = p.round >= 0 ? &round[static_cast<std::size_t>(p.round)] : nullptr;
+    if (f != nullptr && f->kind == RoundFeature::Kind::kRim) rims.push_back(static_cast<int>(i));
     const double reach = f != nullptr ? f->rho + f->half_length : 0.0;
     b.bound_radius = std::max(b.bound_radius, p.r_B.norm() + reach + p.radius);
     b.points_centroid_B += p.r_B;
   }
-  if (b.contact_points.empty()) return;
-  b.points_centroid_B /= static_cast<double>(b.contact_points.size());
-  Mat3 spread = Mat3::Zero();
-  for (const ContactPoint& p : b.contact_points) {
-    const Vec3 r = p.r_B - b.points_centroid_B;
-    spread += r * r.transpose();
+  if (!points.empty()) {
+    b.points_centroid_B /= static_cast<double>(points.size());
+    Mat3 spread = Mat3::Zero();
+    for (const ContactPoint& p : points) {
+      const Vec3 r = p.r_B - b.points_centroid_B;
+      spread += r * r.transpose();
+    }
+    // Invertible only if the points span three dimensions (not coplanar).
+    const Eigen::SelfAdjointEigenSolver<Mat3> eig(spread, Eigen::EigenvaluesOnly);
+    if (eig.eigenvalues()(0) > 1e-12 * std::max(1.0, eig.eigenvalues()(2))) b.points_inv_spread = spread.inverse();
   }
-  // Invertible only if the points span three dimensions (not coplanar).
-  const Eigen::SelfAdjointEigenSolver<Mat3> eig(spread, Eigen::EigenvaluesOnly);
-  if (eig.eigenvalues()(0) > 1e-12 * std::max(1.0, eig.eigenvalues()(2))) b.points_inv_spread = spread.inverse();
+  b.contact_points = std::move(points);
+  b.round = std::move(round);
+  b.rim_points = std::move(rims);
+  b.extreme_x = std::move(x);
+  b.extreme_y = std::move(y);
+  b.extreme_z = std::move(z);
+  b.extreme_radius = std::move(radius);
 }
 
 /// The cells along a mesh's longest side in its distance grid: the grid
@@ -152,9 +167,9 @@ void buildSolid(const BodySpec& spec, const SolverSettings& solver, BodyModel& b
     }
   }
   if (parts.size() == 1) {
-    b.solid_B.push_back(parts.front());
+    b.solid_B = std::vector<Sdf>{parts.front()};
   } else if (!parts.empty()) {
-    b.solid_B.push_back(Sdf::unite(std::move(parts)));
+    b.solid_B = std::vector<Sdf>{Sdf::unite(std::move(parts))};
   }
   if (!b.solid_B.empty()) {
     const auto bounds = solidBounds(b.solid_B.front());
@@ -222,7 +237,50 @@ void resolveSurface(const BodySpec& spec, const ContactSettings& c, BodyModel& b
   detail::requireWithin(body.restitution, 0.0, 1.0, key + "restitution", "");
 }
 
+/// Whether two bodies get the same contact points and solid: the same
+/// collision shapes, placed alike, and the same mass properties (which
+/// place the principal frame B the points are in).
+bool sameGeometry(const BodySpec& a, const BodySpec& b) {
+  if (a.p_LC != b.p_LC || a.I_C_L != b.I_C_L || a.collision.size() != b.collision.size()) return false;
+  for (std::size_t i = 0; i < a.collision.size(); ++i) {
+    const CollisionShape &x = a.collision[i], &y = b.collision[i];
+    if (x.kind != y.kind || x.X_LS.rotation.coeffs() != y.X_LS.rotation.coeffs() ||
+        x.X_LS.translation != y.X_LS.translation || x.size != y.size || x.radius != y.radius || x.length != y.length ||
+        x.mesh.vertices != y.mesh.vertices || x.mesh.triangles != y.mesh.triangles) {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Gives `body` the contact points and solid of `twin` (built alike):
+/// shared, not copied.
+void shareGeometry(const BodyModel& twin, BodyModel& body) {
+  body.contact_points = twin.contact_points;
+  body.extreme_points = twin.extreme_points;
+  body.round = twin.round;
+  body.rim_points = twin.rim_points;
+  body.extreme_x = twin.extreme_x;
+  body.extreme_y = twin.extreme_y;
+  body.extreme_z = twin.extreme_z;
+  body.extreme_radius = twin.extreme_radius;
+  body.extreme_groups = twin.extreme_groups;
+  body.solid_B = twin.solid_B;
+  body.solid_lo_B = twin.solid_lo_B;
+  body.solid_hi_B = twin.solid_hi_B;
+  body.bound_radius = twin.bound_radius;
+  body.points_centroid_B = twin.points_centroid_B;
+  body.points_inv_spread = twin.points_inv_spread;
+}
+
 }  // namespace
+
+BodyModel BodyBuilder::buildBodyLike(const BodySpec& b, const BodyModel& twin) const {
+  BodyModel body = validatedBody(b);
+  resolveSurface(b, contact_, body);
+  shareGeometry(twin, body);
+  return body;
+}
 
 BodyModel BodyBuilder::buildBody(const BodySpec& b, bool with_solid) const {
   BodyModel body = validatedBody(b);
@@ -266,8 +324,22 @@ Model::Model(const ModelSpec& spec)
     }
   }
   bodies_.reserve(spec.bodies.size());
+  // Bodies built alike share their points and solid (a pile of equal
+  // boxes keeps one copy): each is compared with the last few distinct ones.
   const BodyBuilder builder = bodyBuilder();
-  for (const BodySpec& b : spec.bodies) bodies_.push_back(builder.buildBody(b, spec.bodies.size() > 1));
+  constexpr std::size_t kTwinsCompared = 8;
+  std::vector<std::size_t> distinct;  // indices of bodies built in full, latest last
+  for (std::size_t i = 0; i < spec.bodies.size(); ++i) {
+    const BodySpec& b = spec.bodies[i];
+    const auto twin = std::find_if(distinct.rbegin(), distinct.rbegin() + std::min(distinct.size(), kTwinsCompared),
+                                   [&](std::size_t j) { return sameGeometry(spec.bodies[j], b); });
+    if (twin != distinct.rbegin() + std::min(distinct.size(), kTwinsCompared)) {
+      bodies_.push_back(builder.buildBodyLike(b, bodies_[*twin]));
+    } else {
+      bodies_.push_back(builder.buildBody(b, spec.bodies.size() > 1));
+      distinct.push_back(i);
+    }
+  }
   validateDamping(spec.damping, spec.dt, bodies_);
   validatePenalty(spec.contact, spec.dt, bodies_);
   validateBarrier(spec.contact, spec.limits, spec.gravity_W, bodies_);

@@ -12,6 +12,7 @@
 #include "rigid_body_sim/core/collision.h"
 #include "rigid_body_sim/core/sdf.h"
 #include "rigid_body_sim/core/settings.h"
+#include "rigid_body_sim/core/shared_array.h"
 #include "rigid_body_sim/core/types.h"
 
 namespace rigid_body_sim::core {
@@ -74,13 +75,13 @@ struct BodyModel {
   double friction = 0.5;                               ///< its surface's μ_T (its own, or the scene's)
   double restitution = 0.0;                            ///< its surface's μ_N (its own, or the scene's)
   bool own_friction = false, own_restitution = false;  ///< its own (BodySpec), not the scene's
-  std::vector<ContactPoint> contact_points;            ///< collision samples, body frame B, extreme ones first
+  SharedArray<ContactPoint> contact_points;            ///< collision samples, body frame B, extreme ones first
   std::size_t extreme_points = 0;                      ///< how many of contact_points are extreme (see ContactPoint)
-  std::vector<RoundFeature> round;                     ///< the round features contact points refer to (B)
-  std::vector<int> rim_points;                         ///< the contact points on rims, which a plane tests too
+  SharedArray<RoundFeature> round;                     ///< the round features contact points refer to (B)
+  SharedArray<int> rim_points;                         ///< the contact points on rims, which a plane tests too
   /// The extreme points again as columns (x, y, z, radius), so the plane
   /// test over a large mesh runs as vector arithmetic.
-  std::vector<double> extreme_x, extreme_y, extreme_z, extreme_radius;
+  SharedArray<double> extreme_x, extreme_y, extreme_z, extreme_radius;
   /// The extreme points, ordered so that each group of at most 32 is
   /// spatially compact (a median split), with a bounding sphere per group:
   /// a plane far from a group's sphere skips its points.
@@ -89,11 +90,11 @@ struct BodyModel {
     Vec3 centre_B = Vec3::Zero();    ///< m
     double radius = 0.0;             ///< m, includes the points' own radii
   };
-  std::vector<PointGroup> extreme_groups;
+  SharedArray<PointGroup> extreme_groups;
   /// The body's solid in B (the union of its collision shapes), which other
   /// bodies' points are tested against; only built when there are several bodies
   /// (a mesh's distance grid costs time at start).
-  std::vector<Sdf> solid_B;
+  SharedArray<Sdf> solid_B;
   Vec3 solid_lo_B = Vec3::Zero(), solid_hi_B = Vec3::Zero();  ///< a box around solid_B, in B (m)
   double bound_radius = 0.0;  ///< m: every contact point lies within it of the centre of mass
   /// Shape matching: the mean of the contact points (B) and (Σ r̄ r̄ᵀ)⁻¹ of
@@ -142,6 +143,9 @@ class BodyBuilder {
       : contact_(contact), solver_(solver), scene_empty_(scene_empty) {}
   /// The body, with its solid (for other bodies' points) if `with_solid`.
   BodyModel buildBody(const BodySpec& spec, bool with_solid) const;
+  /// The body, sharing the points and solid of `twin`, built from a spec of
+  /// the same geometry (shapes and mass properties).
+  BodyModel buildBodyLike(const BodySpec& spec, const BodyModel& twin) const;
   ContactSettings contact_;
   SolverSettings solver_;
   bool scene_empty_;
