@@ -9,11 +9,14 @@
 // 3 s, the deepest penetration over the 3 s, and the process's peak
 // resident memory. bullet_pile prints the same line for Bullet.
 // Usage: pile_bench N [runs]; RBS_THREADS=k limits the step to k threads.
+//        pile_bench --yaml N URDF: the same scene as an rbsim world config on
+//        stdout (every box from URDF), to measure rbsim on it.
 #include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 #include "box_grid.h"
 #include "rigid_body_sim/core/diagnostics.h"
@@ -38,7 +41,24 @@ Shares atRestShares(const Model& model, const State& s) {
 
 }  // namespace
 
+/// The scene as rbsim's world config: the settings, then one entry per box.
+void printWorld(int n, const char* urdf) {
+  const auto scene = rigid_body_sim::bench::boxGrid(n);
+  std::printf("contact: {restitution: 0.5, friction: 0.5}\nbodies:\n");
+  for (int i = 0; i < n; ++i) {
+    const LinkState l = linkState(scene.model.body(i), scene.start.bodies[i]);
+    std::printf(
+        "  - {name: box%d, urdf: %s, initial: {position: [%.17g, %.17g, %.17g], quaternion: [%.17g, %.17g, %.17g, "
+        "%.17g]}}\n",
+        i, urdf, l.p_WL.x(), l.p_WL.y(), l.p_WL.z(), l.q_WL.x(), l.q_WL.y(), l.q_WL.z(), l.q_WL.w());
+  }
+}
+
 int main(int argc, char** argv) {
+  if (argc == 4 && std::string(argv[1]) == "--yaml") {
+    printWorld(std::atoi(argv[2]), argv[3]);
+    return 0;
+  }
   const int n = argc > 1 ? std::atoi(argv[1]) : 1000;
   const int runs = argc > 2 ? std::atoi(argv[2]) : 1;
   ContactSettings contact;

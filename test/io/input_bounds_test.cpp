@@ -48,6 +48,15 @@ TEST(InputBounds, OnlyRegularFilesOfBoundedSizeAreRead) {
   EXPECT_NE(io::fileProblem(eleven, 10).find("is 11 bytes, more than the 10"), std::string::npos);
   EXPECT_EQ(io::readFile(eleven, 11), "01234567890");
   EXPECT_THROW(io::readFile(eleven, 10), std::runtime_error);
+  // Read in chunks, not into a buffer of the cap's size: longer than one
+  // chunk (64 KiB), and cut at the cap whatever the chunk.
+  std::string long_text(200000, 'x');
+  for (std::size_t i = 0; i < long_text.size(); i += 997) long_text[i] = static_cast<char>('a' + i % 26);
+  const std::string long_file = write("long.txt", long_text);
+  EXPECT_EQ(io::readFile(long_file, 16u << 20), long_text);
+  EXPECT_EQ(io::readFile(long_file, 200000), long_text);
+  EXPECT_THROW(io::readFile(long_file, 199999), std::runtime_error);
+  EXPECT_THROW(io::readFile(long_file, 65536), std::runtime_error);
   // Each loader says so in its own words (/dev/zero was read until memory ran out).
   expectThrowsWith<io::UrdfError>([] { io::loadUrdfFile("/dev/zero"); }, {"URDF '/dev/zero'", "not a regular file"});
   expectThrowsWith<io::ConfigError>([] { io::loadYamlFile(scratch().path().string()); },
