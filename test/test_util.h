@@ -100,6 +100,17 @@ inline core::State stateOf(const core::Model& model, const core::LinkState& link
   return s;
 }
 
+/// A one-body state with the link at p, turned by q, moving at v and ω (world axes).
+inline core::State stateAt(const core::Model& model, const Vec3& p, const Quat& q = Quat::Identity(),
+                           const Vec3& v = Vec3::Zero(), const Vec3& w = Vec3::Zero()) {
+  core::LinkState link;
+  link.p_WL = p;
+  link.q_WL = q;
+  link.v_WL = v;
+  link.w_W = w;
+  return stateOf(model, link);
+}
+
 /// Mean and sample standard deviation of `x` (noise statistics).
 inline std::pair<double, double> meanAndSigma(const std::vector<double>& x) {
   double mean = 0.0, sq = 0.0;

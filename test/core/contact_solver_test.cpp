@@ -17,20 +17,10 @@ namespace {
 constexpr double kG = 9.81;
 const Vec3 kHalf(0.2, 0.1, 0.05);  // the shipped box (urdf/box.urdf)
 
-core::State at(const core::Model& model, const Vec3& p, const Quat& q = Quat::Identity(), const Vec3& v = Vec3::Zero(),
-               const Vec3& w = Vec3::Zero()) {
-  core::LinkState link;
-  link.p_WL = p;
-  link.q_WL = q;
-  link.v_WL = v;
-  link.w_W = w;
-  return stateOf(model, link);
-}
-
 TEST(Bounce, ApexRatioIsRestitutionSquared) {
   const double e = 0.8, r = 0.1, h = 1.0;
   const core::Model model(onGround(ballBody(r), impulse(e, 0.5)));
-  core::State s = at(model, Vec3(0, 0, h + r));
+  core::State s = stateAt(model, Vec3(0, 0, h + r));
   std::vector<double> apexes;
   double prev_vz = 0.0;
   for (int n = 0; n < 4000 && apexes.size() < 2; ++n) {
@@ -49,7 +39,7 @@ TEST(Friction, SlidingBoxStopsAfterTheClosedFormDistance) {
   core::ModelSpec ms = onGround(boxBody(kHalf), impulse(0.0, mu));
   ms.sleep.enabled = false;
   const core::Model model(ms);
-  core::State s = at(model, Vec3(0, 0, kHalf.z()), Quat::Identity(), Vec3(v0, 0, 0));
+  core::State s = stateAt(model, Vec3(0, 0, kHalf.z()), Quat::Identity(), Vec3(v0, 0, 0));
   int n = 0;
   while (s.bodies[0].v_WB.x() > 1e-9 && n++ < 5000) core::step(model, s);
   const double expected = v0 * v0 / (2 * mu * kG);
@@ -68,7 +58,7 @@ struct Drop {
 
 Drop drop(const core::Model& model, const Quat& q, const Vec3& w, double duration) {
   Drop d;
-  core::State s = at(model, Vec3(0, 0, 1.0), q, Vec3::Zero(), w);
+  core::State s = stateAt(model, Vec3(0, 0, 1.0), q, Vec3::Zero(), w);
   d.highest_energy = core::totalEnergy(model, s);
   const double e0 = d.highest_energy;
   core::Workspace ws;
@@ -109,7 +99,7 @@ TEST(Friction, ALandingCornerGetsTheFullImpulseAgainstTheSlipItLeaves) {
       const Vec3 corner((k & 1 ? 1 : -1) * kHalf.x(), (k & 2 ? 1 : -1) * kHalf.y(), (k & 4 ? 1 : -1) * kHalf.z());
       lowest = std::min(lowest, (q * corner).z());
     }
-    core::State s = at(model, Vec3(0, 0, -lowest + 1e-4), q, Vec3(0, 0, -4.0));
+    core::State s = stateAt(model, Vec3(0, 0, -lowest + 1e-4), q, Vec3(0, 0, -4.0));
     core::Workspace ws;
     core::step(model, s, {}, &ws);
     if (ws.contacts.size() != 1 || ws.contacts[0].normal_impulse <= 0.0) continue;  // an edge or a face
@@ -181,7 +171,7 @@ void expectHousnersShareAtEachImpact(double restitution) {
       const Vec3 corner((k & 1 ? 1 : -1) * kHalf.x(), (k & 2 ? 1 : -1) * kHalf.y(), (k & 4 ? 1 : -1) * kHalf.z());
       lowest = std::min(lowest, (q * corner).z());
     }
-    core::State s = at(model, Vec3(0, 0, -lowest), q);
+    core::State s = stateAt(model, Vec3(0, 0, -lowest), q);
     ASSERT_NEAR(std::abs((stance.upright * Vec3::UnitZ()).y()), 1.0, 1e-12);  // the thin side across the rocking
     std::vector<double> rise = {s.bodies[0].p_WB.z() - stance.half_height};   // at each turning point
     double z_before = s.bodies[0].p_WB.z(), z_earlier = z_before;
@@ -216,7 +206,7 @@ core::ModelSpec onIncline(double theta, double mu) {
 
 core::State restingOnIncline(const core::Model& model, double theta) {
   const Quat q(Eigen::AngleAxisd(theta, Vec3::UnitY()));  // body z along the plane's normal
-  return at(model, q * Vec3(0, 0, kHalf.z()), q);
+  return stateAt(model, q * Vec3(0, 0, kHalf.z()), q);
 }
 
 TEST(Incline, StaticFrictionHoldsBelowTheFrictionAngle) {
@@ -244,7 +234,7 @@ TEST(Rolling, SlidingBallStartsRollingAtTheClosedFormTimeAndSpeed) {
   core::ModelSpec ms = onGround(ballBody(r), impulse(0.0, mu));
   ms.sleep.enabled = false;
   const core::Model model(ms);
-  core::State s = at(model, Vec3(0, 0, r), Quat::Identity(), Vec3(v0, 0, 0));
+  core::State s = stateAt(model, Vec3(0, 0, r), Quat::Identity(), Vec3(v0, 0, 0));
   double t_roll = -1.0, v_roll = 0.0;
   for (int n = 0; n < 2000 && t_roll < 0; ++n) {
     core::step(model, s);
@@ -276,7 +266,7 @@ TEST(Tunneling, ABoxBouncingOffOneCornerDoesNotPutAnotherThroughTheGround) {
   const Quat tilt = Quat(Eigen::AngleAxisd(0.006, Vec3::UnitY())) * Quat(Eigen::AngleAxisd(0.002, Vec3::UnitX()));
   double deepest = 0.0;
   for (int phase = 0; phase < 10; ++phase) {
-    core::State s = at(model, Vec3(0, 0, 0.1 + 0.0005 * phase), tilt, Vec3(0, 0, -5));
+    core::State s = stateAt(model, Vec3(0, 0, 0.1 + 0.0005 * phase), tilt, Vec3(0, 0, -5));
     core::Workspace ws;
     for (int n = 0; n < 100; ++n) {
       core::step(model, s, {}, &ws);
@@ -292,7 +282,7 @@ TEST(Tunneling, FastBodiesStopOnAThinPlate) {
     core::ModelSpec ms = onGround(body, impulse(0.0, 0.5));
     ms.scene = {core::Sdf::box(Vec3(2, 2, 0.01))};
     const core::Model model(ms);
-    core::State s = at(model, Vec3(0, 0, 0.5), Quat::Identity(), Vec3(0, 0, -20));
+    core::State s = stateAt(model, Vec3(0, 0, 0.5), Quat::Identity(), Vec3(0, 0, -20));
     core::Workspace ws;
     double deepest = 0.0;
     for (int n = 0; n < 300; ++n) {
@@ -308,8 +298,8 @@ TEST(Room, BoxThrownIntoTheCornerStaysInsideAndRests) {
   core::ModelSpec ms = onGround(boxBody(kHalf), impulse(0.2, 0.5));
   ms.scene = {room()};
   const core::Model model(ms);
-  core::State s = at(model, Vec3(0.3, 0.3, 0.6), Quat(Eigen::AngleAxisd(0.4, Vec3(1, 1, 0).normalized())),
-                     Vec3(3, 3, 0), Vec3(2, -1, 4));
+  core::State s = stateAt(model, Vec3(0.3, 0.3, 0.6), Quat(Eigen::AngleAxisd(0.4, Vec3(1, 1, 0).normalized())),
+                          Vec3(3, 3, 0), Vec3(2, -1, 4));
   core::Workspace ws;
   double deepest = 0.0;
   for (int n = 0; n < 6000; ++n) {
@@ -323,7 +313,7 @@ TEST(Room, BoxThrownIntoTheCornerStaysInsideAndRests) {
 
 TEST(Rest, ARestingBodyStaysExactlyPutAndWakesOnLoadsAndImpulses) {
   const core::Model model(onGround(boxBody(kHalf), impulse(0.0, 0.5)));
-  core::State s = at(model, Vec3(0, 0, kHalf.z() + 0.01));
+  core::State s = stateAt(model, Vec3(0, 0, kHalf.z() + 0.01));
   for (int n = 0; n < 1500; ++n) core::step(model, s);
   ASSERT_TRUE(s.bodies[0].asleep);
   const core::BodyState asleep = s.bodies[0];
@@ -354,8 +344,8 @@ TEST(Rest, SkippingAFixedPointGivesTheStepsComputedInFull) {
     core::ModelSpec spec = onGround(boxBody(kHalf), impulse(0.0, 0.5));
     spec.sleep.enabled = sleep;
     const core::Model model(spec);
-    core::State a = at(model, Vec3(0, 0, 0.5), Quat(Eigen::AngleAxisd(0.5, Vec3(1, 2, 0.3).normalized())),
-                       Vec3(0.5, 0, 0), Vec3(1, 2, 3));
+    core::State a = stateAt(model, Vec3(0, 0, 0.5), Quat(Eigen::AngleAxisd(0.5, Vec3(1, 2, 0.3).normalized())),
+                            Vec3(0.5, 0, 0), Vec3(1, 2, 3));
     core::State b = a;
     core::Workspace skipping, computing;
     computing.skip_fixed_points = false;
@@ -399,8 +389,8 @@ TEST(Determinism, EveryMethodIsBitIdenticalRunToRun) {
     ms.limits.linear = ms.limits.angular = 5.0;
     const core::Model model(ms);
     auto run = [&] {
-      core::State s = at(model, Vec3(0, 0, 0.5), Quat(Eigen::AngleAxisd(0.5, Vec3(1, 2, 0.3).normalized())),
-                         Vec3(0.5, 0, 0), Vec3(1, 2, 3));
+      core::State s = stateAt(model, Vec3(0, 0, 0.5), Quat(Eigen::AngleAxisd(0.5, Vec3(1, 2, 0.3).normalized())),
+                              Vec3(0.5, 0, 0), Vec3(1, 2, 3));
       for (int n = 0; n < 3000; ++n) core::step(model, s);
       return s;
     };

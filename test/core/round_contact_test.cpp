@@ -19,19 +19,25 @@ namespace {
 constexpr double kG = 9.81;
 constexpr double kR = 0.1, kL = 0.3, kMass = 2.0;  // radius, length (a capsule's segment), kg
 
-/// A solid cylinder along its z: I = m r²/2 about the axis, m (3 r² + L²)/12 across.
-core::BodySpec cylinderBody() {
+/// A body of mass kMass along its z with the inertia (across, across, axis)
+/// and one round shape of radius kR and length kL.
+core::BodySpec roundBody(const char* name, core::CollisionShape::Kind kind, double across, double axis) {
   core::BodySpec b;
-  b.name = "cylinder";
+  b.name = name;
   b.mass = kMass;
-  const double across = kMass * (3 * kR * kR + kL * kL) / 12;
-  b.I_C_L = Vec3(across, across, 0.5 * kMass * kR * kR).asDiagonal();
+  b.I_C_L = Vec3(across, across, axis).asDiagonal();
   core::CollisionShape shape;
-  shape.kind = core::CollisionShape::Kind::kCylinder;
+  shape.kind = kind;
   shape.radius = kR;
   shape.length = kL;
   b.collision = {shape};
   return b;
+}
+
+/// A solid cylinder along its z: I = m r²/2 about the axis, m (3 r² + L²)/12 across.
+core::BodySpec cylinderBody() {
+  return roundBody("cylinder", core::CollisionShape::Kind::kCylinder, kMass * (3 * kR * kR + kL * kL) / 12,
+                   0.5 * kMass * kR * kR);
 }
 
 /// A solid capsule along its z (uniform density: a cylinder of length L and
@@ -42,16 +48,7 @@ core::BodySpec capsuleBody() {
   const double mc = kMass * vc / (vc + vs), ms = kMass * vs / (vc + vs);
   const double axis = mc * kR * kR / 2 + ms * 2 * kR * kR / 5;
   const double across = mc * (3 * kR * kR + kL * kL) / 12 + ms * (2 * kR * kR / 5 + kL * kL / 4 + 3 * kL * kR / 8);
-  core::BodySpec b;
-  b.name = "capsule";
-  b.mass = kMass;
-  b.I_C_L = Vec3(across, across, axis).asDiagonal();
-  core::CollisionShape shape;
-  shape.kind = core::CollisionShape::Kind::kCapsule;
-  shape.radius = kR;
-  shape.length = kL;
-  b.collision = {shape};
-  return b;
+  return roundBody("capsule", core::CollisionShape::Kind::kCapsule, across, axis);
 }
 
 /// k = I_axis / (m r²): ½ for the cylinder.
@@ -59,16 +56,6 @@ double rollingK(const core::BodySpec& b) { return b.I_C_L(2, 2) / (b.mass * kR *
 
 /// Lying: the body's z along the world's y, so it rolls along x.
 const Quat kLying(Eigen::AngleAxisd(-M_PI / 2, Vec3::UnitX()));
-
-core::State at(const core::Model& model, const Vec3& p, const Quat& q, const Vec3& v = Vec3::Zero(),
-               const Vec3& w = Vec3::Zero()) {
-  core::LinkState link;
-  link.p_WL = p;
-  link.q_WL = q;
-  link.v_WL = v;
-  link.w_W = w;
-  return stateOf(model, link);
-}
 
 core::Workspace stepFor(const core::Model& model, core::State& s, double seconds) {
   core::Workspace ws;
@@ -131,7 +118,7 @@ class RoundBodies : public ::testing::TestWithParam<bool> {  // true: the cylind
 TEST_P(RoundBodies, LyingItRestsAtItsRadiusAndDoesNotCreep) {
   core::ModelSpec ms = onGround(body(), impulse(0.0, 0.5));
   const core::Model model(ms);
-  core::State s = at(model, Vec3(0, 0, kR + 0.01), kLying);
+  core::State s = stateAt(model, Vec3(0, 0, kR + 0.01), kLying);
   stepFor(model, s, 1.0);
   const Vec3 settled = s.bodies[0].p_WB;
   EXPECT_NEAR(settled.z(), kR, 1e-6);
@@ -145,7 +132,7 @@ TEST_P(RoundBodies, RollingOnFlatGroundItKeepsItsSpeed) {
   core::ModelSpec ms = onGround(body(), impulse(0.0, 0.5));
   ms.sleep.enabled = false;
   const core::Model model(ms);
-  core::State s = at(model, Vec3(0, 0, kR), kLying, Vec3(v0, 0, 0), Vec3(0, v0 / kR, 0));
+  core::State s = stateAt(model, Vec3(0, 0, kR), kLying, Vec3(v0, 0, 0), Vec3(0, v0 / kR, 0));
   core::Workspace ws;
   double slowest = v0, fastest = v0, highest = kR, lowest = kR;
   for (int n = 0; n < 5000; ++n) {
@@ -169,7 +156,7 @@ TEST_P(RoundBodies, DownAnInclineItRollsWithGSinThetaOverOnePlusK) {
   ms.scene = {core::Sdf::plane(normal)};
   ms.sleep.enabled = false;
   const core::Model model(ms);
-  core::State s = at(model, kR * normal, kLying);
+  core::State s = stateAt(model, kR * normal, kLying);
   stepFor(model, s, 1.0);
   const double a = kG * std::sin(theta) / (1 + rollingK(body()));
   EXPECT_NEAR(s.bodies[0].v_WB.dot(down_slope), a * s.time, 0.01 * a * s.time);
@@ -181,7 +168,7 @@ TEST_P(RoundBodies, WithLittleFrictionItSlidesThenRollsAsCoulombSays) {
   core::ModelSpec ms = onGround(body(), impulse(0.0, mu));
   ms.sleep.enabled = false;
   const core::Model model(ms);
-  core::State s = at(model, Vec3(0, 0, kR), kLying, Vec3(v0, 0, 0));
+  core::State s = stateAt(model, Vec3(0, 0, kR), kLying, Vec3(v0, 0, 0));
   double t_roll = -1.0, v_roll = 0.0;
   for (int n = 0; n < 5000 && t_roll < 0; ++n) {
     core::step(model, s);
@@ -205,7 +192,7 @@ INSTANTIATE_TEST_SUITE_P(CylinderAndCapsule, RoundBodies, ::testing::Values(true
 
 TEST(Cylinder, StoodOnItsCapItRestsFlat) {
   const core::Model model(onGround(cylinderBody(), impulse(0.0, 0.5)));
-  core::State s = at(model, Vec3(0, 0, kL / 2 + 0.01), Quat::Identity());
+  core::State s = stateAt(model, Vec3(0, 0, kL / 2 + 0.01), Quat::Identity());
   stepFor(model, s, 2.0);
   EXPECT_NEAR(s.bodies[0].p_WB.z(), kL / 2, 1e-6);
   EXPECT_LT(s.bodies[0].q_WB.angularDistance(Quat::Identity()), 1e-6);
@@ -221,7 +208,8 @@ void restsAcrossABeam(const core::BodySpec& body) {
   core::ModelSpec ms = onGround(body, impulse(0.0, 0.5));
   ms.scene = {core::Sdf::box(Vec3(0.02, 2, 0.02))};  // top at z = 0.01; the rims hang 0.14 m beyond it
   const core::Model model(ms);
-  core::State s = at(model, Vec3(0, 0, 0.01 + kR + 0.005), Quat(Eigen::AngleAxisd(M_PI / 2 + 0.01, Vec3::UnitY())));
+  core::State s =
+      stateAt(model, Vec3(0, 0, 0.01 + kR + 0.005), Quat(Eigen::AngleAxisd(M_PI / 2 + 0.01, Vec3::UnitY())));
   stepFor(model, s, 2.0);
   EXPECT_NEAR(s.bodies[0].p_WB.z(), 0.01 + kR, 1.5 * ms.contact.position_slop) << body.name;
   EXPECT_LT(std::abs(s.bodies[0].p_WB.x()), 0.01) << body.name;
