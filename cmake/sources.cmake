@@ -2,6 +2,7 @@
 # the fuzzers' own (fuzz/CMakeLists.txt, built with clang).
 set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/barrier.cpp
+  ${RBS_SOURCE_ROOT}/src/core/body_geometry.cpp
   ${RBS_SOURCE_ROOT}/src/core/broad_phase.cpp
   ${RBS_SOURCE_ROOT}/src/core/collision.cpp
   ${RBS_SOURCE_ROOT}/src/core/contact_report.cpp
@@ -27,6 +28,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/sdf_surface.cpp
   ${RBS_SOURCE_ROOT}/src/core/shape_matching.cpp
   ${RBS_SOURCE_ROOT}/src/core/sleep.cpp
+  ${RBS_SOURCE_ROOT}/src/core/solver_contact.cpp
   ${RBS_SOURCE_ROOT}/src/core/state.cpp
   ${RBS_SOURCE_ROOT}/src/core/step.cpp
   ${RBS_SOURCE_ROOT}/src/core/velocity_driver.cpp

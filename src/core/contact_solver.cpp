@@ -9,6 +9,7 @@
 #include "island.h"
 #include "rigid_body_sim/core/contact.h"
 #include "scratch.h"
+#include "solver_contact.h"
 
 namespace rigid_body_sim::core {
 namespace {
@@ -64,23 +65,6 @@ void warmStart(const Contact& contact, const State& state, Velocities& vel, Solv
   const double limit = c.friction * c.normal_impulse;
   if (c.tangent_impulse.norm() > limit) c.tangent_impulse *= limit / c.tangent_impulse.norm();
   applyImpulse(c, c.normal_impulse, c.tangent_impulse.x(), c.tangent_impulse.y(), vel);
-}
-
-/// A contact's pair as pressed_pairs names it.
-std::array<int, 3> pairOf(const ContactKey& k) {
-  return k.other < 0 ? std::array<int, 3>{k.body, -1, k.item}
-                     : std::array<int, 3>{std::min(k.body, k.other), std::max(k.body, k.other), -1};
-}
-
-/// The pairs that pressed on each other in the last step, sorted (scene
-/// items and bodies alike; both directions of a body pair are one pair).
-void findPressedPairs(const State& state, std::vector<std::array<int, 3>>& pairs) {
-  pairs.clear();
-  for (const ContactImpulse& c : state.contact_impulses) {
-    if (c.normal > 0.0) pairs.push_back(pairOf(c));
-  }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 }
 
 /// Finds each contact's impulse of the last step: both lists are sorted by
@@ -178,80 +162,6 @@ double sweepContact(const SolverSettings& settings, SolverContact& c, double& no
   return (std::abs(dln) + dlt.norm()) / c.normal_mass;
 }
 
-/// One body's side of a contact: its Jacobian rows and turns for the arm r,
-/// and its share of nᵀKn (returned), of TᵀKT (added to k) and of nᵀKT
-/// (added to k_nt; nᵀT = 0, so no mass term).
-double prepareSide(const Vec3& r, const SolverContact& c, double inv_mass, const Mat3& inv_I, SolverContact::Side& side,
-                   Eigen::Matrix2d& k, Eigen::Vector2d& k_nt) {
-  side.rn = r.cross(c.normal_W);
-  side.rt1 = r.cross(c.tangent1_W);
-  side.rt2 = r.cross(c.tangent2_W);
-  side.inv_mass = inv_mass;
-  side.turn_n = inv_I * side.rn;
-  side.turn_t1 = inv_I * side.rt1;
-  side.turn_t2 = inv_I * side.rt2;
-  Eigen::Matrix2d ks;
-  ks << inv_mass + side.rt1.dot(side.turn_t1), side.rt1.dot(side.turn_t2),  //
-      side.rt2.dot(side.turn_t1), inv_mass + side.rt2.dot(side.turn_t2);
-  k += ks;
-  k_nt += Eigen::Vector2d(side.rn.dot(side.turn_t1), side.rn.dot(side.turn_t2));
-  return inv_mass + side.rn.dot(side.turn_n);
-}
-
-/// The entries of K = M⁻¹𝟙 − [r]× I⁻¹ [r]× (docs/physics.md §5.5) a contact's solve needs
-/// (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n), and TᵀKT likewise, with the other body's
-/// terms added), and its target normal velocity. A sleeping body is part of
-/// the ground: no mass terms. `previous` is the solver contact before it
-/// in the island, if any.
-void prepareContact(const Model& model, const State& state, const StepScratch& sc, double h, const Contact& contact,
-                    const SolverContact* previous, SolverContact& c) {
-  const std::vector<Mat3>& inv_I_W = sc.inverse_inertias;
-  const Vec3& n = contact.normal_W;
-  c.body = contact.body;
-  c.other = contact.other;
-  c.normal_W = n;
-  c.friction = model.friction(c.body, c.other);
-  c.restitution = model.restitution(c.body, c.other);
-  // A pair that pressed on each other last step meets again plastically:
-  // a rocking block's new corner, a box tipping onto its face (Housner).
-  if (c.restitution > 0.0 && std::binary_search(sc.pressed_pairs.begin(), sc.pressed_pairs.end(), pairOf(contact))) {
-    c.restitution = 0.0;
-  }
-  if (previous != nullptr && previous->normal_W == n) {  // the points of one region share n and its tangents
-    c.tangent1_W = previous->tangent1_W;
-    c.tangent2_W = previous->tangent2_W;
-  } else {
-    c.tangent1_W = (std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
-    c.tangent2_W = n.cross(c.tangent1_W);
-  }
-  Eigen::Matrix2d k = Eigen::Matrix2d::Zero();
-  Eigen::Vector2d k_nt = Eigen::Vector2d::Zero();
-  // A sleeper is ground on either side: no terms (for the scene, other < 0,
-  // o is never read). Its own points against an awake body's solid make
-  // contacts whose `body` it is.
-  double knn = 0.0;
-  if (!state.bodies[c.body].asleep) {
-    knn = prepareSide(contact.r_W, c, model.body(c.body).inv_mass, inv_I_W[c.body], c.a, k, k_nt);
-  } else {
-    c.a = SolverContact::Side();
-  }
-  if (c.other >= 0 && !state.bodies[c.other].asleep) {
-    knn += prepareSide(contact.r_other_W, c, model.body(c.other).inv_mass, inv_I_W[c.other], c.o, k, k_nt);
-  } else if (c.other >= 0) {
-    c.o = SolverContact::Side();
-  }
-  c.normal_mass = 1.0 / knn;
-  c.tangent_k = k;
-  c.normal_tangent_k = k_nt;
-  c.tangent_mass = k.inverse();
-  c.separation = contact.separation;
-  c.target_normal_velocity = c.separation > 0.0 ? -c.separation / h : 0.0;
-  c.normal_impulse = 0.0;
-  c.tangent_impulse.setZero();
-  c.friction_nu = 0.0;
-  c.tangent_eigen.ready = false;
-}
-
 /// For the solver contacts [first, last) of one island: prepare, warm
 /// start, restitution (impact passes), projected Gauss-Seidel; then the
 /// results go back to the contacts.
@@ -268,7 +178,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
     const Contact& contact = ws.contacts[sc.island_contacts[k]];
     SolverContact& c = sc.solver_contacts[k];
     c.contact = sc.island_contacts[k];
-    prepareContact(model, state, sc, h, contact, k > first ? &c - 1 : nullptr, c);
+    detail::prepareContact(model, state, sc, h, contact, k > first ? &c - 1 : nullptr, c);
     fastest = std::max(fastest, contactVelocity(c, vel).squaredNorm());
     warmStart(contact, state, vel, c);
   }
@@ -357,7 +267,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
   // Islands share no body, so they split over the cores with the same result.
   matchLastImpulses(state, ws.contacts);
   if (model.bounces()) {
-    findPressedPairs(state, sc.pressed_pairs);
+    detail::findPressedPairs(state, sc.pressed_pairs);
   } else {
     sc.pressed_pairs.clear();
   }

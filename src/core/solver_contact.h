@@ -3,9 +3,16 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
+#include <vector>
 
 #include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/state.h"
 #include "rigid_body_sim/core/types.h"
+
+namespace rigid_body_sim::core {
+struct Contact;
+}
 
 namespace rigid_body_sim::core::detail {
 
@@ -62,5 +69,25 @@ struct SolverContact {
   TangentEigen tangent_eigen;                                  ///< of tangent_k, for sliding friction
   double friction_nu = 0.0;  ///< 1/kg: the sliding friction's multiplier of the last sweep (the next one's guess)
 };
+
+struct StepScratch;
+
+#pragma GCC visibility push(hidden)
+
+/// The pairs that pressed on each other in the last step (λ_N > 0), sorted
+/// (scene items and bodies alike; both directions of a body pair are one
+/// pair): an impact between them is plastic (docs/physics.md §5.5).
+void findPressedPairs(const State& state, std::vector<std::array<int, 3>>& pairs);
+
+/// Fills `c` for `contact`: the entries of K = M⁻¹𝟙 − [r]× I⁻¹ [r]×
+/// (docs/physics.md §5.5) its solve needs (nᵀKn = M⁻¹ + (r×n)ᵀ I⁻¹ (r×n),
+/// and TᵀKT likewise, with the other body's terms added), its coefficients
+/// (restitution 0 for a pair in sc.pressed_pairs) and its target normal
+/// velocity. A sleeping body is part of the ground on either side: no mass
+/// terms. `previous` is the solver contact before it in the island, if any.
+void prepareContact(const Model& model, const State& state, const StepScratch& sc, double h, const Contact& contact,
+                    const SolverContact* previous, SolverContact& c);
+
+#pragma GCC visibility pop
 
 }  // namespace rigid_body_sim::core::detail
