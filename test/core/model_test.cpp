@@ -43,7 +43,8 @@ TEST(Model, BodiesBuiltAlikeShareTheirPointsAndSolid) {
   EXPECT_FALSE(model.body(0).contact_points.sameAs(model.body(3).contact_points));
   core::ModelSpec alone = spec;
   alone.bodies = {b, other};
-  const core::BodyModel& built = core::Model(alone).body(0);
+  const core::Model alone_model(alone);
+  const core::BodyModel& built = alone_model.body(0);
   ASSERT_EQ(built.contact_points.size(), model.body(2).contact_points.size());
   for (std::size_t i = 0; i < built.contact_points.size(); ++i) {
     EXPECT_EQ(built.contact_points[i].r_B, model.body(2).contact_points[i].r_B);
