@@ -1,6 +1,7 @@
 // libFuzzer: any bytes as a YAML config, then the model of a box under it.
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 
 #include "fuzz_model.h"
@@ -24,11 +25,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace rigid_body_sim;
   const std::string text(reinterpret_cast<const char*>(data), size);
   io::SimConfig config;
+  std::string refused;
   try {
     config = io::parseConfig(io::loadYamlText(text, "fuzz.yaml"));
-  } catch (const io::ConfigError&) {
-    return 0;
+  } catch (const io::ConfigError& e) {
+    refused = e.what();
   }
+  // rbsim's way, the bodies list an entry at a time: the same refusal, or the same bodies.
+  try {
+    const io::SimConfig streamed = io::parseConfigText(text, "fuzz.yaml");
+    if (!refused.empty() || streamed.bodies.size() != config.bodies.size()) std::abort();
+    for (std::size_t i = 0; i < config.bodies.size(); ++i) {
+      if (streamed.bodies[i].name != config.bodies[i].name) std::abort();
+    }
+  } catch (const io::ConfigError& e) {
+    if (refused != e.what()) std::abort();
+  }
+  if (!refused.empty()) return 0;
   core::ModelSpec spec = config.model;
   spec.bodies = {box()};
   try {

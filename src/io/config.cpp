@@ -1,8 +1,10 @@
 #include "rigid_body_sim/io/config.h"
 
 #include <cmath>
+#include <exception>
 #include <set>
 #include <sstream>
+#include <unordered_set>
 #include <vector>
 
 #include "device_config.h"
@@ -12,6 +14,7 @@
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "scene_config.h"
 #include "yaml_fields.h"
+#include "yaml_split_load.h"
 
 namespace rigid_body_sim::io {
 namespace {
@@ -118,24 +121,26 @@ void parseInitial(const YAML::Node& node, core::LinkState& s, const std::string&
   if (node["angular_velocity"]) s.w_W = vec3(node["angular_velocity"], path + ".angular_velocity");
 }
 
-std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& base_dir) {
-  if (!node.IsSequence()) fail("bodies", "expected a list of {name, urdf, initial} ([] for an empty world)");
-  std::vector<BodyEntry> bodies;
-  for (std::size_t i = 0; i < node.size(); ++i) {
+/// The `bodies` list, an entry at a time (a world config streams it in:
+/// loadConfigFile). Names must be unique.
+class BodyList {
+ public:
+  explicit BodyList(std::string base_dir) : base_dir_(std::move(base_dir)) {}
+
+  void add(const YAML::Node& entry, std::size_t i) {
     const std::string path = "bodies[" + std::to_string(i) + "]";
-    const YAML::Node entry = node[i];
     requireKnownKeys(entry, path, {"name", "urdf", "initial", "contact", "imu", "odom_noise", "cmd_vel"});
     if (!entry["name"]) fail(path + ".name", "every body needs a name");
     if (!entry["urdf"]) fail(path + ".urdf", "every body needs a urdf (a file, or for the node a parameter)");
     BodyEntry b;
     b.name = text(entry["name"], path + ".name");
-    for (const BodyEntry& other : bodies) {
-      if (other.name == b.name) fail(path + ".name", "'" + b.name + "' is already the name of another body");
+    if (!names_.insert(b.name).second) {
+      fail(path + ".name", "'" + b.name + "' is already the name of another body");
     }
     b.urdf = text(entry["urdf"], path + ".urdf");
     const bool relative =
         b.urdf.front() != '/' && b.urdf.rfind("package://", 0) != 0 && b.urdf.rfind("file://", 0) != 0;
-    if (relative && !base_dir.empty()) b.urdf = base_dir + "/" + b.urdf;
+    if (relative && !base_dir_.empty()) b.urdf = base_dir_ + "/" + b.urdf;
     if (entry["initial"]) parseInitial(entry["initial"], b.initial, path + ".initial");
     if (entry["contact"]) {  // the body's own surface
       const YAML::Node surface = entry["contact"];
@@ -146,12 +151,37 @@ std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& ba
     if (entry["imu"]) b.imu = parseImu(entry["imu"], path + ".imu");
     if (entry["odom_noise"]) b.odom_noise = parseOdomNoise(entry["odom_noise"], path + ".odom_noise");
     if (entry["cmd_vel"]) b.cmd_vel = parseDriver(entry["cmd_vel"], path + ".cmd_vel");
-    bodies.push_back(b);
+    bodies_.push_back(std::move(b));
   }
-  return bodies;
+
+  std::vector<BodyEntry> take() {
+    bodies_.shrink_to_fit();
+    return std::move(bodies_);
+  }
+
+ private:
+  std::string base_dir_;
+  std::vector<BodyEntry> bodies_;
+  std::unordered_set<std::string> names_;
+};
+
+std::vector<BodyEntry> parseBodies(const YAML::Node& node, const std::string& base_dir) {
+  if (!node.IsSequence()) fail("bodies", "expected a list of {name, urdf, initial} ([] for an empty world)");
+  BodyList list(base_dir);
+  for (std::size_t i = 0; i < node.size(); ++i) list.add(node[i], i);
+  return list.take();
 }
 
-SimConfig parseTree(const YAML::Node& root, const std::string& base_dir) {
+/// The bodies list parsed as the text was read, or the first refusal of an
+/// entry (thrown where parsing the tree would have thrown it).
+struct StreamedBodies {
+  std::vector<BodyEntry> bodies;
+  std::exception_ptr refused;
+};
+
+/// `streamed`: the bodies list read from the text, when `root` holds only
+/// an empty stand-in for it.
+SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, StreamedBodies* streamed = nullptr) {
   SimConfig c;
   c.base_dir = base_dir;
   c.model.scene = {core::Sdf::plane(Vec3::UnitZ())};  // the ground, z = 0
@@ -171,7 +201,8 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir) {
   if (root["limits"]) parseLimits(root["limits"], c.model.limits);
   if (root["bodies"]) {
     if (root["initial"]) fail("initial", "with a bodies list, give each body its own bodies[i].initial");
-    c.bodies = parseBodies(root["bodies"], base_dir);
+    if (streamed && streamed->refused) std::rethrow_exception(streamed->refused);
+    c.bodies = streamed ? std::move(streamed->bodies) : parseBodies(root["bodies"], base_dir);
     c.bodies_listed = true;
   }
   if (root["imu"]) {
@@ -202,6 +233,44 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
   } catch (const YAML::Exception& e) {  // a conversion no check above foresaw: still a ConfigError
     throw ConfigError(std::string("config: ") + e.what());
   }
+}
+
+SimConfig parseConfigText(const std::string& yaml, const std::string& source, const std::vector<std::string>& overrides,
+                          const std::string& base_dir) {
+  const std::string problem = yamlProblem(yaml);
+  if (!problem.empty()) throw ConfigError(source + ": " + problem);
+  BodyList bodies(base_dir);
+  StreamedBodies streamed;
+  SplitLoad load;
+  try {
+    load = loadSplittingSequence(yaml, "bodies", [&](const YAML::Node& entry, std::size_t i) {
+      if (streamed.refused) return;
+      try {
+        bodies.add(entry, i);
+      } catch (...) {  // refused after the keys parseTree checks first, as for the tree
+        streamed.refused = std::current_exception();
+      }
+    });
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(source + " is not valid YAML: " + e.what());
+  }
+  bool replaced = false;  // an override gives the bodies list itself
+  for (const std::string& s : overrides) {
+    applyOverride(load.root, s);
+    replaced = replaced || s.compare(0, s.find_first_of(".="), "bodies") == 0;
+  }
+  streamed.bodies = bodies.take();
+  try {
+    return parseTree(load.root, base_dir, load.split && !replaced ? &streamed : nullptr);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(std::string("config: ") + e.what());
+  }
+}
+
+SimConfig loadConfigFile(const std::string& path, const std::vector<std::string>& overrides,
+                         const std::string& base_dir) {
+  return parseConfigText(readInput<ConfigError>(path, InputCaps::kConfigBytes, "config"), "config '" + path + "'",
+                         overrides, base_dir);
 }
 
 namespace {

@@ -70,6 +70,17 @@ struct SimConfig {
 /// Relative URDF paths in `bodies` resolve against `base_dir`.
 SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir = "");
 
+/// A config from its YAML text, as parseConfig(loadYamlText(yaml, source))
+/// with each of `overrides` (KEY=VALUE, applyOverride) applied, but the
+/// `bodies` list is parsed an entry at a time as it is read, never held
+/// whole as a YAML tree (about 7 KB an entry: 70 MB for a world of 10,000
+/// bodies, bench/README.md). ConfigError as parseConfig and loadYamlText.
+SimConfig parseConfigText(const std::string& yaml, const std::string& source,
+                          const std::vector<std::string>& overrides = {}, const std::string& base_dir = "");
+/// parseConfigText of the file at `path` (at most InputCaps::kConfigBytes).
+SimConfig loadConfigFile(const std::string& path, const std::vector<std::string>& overrides = {},
+                         const std::string& base_dir = "");
+
 /// An IMU from the YAML text of an `imu` map (the node's ~spawn_body), for a
 /// model of step `dt`; ConfigError naming `path`.KEY.
 ImuEntry parseImuText(const std::string& yaml, const std::string& path, double dt);
