@@ -1,5 +1,6 @@
 #include "rigid_body_sim/io/world.h"
 
+#include <map>
 #include <sstream>
 
 #include "rigid_body_sim/io/mesh_loader.h"
@@ -47,14 +48,27 @@ core::Model buildModel(const SimConfig& config, const core::BodySpec& body) {
 World buildWorld(const SimConfig& config, const BodyLoader& load) {
   core::ModelSpec spec = config.model;
   spec.bodies.clear();
+  spec.bodies.reserve(config.bodies.size());
+  // Each file is read and parsed once: a world of 10,000 boxes names one URDF 10,000 times.
+  std::map<std::string, core::BodySpec> files;
   for (const BodyEntry& entry : config.bodies) {
-    core::BodySpec body = load ? load(entry) : loadUrdfFile(resolveMeshUri(entry.urdf, config.base_dir));
+    core::BodySpec body;
+    if (load) {
+      body = load(entry);
+    } else {
+      auto file = files.find(entry.urdf);
+      if (file == files.end()) {
+        file = files.emplace(entry.urdf, loadUrdfFile(resolveMeshUri(entry.urdf, config.base_dir))).first;
+      }
+      body = file->second;
+    }
     body.name = entry.name;
     body.friction = entry.friction;
     body.restitution = entry.restitution;
     spec.bodies.push_back(body);
   }
   World world{core::Model(spec), {}};
+  world.state.bodies.reserve(config.bodies.size());
   for (std::size_t i = 0; i < config.bodies.size(); ++i) {
     world.state.bodies.push_back(
         startState(world.model, i, config.bodies[i].initial, "bodies[" + std::to_string(i) + "].initial"));

@@ -62,6 +62,8 @@ constexpr const char* kUsage =
 constexpr double kMaxSteps = 1e12;
 
 using rigid_body_sim::tools::CsvWriter;
+using rigid_body_sim::tools::Json;
+using rigid_body_sim::tools::JsonLine;
 using rigid_body_sim::tools::ProgressBar;
 using rigid_body_sim::tools::UsageError;
 
@@ -131,8 +133,6 @@ Args parseArgs(int argc, char** argv) {
 
 // ---------------------------------------------------------------- output
 
-using Json = nlohmann::ordered_json;  // keys in the order written
-
 /// A number for the JSON line: non-finite values become null (JSON has no NaN).
 Json num(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 Json vec(const Vec3& v) { return Json::array({num(v.x()), num(v.y()), num(v.z())}); }
@@ -184,20 +184,26 @@ void checkStep(const core::Model& model, const core::Workspace& ws, double t, st
   }
 }
 
-/// The config file with the command line's overrides. The YAML tree is gone
-/// when this returns: for a world of 10,000 bodies it takes about 7 KB a
-/// body, more than the bodies themselves (bench/README.md).
+/// The config file with the command line's overrides. Its bodies list is
+/// read an entry at a time: as a YAML tree it took about 7 KB a body, more
+/// than the bodies themselves (bench/README.md).
 io::SimConfig readConfig(const Args& args) {
-  YAML::Node tree = args.config.empty() ? YAML::Node() : io::loadYamlFile(args.config);
-  for (const std::string& s : args.sets) io::applyOverride(tree, s);
-  if (!args.dt.empty()) io::applyOverride(tree, "dt=" + args.dt);
-  const std::string config_dir = args.config.empty() ? "" : std::filesystem::path(args.config).parent_path().string();
-  return io::parseConfig(tree, config_dir.empty() ? "." : config_dir);
+  std::vector<std::string> overrides = args.sets;
+  if (!args.dt.empty()) overrides.push_back("dt=" + args.dt);
+  if (args.config.empty()) {
+    YAML::Node tree;
+    for (const std::string& s : overrides) io::applyOverride(tree, s);
+    return io::parseConfig(tree, ".");
+  }
+  const std::string config_dir = std::filesystem::path(args.config).parent_path().string();
+  return io::loadConfigFile(args.config, overrides, config_dir.empty() ? "." : config_dir);
 }
 
-int run(const Args& args) {
+/// The world the command line gives: one body from --urdf, or the config's
+/// bodies list. The config is gone when this returns (its bodies list is a
+/// tenth of the memory of a world of 10,000 boxes).
+io::World loadWorld(const Args& args, bool* world_config) {
   const io::SimConfig config = readConfig(args);
-  // One body from --urdf, or the config's bodies list: a world.
   if (config.bodies_listed && config.bodies.empty()) {
     throw UsageError(
         "the config's bodies list is empty: nothing to simulate (an empty world is for sim_node's "
@@ -209,8 +215,13 @@ int run(const Args& args) {
   if (!config.bodies.empty() && !args.urdf.empty()) {
     throw UsageError("--urdf and a config with a bodies list: give one or the other");
   }
-  const bool world_config = !config.bodies.empty();
-  io::World world = io::loadWorld(config, [&] { return io::loadUrdfFile(args.urdf); });
+  *world_config = !config.bodies.empty();
+  return io::loadWorld(config, [&] { return io::loadUrdfFile(args.urdf); });
+}
+
+int run(const Args& args) {
+  bool world_config = false;
+  io::World world = loadWorld(args, &world_config);
   const core::Model& model = world.model;
   core::State& state = world.state;
   const std::size_t n = model.bodyCount();
@@ -275,16 +286,13 @@ int run(const Args& args) {
   // The final state (the loop saw every earlier state), and rest of all bodies.
   bool at_rest = true;
   int resting = 0;
-  Json bodies_json = Json::array();
+  std::vector<char> rest(n);
   for (std::size_t i = 0; i < n; ++i) {
     max_penetration = std::max(max_penetration,
                                -std::min(0.0, core::minSeparation(model, state.bodies[i], static_cast<int>(i), 0.0)));
-    const bool rest = core::atRest(model, state.bodies[i]);
-    at_rest = at_rest && rest;
-    resting += rest;
-    bodies_json.push_back({{"name", model.body(i).name},
-                           {"final", finalJson(core::linkState(model.body(i), state.bodies[i]))},
-                           {"at_rest", rest}});
+    rest[i] = core::atRest(model, state.bodies[i]);
+    at_rest = at_rest && rest[i];
+    resting += rest[i];
   }
   Json out = {
       {"steps", steps}, {"sim_time", num(sim_time)}, {"wall_s", num(wall_s)}, {"ns_per_step", num(ns_per_step)}};
@@ -298,13 +306,14 @@ int run(const Args& args) {
     if (limited[i]) limited_json.push_back(model.body(i).name);
   }
   out["speed_limited"] = limited_json;
-  out["bodies"] = bodies_json;
-  // Names are the user's: escaped by the library; bytes that are not UTF-8 are replaced, not refused.
   if (csv) csv->finish();
-  const std::string line = out.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n";
-  if (std::fwrite(line.data(), 1, line.size(), stdout) != line.size() || std::fflush(stdout) != 0) {
-    throw UsageError(std::string("stdout: writing the JSON line failed: ") + std::strerror(errno));
+  JsonLine line(out, "bodies");
+  for (std::size_t i = 0; i < n; ++i) {
+    line.element({{"name", model.body(i).name},
+                  {"final", finalJson(core::linkState(model.body(i), state.bodies[i]))},
+                  {"at_rest", static_cast<bool>(rest[i])}});
   }
+  line.finish();
 
   if (!args.quiet) {
     const auto rel = [](double a, double b) { return a == 0.0 ? std::abs(b) : (b - a) / std::abs(a); };

@@ -1,11 +1,12 @@
-// rbsim's outputs besides its JSON line: the CSV trajectory and the
-// progress bar; and the error a bad command line or output raises (exit 2).
+// rbsim's outputs: the JSON line, the CSV trajectory and the progress bar;
+// and the error a bad command line or output raises (exit 2).
 #pragma once
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -18,6 +19,42 @@ namespace core = rigid_body_sim::core;
 /// A bad command line, or an output that cannot be written: exit code 2.
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+using Json = nlohmann::ordered_json;  // keys in the order written
+
+/// One JSON object on one line of stdout whose last member, an array, is
+/// written an element at a time: a world's bodies as one nlohmann tree and
+/// its text took 1.9 KB a body, a third of rbsim's peak memory at N = 10,000.
+/// The bytes are those of the whole object's dump().
+class JsonLine {
+ public:
+  /// Writes `head`'s members and opens `array_key`.
+  JsonLine(const Json& head, const std::string& array_key) {
+    std::string text = dump(head);
+    text.pop_back();  // its '}'
+    put(text + (head.empty() ? "" : ",") + dump(Json(array_key)) + ":[");
+  }
+  void element(const Json& e) {
+    put((first_ ? "" : ",") + dump(e));
+    first_ = false;
+  }
+  void finish() {
+    put("]}\n");
+    if (std::fflush(stdout) != 0) fail();
+  }
+
+ private:
+  bool first_ = true;
+
+  /// Names are the user's: escaped by the library; bytes that are not UTF-8 are replaced, not refused.
+  static std::string dump(const Json& j) { return j.dump(-1, ' ', false, Json::error_handler_t::replace); }
+  static void put(const std::string& s) {
+    if (std::fwrite(s.data(), 1, s.size(), stdout) != s.size()) fail();
+  }
+  [[noreturn]] static void fail() {
+    throw UsageError(std::string("stdout: writing the JSON line failed: ") + std::strerror(errno));
+  }
 };
 
 class CsvWriter {

@@ -118,6 +118,10 @@ TEST(Rbsim, RunsAWorldOfBodiesFromTheConfig) {
   EXPECT_EQ(j["bodies"][1]["name"].as<std::string>(), "ball");
   EXPECT_FALSE(j["final"]);  // per body, under bodies
   EXPECT_TRUE(j["at_rest"].as<bool>());
+  // Written a body at a time, and still the bytes of one object's dump.
+  const auto object = nlohmann::ordered_json::parse(r.out);
+  EXPECT_EQ(object.dump() + "\n", r.out);
+  EXPECT_EQ(object.back().size(), 4u);  // the bodies, last
   EXPECT_LT(j["max_penetration"].as<double>(), 2e-3);
   // The ball came down on the box: it rests on its top face, 0.1 + 0.1 m up.
   EXPECT_NEAR(seq(j["bodies"][1]["final"]["position"])[2], 0.2, 1e-3);
