@@ -2,8 +2,10 @@
 # The pile of issue 16 against Bullet, in the same run: N boxes dropped with
 # restitution 0.5 and friction 0.5 (pile_bench.cpp, bullet_pile.cpp). Each
 # round runs, for each N, this project on every core, on one thread, and
-# Bullet, each in its own process (so peak memory is each one's own); the
-# table gives medians over the rounds, and the ratios to Bullet's time.
+# Bullet, each in its own process (so peak memory is each one's own), and
+# rbsim itself on the same scene as a world config for 2 s (the whole
+# process: config, URDFs, output; its rest columns are '-'). The table gives
+# medians over the rounds, and the ratios to Bullet's time.
 # Usage: bench/pile.sh [rounds] [N ...]   (default: 3 rounds, N = 1000)
 # Needs libbullet-dev for the Bullet column (apt install libbullet-dev).
 set -euo pipefail
@@ -16,12 +18,20 @@ rbs_install_packages
 RBS_BUILD_TYPE=Release rbs_build >/dev/null
 BIN="$RBS_WS/devel/lib/rigid_body_sim"
 OUT=$(mktemp)
-trap 'rm -f "$OUT"' EXIT
+WORLD=$(mktemp -d)
+trap 'rm -rf "$OUT" "$WORLD"' EXIT
 for round in $(seq "$ROUNDS"); do
   for n in "${SIZES[@]}"; do
     "$BIN/pile_bench" "$n" | sed 's/^engine rbs/engine rbs-2t/' >>"$OUT"
     RBS_THREADS=1 "$BIN/pile_bench" "$n" | sed 's/^engine rbs/engine rbs-1t/' >>"$OUT"
     if [ -x "$BIN/bullet_pile" ]; then "$BIN/bullet_pile" "$n" >>"$OUT"; fi
+    "$BIN/pile_bench" --yaml "$n" "$RBS_ROOT/urdf/box.urdf" >"$WORLD/pile.yaml"
+    /usr/bin/time -f %M -o "$WORLD/rss" "$BIN/rbsim" --config "$WORLD/pile.yaml" --duration 2 --quiet >"$WORLD/out.json"
+    /usr/bin/python3 -c 'import json, sys
+j = json.load(open(sys.argv[1])); n = int(sys.argv[2])
+print("engine rbsim N", n, "ns_per_body_step", j["ns_per_step"] / n, "rest2_sleep - rest2_peers - rest3_sleep -",
+      "rest3_peers - deepest_mm", 1e3 * j["max_penetration"], "peak_rss_kb", open(sys.argv[3]).read().split()[-1])' \
+      "$WORLD/out.json" "$n" "$WORLD/rss" >>"$OUT"
   done
   echo "round $round of $ROUNDS done" >&2
 done
@@ -40,7 +50,7 @@ print(f"{'N':>6} {'engine':>8} {'ns/body-step':>13} {'vs Bullet':>9} {'rest 2 s 
       f"{'rest 3 s (sleep | peers)':>25} {'deepest mm':>10} {'peak RSS KB/body':>16}")
 for n in sorted({k[0] for k in rows}):
     bullet = med(rows.get((n, "bullet"), []), "ns_per_body_step") if (n, "bullet") in rows else None
-    for engine in ("rbs-2t", "rbs-1t", "bullet"):
+    for engine in ("rbs-2t", "rbs-1t", "bullet", "rbsim"):
         runs = rows.get((n, engine))
         if not runs:
             continue
