@@ -60,25 +60,30 @@ struct ModelSpec {
 };
 
 /// One body as the integrator uses it: derived and validated quantities.
-struct BodyModel {
-  std::string name;                                    ///< the body's name in the world
-  std::string link;                                    ///< its URDF root link name
-  double mass = 1.0;                                   ///< kg
-  double inv_mass = 1.0;                               ///< 1/kg
-  Vec3 inertia_B = Vec3::Ones();                       ///< principal moments, kg·m²
-  Vec3 inv_inertia_B = Vec3::Ones();                   ///< 1/(kg·m²)
-  Vec3 p_LB = Vec3::Zero();                            ///< B's origin (the centre of mass) in L (m)
-  Quat q_LB = Quat::Identity();                        ///< principal axes B in L
-  Mat3 I_C_L = Mat3::Identity();                       ///< inertia about the centre of mass in L axes, as given
-  std::vector<CollisionShape> collision;               ///< the collision shapes in L, as given (for drawing)
-  std::vector<FixedLink> fixed_links;                  ///< frames fixed to the body (for tf)
-  double friction = 0.5;                               ///< its surface's μ_T (its own, or the scene's)
-  double restitution = 0.0;                            ///< its surface's μ_N (its own, or the scene's)
-  bool own_friction = false, own_restitution = false;  ///< its own (BodySpec), not the scene's
+/// What the step reads comes first, grouped by the cache line it shares
+/// with what is read with it, and each body starts on a line: at N = 10,000
+/// the bodies' models outgrow the L2 cache, and a stage's cost per body is
+/// the lines it touches (bench/README.md).
+struct alignas(64) BodyModel {
+  // The solve and the integrator.
+  double inv_mass = 1.0;              ///< 1/kg
+  Vec3 inv_inertia_B = Vec3::Ones();  ///< 1/(kg·m²)
+  double friction = 0.5;              ///< its surface's μ_T (its own, or the scene's)
+  double restitution = 0.0;           ///< its surface's μ_N (its own, or the scene's)
+  double bound_radius = 0.0;          ///< m: every contact point lies within it of the centre of mass
+  double mass = 1.0;                  ///< kg
+  // What other bodies' points meet.
+  /// The body's solid in B (the union of its collision shapes), which other
+  /// bodies' points are tested against; only built when there are several bodies
+  /// (a mesh's distance grid costs time at start).
+  SharedArray<Sdf> solid_B;
+  Vec3 solid_lo_B = Vec3::Zero(), solid_hi_B = Vec3::Zero();  ///< a box around solid_B, in B (m)
+  // Its own points.
   SharedArray<ContactPoint> contact_points;            ///< collision samples, body frame B, extreme ones first
-  std::size_t extreme_points = 0;                      ///< how many of contact_points are extreme (see ContactPoint)
   SharedArray<RoundFeature> round;                     ///< the round features contact points refer to (B)
   SharedArray<int> rim_points;                         ///< the contact points on rims, which a plane tests too
+  std::size_t extreme_points = 0;                      ///< how many of contact_points are extreme (see ContactPoint)
+  bool own_friction = false, own_restitution = false;  ///< its own (BodySpec), not the scene's
   /// The extreme points again as columns (x, y, z, radius), so the plane
   /// test over a large mesh runs as vector arithmetic.
   SharedArray<double> extreme_x, extreme_y, extreme_z, extreme_radius;
@@ -91,12 +96,15 @@ struct BodyModel {
     double radius = 0.0;             ///< m, includes the points' own radii
   };
   SharedArray<PointGroup> extreme_groups;
-  /// The body's solid in B (the union of its collision shapes), which other
-  /// bodies' points are tested against; only built when there are several bodies
-  /// (a mesh's distance grid costs time at start).
-  SharedArray<Sdf> solid_B;
-  Vec3 solid_lo_B = Vec3::Zero(), solid_hi_B = Vec3::Zero();  ///< a box around solid_B, in B (m)
-  double bound_radius = 0.0;  ///< m: every contact point lies within it of the centre of mass
+  Vec3 inertia_B = Vec3::Ones();  ///< principal moments, kg·m²
+  // Read at the start, for frames and drawing.
+  std::string name;                       ///< the body's name in the world
+  std::string link;                       ///< its URDF root link name
+  Vec3 p_LB = Vec3::Zero();               ///< B's origin (the centre of mass) in L (m)
+  Quat q_LB = Quat::Identity();           ///< principal axes B in L
+  Mat3 I_C_L = Mat3::Identity();          ///< inertia about the centre of mass in L axes, as given
+  std::vector<CollisionShape> collision;  ///< the collision shapes in L, as given (for drawing)
+  std::vector<FixedLink> fixed_links;     ///< frames fixed to the body (for tf)
   /// Shape matching: the mean of the contact points (B) and (Σ r̄ r̄ᵀ)⁻¹ of
   /// the points about it; empty when the points do not span three dimensions.
   Vec3 points_centroid_B = Vec3::Zero();
