@@ -10,6 +10,25 @@ namespace rigid_body_sim::core {
 
 using detail::StepScratch;
 
+namespace {
+
+/// `all` sorted by (a, o) into `sorted`, in time linear in N and the pairs:
+/// counted by a, then each body's few by o. std::sort's N log N was 3.5 % of
+/// a step at N = 10,000 against 2.4 % at N = 1000 (bench/README.md).
+void sortDirections(int n, const std::vector<std::pair<int, int>>& all, std::vector<int>& starts,
+                    std::vector<std::pair<int, int>>& sorted) {
+  starts.assign(n + 1, 0);
+  for (const auto& d : all) ++starts[d.first + 1];
+  for (int a = 0; a < n; ++a) starts[a + 1] += starts[a];
+  sorted.resize(all.size());
+  for (const auto& d : all) sorted[starts[d.first]++] = d;  // starts[a] moves to a's end
+  for (int a = 0, begin = 0; a < n; begin = starts[a++]) {
+    std::sort(sorted.begin() + begin, sorted.begin() + starts[a]);
+  }
+}
+
+}  // namespace
+
 void broadPhase(const Model& model, const State& state, int parts, Workspace& ws) {
   StepScratch& sc = *ws.scratch;
   const int n = static_cast<int>(model.bodyCount());
@@ -102,15 +121,14 @@ void broadPhase(const Model& model, const State& state, int parts, Workspace& ws
       }
     }
   });
+  std::vector<std::pair<int, int>>& all = sc.unsorted_directions;
   if (parts == 1) {
-    sc.directions.swap(sc.parts[0].directions);
+    all.swap(sc.parts[0].directions);
   } else {
-    sc.directions.clear();
-    for (int k = 0; k < parts; ++k) {
-      sc.directions.insert(sc.directions.end(), sc.parts[k].directions.begin(), sc.parts[k].directions.end());
-    }
+    all.clear();
+    for (int k = 0; k < parts; ++k) all.insert(all.end(), sc.parts[k].directions.begin(), sc.parts[k].directions.end());
   }
-  std::sort(sc.directions.begin(), sc.directions.end());
+  sortDirections(n, all, sc.direction_starts, sc.directions);
 }
 
 }  // namespace rigid_body_sim::core

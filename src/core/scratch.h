@@ -69,6 +69,8 @@ struct StepScratch {
   std::vector<double> margins, box_lo, box_hi, box_strip, sorted_boxes;
   /// Both directions (a, o) of every pair whose boxes overlap, sorted: a's points against o's solid.
   std::vector<std::pair<int, int>> directions;
+  std::vector<std::pair<int, int>> unsorted_directions;  ///< the parts' directions, merged
+  std::vector<int> direction_starts;                     ///< per body a: where its directions start
   /// Islands of the impulse solve: contact indices island by island, and offsets.
   std::vector<int> island_contacts, island_starts, island_of;
   /// Per body: its island's root, the island's smallest body index (findIslands).
