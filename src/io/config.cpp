@@ -241,19 +241,20 @@ SimConfig parseConfigText(const std::string& yaml, const std::string& source, co
   if (!problem.empty()) throw ConfigError(source + ": " + problem);
   BodyList bodies(base_dir);
   StreamedBodies streamed;
-  SplitLoad load;
-  try {
-    load = loadSplittingSequence(yaml, "bodies", [&](const YAML::Node& entry, std::size_t i) {
-      if (streamed.refused) return;
-      try {
-        bodies.add(entry, i);
-      } catch (...) {  // refused after the keys parseTree checks first, as for the tree
-        streamed.refused = std::current_exception();
-      }
-    });
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(source + " is not valid YAML: " + e.what());
-  }
+  SplitLoad load = [&] {
+    try {
+      return loadSplittingSequence(yaml, "bodies", [&](const YAML::Node& entry, std::size_t i) {
+        if (streamed.refused) return;
+        try {
+          bodies.add(entry, i);
+        } catch (...) {  // refused after the keys parseTree checks first, as for the tree
+          streamed.refused = std::current_exception();
+        }
+      });
+    } catch (const YAML::Exception& e) {
+      throw ConfigError(source + " is not valid YAML: " + e.what());
+    }
+  }();
   bool replaced = false;  // an override gives the bodies list itself
   for (const std::string& s : overrides) {
     applyOverride(load.root, s);
