@@ -195,8 +195,10 @@ io::SimConfig readConfig(const Args& args) {
     for (const std::string& s : overrides) io::applyOverride(tree, s);
     return io::parseConfig(tree, ".");
   }
-  const std::string config_dir = std::filesystem::path(args.config).parent_path().string();
-  return io::loadConfigFile(args.config, overrides, config_dir.empty() ? "." : config_dir);
+  // Absolute: a body's relative URDF is joined to it once, and a relative
+  // folder was joined twice ("worlds/worlds/box.urdf").
+  const std::string config_dir = std::filesystem::absolute(args.config).parent_path().string();
+  return io::loadConfigFile(args.config, overrides, config_dir);
 }
 
 /// The world the command line gives: one body from --urdf, or the config's

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -33,9 +34,10 @@ std::string slurp(const std::string& path) {
 std::string tempPath(const std::string& name) { return (scratch().path() / name).string(); }
 
 /// Runs rbsim with `args`; killed after 60 s (exit code 124) so that a hang fails instead of stalling.
-Result rbsim(const std::string& args) {
+Result rbsim(const std::string& args, const std::string& folder = "") {
   const std::string out = tempPath("out"), err = tempPath("err");
-  const std::string cmd = "timeout 60 " + std::string(RBS_RBSIM) + " " + args + " >" + out + " 2>" + err;
+  const std::string cmd = (folder.empty() ? "" : "cd '" + folder + "' && ") + "timeout 60 " + std::string(RBS_RBSIM) +
+                          " " + args + " >" + out + " 2>" + err;
   const int status = std::system(cmd.c_str());
   Result r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -141,6 +143,18 @@ TEST(Rbsim, RunsAWorldOfBodiesFromTheConfig) {
   EXPECT_EQ(rows, 6 * 4);  // t = 0, 1, ..., 5 s for four bodies
   expectUsageError("--urdf " + kBox + " --config " + std::string(RBS_SOURCE_DIR) + "/config/world.yaml --duration 1",
                    "give one or the other");
+}
+
+TEST(Rbsim, AWorldsRelativeUrdfIsFoundFromAnyFolder) {
+  // The config given by a relative path, its URDF relative to it: the
+  // folder was joined twice ("worlds/worlds/urdf/box.urdf").
+  const std::filesystem::path dir = scratch().path() / "worlds";
+  std::filesystem::create_directories(dir / "urdf");
+  std::filesystem::copy_file(kBox, dir / "urdf" / "box.urdf", std::filesystem::copy_options::overwrite_existing);
+  std::ofstream(dir / "world.yaml") << "bodies:\n  - {name: a, urdf: urdf/box.urdf, initial: {position: [0, 0, 1]}}\n";
+  const Result r = rbsim("--config worlds/world.yaml --duration 0.1 --quiet", scratch().path().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(YAML::Load(r.out)["bodies"][0]["name"].as<std::string>(), "a");
 }
 
 TEST(Rbsim, EscapesBodyNamesInItsJson) {
