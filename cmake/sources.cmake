@@ -3,6 +3,7 @@
 set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/barrier.cpp
   ${RBS_SOURCE_ROOT}/src/core/body_geometry.cpp
+  ${RBS_SOURCE_ROOT}/src/core/box_pair.cpp
   ${RBS_SOURCE_ROOT}/src/core/broad_phase.cpp
   ${RBS_SOURCE_ROOT}/src/core/collision.cpp
   ${RBS_SOURCE_ROOT}/src/core/contact_report.cpp

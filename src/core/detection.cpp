@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "box_pair.h"
 #include "broad_phase.h"
 #include "rigid_body_sim/core/contact.h"
 #include "round_contact.h"
@@ -103,6 +104,13 @@ template <class Visit>
   if (solid.eval(centre_O) - ba.bound_radius >= margin) return;
   const Mat3 R_OA = (q_OW * sa.q_WB).toRotationMatrix();  // a's frame into o's
   const Mat3 R_WO = so.q_WB.toRotationMatrix();
+  // Two boxes: one normal for the pair, both ways, and each point's
+  // distance along it (box_pair.h); the solid still says which points are
+  // near.
+  detail::BoxInFrame box_a, box_o;
+  const bool boxes = detail::pairBoxes(ba, bo, R_OA, centre_O, box_a, box_o);
+  const detail::PairPlane plane = boxes ? detail::boxPairPlane(box_o, box_a, o < a) : detail::PairPlane{};
+  if (boxes && plane.gap >= margin) return;  // apart along some axis by more than the margin: no point is near
   const std::vector<ContactPoint>& points = ba.contact_points;  // one look-up through the shared pointer
   for (int i = 0; i < static_cast<int>(points.size()); ++i) {
     const ContactPoint& p = points[i];
@@ -126,12 +134,25 @@ template <class Visit>
       separation = solid.eval(p_O, &n_O) - p.radius;
     }
     if (!(separation < margin)) continue;  // also a NaN distance (a degenerate mesh's grid): no contact
+    if (boxes) {
+      separation = plane.n_F.dot(p_O) - plane.support - p.radius;
+      n_O = plane.n_F;
+    }
     // A point of a's face meets o's solid head on, or not at all: near o's
     // edges o's gradient turns sideways (a box sliding over another's face
     // samples would stop at each one), and o's own points against a's solid
     // give those contacts their true normal.
     if (p.normal_B.dot(p.normal_B) > 0.0 && (R_OA * p.normal_B).dot(n_O) > -kFaceContactCos) continue;
     visit(i, separation, Vec3(R_WO * n_O), r_B);
+  }
+  if (!boxes) return;
+  detail::PairPoint extra[detail::kMaxPairPoints];
+  const int n_extra = detail::pairPoints(box_o, box_a, plane, extra);
+  for (int k = 0; k < n_extra; ++k) {
+    const double separation = plane.n_F.dot(extra[k].p_F) - plane.support;
+    if (separation < margin) {
+      visit(extra[k].id, separation, Vec3(R_WO * plane.n_F), Vec3(R_OA.transpose() * (extra[k].p_F - centre_O)));
+    }
   }
 }
 
@@ -259,7 +280,7 @@ void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandi
   const Mat3 R_WB = s.q_WB.toRotationMatrix();  // one matrix for all points: cheaper than q·r each
   for (int m : kept) {
     const ContactCandidate& cand = cands[m];
-    const ContactPoint& p = b.contact_points[cand.point];
+    const double radius = cand.point < 0 ? 0.0 : b.contact_points[cand.point].radius;  // a box pair's own point
     // Filled on the stack, then copied: the compiler drops the default
     // initialisation it overwrites (in place it zeroes the whole struct first).
     Contact c;
@@ -268,7 +289,7 @@ void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandi
     c.item = cand.item;
     c.point = cand.point;
     c.normal_W = cand.normal_W;
-    c.r_W = R_WB * cand.r_B - p.radius * cand.normal_W;
+    c.r_W = R_WB * cand.r_B - radius * cand.normal_W;
     if (c.other >= 0) c.r_other_W = s.p_WB + c.r_W - state.bodies[c.other].p_WB;
     c.separation = cand.separation;
     out.contacts.push_back(c);

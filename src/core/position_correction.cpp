@@ -1,5 +1,6 @@
 // The position correction after the impulse solve (docs/physics.md §5.8):
 // nonlinear Gauss-Seidel on positions, as Box2D does.
+#include "box_pair.h"
 #include "rigid_body_sim/core/contact.h"
 #include "round_contact.h"
 #include "scratch.h"
@@ -34,7 +35,9 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
       const Contact& c = ws.contacts[index];
       const BodyModel& b = model.body(c.body);
       BodyState& s = state.bodies[c.body];
-      const ContactPoint& p = b.contact_points[c.point];
+      const bool pair_point = c.point < 0;  // a point of a box pair's own (box_pair.h)
+      const ContactPoint& p = b.contact_points[pair_point ? 0 : c.point];
+      const double radius = pair_point ? 0.0 : p.radius;
       BodyState* o = c.other < 0 ? nullptr : &state.bodies[c.other];
       // The surface, in its frame F: the scene item's (the world) or the other body's solid.
       const Sdf& surface = o == nullptr ? model.scene()[c.item] : model.body(c.other).solid_B.front();
@@ -42,9 +45,21 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
       const Vec3 p_FB = o == nullptr ? s.p_WB : Vec3(q_FW * (s.p_WB - o->p_WB));
       Vec3 arm, n_F;
       double phi;
-      if (p.round >= 0) {  // where the round feature is deepest now
+      detail::BoxInFrame box_s, box_o;
+      const Mat3 R_FB = (q_FW * s.q_WB).toRotationMatrix();
+      if (o != nullptr && detail::pairBoxes(b, model.body(c.other), R_FB, p_FB, box_s, box_o)) {
+        // Two boxes: along the pair's one normal, as detection measured it (box_pair.h).
+        const detail::PairPlane plane = detail::boxPairPlane(box_o, box_s, c.other < c.body);
+        Vec3 p_F = p_FB + R_FB * p.r_B;
+        if (pair_point && !detail::pairPoint(box_o, box_s, plane, c.point, p_F)) continue;
+        arm = o->q_WB * (p_F - p_FB);
+        phi = plane.n_F.dot(p_F) - plane.support;
+        n_F = plane.n_F;
+      } else if (pair_point) {
+        continue;
+      } else if (p.round >= 0) {  // where the round feature is deepest now
         detail::RoundHit hit;
-        if (!detail::roundOnSdf(b.round[p.round], p.phase, surface, (q_FW * s.q_WB).toRotationMatrix(), p_FB, hit)) {
+        if (!detail::roundOnSdf(b.round[p.round], p.phase, surface, R_FB, p_FB, hit)) {
           continue;
         }
         arm = s.q_WB * hit.r_B;
@@ -54,13 +69,13 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
         arm = s.q_WB * p.r_B;
         phi = surface.eval(o == nullptr ? Vec3(s.p_WB + arm) : Vec3(q_FW * (s.p_WB + arm - o->p_WB)), &n_F);
       }
-      const double separation = phi - p.radius;
+      const double separation = phi - radius;
       const Vec3 n = o == nullptr ? n_F : Vec3(o->q_WB * n_F);
       if (o != nullptr && o->asleep) o = nullptr;  // a sleeper stays put, like the ground
       const double C = separation + slop;
       if (!(C < 0.0)) continue;  // also a NaN distance: no correction (the guard ran before this stage)
       deepest = std::min(deepest, C);
-      const Vec3 r = arm - p.radius * n;
+      const Vec3 r = arm - radius * n;
       const Mat3 inv_I = detail::worldInverseInertia(b, s.q_WB);
       const Vec3 rn = r.cross(n);
       const bool body_moves = !s.asleep;  // a sleeper's own points against an awake body: it stays put

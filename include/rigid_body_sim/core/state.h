@@ -30,6 +30,12 @@ struct alignas(64) BodyState {
   }
 };
 
+/// ContactKey::point of the contact where an edge of `body`'s box crosses an
+/// edge of the other body's box, between their samples; the ids below it
+/// name where its edges cross the sides of the other's face (box_pair.h,
+/// docs/physics.md §5.1).
+constexpr int kEdgeCrossing = -2;
+
 /// What names a contact from step to step: the body, what it touches (another
 /// body or a scene item) and which of the body's contact points touches.
 /// Contacts and their impulses are kept sorted by it; warm starting matches
@@ -38,7 +44,7 @@ struct ContactKey {
   int body = 0;    ///< index in the model
   int other = -1;  ///< the other body, or -1 for a scene item
   int item = -1;   ///< index in model.scene(), or -1 for a body
-  int point = 0;   ///< index in `body`'s contact points
+  int point = 0;  ///< index in `body`'s contact points; negative: a point of a box pair's own (kEdgeCrossing and below)
 
   const ContactKey& key() const { return *this; }
   bool operator==(const ContactKey& o) const {
