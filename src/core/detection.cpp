@@ -104,9 +104,7 @@ template <class Visit>
   if (solid.eval(centre_O) - ba.bound_radius >= margin) return;
   const Mat3 R_OA = (q_OW * sa.q_WB).toRotationMatrix();  // a's frame into o's
   const Mat3 R_WO = so.q_WB.toRotationMatrix();
-  // Two boxes: one normal for the pair, both ways, and each point's
-  // distance along it (box_pair.h); the solid still says which points are
-  // near.
+  // Two boxes: one axis for the pair (box_pair.h); the solid still says which points are near.
   detail::BoxInFrame box_a, box_o;
   const bool boxes = detail::pairBoxes(ba, bo, R_OA, centre_O, box_a, box_o);
   const detail::PairPlane plane = boxes ? detail::boxPairPlane(box_o, box_a, o < a) : detail::PairPlane{};
@@ -147,12 +145,10 @@ template <class Visit>
   }
   if (!boxes) return;
   detail::PairPoint extra[detail::kMaxPairPoints];
-  const int n_extra = detail::pairPoints(box_o, box_a, plane, extra);
-  for (int k = 0; k < n_extra; ++k) {
+  for (int k = 0, n = detail::pairPoints(box_o, box_a, plane, extra); k < n; ++k) {
     const double separation = plane.n_F.dot(extra[k].p_F) - plane.support;
-    if (separation < margin) {
-      visit(extra[k].id, separation, Vec3(R_WO * plane.n_F), Vec3(R_OA.transpose() * (extra[k].p_F - centre_O)));
-    }
+    if (separation < margin)
+      visit(extra[k].id, separation, Vec3(R_WO * plane.n_F), R_OA.transpose() * (extra[k].p_F - centre_O));
   }
 }
 
