@@ -1,64 +1,27 @@
-// The pile of issue 16 through Bullet 3.24 (double precision, Debian's
-// libbullet-dev), so that pile_bench's figures have their peer from the
-// same run: the same boxes in the same places and orientations (box_grid.h),
-// with Bullet's defaults as a user gets them: btDiscreteDynamicsWorld,
-// sequential impulse, 10 iterations, split impulse, restitution threshold
-// 0.2 m/s, and the pair's coefficients multiplied, so each body and the
-// ground have √0.5 (friction and restitution 0.5 per pair); deactivation
-// off; Δt = 1 ms, one substep. Prints pile_bench's line ("-" for the sleep
-// rule, which Bullet has not got with deactivation off). The deepest
-// penetration is the most negative distance of any manifold point after
-// each step.
-// Usage: bullet_pile N [runs]
-#include <btBulletDynamicsCommon.h>
+// The pile of issue 16 through Bullet 3.24, so that pile_bench's figures
+// have their peer from the same run: the same boxes in the same places and
+// orientations (box_grid.h), with Bullet's defaults as a user gets them
+// (bullet_world.h: friction and restitution 0.5 per pair); Δt = 1 ms, one
+// substep. Prints pile_bench's line ("-" for the sleep rule, which Bullet
+// has not got with deactivation off). The deepest penetration is the most
+// negative distance of any manifold point after each step.
+// Usage: bullet_pile N [runs]; RBS_PILE_SEED as for pile_bench
 #include <sys/resource.h>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <memory>
 #include <vector>
 
 #include "box_grid.h"
+#include "bullet_world.h"
 
 namespace {
 
 using rigid_body_sim::core::LinkState;
 
-struct World {
-  btDefaultCollisionConfiguration config;
-  btCollisionDispatcher dispatcher{&config};
-  btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
-  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
-  btStaticPlaneShape ground_shape{btVector3(0, 0, 1), 0};
-  btBoxShape box_shape{btVector3(0.2, 0.1, 0.05)};
-  std::vector<std::unique_ptr<btDefaultMotionState>> motion;
-  std::vector<std::unique_ptr<btRigidBody>> bodies;
-
-  explicit World(const std::vector<LinkState>& start) {
-    world.setGravity(btVector3(0, 0, -9.81));
-    const double coefficient = std::sqrt(0.5);  // the pair's: their product
-    const auto add = [&](btCollisionShape* shape, double mass, const btTransform& pose) {
-      btVector3 inertia(0, 0, 0);
-      if (mass > 0) shape->calculateLocalInertia(mass, inertia);
-      motion.push_back(std::make_unique<btDefaultMotionState>(pose));
-      bodies.push_back(std::make_unique<btRigidBody>(
-          btRigidBody::btRigidBodyConstructionInfo(mass, motion.back().get(), shape, inertia)));
-      btRigidBody* b = bodies.back().get();
-      b->setFriction(coefficient);
-      b->setRestitution(coefficient);
-      b->setActivationState(DISABLE_DEACTIVATION);
-      world.addRigidBody(b);
-    };
-    add(&ground_shape, 0.0, btTransform::getIdentity());
-    for (const LinkState& l : start) {
-      add(&box_shape, 1.0,
-          btTransform(btQuaternion(l.q_WL.x(), l.q_WL.y(), l.q_WL.z(), l.q_WL.w()),
-                      btVector3(l.p_WL.x(), l.p_WL.y(), l.p_WL.z())));
-    }
-  }
+struct World : rigid_body_sim::bench::BulletWorld {
+  explicit World(const std::vector<LinkState>& start) : BulletWorld(start, 0.5, 0.5) {}
 
   /// The deepest penetration of any contact point now (m, ≥ 0).
   double deepest() {
@@ -86,7 +49,7 @@ int main(int argc, char** argv) {
   const int runs = argc > 2 ? std::atoi(argv[2]) : 1;
   std::vector<LinkState> start;
   {
-    const auto scene = rigid_body_sim::bench::boxGrid(n);
+    const auto scene = rigid_body_sim::bench::boxGrid(n, {}, rigid_body_sim::bench::pileSeed());
     for (int i = 0; i < n; ++i) start.push_back(linkState(scene.model.body(i), scene.start.bodies[i]));
   }
   for (int r = 0; r < runs; ++r) {
@@ -95,13 +58,13 @@ int main(int argc, char** argv) {
     const double dt = 1e-3;
     const auto t0 = std::chrono::steady_clock::now();
     for (int k = 0; k < 2000; ++k) {
-      w.world.stepSimulation(dt, 1, dt);
+      w.step(dt);
       deepest = std::max(deepest, w.deepest());
     }
     const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
     const double two = w.atRestShare();
     for (int k = 0; k < 1000; ++k) {
-      w.world.stepSimulation(dt, 1, dt);
+      w.step(dt);
       deepest = std::max(deepest, w.deepest());
     }
     rusage usage{};
