@@ -8,7 +8,10 @@
 // (|v| < 0.01 m/s and |ω| < 0.1 rad/s at that instant), the same two at
 // 3 s, the deepest penetration over the 3 s, and the process's peak
 // resident memory. bullet_pile prints the same line for Bullet.
-// Usage: pile_bench N [runs]; RBS_THREADS=k limits the step to k threads.
+// Usage: pile_bench N [runs] [restitution]; RBS_THREADS=k limits the step
+//        to k threads; restitution (default 0.5) is for measuring the pile
+//        at the bounce Bullet actually gives (bullet_bounce, bench/README.md);
+//        RBS_PILE_SEED=s draws another pile (box_grid.h).
 //        pile_bench --yaml N URDF: the same scene as an rbsim world config on
 //        stdout (every box from URDF), to measure rbsim on it.
 #include <sys/resource.h>
@@ -43,7 +46,7 @@ Shares atRestShares(const Model& model, const State& s) {
 
 /// The scene as rbsim's world config: the settings, then one entry per box.
 void printWorld(int n, const char* urdf) {
-  const auto scene = rigid_body_sim::bench::boxGrid(n);
+  const auto scene = rigid_body_sim::bench::boxGrid(n, {}, rigid_body_sim::bench::pileSeed());
   std::printf("contact: {restitution: 0.5, friction: 0.5}\nbodies:\n");
   for (int i = 0; i < n; ++i) {
     const LinkState l = linkState(scene.model.body(i), scene.start.bodies[i]);
@@ -62,9 +65,9 @@ int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 1000;
   const int runs = argc > 2 ? std::atoi(argv[2]) : 1;
   ContactSettings contact;
-  contact.restitution = 0.5;
+  contact.restitution = argc > 3 ? std::atof(argv[3]) : 0.5;
   contact.friction = 0.5;
-  const auto scene = rigid_body_sim::bench::boxGrid(n, contact);
+  const auto scene = rigid_body_sim::bench::boxGrid(n, contact, rigid_body_sim::bench::pileSeed());
   for (int r = 0; r < runs; ++r) {
     State s = scene.start;
     Workspace ws;
