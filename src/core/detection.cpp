@@ -339,8 +339,13 @@ void reduceRegion(const SolverSettings& settings, const std::vector<ContactCandi
     for (int body = begin; body < end; ++body) {
       const BodyState& s = state.bodies[body];
       if (!s.asleep && !model.scene().empty()) {
+        // A body struck in this step moves by what the blow gives it too: its
+        // scene margin grows by the margin of the bodies that may strike it.
+        double blow = 0.0;
+        for (auto d = dir; d != sc.directions.end() && d->first == body; ++d)
+          blow = std::max(blow, sc.margins[d->second]);
         out.candidates.clear();
-        scanScene(model, s, body, multi ? sc.margins[body] : margin(body), out.separations,
+        scanScene(model, s, body, (multi ? sc.margins[body] : margin(body)) + blow, out.separations,
                   [&](int item, int point, double separation, const Vec3& normal, const Vec3& r_B) {
                     out.candidates.push_back({-1, item, point, 0, separation, normal, r_B});
                     out.deepest = std::max(out.deepest, -separation);
