@@ -6,6 +6,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/box_pair.cpp
   ${RBS_SOURCE_ROOT}/src/core/broad_phase.cpp
   ${RBS_SOURCE_ROOT}/src/core/collision.cpp
+  ${RBS_SOURCE_ROOT}/src/core/contact_regions.cpp
   ${RBS_SOURCE_ROOT}/src/core/contact_report.cpp
   ${RBS_SOURCE_ROOT}/src/core/contact_solver.cpp
   ${RBS_SOURCE_ROOT}/src/core/detection.cpp
