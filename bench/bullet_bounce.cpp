@@ -26,8 +26,9 @@ constexpr double kHalfHeight = 0.05;  // m, the pile box lying flat
 constexpr double kDt = 1e-3;          // s
 constexpr double kRestitution = 0.5, kFriction = 0.5;
 
-/// The highest the centre rises after the first bounce, given a function
-/// that steps once and returns the centre's (height, vertical velocity).
+/// The highest the centre rises after the first bounce (0 if it never
+/// rises), given a function that steps once and returns the centre's
+/// (height, vertical velocity).
 template <typename Step>
 double reboundApex(Step step) {
   bool bounced = false;
@@ -90,8 +91,9 @@ int main(int argc, char** argv) {
     LinkState drop;
     drop.p_WL = Vec3(0.0, 0.0, 0.5 + (drops > 1 ? static_cast<double>(i) / (drops - 1) : 0.0));
     const double fall = drop.p_WL.z() - kHalfHeight;
-    ours.push_back(std::sqrt((ourApex(one, drop) - kHalfHeight) / fall));
-    bullet.push_back(std::sqrt((bulletApex(drop) - kHalfHeight) / fall));
+    const auto restitution = [fall](double apex) { return std::sqrt(std::max(apex - kHalfHeight, 0.0) / fall); };
+    ours.push_back(restitution(ourApex(one, drop)));
+    bullet.push_back(restitution(bulletApex(drop)));
     if (each) std::printf("centre %.4f m: e rbs %.3f bullet %.3f\n", drop.p_WL.z(), ours.back(), bullet.back());
   }
   summary("rbs", ours);
