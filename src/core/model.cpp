@@ -85,12 +85,10 @@ BodyModel BodyBuilder::buildBody(const BodySpec& b, bool with_solid) const {
   resolveSurface(b, contact_, body);
   detail::buildContactPoints(b, contact_, solver_, body);
   if (with_solid) detail::buildSolid(b, solver_, body);
-  if (!scene_empty_ && body.contact_points.empty()) {
-    detail::fail("body '" + b.name + "': collision", "none",
-                 "contacts are on (the scene is not empty) but the body has no <collision> geometry; "
-                 "add one to the URDF or set scene: []");
-  }
-  if (contact_.method == ContactMethod::kShapeMatching && !scene_empty_ && body.points_inv_spread.isZero(0.0)) {
+  // A body without <collision> is kept, as Gazebo keeps it: it touches
+  // nothing (io::touchesNothing says so to the user).
+  if (contact_.method == ContactMethod::kShapeMatching && !scene_empty_ && !body.contact_points.empty() &&
+      body.points_inv_spread.isZero(0.0)) {
     detail::fail("body '" + b.name + "': collision", std::to_string(body.contact_points.size()) + " points",
                  "shape matching needs collision points that span three dimensions");
   }

@@ -1,5 +1,7 @@
 #include "rigid_body_sim/io/config.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <exception>
 #include <set>
@@ -134,6 +136,8 @@ class BodyList {
     if (!entry["urdf"]) fail(path + ".urdf", "every body needs a urdf (a file, or for the node a parameter)");
     BodyEntry b;
     b.name = text(entry["name"], path + ".name");
+    const std::string bad_name = bodyNameProblem(b.name);
+    if (!bad_name.empty()) fail(path + ".name", bad_name);
     if (!names_.insert(b.name).second) {
       fail(path + ".name", "'" + b.name + "' is already the name of another body");
     }
@@ -233,6 +237,17 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
   } catch (const YAML::Exception& e) {  // a conversion no check above foresaw: still a ConfigError
     throw ConfigError(std::string("config: ") + e.what());
   }
+}
+
+std::string bodyNameProblem(const std::string& name) {
+  if (name.empty()) return "name is empty: give the body a name";
+  const bool letters = std::all_of(name.begin(), name.end(),
+                                   [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; });
+  if (!letters || std::isalpha(static_cast<unsigned char>(name.front())) == 0 || name.size() > kMaxBodyNameLength) {
+    return "name '" + name + "': a body's name starts with a letter and holds only letters, digits and '_', at most " +
+           std::to_string(kMaxBodyNameLength) + " (it names topics and tf frames)";
+  }
+  return {};
 }
 
 SimConfig parseConfigText(const std::string& yaml, const std::string& source, const std::vector<std::string>& overrides,

@@ -4,18 +4,24 @@
 #include <yaml-cpp/exceptions.h>
 #include <yaml-cpp/parser.h>
 
+#include <cctype>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <set>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace rigid_body_sim::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// A YAML event handler that refuses aliases and anchors and counts depth.
+/// A YAML event handler that refuses aliases, anchors and repeated keys,
+/// and counts depth. yaml-cpp keeps one of two equal keys in a map without
+/// a word ({rate: 100, rate: 200}): a half-read file.
 class ShapeCheck : public YAML::EventHandler {
  public:
   std::string problem;
@@ -23,26 +29,37 @@ class ShapeCheck : public YAML::EventHandler {
 
   void OnDocumentStart(const YAML::Mark&) override { ++documents; }
   void OnDocumentEnd() override {}
-  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { anchored(mark, anchor); }
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+    anchored(mark, anchor);
+    node(mark, "~");
+  }
   void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override {
     refuse(mark, "an alias (*name): aliases are refused (an alias bomb expands exponentially); write the value out");
   }
-  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor, const std::string&) override {
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                const std::string& value) override {
     anchored(mark, anchor);
+    node(mark, value);
   }
   void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
                        YAML::EmitterStyle::value) override {
-    open(mark, anchor);
+    open(mark, anchor, false);
   }
-  void OnSequenceEnd() override { --depth_; }
+  void OnSequenceEnd() override { close(); }
   void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
                   YAML::EmitterStyle::value) override {
-    open(mark, anchor);
+    open(mark, anchor, true);
   }
-  void OnMapEnd() override { --depth_; }
+  void OnMapEnd() override { close(); }
 
  private:
-  int depth_ = 0;
+  /// An open map or sequence: a map's keys so far, and whether its next node is a key.
+  struct Open {
+    bool map = false;
+    bool key_next = true;
+    std::set<std::string> keys;
+  };
+  std::vector<Open> open_;
 
   void refuse(const YAML::Mark& mark, const std::string& why) {
     if (problem.empty()) problem = "line " + std::to_string(mark.line + 1) + ": " + why;
@@ -50,11 +67,26 @@ class ShapeCheck : public YAML::EventHandler {
   void anchored(const YAML::Mark& mark, YAML::anchor_t anchor) {
     if (anchor != YAML::NullAnchor) refuse(mark, "an anchor (&name): anchors and aliases are refused");
   }
-  void open(const YAML::Mark& mark, YAML::anchor_t anchor) {
+  /// A node starts: in a map, every other one is a key (a map or sequence
+  /// as a key is never equal to a scalar one; it is let through).
+  void node(const YAML::Mark& mark, const std::string& scalar, bool is_scalar = true) {
+    if (open_.empty() || !open_.back().map) return;
+    Open& map = open_.back();
+    if (map.key_next && is_scalar && !map.keys.insert(scalar).second) {
+      refuse(mark, "key '" + scalar + "' appears twice in one map: say it once");
+    }
+    map.key_next = !map.key_next;
+  }
+  void open(const YAML::Mark& mark, YAML::anchor_t anchor, bool map) {
     anchored(mark, anchor);
-    if (++depth_ > InputCaps::kYamlDepth) {
+    node(mark, "", false);
+    open_.push_back({map, true, {}});
+    if (static_cast<int>(open_.size()) > InputCaps::kYamlDepth) {
       refuse(mark, "nested more than " + std::to_string(InputCaps::kYamlDepth) + " levels deep");
     }
+  }
+  void close() {
+    if (!open_.empty()) open_.pop_back();
   }
 };
 
@@ -90,7 +122,89 @@ std::size_t tagEnd(const std::string& xml, std::size_t at) {
   return std::string::npos;
 }
 
+/// Why a PLY header's element counts do not fit in the bytes after it, or "".
+std::string plyProblem(const std::string& bytes) {
+  const std::size_t end = bytes.find("end_header");
+  if (end == std::string::npos) return "";  // not a PLY header: the reader says so
+  const std::size_t body_start = bytes.find('\n', end);
+  const double body = body_start == std::string::npos ? 0.0 : static_cast<double>(bytes.size() - body_start - 1);
+  std::istringstream header(bytes.substr(0, end));
+  bool binary = false;
+  double need = 0.0;  // bytes the declared elements take at least
+  double count = 0.0, per_element = 0.0;
+  std::string element;
+  const auto size_of = [](const std::string& type) {
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1.0;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2.0;
+    if (type == "double" || type == "float64") return 8.0;
+    return 4.0;
+  };
+  for (std::string line; std::getline(header, line);) {
+    std::istringstream words(line);
+    std::string word;
+    words >> word;
+    if (word == "format") {
+      words >> word;
+      binary = word.rfind("binary", 0) == 0;
+    } else if (word == "element") {
+      need += count * per_element;
+      per_element = 0.0;
+      std::string n;
+      words >> element >> n;
+      count = std::strtod(n.c_str(), nullptr);
+      if (!(count >= 0.0) || count > static_cast<double>(bytes.size())) {
+        return "its PLY header declares " + n + " '" + element + "' elements, more than the file's " +
+               std::to_string(bytes.size()) + " bytes can hold (readers allocate by that count)";
+      }
+    } else if (word == "property") {
+      std::string type, count_type;
+      words >> type;
+      if (type == "list") words >> count_type;
+      per_element += binary ? size_of(type == "list" ? count_type : type) : 2.0;
+    }
+  }
+  need += count * per_element;
+  if (need > body) {
+    std::ostringstream os;
+    os << "its PLY header declares elements of at least " << need << " bytes, and " << body
+       << " bytes follow it (readers allocate by the declared counts)";
+    return os.str();
+  }
+  return "";
+}
+
+/// Why a Collada count="N" attribute exceeds what the file can hold, or "".
+std::string daeProblem(const std::string& bytes) {
+  for (std::size_t at = bytes.find("count"); at != std::string::npos; at = bytes.find("count", at + 5)) {
+    std::size_t v = at + 5;
+    while (v < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[v]))) ++v;
+    if (v >= bytes.size() || bytes[v] != '=') continue;
+    ++v;
+    while (v < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[v]))) ++v;
+    if (v >= bytes.size() || (bytes[v] != '"' && bytes[v] != '\'')) continue;
+    const double n = std::strtod(bytes.c_str() + v + 1, nullptr);
+    if (n > static_cast<double>(bytes.size())) {
+      std::ostringstream os;
+      os << "it declares count=" << n << ", more than the file's " << bytes.size()
+         << " bytes can hold (readers allocate by that count)";
+      return os.str();
+    }
+  }
+  return "";
+}
+
 }  // namespace
+
+std::string meshProblem(const std::string& bytes, const std::string& extension) {
+  std::string ext = extension;
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == "ply") return plyProblem(bytes);
+  if (ext == "dae") return daeProblem(bytes);
+  if (ext == "stl" || ext == "obj") return "";
+  return "the format '" + extension +
+         "' is not read here: STL, OBJ, DAE (Collada) and PLY are, the formats ROS tools draw and "
+         "Gazebo reads (each of assimp's others is a parser more for a file to attack)";
+}
 
 std::string fileProblem(const std::string& path, std::uintmax_t max_bytes) {
   std::error_code ec;

@@ -136,8 +136,12 @@ constexpr unsigned kImportSteps = aiProcess_PreTransformVertices | aiProcess_Tri
 }  // namespace
 
 core::TriangleMesh loadMesh(const std::string& path, const core::Vec3& scale) {
-  const std::string problem = fileProblem(path, InputCaps::kMeshBytes);
-  if (!problem.empty()) throw MeshError("mesh " + problem);
+  std::string extension = fs::path(path).extension().string();
+  if (!extension.empty()) extension.erase(0, 1);
+  // The bytes are read twice (here, then by assimp), so that a count a
+  // header declares is checked before any reader allocates by it.
+  const std::string header_problem = meshProblem(readInput<MeshError>(path, InputCaps::kMeshBytes, "mesh"), extension);
+  if (!header_problem.empty()) throw MeshError("mesh '" + path + "': " + header_problem);
   Assimp::Importer importer;
   configure(importer);
   return fromScene(importer.ReadFile(path, kImportSteps), importer, path, scale);
@@ -145,6 +149,8 @@ core::TriangleMesh loadMesh(const std::string& path, const core::Vec3& scale) {
 
 core::TriangleMesh loadMeshBytes(const std::string& bytes, const std::string& format, const core::Vec3& scale) {
   if (bytes.size() > InputCaps::kMeshBytes) throw MeshError("mesh bytes: more than the cap");
+  const std::string problem = meshProblem(bytes, format);
+  if (!problem.empty()) throw MeshError("mesh <" + format + " bytes>: " + problem);
   Assimp::Importer importer;
   configure(importer);
   const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportSteps, format.c_str());

@@ -1,7 +1,6 @@
 #include "rigid_body_sim/io/urdf_loader.h"
 
-#include <tinyxml.h>
-#include <urdf_parser/urdf_parser.h>
+#include <urdf_model/model.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +13,7 @@
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/orientation.h"
+#include "urdf_parse.h"
 
 namespace rigid_body_sim::io {
 namespace {
@@ -48,49 +48,12 @@ const char* jointTypeName(int type) {
   }
 }
 
-/// The <collision>s that were capsules: (link name, index among the link's <collision>s).
-using CapsuleSet = std::set<std::pair<std::string, std::size_t>>;
-
-/// URDF has no capsule; SDFormat (1.8 on) and Drake's URDF parser read
-/// <capsule radius="r" length="l"/> in a <geometry>, l the length of its
-/// cylinder, and so does this loader. urdfdom refuses the element, so it
-/// reads a copy of the text where every capsule is a cylinder with the same
-/// attributes, and `capsules` says which collisions were capsules. Text
-/// without a capsule (or that is not XML: urdfdom then says why) is kept as
-/// it is.
-std::string capsulesAsCylinders(const std::string& xml, CapsuleSet& capsules) {
-  if (xml.find("capsule") == std::string::npos) return xml;
-  TiXmlDocument doc;
-  doc.Parse(xml.c_str());
-  TiXmlElement* robot = doc.RootElement();
-  if (doc.Error() || robot == nullptr) return xml;
-  bool any = false;
-  for (TiXmlElement* link = robot->FirstChildElement("link"); link; link = link->NextSiblingElement("link")) {
-    const char* name = link->Attribute("name");
-    for (const char* kind : {"collision", "visual"}) {
-      std::size_t index = 0;
-      for (TiXmlElement* e = link->FirstChildElement(kind); e; e = e->NextSiblingElement(kind), ++index) {
-        TiXmlElement* geometry = e->FirstChildElement("geometry");
-        TiXmlElement* capsule = geometry != nullptr ? geometry->FirstChildElement("capsule") : nullptr;
-        if (capsule == nullptr) continue;
-        capsule->SetValue("cylinder");
-        any = true;
-        if (std::string(kind) == "collision" && name != nullptr) capsules.insert({name, index});
-      }
-    }
-  }
-  if (!any) return xml;
-  TiXmlPrinter printer;
-  doc.Accept(&printer);
-  return printer.CStr();
-}
-
 class Lumper {
  public:
   Lumper(std::string source, std::string base_dir) : source_(std::move(source)), base_dir_(std::move(base_dir)) {}
 
   /// Which collisions are capsules (read as cylinders by urdfdom).
-  void setCapsules(CapsuleSet capsules) { capsules_ = std::move(capsules); }
+  void setCapsules(detail::CapsuleSet capsules) { capsules_ = std::move(capsules); }
 
   [[noreturn]] void fail(const std::string& what) const { throw UrdfError(source_ + ": " + what); }
 
@@ -220,7 +183,7 @@ class Lumper {
  private:
   std::string source_;
   std::string base_dir_;
-  CapsuleSet capsules_;
+  detail::CapsuleSet capsules_;
 };
 
 }  // namespace
@@ -233,10 +196,14 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
   }
   const std::string problem = xmlProblem(xml);
   if (!problem.empty()) lumper.fail("refused before parsing: " + problem);
-  CapsuleSet capsules;
-  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(capsulesAsCylinders(xml, capsules));
-  lumper.setCapsules(std::move(capsules));
-  if (!model) lumper.fail("not a valid URDF document (the parser's reason is printed above)");
+  detail::ParsedUrdf parsed;
+  try {
+    parsed = detail::parseUrdf(xml);
+  } catch (const std::invalid_argument& e) {
+    lumper.fail(e.what());
+  }
+  const urdf::ModelInterfaceSharedPtr model = std::move(parsed.model);
+  lumper.setCapsules(std::move(parsed.capsules));
   const urdf::LinkConstSharedPtr root = model->getRoot();
   if (!root) lumper.fail("no root link");
 

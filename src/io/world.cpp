@@ -84,4 +84,11 @@ World loadWorld(const SimConfig& config, const std::function<core::BodySpec()>& 
   return world;
 }
 
+std::string touchesNothing(const core::BodyModel& body) {
+  if (!body.contact_points.empty()) return "";
+  return "body '" + body.name +
+         "' has no <collision> geometry: it touches nothing (no ground, no body), as in Gazebo; add a "
+         "<collision> to its URDF for contacts";
+}
+
 }  // namespace rigid_body_sim::io

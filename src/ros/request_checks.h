@@ -9,6 +9,7 @@
 #include <string>
 
 #include "rigid_body_sim/core/types.h"
+#include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::node {
 
@@ -47,19 +48,8 @@ inline std::string checkSpeed(const Vec3& v, double limit, const std::string& wh
   return {};
 }
 
-inline constexpr std::size_t kMaxNameLength = 64;  // characters of a body's name
-
-/// "" if `name` may name a body (it names topics and tf frames), else why not.
-inline std::string checkName(const std::string& name) {
-  if (name.empty()) return "name is empty: give the body a name";
-  const bool letters = std::all_of(name.begin(), name.end(),
-                                   [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; });
-  if (!letters || std::isalpha(static_cast<unsigned char>(name.front())) == 0 || name.size() > kMaxNameLength) {
-    return "name '" + name + "': a body's name starts with a letter and holds only letters, digits and '_', at most " +
-           std::to_string(kMaxNameLength) + " (it names topics and tf frames)";
-  }
-  return {};
-}
+/// "" if `name` may name a body, else why not: the config's rule.
+inline std::string checkName(const std::string& name) { return io::bodyNameProblem(name); }
 
 /// "" if `value` (request field `field`) is within [0, max], else why not.
 inline std::string checkCoefficient(double value, double max, const std::string& field) {

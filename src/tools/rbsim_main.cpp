@@ -227,6 +227,12 @@ int run(const Args& args) {
   const core::Model& model = world.model;
   core::State& state = world.state;
   const std::size_t n = model.bodyCount();
+  if (!model.scene().empty()) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string warning = io::touchesNothing(model.body(i));
+      if (!warning.empty()) std::fprintf(stderr, "rbsim: warning: %s\n", warning.c_str());
+    }
+  }
 
   const double dt = model.dt();
   const double step_count = args.duration / dt;

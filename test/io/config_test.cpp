@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "../test_util.h"
+#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/core/workspace.h"
 #include "rigid_body_sim/io/world.h"
 
 namespace rigid_body_sim::test {
@@ -154,9 +156,18 @@ TEST(Config, ContactValidationNamesTheField) {
   const io::SimConfig bad = parse("contact: {restitution: 1.5}");
   expectThrowsWith<std::invalid_argument>([&] { io::buildModel(bad, shippedBox()); },
                                           {"contact.restitution = 1.5", "[0, 1]"});
-  // The default scene (the ground) needs the body to have collision geometry.
-  expectThrowsWith<std::invalid_argument>([&] { io::buildModel(parse(""), shippedBox()); },
-                                          {"body 'box'", "no <collision> geometry", "scene: []"});
+  // A body without collision geometry is kept, as Gazebo keeps it, and
+  // touches nothing: over the ground, it falls through (it was refused).
+  const core::Model model = io::buildModel(parse(""), shippedBox());
+  EXPECT_NE(io::touchesNothing(model.body(0)).find("body 'box' has no <collision> geometry: it touches nothing"),
+            std::string::npos);
+  core::State state;
+  core::LinkState start;
+  start.p_WL.z() = 0.05;  // resting height of a collision box; this one has none
+  state.bodies = {core::bodyStateFromLink(model.body(0), start)};
+  core::Workspace ws;
+  for (int k = 0; k < 1000; ++k) core::step(model, state, {}, &ws);  // 1 s
+  EXPECT_NEAR(core::linkState(model.body(0), state.bodies[0]).p_WL.z(), 0.05 - 0.5 * 9.81, 0.02);
   EXPECT_NO_THROW(io::buildModel(parse("scene: []"), shippedBox()));
 }
 
@@ -383,6 +394,18 @@ TEST(Config, BadBodiesAreRefusedByKey) {
   expectRefused("bodies: [{urdf: a.urdf}]", {"'bodies[0].name'", "needs a name"});
   expectRefused("bodies: [{name: a}]", {"'bodies[0].urdf'", "needs a urdf"});
   expectRefused("bodies: [{name: a, urdf: x.urdf}, {name: a, urdf: y.urdf}]", {"'bodies[1].name'", "already"});
+  // spawn_body's rule for names: it names topics and frames (a/b was taken at start).
+  expectRefused("bodies: [{name: a/b, urdf: x.urdf}]", {"'bodies[0].name'", "'a/b'", "starts with a letter"});
+  expectRefused("bodies: [{name: 1a, urdf: x.urdf}]", {"'bodies[0].name'", "'1a'"});
+  EXPECT_EQ(io::bodyNameProblem("box_2"), "");
+  EXPECT_NE(io::bodyNameProblem(std::string(65, 'a')), "");
+  // A key said twice in one map is refused, not half-read.
+  for (const char* twice : {"dt: 0.001\ndt: 0.002\n", "bodies: [{name: a, urdf: x.urdf, name: b}]"}) {
+    expectThrowsWith<io::ConfigError>([&] { io::parseConfigText(twice, "config.yaml", {}); },
+                                      {"config.yaml: line ", "appears twice in one map"});
+  }
+  expectThrowsWith<io::ConfigError>([&] { io::parseImuText("{rate: 100, rate: 200}", "imu", 1e-3); },
+                                    {"imu: line 1: key 'rate' appears twice"});
   expectRefused("bodies: [{name: a, urdf: x.urdf, colour: red}]", {"'bodies[0].colour'", "unknown key"});
   expectRefused("bodies: [{name: a, urdf: x.urdf, initial: {position: [0, 0]}}]",
                 {"'bodies[0].initial.position'", "[x, y, z]"});

@@ -84,6 +84,13 @@ TEST(InputBounds, YamlAliasesSecondDocumentsAndDeepNestingAreRefused) {
   const std::string deep = std::string(100, '[') + std::string(100, ']');
   EXPECT_NE(io::yamlProblem(deep).find("nested more than 64 levels"), std::string::npos);
   EXPECT_EQ(io::yamlProblem(std::string(64, '[') + std::string(64, ']')), "");
+  // Repeated keys: yaml-cpp kept one of them without a word.
+  EXPECT_NE(io::yamlProblem("{rate: 100, rate: 200}").find("line 1: key 'rate' appears twice in one map"),
+            std::string::npos);
+  EXPECT_NE(io::yamlProblem("imu:\n  rate: 1\n  pose: {rpy: [0, 0, 0]}\n  rate: 2\n").find("line 4: key 'rate'"),
+            std::string::npos);
+  EXPECT_EQ(io::yamlProblem("a: {rate: 1}\nb: {rate: 1}\nc: [rate, rate, {rate: 1}, {rate: 2}]\n"), "");
+  EXPECT_EQ(io::yamlProblem("a: {b: {rate: 1}, rate: 2}\nrate: 3\n"), "");
   const std::string file = write("two.yaml", "dt: 0.001\n---\ndt: 0.1\n");
   expectThrowsWith<io::ConfigError>([&] { io::loadYamlFile(file); }, {"two.yaml", "second YAML document"});
 }

@@ -16,6 +16,7 @@
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/io/world.h"
 
@@ -69,6 +70,35 @@ TEST(MeshLoader, ReadsStlAndObjVerticesOnceEachAndScales) {
   EXPECT_THROW(io::loadMesh((dir / "missing.stl").string(), Vec3::Ones()), io::MeshError);
   std::ofstream(dir / "garbage.obj") << "this is not a mesh\n";
   EXPECT_THROW(io::loadMesh((dir / "garbage.obj").string(), Vec3::Ones()), io::MeshError);
+}
+
+TEST(MeshLoader, AHeaderThatDeclaresMoreThanTheFileHoldsIsRefusedBeforeAnyReaderAllocates) {
+  const fs::path dir = tempDir("lying_headers");
+  const std::string ply_header = "ply\nformat ascii 1.0\nelement vertex ";
+  const std::string ply_rest =
+      "\nproperty float x\nproperty float y\nproperty float z\nelement face 4\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  const std::string ply_body = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  // The honest tetrahedron loads.
+  std::ofstream(dir / "tet.ply") << ply_header << "4" << ply_rest << ply_body;
+  EXPECT_EQ(io::loadMesh((dir / "tet.ply").string(), Vec3::Ones()).vertices.size(), 4u);
+  // 4,000,000,000 vertices in a file of a few hundred bytes: assimp asked for 48 GB (std::bad_alloc).
+  std::ofstream(dir / "lie.ply") << ply_header << "4000000000" << ply_rest << ply_body;
+  expectThrowsWith<io::MeshError>([&] { io::loadMesh((dir / "lie.ply").string(), Vec3::Ones()); },
+                                  {"lie.ply", "declares 4000000000 'vertex' elements", "readers allocate"});
+  // Within the file's size, but more than the bytes after the header hold.
+  std::ofstream(dir / "short.ply") << ply_header << "40" << ply_rest << ply_body;
+  expectThrowsWith<io::MeshError>([&] { io::loadMesh((dir / "short.ply").string(), Vec3::Ones()); },
+                                  {"short.ply", "bytes follow it"});
+  std::ofstream(dir / "lie.dae") << "<COLLADA><library_geometries><float_array count=\"4000000000\">0 0 0"
+                                    "</float_array></library_geometries></COLLADA>";
+  expectThrowsWith<io::MeshError>([&] { io::loadMesh((dir / "lie.dae").string(), Vec3::Ones()); },
+                                  {"lie.dae", "count=4e+09"});
+  EXPECT_NE(io::meshProblem(ply_header + "4000000000" + ply_rest, "PLY"), "");  // the extension in any case
+  // A format outside the four is refused by name: each is a parser more to attack.
+  std::ofstream(dir / "tet.off") << "OFF\n4000000000 1 0\n0 0 0\n";
+  expectThrowsWith<io::MeshError>([&] { io::loadMesh((dir / "tet.off").string(), Vec3::Ones()); },
+                                  {"tet.off", "the format 'off' is not read here"});
 }
 
 TEST(MeshLoader, ReadsColladaAsRosDoesWhateverItsUpAxis) {

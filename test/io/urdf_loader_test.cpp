@@ -7,6 +7,7 @@
 #include "../test_util.h"
 #include "rigid_body_sim/core/inertia.h"
 #include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/io/input_bounds.h"
 
 namespace rigid_body_sim::test {
 namespace {
@@ -139,6 +140,68 @@ TEST(UrdfLoader, RefusesNonsenseAndMissingFiles) {
   expectRefused("this is not xml", {"test.urdf", "not a valid URDF"});
   expectThrowsWith<io::UrdfError>([] { io::loadUrdfFile("/nonexistent/robot.urdf"); },
                                   {"URDF '/nonexistent/robot.urdf': no such file"});
+}
+
+TEST(UrdfLoader, AnElementUrdfdomCouldNotReadIsRefusedNotSkipped) {
+  // urdfdom logs such an element and goes on without it: two_boxes.urdf with
+  // "2.0kg" loaded as a 1 kg body, and a "0.2m" box lost its collision.
+  const std::string two = io::readFile(std::string(RBS_SOURCE_DIR) + "/urdf/two_boxes.urdf", 1 << 20);
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string xml = two;
+    const std::size_t at = xml.rfind(from);  // in the second link
+    return xml.replace(at, from.size(), to);
+  };
+  expectRefused(with("<mass value=\"1.0\"/>", "<mass value=\"2.0kg\"/>"),
+                {"test.urdf: link 'second_box' <inertial><mass value=\"2.0kg\">: not a number"});
+  expectRefused(with("<collision><geometry><box size=\"0.2 0.2 0.2\"/>", "<collision><geometry><box size=\"0.2 0.2 0.2m\"/>"),
+                {"link 'second_box' <collision><geometry><box size=\"0.2 0.2 0.2m\">: not a number (or numbers)"});
+  expectRefused(with("<visual><geometry><box size=\"0.2 0.2 0.2\"/></geometry></visual>",
+                     "<visual><geometry><sphere radius=\"big\"/></geometry></visual>"),
+                {"link 'second_box' <visual><geometry><sphere radius=\"big\">"});
+  expectRefused(with("<origin xyz=\"0.2 0 0\" rpy=\"0 0 0\"/>", "<origin xyz=\"0.2 0 0\" rpy=\"0 0 90deg\"/>"),
+                {"joint 'glue' <origin rpy=\"0 0 90deg\">"});
+  // What the numbers check does not cover, urdfdom's own log names: an
+  // element it could not read is refused with its words, never skipped.
+  expectRefused(with("<visual><geometry><box size=\"0.2 0.2 0.2\"/></geometry></visual>",
+                     "<visual><geometry><cone radius=\"1\"/></geometry></visual>"),
+                {"link 'second_box' <visual>: urdfdom could not read it: "});
+  // One link: the message is the mass's, not the "total mass of 0 kg" that followed from it.
+  try {
+    load(robot(link("base", "<inertial><mass value='1.0x'/><inertia ixx='1' iyy='1' izz='1' ixy='0' ixz='0' "
+                            "iyz='0'/></inertial>")));
+    ADD_FAILURE() << "accepted";
+  } catch (const io::UrdfError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("<mass value=\"1.0x\">: not a number"), std::string::npos) << what;
+    EXPECT_EQ(what.find("total mass"), std::string::npos) << what;
+  }
+}
+
+TEST(UrdfLoader, JointsThatAreNotATreeAreRefusedBeforeUrdfdomLeaksThem) {
+  // urdfdom leaked the links of every such URDF (688 bytes each; LeakSanitizer
+  // in the sanitizer run catches one): 10,000 tries, as a client could spawn it.
+  const std::string cycle = robot(link("a", inertial(1.0)) + link("b", inertial(1.0)) + joint("j1", "fixed", "a", "b", "0 0 0") +
+                                  joint("j2", "fixed", "b", "a", "0 0 0"));
+  for (int i = 0; i < 10000; ++i) {
+    try {
+      load(cycle);
+      ADD_FAILURE() << "accepted";
+      break;
+    } catch (const io::UrdfError& e) {
+      if (std::string(e.what()).find("closes a cycle of joints") == std::string::npos) {
+        ADD_FAILURE() << e.what();
+        break;
+      }
+    }
+  }
+  expectRefused(robot(link("a", inertial(1.0)) + link("b", inertial(1.0)) + link("c", inertial(1.0)) +
+                      joint("j1", "fixed", "a", "c", "0 0 0") + joint("j2", "fixed", "b", "c", "0 0 0")),
+                {"link 'c' is the child of two joints, 'j1' and 'j2'"});
+  expectRefused(robot(link("a", inertial(1.0)) + link("b", inertial(1.0)) + link("c", inertial(1.0)) +
+                      joint("j1", "fixed", "a", "b", "0 0 0") + joint("j2", "fixed", "b", "c", "0 0 0") +
+                      joint("j3", "fixed", "c", "b", "0 0 0")),
+                {"link 'b' is the child of two joints"});
+  expectRefused(robot(link("a", inertial(1.0)) + joint("self", "fixed", "a", "a", "0 0 0")), {"joint 'self' closes a cycle"});
 }
 
 TEST(UrdfLoader, ACapsuleIsReadAsSDFormatAndDrakeWriteIt) {

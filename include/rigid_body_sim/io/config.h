@@ -68,6 +68,13 @@ struct SimConfig {
 /// Parses a config tree. Missing keys keep the defaults documented in
 /// config/default.yaml; unknown keys and bad values throw ConfigError.
 /// Relative URDF paths in `bodies` resolve against `base_dir`.
+/// "" if `name` may name a body, else why not: it starts with a letter and
+/// holds only letters, digits and '_', at most kMaxBodyNameLength (in a
+/// world it names the body's topics and tf frames). The one rule for a
+/// config's bodies[i].name and for spawn_body's name.
+std::string bodyNameProblem(const std::string& name);
+inline constexpr std::size_t kMaxBodyNameLength = 64;
+
 SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir = "");
 
 /// A config from its YAML text, as parseConfig(loadYamlText(yaml, source))

@@ -17,6 +17,11 @@ struct World {
   core::State state;
 };
 
+/// The warning for a body that touches nothing (it has no <collision>, as a
+/// URDF with only <visual>s: Gazebo keeps such a body and so does this
+/// project), or "" when it has collision geometry.
+std::string touchesNothing(const core::BodyModel& body);
+
 /// Turns a `bodies` entry's `urdf` into a body (the name is set afterwards).
 using BodyLoader = std::function<core::BodySpec(const BodyEntry&)>;
 

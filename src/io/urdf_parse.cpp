@@ -1,0 +1,233 @@
+#include "urdf_parse.h"
+
+#include <console_bridge/console.h>
+#include <tinyxml.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <cctype>
+#include <cstdlib>
+#include <map>
+#include <mutex>
+#include <regex>
+#include <stdexcept>
+#include <vector>
+
+namespace rigid_body_sim::io::detail {
+namespace {
+
+/// URDF has no capsule; SDFormat (1.8 on) and Drake's URDF parser read
+/// <capsule radius="r" length="l"/> in a <geometry>, l the length of its
+/// cylinder, and so does this loader. urdfdom refuses the element, so it
+/// reads a copy of the text where every capsule is a cylinder with the same
+/// attributes, and `capsules` says which collisions were capsules. Returns
+/// whether there was one.
+bool capsulesAsCylinders(TiXmlElement& robot, CapsuleSet& capsules) {
+  bool any = false;
+  for (TiXmlElement* link = robot.FirstChildElement("link"); link; link = link->NextSiblingElement("link")) {
+    const char* name = link->Attribute("name");
+    for (const char* kind : {"collision", "visual"}) {
+      std::size_t index = 0;
+      for (TiXmlElement* e = link->FirstChildElement(kind); e; e = e->NextSiblingElement(kind), ++index) {
+        TiXmlElement* geometry = e->FirstChildElement("geometry");
+        TiXmlElement* capsule = geometry != nullptr ? geometry->FirstChildElement("capsule") : nullptr;
+        if (capsule == nullptr) continue;
+        capsule->SetValue("cylinder");
+        any = true;
+        if (std::string(kind) == "collision" && name != nullptr) capsules.insert({name, index});
+      }
+    }
+  }
+  return any;
+}
+
+/// Why the joints do not make a tree: a link that two joints give a parent,
+/// or joints that form a cycle (urdfdom leaks such a model's links: their
+/// shared pointers hold each other). "" when they make one, or when an
+/// attribute is missing (urdfdom says so).
+std::string jointProblem(const TiXmlElement& robot) {
+  struct Parent {
+    std::string link, joint;
+  };
+  std::map<std::string, Parent> parent_of;  // child link -> its parent link and joint
+  for (const TiXmlElement* j = robot.FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
+    const TiXmlElement* parent = j->FirstChildElement("parent");
+    const TiXmlElement* child = j->FirstChildElement("child");
+    const char* name = j->Attribute("name");
+    if (name == nullptr || parent == nullptr || child == nullptr || parent->Attribute("link") == nullptr ||
+        child->Attribute("link") == nullptr) {
+      continue;
+    }
+    const std::string child_link = child->Attribute("link");
+    const auto [at, added] = parent_of.insert({child_link, {parent->Attribute("link"), name}});
+    if (!added) {
+      return "link '" + child_link + "' is the child of two joints, '" + at->second.joint + "' and '" + name +
+             "': a URDF is a tree";
+    }
+  }
+  // Each link has at most one parent: walking up from every link either
+  // ends at a root or comes back to a link of the same walk (a cycle).
+  std::map<std::string, int> seen;  // 1: on the current walk, 2: ends at a root
+  for (const auto& [start, unused] : parent_of) {
+    std::vector<std::string> walk;
+    std::string at = start;
+    while (seen[at] == 0) {
+      seen[at] = 1;
+      walk.push_back(at);
+      const auto up = parent_of.find(at);
+      if (up == parent_of.end()) break;
+      if (seen[up->second.link] == 1) {
+        return "joint '" + up->second.joint + "' closes a cycle of joints (at link '" + up->second.link +
+               "'): a URDF is a tree";
+      }
+      at = up->second.link;
+    }
+    for (const std::string& link : walk) seen[link] = 2;
+  }
+  return "";
+}
+
+/// The numeric attributes of URDF's elements (and of <capsule>), by element.
+const std::map<std::string, std::vector<const char*>>& numericAttributes() {
+  static const std::map<std::string, std::vector<const char*>> table{
+      {"mass", {"value"}},
+      {"inertia", {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"}},
+      {"origin", {"xyz", "rpy"}},
+      {"box", {"size"}},
+      {"cylinder", {"radius", "length"}},
+      {"capsule", {"radius", "length"}},
+      {"sphere", {"radius"}},
+      {"mesh", {"scale"}},
+      {"axis", {"xyz"}},
+      {"limit", {"lower", "upper", "effort", "velocity"}},
+      {"dynamics", {"damping", "friction"}},
+      {"mimic", {"multiplier", "offset"}},
+      {"color", {"rgba"}},
+  };
+  return table;
+}
+
+/// Whether `text` is one or more numbers separated by white space, each read whole.
+bool numbers(const char* text) {
+  bool any = false;
+  for (const char* at = text; *at != '\0';) {
+    if (std::isspace(static_cast<unsigned char>(*at)) != 0) {
+      ++at;
+      continue;
+    }
+    char* end = nullptr;
+    std::strtod(at, &end);
+    if (end == at || (*end != '\0' && std::isspace(static_cast<unsigned char>(*end)) == 0)) return false;
+    any = true;
+    at = end;
+  }
+  return any;
+}
+
+/// The first numeric attribute under `top` (a <link> or <joint>) that is not
+/// numbers, as "link 'L' <collision> <box size="0.2 0.2 0.2m">: not a number
+/// (or list of numbers)", or "". urdfdom would log it and drop the element.
+std::string numberProblem(const TiXmlElement& top) {
+  const char* kind = top.Value();
+  const char* name = top.Attribute("name");
+  std::vector<std::pair<const TiXmlElement*, std::string>> todo;  // element, the path to it
+  for (const TiXmlElement* e = top.FirstChildElement(); e; e = e->NextSiblingElement()) todo.push_back({e, ""});
+  while (!todo.empty()) {
+    const auto [e, path] = todo.back();
+    todo.pop_back();
+    const std::string here = path + "<" + e->Value() + ">";
+    const auto attributes = numericAttributes().find(e->Value());
+    if (attributes != numericAttributes().end()) {
+      for (const char* attribute : attributes->second) {
+        const char* value = e->Attribute(attribute);
+        if (value == nullptr || numbers(value)) continue;
+        return std::string(kind) + " '" + (name ? name : "") + "' " + path + "<" + e->Value() + " " + attribute +
+               "=\"" + value + "\">: not a number" + (std::string(attribute) == "value" ? "" : " (or numbers)") +
+               " (URDF gives SI units: write none)";
+      }
+    }
+    for (const TiXmlElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) todo.push_back({c, here});
+  }
+  return "";
+}
+
+/// urdfdom's errors while it parses, from console_bridge, which urdfdom
+/// logs through: one parse at a time (the handler is the process's).
+class ParserErrors : public console_bridge::OutputHandler {
+ public:
+  ParserErrors() : level_(console_bridge::getLogLevel()) {
+    console_bridge::useOutputHandler(this);
+    if (level_ > console_bridge::CONSOLE_BRIDGE_LOG_ERROR) {
+      console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_ERROR);
+    }
+  }
+  ~ParserErrors() override {
+    console_bridge::setLogLevel(level_);
+    console_bridge::restorePreviousOutputHandler();
+  }
+  ParserErrors(const ParserErrors&) = delete;
+  ParserErrors& operator=(const ParserErrors&) = delete;
+
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) errors.push_back(text);
+  }
+
+  /// One line: where (the link and element urdfdom names), then the first
+  /// cause, then the rest.
+  std::string summary() const {
+    static const std::regex element_of_link(R"(Could not parse (\w+) element for Link \[([^\]]*)\])");
+    std::string where;
+    for (const std::string& e : errors) {
+      std::smatch m;
+      if (std::regex_search(e, m, element_of_link)) {
+        where = "link '" + m[2].str() + "' <" + m[1].str() + ">: ";
+        break;
+      }
+    }
+    std::string line = where + "urdfdom could not read it: " + errors.front();
+    for (std::size_t i = 1; i < errors.size(); ++i) line += (i == 1 ? " (then: " : "; ") + errors[i];
+    return errors.size() > 1 ? line + ")" : line;
+  }
+
+  std::vector<std::string> errors;
+
+ private:
+  console_bridge::LogLevel level_;
+};
+
+std::mutex& parserMutex() {
+  static std::mutex m;
+  return m;
+}
+
+}  // namespace
+
+ParsedUrdf parseUrdf(const std::string& xml) {
+  ParsedUrdf out;
+  std::string text;  // the capsules rewritten, when there are any
+  TiXmlDocument doc;
+  doc.Parse(xml.c_str());
+  // The element urdfdom reads: the first <robot>, wherever it stands.
+  if (TiXmlElement* robot = doc.FirstChildElement("robot"); !doc.Error() && robot != nullptr) {
+    std::string problem = jointProblem(*robot);
+    for (const TiXmlElement* e = robot->FirstChildElement(); e && problem.empty(); e = e->NextSiblingElement()) {
+      if (std::string(e->Value()) == "link" || std::string(e->Value()) == "joint") problem = numberProblem(*e);
+    }
+    if (!problem.empty()) throw std::invalid_argument(problem);
+    if (xml.find("capsule") != std::string::npos && capsulesAsCylinders(*robot, out.capsules)) {
+      TiXmlPrinter printer;
+      doc.Accept(&printer);
+      text = printer.CStr();
+    }
+  }  // text that is not XML: urdfdom says why
+  const std::lock_guard<std::mutex> lock(parserMutex());
+  ParserErrors errors;
+  out.model = urdf::parseURDF(text.empty() ? xml : text);
+  if (!out.model) {
+    throw std::invalid_argument("not a valid URDF document" +
+                                (errors.errors.empty() ? std::string() : ": " + errors.summary()));
+  }
+  if (!errors.errors.empty()) throw std::invalid_argument(errors.summary());
+  return out;
+}
+
+}  // namespace rigid_body_sim::io::detail

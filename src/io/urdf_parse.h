@@ -1,0 +1,30 @@
+// urdfdom, guarded (private to io): what the text must be before urdfdom
+// reads it, and what urdfdom could not read. urdfdom logs an element it
+// cannot read (<mass value="2.0kg"/>, <box size="1 1 1m"/>) and goes on
+// without it, and it leaks the links of a URDF whose joints form a cycle;
+// here the first is an error and the second never reaches it.
+#pragma once
+
+#include <urdf_world/types.h>
+
+#include <set>
+#include <string>
+#include <utility>
+
+namespace rigid_body_sim::io::detail {
+
+/// The <collision>s that were capsules: (link name, index among the link's <collision>s).
+using CapsuleSet = std::set<std::pair<std::string, std::size_t>>;
+
+struct ParsedUrdf {
+  urdf::ModelInterfaceSharedPtr model;  ///< never null
+  CapsuleSet capsules;                  ///< read as cylinders by urdfdom
+};
+
+/// urdfdom's model of `xml`. Throws std::invalid_argument, one line that
+/// starts with the first cause: two joints giving a link a parent, joints
+/// that form a cycle (naming the joint), or anything urdfdom could not read
+/// (naming the link and element, and urdfdom's own words on the attribute).
+ParsedUrdf parseUrdf(const std::string& xml);
+
+}  // namespace rigid_body_sim::io::detail
