@@ -28,7 +28,9 @@ Quat expMap(const Vec3& r) {
 }  // namespace
 
 void validateImu(const ImuSettings& s, double dt, const std::string& key) {
-  detail::requirePositiveAtMost(s.rate, 1.0 / dt, key + ".rate", "Hz (one sample a step, 1/dt)");
+  // A sample every step at most, and one every 100 s at least (ranges::kMinRate).
+  detail::requireWithin(s.rate, ranges::kMinRate, 1.0 / dt, key + ".rate",
+                        "Hz (at most one sample a step, 1/dt; at least one every 100 s)");
   detail::requireWithin(s.gyro_noise, 0.0, 1e3, key + ".gyro_noise", "rad/s");
   detail::requireWithin(s.accel_noise, 0.0, 1e4, key + ".accel_noise", "m/s^2");
   detail::requireWithin(s.gyro_bias_walk, 0.0, 1e3, key + ".gyro_bias_walk", "rad/s/sqrt(s)");

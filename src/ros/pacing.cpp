@@ -24,7 +24,9 @@ void SimNode::stepOnce() {
   for (std::size_t i = 0; i < ports_.size(); ++i) {
     std::optional<HeldWrench>& held = ports_[i].held;
     if (!held) continue;
-    if (settings_.wrench_timeout > 0.0 && t - held->received > settings_.wrench_timeout) {
+    // It acts on [received, received + timeout): the step from t to t + h
+    // acts if it starts before the end (half a step of slack for rounding).
+    if (settings_.wrench_timeout > 0.0 && t - held->received > settings_.wrench_timeout - 0.5 * h) {
       held.reset();
     } else {
       if (loads_.empty()) loads_.resize(model_.bodyCount());

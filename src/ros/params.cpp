@@ -18,6 +18,17 @@ void requireParamWithin(double x, const std::string& key, double lo, double hi, 
   }
 }
 
+void requireRealtimeFactor(double x) {
+  using R = NodeSettings;
+  if (x == 0.0) return;
+  if (!std::isfinite(x) || x < R::kMinRealtimeFactor || x > R::kMaxRealtimeFactor) {
+    std::ostringstream os;
+    os << "parameter '~realtime_factor' = " << x << ": must be 0 (as fast as possible) or within ["
+       << R::kMinRealtimeFactor << ", " << R::kMaxRealtimeFactor << "]";
+    throw io::ConfigError(os.str());
+  }
+}
+
 namespace {
 
 /// A number parameter within [lo, hi]: anything outside is refused with the
@@ -87,6 +98,7 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   if (all.hasMember("rate")) n.rate = number(all["rate"], "rate", R::kMinRate, R::kMaxRate, "Hz");
   if (all.hasMember("realtime_factor")) {
     n.realtime_factor = number(all["realtime_factor"], "realtime_factor", 0.0, R::kMaxRealtimeFactor, "");
+    requireRealtimeFactor(n.realtime_factor);
   }
   if (all.hasMember("publish_rate")) {
     n.publish_rate = number(all["publish_rate"], "publish_rate", R::kMinPublishRate, R::kMaxRate, "Hz");

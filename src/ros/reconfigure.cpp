@@ -84,7 +84,7 @@ void SimNode::onReconfigure(PhysicsConfig& config, uint32_t) {
   // The node's settings, each checked as its parameter is at start.
   using R = NodeSettings;
   try {
-    requireParamWithin(config.realtime_factor, "realtime_factor", 0.0, R::kMaxRealtimeFactor, "");
+    requireRealtimeFactor(config.realtime_factor);
     if (config.realtime_factor != settings_.realtime_factor) {
       params_.node.realtime_factor = config.realtime_factor;
       rebaseClock();

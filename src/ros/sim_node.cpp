@@ -113,9 +113,10 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     const BodyDevices devices = c.bodies_listed
                                     ? BodyDevices{c.bodies[i].imu, c.bodies[i].odom_noise, c.bodies[i].cmd_vel}
                                     : BodyDevices{c.imu, c.odom_noise, c.cmd_vel};
-    ports_.push_back(openPorts(i, several ? body.name + "/" : "", devices));
+    ports_.push_back(openPorts(body, state_.bodies[i], several ? body.name + "/" : "", devices));
     ROS_INFO("sim_node: body '%s' (frame '%s'), %.6g kg, %zu collision points", body.name.c_str(),
              ports_.back().frame.c_str(), body.mass, body.contact_points.size());
+    if (const std::string warning = io::touchesNothing(body); !warning.empty()) ROS_WARN("sim_node: %s", warning.c_str());
   }
   if (model_.bodyCount() == 0) ROS_INFO("sim_node: an empty world (bodies: []); ~spawn_body adds bodies");
   ROS_INFO("sim_node: ~rate %g Hz, ~dt %g s, ~realtime_factor %g, ~publish_rate %g Hz (every %lld steps)",
@@ -172,12 +173,27 @@ SimNode::~SimNode() {
   if (spawn_spinner_) spawn_spinner_->stop();
 }
 
-SimNode::BodyPorts SimNode::openPorts(std::size_t i, const std::string& prefix, const BodyDevices& devices) {
+SimNode::BodyPorts SimNode::openPorts(const core::BodyModel& body, const core::BodyState& start,
+                                      const std::string& prefix, const BodyDevices& devices) {
   const auto& [imu, odom_noise, cmd_vel] = devices;
   BodyPorts ports;
   ports.prefix = prefix;
-  ports.frame = prefix + model_.body(i).link;
-  const std::string name = model_.body(i).name;  // by name: a deletion moves the later bodies' indices
+  ports.frame = prefix + body.link;
+  // Checked before anything is advertised: a spawn's IMU on no such link is
+  // refused with nothing changed (it ended the node once).
+  std::optional<core::ImuSettings> imu_settings;
+  if (imu) {
+    ports.imu_frame = prefix + imu->frame_id;
+    bool taken = imu->frame_id == body.link;
+    for (const core::FixedLink& link : body.fixed_links) taken = taken || imu->frame_id == link.name;
+    if (taken || ports.imu_frame == settings_.world_frame) {
+      throw io::ConfigError(imu->key + ".frame_id '" + imu->frame_id + "' of body '" + body.name +
+                            "': is already a frame (of the body, or the world); name the sensor's own frame");
+    }
+    imu_settings = imu->settings;
+    imu_settings->X_LS = mountOf(body, imu->link, imu->key) * imu->settings.X_LS;
+  }
+  const std::string name = body.name;  // by name: a deletion moves the later bodies' indices
   if (cmd_vel) {
     ports.driver.emplace(*cmd_vel);
     ports.cmd_vel = nh_.subscribe<geometry_msgs::Twist>(
@@ -188,18 +204,8 @@ SimNode::BodyPorts SimNode::openPorts(std::size_t i, const std::string& prefix, 
     ports.ground_truth = nh_.advertise<nav_msgs::Odometry>(prefix + "ground_truth", 10);
     ports.last_odom = simTime();
   }
-  if (imu) {
-    const core::BodyModel& body = model_.body(i);
-    ports.imu_frame = prefix + imu->frame_id;
-    bool taken = imu->frame_id == body.link;
-    for (const core::FixedLink& link : body.fixed_links) taken = taken || imu->frame_id == link.name;
-    if (taken || ports.imu_frame == settings_.world_frame) {
-      throw io::ConfigError(imu->key + ".frame_id '" + imu->frame_id + "' of body '" + body.name +
-                            "': is already a frame (of the body, or the world); name the sensor's own frame");
-    }
-    core::ImuSettings settings = imu->settings;
-    settings.X_LS = mountOf(body, imu->link, imu->key) * imu->settings.X_LS;
-    ports.imu.emplace(settings, state_.bodies[i]);
+  if (imu_settings) {
+    ports.imu.emplace(*imu_settings, start);
     ports.imu_every = std::max(1LL, std::llround(1.0 / (imu->settings.rate * model_.dt())));
     ports.imu_pub = nh_.advertise<sensor_msgs::Imu>(prefix + "imu", 100);
   }

@@ -13,6 +13,7 @@
 #include "rigid_body_sim/core/ranges.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/urdf_loader.h"
+#include "rigid_body_sim/io/world.h"
 #include "rigid_body_sim/ros/conversions.h"
 #include "rigid_body_sim/ros/sim_node.h"
 
@@ -98,7 +99,8 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
       into = parse(yaml);
       return true;
     } catch (const std::exception& e) {
-      res.message = field + ": " + e.what();
+      const std::string what = e.what();
+      res.message = what.rfind(field + ":", 0) == 0 ? what : field + ": " + what;
       return false;
     }
   };
@@ -136,7 +138,17 @@ void SimNode::insertPendingBodies() {
     const std::lock_guard<std::mutex> lock(pending_mutex_);
     pending.swap(pending_);
   }
-  for (const auto& spawn : pending) spawn->done.set_value(insertBody(*spawn));
+  for (const auto& spawn : pending) {
+    // No request may end the node: whatever escapes is the request's answer.
+    SpawnBody::Response res;
+    try {
+      res = insertBody(*spawn);
+    } catch (const std::exception& e) {
+      res.success = false;
+      res.message = "body '" + spawn->request.name + "' was not added: " + e.what();
+    }
+    spawn->done.set_value(res);
+  }
 }
 
 SpawnBody::Response SimNode::insertBody(const PendingSpawn& spawn) {
@@ -191,22 +203,29 @@ SpawnBody::Response SimNode::insertBody(const PendingSpawn& spawn) {
        checkSpeed(link.v_WL, model_.limits().linear, "twist.linear", "limits.max_linear_speed", "m/s"),
        checkSpeed(link.w_W, model_.limits().angular, "twist.angular", "limits.max_angular_speed", "rad/s")});
   if (!res.message.empty()) return res;
+  // Everything that may refuse runs before the world changes: the ports
+  // (an IMU on no such link), then the edited model.
   try {
+    const core::BodyState start = core::bodyStateFromLink(body, link);
+    BodyPorts ports = openPorts(body, start, prefix, spawn.devices);
     core::Model edited = model_.withBody(spawn.body);
-    const core::BodyState start = core::bodyStateFromLink(edited.bodies().back(), link);
     world_.model = std::move(edited);
     state_.bodies.push_back(start);
     initial_.bodies.push_back(start);  // reset puts it back where it was spawned
+    ports_.push_back(std::move(ports));
   } catch (const std::exception& e) {
     res.message = e.what();
     return res;
   }
-  ports_.push_back(openPorts(model_.bodyCount() - 1, prefix, spawn.devices));
   afterEdit(false);
   res.success = true;
   res.message = "body '" + req.name + "' added at t = " + now() + ": frame '" + ports_.back().frame + "', topics '" +
                 nh_.resolveName(prefix + "odom") + "' and '" + pnh_.resolveName(prefix + "wrench") + "'";
   ROS_INFO("sim_node: %s", res.message.c_str());
+  if (const std::string warning = io::touchesNothing(body); !warning.empty()) {
+    ROS_WARN("sim_node: %s", warning.c_str());
+    res.message += "; warning: " + warning;
+  }
   return res;
 }
 

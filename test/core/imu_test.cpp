@@ -196,6 +196,14 @@ TEST(Imu, BadSettingsAreRefusedNamingTheKey) {
   expectThrowsWith<std::invalid_argument>([&] { core::validateImu(s, 1e-3, "imu"); }, {"imu.rate = 0"});
   s.rate = 2000.0;
   expectThrowsWith<std::invalid_argument>([&] { core::validateImu(s, 1e-3, "imu"); }, {"imu.rate = 2000"});
+  // Slower than a sample every 100 s: 1e-300 Hz overflowed the node's
+  // step counter and sampled at every step.
+  s.rate = 1e-300;
+  expectThrowsWith<std::invalid_argument>([&] { core::validateImu(s, 1e-3, "imu"); }, {"imu.rate = 1e-300"});
+  s.rate = 0.009;
+  expectThrowsWith<std::invalid_argument>([&] { core::validateImu(s, 1e-3, "imu"); }, {"imu.rate = 0.009"});
+  s.rate = 0.01;
+  EXPECT_NO_THROW(core::validateImu(s, 1e-3, "imu"));
   s = {};
   s.gyro_noise = -1.0;
   expectThrowsWith<std::invalid_argument>([&] { core::validateImu(s, 1e-3, "bodies[1].imu"); },

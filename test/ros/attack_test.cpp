@@ -324,7 +324,17 @@ TEST_F(Attack, SeededRandomSpawnsAndDeletesNeverBreakIt) {
       rigid_body_sim::SpawnBody s;
       s.request.name = names[r.pick(3) == 0 ? r.pick(names.size()) : r.pick(5)];
       s.request.urdf_file = files[r.pick(3) == 0 ? r.pick(files.size()) : r.pick(2)];
-      if (r.pick(6) == 0) s.request.urdf_xml = "<robot name='r'><link name='l'/></robot>";
+      // Issue 31's cases too: URDFs urdfdom half-read or leaked, and devices
+      // that once ended the node or overflowed a counter.
+      const std::vector<std::string> xmls = {
+          "<robot name='r'><link name='l'/></robot>",
+          "<robot name='r'><link name='l'><inertial><mass value='1kg'/><inertia ixx='1' iyy='1' izz='1' ixy='0' "
+          "ixz='0' iyz='0'/></inertial></link></robot>",
+          "<robot name='c'><link name='a'/><link name='b'/><joint name='j1' type='fixed'><parent link='a'/><child "
+          "link='b'/></joint><joint name='j2' type='fixed'><parent link='b'/><child link='a'/></joint></robot>"};
+      if (r.pick(6) == 0) s.request.urdf_xml = xmls[r.pick(xmls.size())];
+      const std::vector<std::string> imus = {"{link: nope}", "{rate: 1e-300}", "{rate: 100, rate: 200}", "{rate: 100}"};
+      if (r.pick(6) == 0) s.request.imu = imus[r.pick(imus.size())];
       s.request.pose.position.x = r.pick(3) == 0 ? r.any(1e6) : 3.0 + 0.5 * static_cast<double>(n % 7);
       s.request.pose.position.z = 1.0 + std::abs(r.any(3.0));
       s.request.pose.orientation.w = r.pick(5) == 0 ? r.any(1.0) : 1.0;

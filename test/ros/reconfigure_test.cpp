@@ -82,6 +82,14 @@ TEST_F(Reconfigure, ShowsWhatIsInForceAndChangesItBetweenSteps) {
   EXPECT_EQ(now.at("gravity_y"), 0.0);
   EXPECT_EQ(now.at("gravity_z"), -2.0);
   EXPECT_NEAR(fallFor(1000), -2.0, 1e-9);
+  // Far outside the model's range: refused too, not clamped to the range's
+  // edge by dynamic_reconfigure first (-5000 became -1000 and was accepted).
+  now = set({{"gravity_z", -5000.0}, {"friction", 50.0}});
+  EXPECT_EQ(now.at("gravity_z"), -2.0);
+  EXPECT_EQ(now.at("friction"), 0.3);
+  EXPECT_NEAR(fallFor(1000), -2.0, 1e-9);
+  // A real-time factor that would freeze the simulation: refused, 1 stays.
+  EXPECT_EQ(set({{"realtime_factor", 1e-300}}).at("realtime_factor"), 1.0);
   // The pause services and ~physics agree.
   ASSERT_TRUE(trigger("unpause"));
   got = false;

@@ -293,6 +293,11 @@ TEST_F(NodeSpawn, BadRequestsAreRefusedNamingTheFieldAndChangeNothing) {
   refused(imu, "imu: config key imu.rate = 0");
   imu.imu = "{frame_id: base_link}";
   refused(imu, "imu: frame_id 'base_link' is a frame of the body itself");
+  // An IMU on no such link: refused by the loop, which once threw it and ended the node.
+  imu.imu = "{link: nope}";
+  refused(imu, "config key 'imu.link' = 'nope': no such link of body 'extra'");
+  imu.imu = "{rate: 100, rate: 200}";
+  refused(imu, "imu: line 1: key 'rate' appears twice in one map");
   EXPECT_EQ(names(), before);
   EXPECT_FALSE(advertised("/extra/odom"));
 }

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "rigid_body_sim/core/ranges.h"
 #include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::node {
@@ -38,8 +39,11 @@ struct NodeSettings {
   // answered; at most 1e4 a second keeps the loop from spinning.
   static constexpr double kMinRate = 1.0;            ///< Hz
   static constexpr double kMaxRate = 1e4;            ///< Hz (also the most publish_rate)
-  static constexpr double kMinPublishRate = 0.01;    ///< Hz
-  static constexpr double kMaxRealtimeFactor = 1e3;  ///< sim s per wall s
+  static constexpr double kMinPublishRate = core::ranges::kMinRate;  ///< Hz
+  static constexpr double kMaxRealtimeFactor = 1e3;                   ///< sim s per wall s
+  /// The slowest slow motion, other than 0 (as fast as possible): a 1 ms
+  /// step each wall second. 1e-300 froze the simulation without a word.
+  static constexpr double kMinRealtimeFactor = 1e-3;
   static constexpr double kMaxDuration = 1e6;        ///< s (wrench_timeout)
 };
 
@@ -54,6 +58,10 @@ struct NodeParams {
 /// by io::parseConfig, so unknown keys and bad values are refused with the
 /// key's name (io::ConfigError).
 NodeParams readParams(const ros::NodeHandle& private_nh);
+
+/// Refuses a ~realtime_factor that is neither 0 nor within
+/// [kMinRealtimeFactor, kMaxRealtimeFactor], naming the parameter.
+void requireRealtimeFactor(double x);
 
 /// Refuses x outside [lo, hi] (or not finite) with a message naming the
 /// parameter `~key` and the range: the check of every number parameter, at

@@ -194,7 +194,10 @@ class SimNode {
   std::vector<BodyPorts> ports_;
   /// The topics and frame of body i of the model, under `prefix`, and its
   /// IMU if it has one (a frame_id that is one of the body's frames throws).
-  BodyPorts openPorts(std::size_t i, const std::string& prefix, const BodyDevices& devices);
+  /// The ports of `body`, starting at `start`; throws io::ConfigError (an
+  /// IMU on no such link, or on a taken frame) before anything is advertised.
+  BodyPorts openPorts(const core::BodyModel& body, const core::BodyState& start, const std::string& prefix,
+                      const BodyDevices& devices);
   void onCmdVel(const std::string& body, const geometry_msgs::Twist::ConstPtr& msg);
   // Contacts (contacts.cpp): the step reports the awake bodies' contacts;
   // the loop keeps those a body fell asleep with (per step: a scan, no copy).
