@@ -144,13 +144,14 @@ MarkerArray sceneMarkers(const std::vector<core::Sdf>& scene, const std::string&
   return markers;
 }
 
-MarkerArray bodyMarkers(const core::Model& model, const std::vector<std::string>& frames) {
+MarkerArray bodyMarkers(const core::Model& model, const std::vector<std::string>& frames,
+                        const std::vector<std::size_t>& colours) {
   static const std::array<std::array<float, 4>, 4> kColours = {
       {{0.85f, 0.45f, 0.2f, 1.0f}, {0.25f, 0.55f, 0.85f, 1.0f}, {0.4f, 0.7f, 0.3f, 1.0f}, {0.75f, 0.3f, 0.6f, 1.0f}}};
   MarkerArray markers;
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     const core::BodyModel& b = model.body(i);
-    Marker base = newMarker(frames[i], b.name, kColours[i % kColours.size()]);
+    Marker base = newMarker(frames[i], b.name, kColours[colours[i] % kColours.size()]);
     base.frame_locked = true;
     for (const core::CollisionShape& shape : b.collision) {
       markers.markers.push_back(shapeMarker(shape, base));

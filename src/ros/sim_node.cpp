@@ -114,6 +114,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
                                     ? BodyDevices{c.bodies[i].imu, c.bodies[i].odom_noise, c.bodies[i].cmd_vel}
                                     : BodyDevices{c.imu, c.odom_noise, c.cmd_vel};
     ports_.push_back(openPorts(body, state_.bodies[i], several ? body.name + "/" : "", devices));
+    ports_.back().colour = bodies_entered_++;
     ROS_INFO("sim_node: body '%s' (frame '%s'), %.6g kg, %zu collision points", body.name.c_str(),
              ports_.back().frame.c_str(), body.mass, body.contact_points.size());
     if (const std::string warning = io::touchesNothing(body); !warning.empty()) ROS_WARN("sim_node: %s", warning.c_str());
@@ -137,7 +138,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     markers_resend_ = MarkersResend{ros::WallTime::now(), 0};
   };
   scene_markers_ = sceneMarkers(model_.scene(), settings_.world_frame, settings_.scene_size);
-  body_markers_ = bodyMarkers(model_, frames());
+  body_markers_ = bodyMarkers(model_, frames(), colours());
   scene_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, on_subscriber, {}, {}, true);
   body_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("body_markers", 1, on_subscriber, {}, {}, true);
   if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
@@ -213,6 +214,13 @@ SimNode::BodyPorts SimNode::openPorts(const core::BodyModel& body, const core::B
   ports.wrench = pnh_.subscribe<geometry_msgs::WrenchStamped>(
       prefix + "wrench", 10, [this, name](const geometry_msgs::WrenchStamped::ConstPtr& m) { onWrench(name, m); });
   return ports;
+}
+
+std::vector<std::size_t> SimNode::colours() const {
+  std::vector<std::size_t> colours;
+  colours.reserve(ports_.size());
+  for (const BodyPorts& p : ports_) colours.push_back(p.colour);
+  return colours;
 }
 
 std::vector<std::string> SimNode::frames() const {

@@ -212,6 +212,7 @@ SpawnBody::Response SimNode::insertBody(const PendingSpawn& spawn) {
     world_.model = std::move(edited);
     state_.bodies.push_back(start);
     initial_.bodies.push_back(start);  // reset puts it back where it was spawned
+    ports.colour = bodies_entered_++;
     ports_.push_back(std::move(ports));
   } catch (const std::exception& e) {
     res.message = e.what();

@@ -53,7 +53,7 @@ void SimNode::freshWorkspace() {
 
 void SimNode::afterEdit(bool deleted) {
   freshWorkspace();
-  body_markers_ = bodyMarkers(model_, frames());
+  body_markers_ = bodyMarkers(model_, frames(), colours());
   if (deleted) {
     // rviz forgets every body marker, then draws those left. tf2_ros's
     // static broadcaster keeps all it was sent: a new one sends the rest.

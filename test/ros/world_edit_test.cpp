@@ -13,6 +13,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -353,6 +354,16 @@ TEST_F(NodeDelete, ADeletedBodyIsGoneAndWhatRestedOnItFalls) {
   ASSERT_EQ(settled.names, (std::vector<std::string>{"base", "top", "far"}));
   ASSERT_TRUE(settled.asleep[2]);
   const auto far_before = get("far").state.pose;
+  // Each body's colour in rviz, by its marker namespace (its name).
+  const auto colours = [](const visualization_msgs::MarkerArray& markers) {
+    std::map<std::string, std::vector<float>> out;
+    for (const auto& m : markers.markers) {
+      if (m.action == visualization_msgs::Marker::ADD) out[m.ns] = {m.color.r, m.color.g, m.color.b, m.color.a};
+    }
+    return out;
+  };
+  const auto colours_before = colours(latchedMarkers("/sim_node/body_markers"));
+  ASSERT_EQ(colours_before.size(), 3u);
   rigid_body_sim::ApplyWrench hold;
   hold.request.body = "base";
   hold.request.force = vec(0, 0, -1);
@@ -382,6 +393,8 @@ TEST_F(NodeDelete, ADeletedBodyIsGoneAndWhatRestedOnItFalls) {
   std::set<std::string> drawn;
   for (std::size_t i = 1; i < markers.markers.size(); ++i) drawn.insert(markers.markers[i].ns);
   EXPECT_EQ(drawn, (std::set<std::string>{"top", "far"}));
+  // A body keeps its colour when another leaves (they moved one body along).
+  for (const auto& [name, colour] : colours(markers)) EXPECT_EQ(colour, colours_before.at(name)) << name;
   EXPECT_FALSE(get("base").success);
   const DeleteBody::Response again = remove("base");
   EXPECT_FALSE(again.success);

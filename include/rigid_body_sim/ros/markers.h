@@ -20,7 +20,9 @@ visualization_msgs::MarkerArray sceneMarkers(const std::vector<core::Sdf>& scene
 /// Each body's <collision> shapes in its tf frame `frames[i]`, frame_locked
 /// so rviz moves them with tf: boxes, spheres and cylinders as themselves,
 /// meshes as their triangles, a bare point cloud as points. Namespace: the
-/// body's name; one colour per body, in turn.
-visualization_msgs::MarkerArray bodyMarkers(const core::Model& model, const std::vector<std::string>& frames);
+/// body's name; body i in colour `colours[i]` of a palette, in turn (the
+/// order it entered the world in: a body keeps its colour when another leaves).
+visualization_msgs::MarkerArray bodyMarkers(const core::Model& model, const std::vector<std::string>& frames,
+                                            const std::vector<std::size_t>& colours);
 
 }  // namespace rigid_body_sim::node

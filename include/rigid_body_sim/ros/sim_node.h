@@ -190,8 +190,10 @@ class SimNode {
     std::optional<core::VelocityDriver> driver;  ///< drives it toward its cmd_vel
     ros::Subscriber cmd_vel;                     ///< PREFIXcmd_vel, geometry_msgs/Twist
     bool clipped = false;                        ///< a command was clipped (warned once)
+    std::size_t colour = 0;                      ///< its markers' colour: the order it entered the world in
   };
   std::vector<BodyPorts> ports_;
+  std::size_t bodies_entered_ = 0;  ///< bodies that have entered the world, the next one's colour
   /// The topics and frame of body i of the model, under `prefix`, and its
   /// IMU if it has one (a frame_id that is one of the body's frames throws).
   /// The ports of `body`, starting at `start`; throws io::ConfigError (an
@@ -214,6 +216,7 @@ class SimNode {
   void restartSensors(int body);
   const double dt_ = model_.dt();  ///< for the spawn thread (no edit changes it)
   std::vector<std::string> frames() const;
+  std::vector<std::size_t> colours() const;  ///< each body's BodyPorts::colour, in the model's order
 
   bool paused_ = false;
   bool use_sim_time_ = false;
