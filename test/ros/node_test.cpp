@@ -14,9 +14,11 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -91,6 +93,38 @@ TEST_F(Tf, LookupEqualsTheOdometryPose) {
     EXPECT_NEAR(tf.transform.rotation.w, p.orientation.w, 1e-12);
   }
   EXPECT_GT(checked, 20);
+}
+
+/// The local address, as /proc/net/tcp writes it (hex, "00000000" for
+/// 0.0.0.0), of the IPv4 socket listening on `port`, or "" if none does.
+std::string listeningAddress(int port) {
+  std::ifstream in("/proc/net/tcp");
+  std::string line;
+  std::getline(in, line);  // the header
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string slot, local, remote, state;
+    fields >> slot >> local >> remote >> state;
+    const std::size_t colon = local.rfind(':');
+    if (state == "0A" && colon != std::string::npos && std::stoi(local.substr(colon + 1), nullptr, 16) == port) {
+      return local.substr(0, colon);  // 0A: LISTEN
+    }
+  }
+  return "";
+}
+
+TEST_F(Tf, ListensWhereTheReadmesSecurityNoteSays) {
+  // README, Security: with ROS_HOSTNAME=localhost the master listens on
+  // 127.0.0.1, but roscpp's XML-RPC server (where anyone may call shutdown)
+  // on every address. It said the opposite once.
+  XmlRpc::XmlRpcValue args, result, payload;
+  args[0] = ros::this_node::getName();
+  args[1] = "/sim_node";
+  ASSERT_TRUE(ros::master::execute("lookupNode", args, result, payload, true));
+  const std::string uri = payload;  // http://localhost:PORT/
+  const int port = std::stoi(uri.substr(uri.rfind(':') + 1));
+  EXPECT_EQ(listeningAddress(port), "00000000") << uri;
+  EXPECT_EQ(listeningAddress(static_cast<int>(ros::master::getPort())), "0100007F");  // 127.0.0.1
 }
 
 // ------------------------------------------------------------------ loads (paused, stepped: exact)
