@@ -117,7 +117,8 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     ports_.back().colour = bodies_entered_++;
     ROS_INFO("sim_node: body '%s' (frame '%s'), %.6g kg, %zu collision points", body.name.c_str(),
              ports_.back().frame.c_str(), body.mass, body.contact_points.size());
-    if (const std::string warning = io::touchesNothing(body); !warning.empty()) ROS_WARN("sim_node: %s", warning.c_str());
+    if (const std::string warning = io::touchesNothing(body); !warning.empty())
+      ROS_WARN("sim_node: %s", warning.c_str());
   }
   if (model_.bodyCount() == 0) ROS_INFO("sim_node: an empty world (bodies: []); ~spawn_body adds bodies");
   ROS_INFO("sim_node: ~rate %g Hz, ~dt %g s, ~realtime_factor %g, ~publish_rate %g Hz (every %lld steps)",

@@ -153,8 +153,9 @@ TEST(UrdfLoader, AnElementUrdfdomCouldNotReadIsRefusedNotSkipped) {
   };
   expectRefused(with("<mass value=\"1.0\"/>", "<mass value=\"2.0kg\"/>"),
                 {"test.urdf: link 'second_box' <inertial><mass value=\"2.0kg\">: not a number"});
-  expectRefused(with("<collision><geometry><box size=\"0.2 0.2 0.2\"/>", "<collision><geometry><box size=\"0.2 0.2 0.2m\"/>"),
-                {"link 'second_box' <collision><geometry><box size=\"0.2 0.2 0.2m\">: not a number (or numbers)"});
+  expectRefused(
+      with("<collision><geometry><box size=\"0.2 0.2 0.2\"/>", "<collision><geometry><box size=\"0.2 0.2 0.2m\"/>"),
+      {"link 'second_box' <collision><geometry><box size=\"0.2 0.2 0.2m\">: not a number (or numbers)"});
   expectRefused(with("<visual><geometry><box size=\"0.2 0.2 0.2\"/></geometry></visual>",
                      "<visual><geometry><sphere radius=\"big\"/></geometry></visual>"),
                 {"link 'second_box' <visual><geometry><sphere radius=\"big\">"});
@@ -167,8 +168,9 @@ TEST(UrdfLoader, AnElementUrdfdomCouldNotReadIsRefusedNotSkipped) {
                 {"link 'second_box' <visual>: urdfdom could not read it: "});
   // One link: the message is the mass's, not the "total mass of 0 kg" that followed from it.
   try {
-    load(robot(link("base", "<inertial><mass value='1.0x'/><inertia ixx='1' iyy='1' izz='1' ixy='0' ixz='0' "
-                            "iyz='0'/></inertial>")));
+    load(robot(link("base",
+                    "<inertial><mass value='1.0x'/><inertia ixx='1' iyy='1' izz='1' ixy='0' ixz='0' "
+                    "iyz='0'/></inertial>")));
     ADD_FAILURE() << "accepted";
   } catch (const io::UrdfError& e) {
     const std::string what = e.what();
@@ -180,8 +182,8 @@ TEST(UrdfLoader, AnElementUrdfdomCouldNotReadIsRefusedNotSkipped) {
 TEST(UrdfLoader, JointsThatAreNotATreeAreRefusedBeforeUrdfdomLeaksThem) {
   // urdfdom leaked the links of every such URDF (688 bytes each; LeakSanitizer
   // in the sanitizer run catches one): 10,000 tries, as a client could spawn it.
-  const std::string cycle = robot(link("a", inertial(1.0)) + link("b", inertial(1.0)) + joint("j1", "fixed", "a", "b", "0 0 0") +
-                                  joint("j2", "fixed", "b", "a", "0 0 0"));
+  const std::string cycle = robot(link("a", inertial(1.0)) + link("b", inertial(1.0)) +
+                                  joint("j1", "fixed", "a", "b", "0 0 0") + joint("j2", "fixed", "b", "a", "0 0 0"));
   for (int i = 0; i < 10000; ++i) {
     try {
       load(cycle);
@@ -201,7 +203,8 @@ TEST(UrdfLoader, JointsThatAreNotATreeAreRefusedBeforeUrdfdomLeaksThem) {
                       joint("j1", "fixed", "a", "b", "0 0 0") + joint("j2", "fixed", "b", "c", "0 0 0") +
                       joint("j3", "fixed", "c", "b", "0 0 0")),
                 {"link 'b' is the child of two joints"});
-  expectRefused(robot(link("a", inertial(1.0)) + joint("self", "fixed", "a", "a", "0 0 0")), {"joint 'self' closes a cycle"});
+  expectRefused(robot(link("a", inertial(1.0)) + joint("self", "fixed", "a", "a", "0 0 0")),
+                {"joint 'self' closes a cycle"});
 }
 
 TEST(UrdfLoader, ACapsuleIsReadAsSDFormatAndDrakeWriteIt) {

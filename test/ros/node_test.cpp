@@ -432,8 +432,8 @@ TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
            "</inertial></link><joint name='axle' type='continuous'><parent link='base'/>"
            "<child link='wheel'/><axis xyz='0 0 1'/></joint></robot>",
        "joint 'axle' is continuous"},
-      {"mass_with_unit", head + "<inertial><mass value='1kg'/>" + kInertia + "</inertial>" + kCollision +
-           "</link></robot>",
+      {"mass_with_unit",
+       head + "<inertial><mass value='1kg'/>" + kInertia + "</inertial>" + kCollision + "</link></robot>",
        "link 'base' <inertial><mass value=\"1kg\">: not a number"},
       {"not_xml", "this is not a robot", "not a valid URDF"},
   };

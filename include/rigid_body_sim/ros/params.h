@@ -37,14 +37,14 @@ struct NodeSettings {
 
   // The ranges. A tick at least every second keeps SIGINT and the services
   // answered; at most 1e4 a second keeps the loop from spinning.
-  static constexpr double kMinRate = 1.0;            ///< Hz
-  static constexpr double kMaxRate = 1e4;            ///< Hz (also the most publish_rate)
+  static constexpr double kMinRate = 1.0;                            ///< Hz
+  static constexpr double kMaxRate = 1e4;                            ///< Hz (also the most publish_rate)
   static constexpr double kMinPublishRate = core::ranges::kMinRate;  ///< Hz
-  static constexpr double kMaxRealtimeFactor = 1e3;                   ///< sim s per wall s
+  static constexpr double kMaxRealtimeFactor = 1e3;                  ///< sim s per wall s
   /// The slowest slow motion, other than 0 (as fast as possible): a 1 ms
   /// step each wall second. 1e-300 froze the simulation without a word.
   static constexpr double kMinRealtimeFactor = 1e-3;
-  static constexpr double kMaxDuration = 1e6;        ///< s (wrench_timeout)
+  static constexpr double kMaxDuration = 1e6;  ///< s (wrench_timeout)
 };
 
 struct NodeParams {
