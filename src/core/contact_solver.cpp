@@ -298,7 +298,11 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
     }
   }
   // Velocities below the resting speed are rounding: zero, so that the body
-  // rests exactly. A body held up and left exactly still is in equilibrium.
+  // rests exactly. A body held up and left exactly still is in equilibrium,
+  // if it also came into the step still (its still time runs): a landing
+  // that stops a body dead is an impact, and a body that fell asleep on it
+  // kept the impact's impulse as the force that holds it up (13 N for a
+  // 1 kg ball). It sleeps a step later, on a step that only holds it.
   const double resting = model.solver().resting_speed;
   for (std::size_t i = 0; i < model.bodyCount(); ++i) {
     BodyState& b = state.bodies[i];
@@ -306,6 +310,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
     if (vel[i].v_W.squaredNorm() < resting * resting && vel[i].w_W.squaredNorm() < resting * resting) {
       b.v_WB.setZero();
       b.w_B.setZero();
+      if (!(b.still_time > 0.0)) held[i] = 0;
       continue;
     }
     held[i] = 0;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "../test_util.h"
+#include "rigid_body_sim/core/step.h"
 #include "scratch.h"
 
 namespace rigid_body_sim::test {
@@ -24,6 +25,25 @@ core::Contact between(int body, int other, double separation = 0.0) {
   c.other = other;
   c.separation = separation;
   return c;
+}
+
+TEST(Sleep, ABodyFallsAsleepOnAStepThatOnlyHoldsItUp) {
+  // A 1 kg ball dropped from 0.5 m stops dead on landing (no bounce), and
+  // fell asleep on that step: the contacts it kept, which the node reports
+  // for a sleeper, carried the impact (13.1 N) instead of m g. The step it
+  // falls asleep on now holds it up and nothing more: impulse = m g h.
+  const core::Model model(onGround(ballBody(0.1), core::ContactSettings{}));
+  core::State state;
+  core::LinkState start;
+  start.p_WL.z() = 0.6;
+  state.bodies = {core::bodyStateFromLink(model.body(0), start)};
+  core::Workspace ws;
+  int k = 0;
+  for (; k < 5000 && !state.bodies[0].asleep; ++k) core::step(model, state, {}, &ws);
+  ASSERT_TRUE(state.bodies[0].asleep) << "after " << k << " steps";
+  double normal = 0.0;
+  for (const core::Contact& c : ws.contacts) normal += c.normal_impulse;
+  EXPECT_NEAR(normal / model.dt(), 9.81, 1e-9) << "asleep after " << k << " steps";
 }
 
 TEST(Sleep, StillTimeCountsBelowBothSleepSpeedsAndRestartsAboveEither) {
