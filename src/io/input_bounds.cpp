@@ -121,57 +121,6 @@ std::size_t tagEnd(const std::string& xml, std::size_t at) {
   return std::string::npos;
 }
 
-/// Why a PLY header's element counts do not fit in the bytes after it, or "".
-std::string plyProblem(const std::string& bytes) {
-  const std::size_t end = bytes.find("end_header");
-  if (end == std::string::npos) return "";  // not a PLY header: the reader says so
-  const std::size_t body_start = bytes.find('\n', end);
-  const double body = body_start == std::string::npos ? 0.0 : static_cast<double>(bytes.size() - body_start - 1);
-  std::istringstream header(bytes.substr(0, end));
-  bool binary = false;
-  double need = 0.0;  // bytes the declared elements take at least
-  double count = 0.0, per_element = 0.0;
-  std::string element;
-  const auto size_of = [](const std::string& type) {
-    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1.0;
-    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2.0;
-    if (type == "double" || type == "float64") return 8.0;
-    return 4.0;
-  };
-  for (std::string line; std::getline(header, line);) {
-    std::istringstream words(line);
-    std::string word;
-    words >> word;
-    if (word == "format") {
-      words >> word;
-      binary = word.rfind("binary", 0) == 0;
-    } else if (word == "element") {
-      need += count * per_element;
-      per_element = 0.0;
-      std::string n;
-      words >> element >> n;
-      count = std::strtod(n.c_str(), nullptr);
-      if (!(count >= 0.0) || count > static_cast<double>(bytes.size())) {
-        return "its PLY header declares " + n + " '" + element + "' elements, more than the file's " +
-               std::to_string(bytes.size()) + " bytes can hold (readers allocate by that count)";
-      }
-    } else if (word == "property") {
-      std::string type, count_type;
-      words >> type;
-      if (type == "list") words >> count_type;
-      per_element += binary ? size_of(type == "list" ? count_type : type) : 2.0;
-    }
-  }
-  need += count * per_element;
-  if (need > body) {
-    std::ostringstream os;
-    os << "its PLY header declares elements of at least " << need << " bytes, and " << body
-       << " bytes follow it (readers allocate by the declared counts)";
-    return os.str();
-  }
-  return "";
-}
-
 /// Why a Collada count="N" attribute exceeds what the file can hold, or "".
 std::string daeProblem(const std::string& bytes) {
   for (std::size_t at = bytes.find("count"); at != std::string::npos; at = bytes.find("count", at + 5)) {
@@ -197,12 +146,11 @@ std::string daeProblem(const std::string& bytes) {
 std::string meshProblem(const std::string& bytes, const std::string& extension) {
   std::string ext = extension;
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == "ply") return plyProblem(bytes);
   if (ext == "dae") return daeProblem(bytes);
   if (ext == "stl" || ext == "obj") return "";
   return "the format '" + extension +
-         "' is not read here: STL, OBJ, DAE (Collada) and PLY are, the formats ROS tools draw and "
-         "Gazebo reads (each of assimp's others is a parser more for a file to attack)";
+         "' is not read here: STL, OBJ and DAE (Collada) are, the formats Gazebo reads (each of assimp's "
+         "other parsers is one more for a file to attack; its PLY reader hangs on a malformed header)";
 }
 
 std::string fileProblem(const std::string& path, std::uintmax_t max_bytes) {

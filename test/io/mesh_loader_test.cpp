@@ -74,28 +74,21 @@ TEST(MeshLoader, ReadsStlAndObjVerticesOnceEachAndScales) {
 
 TEST(MeshLoader, AHeaderThatDeclaresMoreThanTheFileHoldsIsRefusedBeforeAnyReaderAllocates) {
   const fs::path dir = tempDir("lying_headers");
-  const std::string ply_header = "ply\nformat ascii 1.0\nelement vertex ";
-  const std::string ply_rest =
-      "\nproperty float x\nproperty float y\nproperty float z\nelement face 4\n"
-      "property list uchar int vertex_indices\nend_header\n";
-  const std::string ply_body = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
-  // The honest tetrahedron loads.
-  std::ofstream(dir / "tet.ply") << ply_header << "4" << ply_rest << ply_body;
-  EXPECT_EQ(io::loadMesh((dir / "tet.ply").string(), Vec3::Ones()).vertices.size(), 4u);
-  // 4,000,000,000 vertices in a file of a few hundred bytes: assimp asked for 48 GB (std::bad_alloc).
-  std::ofstream(dir / "lie.ply") << ply_header << "4000000000" << ply_rest << ply_body;
-  expectThrowsWith<io::MeshError>([&] { io::loadMesh((dir / "lie.ply").string(), Vec3::Ones()); },
-                                  {"lie.ply", "declares 4000000000 'vertex' elements", "readers allocate"});
-  // Within the file's size, but more than the bytes after the header hold.
-  std::ofstream(dir / "short.ply") << ply_header << "40" << ply_rest << ply_body;
-  expectThrowsWith<io::MeshError>([&] { io::loadMesh((dir / "short.ply").string(), Vec3::Ones()); },
-                                  {"short.ply", "bytes follow it"});
+  // A Collada float_array of 4,000,000,000 in a file of a hundred bytes:
+  // assimp reserves by the count before it reads the numbers.
   std::ofstream(dir / "lie.dae") << "<COLLADA><library_geometries><float_array count=\"4000000000\">0 0 0"
                                     "</float_array></library_geometries></COLLADA>";
   expectThrowsWith<io::MeshError>([&] { io::loadMesh((dir / "lie.dae").string(), Vec3::Ones()); },
-                                  {"lie.dae", "count=4e+09"});
-  EXPECT_NE(io::meshProblem(ply_header + "4000000000" + ply_rest, "PLY"), "");  // the extension in any case
-  // A format outside the four is refused by name: each is a parser more to attack.
+                                  {"lie.dae", "count=4e+09", "readers allocate by that count"});
+  EXPECT_EQ(io::meshProblem("<float_array count='3'>0 0 0</float_array>", "DAE"), "");  // any case
+  // A 169-byte PLY that declared 4,000,000,000 vertices made assimp ask for
+  // 48 GB, and its PLY reader hangs on a malformed header (mesh_fuzzer,
+  // fuzz/seeds/mesh/ply_reader_hang.ply): PLY is refused by name, as every
+  // format outside STL, OBJ and DAE is.
+  std::ofstream(dir / "lie.ply") << "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\n"
+                                    "property float y\nproperty float z\nend_header\n0 0 0\n";
+  expectThrowsWith<io::MeshError>([&] { io::loadMesh((dir / "lie.ply").string(), Vec3::Ones()); },
+                                  {"lie.ply", "the format 'ply' is not read here"});
   std::ofstream(dir / "tet.off") << "OFF\n4000000000 1 0\n0 0 0\n";
   expectThrowsWith<io::MeshError>([&] { io::loadMesh((dir / "tet.off").string(), Vec3::Ones()); },
                                   {"tet.off", "the format 'off' is not read here"});

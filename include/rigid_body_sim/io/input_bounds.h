@@ -57,14 +57,15 @@ std::string yamlProblem(const std::string& text);
 std::string xmlProblem(const std::string& xml);
 
 /// Why a mesh file's bytes are refused before any reader allocates: a
-/// format other than STL, OBJ, DAE (Collada) and PLY (`extension`, any case,
+/// format other than STL, OBJ and DAE (Collada) (`extension`, any case,
 /// without the dot), or a count its header declares that the file's size
 /// cannot hold. Readers size their arrays by those counts: a 169-byte PLY
-/// that said `element vertex 4000000000` made assimp ask for 48 GB. A PLY
-/// element takes at least its properties' bytes (binary) or two characters
-/// a property (ASCII), and a DAE count="N" counts items of at least a byte
-/// each. STL and OBJ declare none that the reader trusts (assimp takes an
-/// STL as binary only when its size matches its count). "" when accepted.
+/// that said `element vertex 4000000000` made assimp ask for 48 GB, and
+/// assimp's PLY reader (Debian 12's 5.2.5) hangs on a malformed header
+/// (mesh_fuzzer found one in a minute), so PLY is not read. A DAE count="N"
+/// counts items of at least a byte each; STL and OBJ declare none that the
+/// reader trusts (assimp takes an STL as binary only when its size matches
+/// its count). "" when accepted.
 std::string meshProblem(const std::string& bytes, const std::string& extension);
 
 }  // namespace rigid_body_sim::io
