@@ -464,6 +464,7 @@ TEST_F(BadUrdf, BadDevicesStopTheNodeNamingTheKey) {
     std::string expected;
   } cases[] = {
       {"/imu_rate", "imu", "rate", 0.0, "imu.rate = 0"},
+      {"/imu_slow", "imu", "rate", 1e-300, "imu.rate = 1e-300"},  // it overflowed the step counter
       {"/imu_noise", "imu", "gyro_noise", -0.1, "imu.gyro_noise = -0.1"},
       {"/imu_frame", "imu", "frame_id", "base", "imu.frame_id 'base' of body 'base': is already a frame"},
       {"/imu_link", "imu", "link", "mast", "config key 'imu.link' = 'mast': no such link of body 'base'"},
@@ -493,6 +494,9 @@ TEST_F(BadUrdf, TimingParametersOutOfRangeStopTheNodeNamingTheKey) {
       {"/tiny", "rate", 1e-300, "parameter '~rate' = 1e-300"},
       {"/fast", "rate", 1e300, "parameter '~rate' = 1e+300"},
       {"/publish", "publish_rate", 1e-300, "parameter '~publish_rate' = 1e-300: must be within [0.01, 10000] Hz"},
+      // 1e-300 froze the simulation without a word.
+      {"/frozen", "realtime_factor", 1e-300,
+       "parameter '~realtime_factor' = 1e-300: must be 0 (as fast as possible) or within [0.001, 1000]"},
       {"/timeout", "wrench_timeout", -1.0, "parameter '~wrench_timeout' = -1: must be within [0, 1e+06]"},
       {"/frame", "world_frame", "base", "parameter '~world_frame' = 'base': is also a frame of body 'base'"},
   };
