@@ -30,8 +30,13 @@ for t in "${targets[@]}"; do
   (cd "$RBS_ROOT" && LSAN_OPTIONS=suppressions=$RBS_ROOT/fuzz/lsan.supp "$dir/build/$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
     -artifact_prefix="$dir/artifacts/$t-" -print_final_stats=1 "$corpus" ${seeds[$t]}) >"$dir/$t.log" 2>&1 || {
     status=$?
-    echo "fuzz: $t FAILED ($status); the end of its log:" >&2
-    tail -n 40 "$dir/$t.log" >&2
+    echo "fuzz: $t FAILED ($status); the sanitizer's report (its stack first) and the end of the log:" >&2
+    # The report's first lines name the access and its stack; the shadow
+    # map after them says little. CI keeps only what is printed here.
+    grep -m1 -A45 -E "^==[0-9]+==ERROR|^SUMMARY|deadly signal|timeout after" "$dir/$t.log" | grep -v "^  0x" >&2 || true
+    tail -n 12 "$dir/$t.log" >&2
+    # The failing input, as hex, so it can be rebuilt from CI's output.
+    for a in "$dir/artifacts/$t-"*; do [ -f "$a" ] && { echo "fuzz: input $a:" >&2; od -An -tx1 -v "$a" | head -n 200 >&2; }; done
     continue
   }
   grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$dir/$t.log" | tr '\n' ' ' | sed "s/^/fuzz: $t: /" >&2

@@ -205,6 +205,11 @@ std::string yamlProblem(const std::string& text) {
 }
 
 std::string xmlProblem(const std::string& xml) {
+  // TinyXML, which urdfdom parses with, reads a C string: it would stop at
+  // a NUL byte and the rest of the text would be dropped unread.
+  if (const std::size_t nul = xml.find('\0'); nul != std::string::npos) {
+    return "byte " + std::to_string(nul) + " is NUL: a URDF is text (the parser would stop there, the rest unread)";
+  }
   int depth = 0;
   int links = 0;
   for (std::size_t at = xml.find('<'); at != std::string::npos; at = xml.find('<', at)) {

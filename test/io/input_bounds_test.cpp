@@ -114,6 +114,17 @@ TEST(InputBounds, XmlNestingAndLinkCountAreCappedBeforeParsing) {
   EXPECT_NE(io::xmlProblem(chain(10001)).find("more than 10000 <link> elements"), std::string::npos);
 }
 
+// TinyXML reads a C string and stops at a NUL byte: what follows one would
+// be dropped unread (here a second robot; the first alone was accepted).
+TEST(InputBounds, AUrdfWithANulByteIsRefusedNotReadToTheNul) {
+  const std::string one = chain(1);
+  const std::string cut = one + std::string(1, '\0') + chain(2);
+  EXPECT_NE(io::xmlProblem(cut).find("byte " + std::to_string(one.size()) + " is NUL"), std::string::npos)
+      << io::xmlProblem(cut);
+  expectThrowsWith<io::UrdfError>([&] { io::loadUrdfString(cut, "nul.urdf"); }, {"nul.urdf", "is NUL"});
+  EXPECT_EQ(io::xmlProblem(one), "");
+}
+
 TEST(InputBounds, AChainOfTenThousandLinksLoadsWithoutRecursion) {
   // The loader's own recursion overflowed the stack at 10,000 links.
   const core::BodySpec body = io::loadUrdfString(chain(10000), "chain.urdf");

@@ -50,9 +50,9 @@ std::string readInput(const std::string& path, std::uintmax_t max_bytes, const s
 /// or a syntax error. "" when it is accepted.
 std::string yamlProblem(const std::string& text);
 
-/// Why an XML text is refused before it is parsed: elements nested deeper
-/// than kXmlDepth (the parser recurses), or more than kUrdfLinks <link>
-/// elements. "" when it is accepted. A scan of tags only: comments, CDATA,
+/// Why an XML text is refused before it is parsed: a NUL byte (the parser
+/// stops there, the rest unread), elements nested deeper than kXmlDepth
+/// (the parser recurses), or more than kUrdfLinks <link> elements. "" when it is accepted. A scan of tags only: comments, CDATA,
 /// processing instructions and declarations are skipped.
 std::string xmlProblem(const std::string& xml);
 
