@@ -52,7 +52,7 @@ void SimNode::forgetContactsOf(int body) {
 }
 
 void SimNode::publishContacts() {
-  const bool listed = contacts_pub_.getNumSubscribers() > 0, drawn = contact_markers_pub_.getNumSubscribers() > 0;
+  const bool listed = contacts_pub_.listened(), drawn = contact_markers_pub_.listened();
   if (!ros::ok() || (!listed && !drawn)) return;
   // The awake bodies' contacts from the step, the sleepers' kept.
   std::vector<core::Contact> touching_now = contacts_;

@@ -26,20 +26,23 @@ void SimNode::publish() {
   // an older one: on sim time a paused set_state waits for the next step.
   if (!last_published_.isZero() && now <= last_published_) return;
   last_published_ = now;
+  std_msgs::Header header;
+  header.stamp = now;
+  header.frame_id = settings_.world_frame;
+  tf_batch_.clear();
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
-    const core::BodyModel& body = model_.body(i);
-    const core::LinkState link = core::linkState(body, state_.bodies[i]);
-    geometry_msgs::TransformStamped tf;
-    tf.header.stamp = now;
-    tf.header.frame_id = settings_.world_frame;
-    tf.child_frame_id = ports_[i].frame;
-    tf.transform = toTransform(link.p_WL, link.q_WL);
-    if (settings_.publish_tf) tf_.sendTransform(tf);
-
+    const core::LinkState link = core::linkState(model_.body(i), state_.bodies[i]);
     BodyPorts& p = ports_[i];
+    if (settings_.publish_tf) {
+      geometry_msgs::TransformStamped tf;
+      tf.header = header;
+      tf.child_frame_id = p.frame;
+      tf.transform = toTransform(link.p_WL, link.q_WL);
+      tf_batch_.push_back(std::move(tf));
+    }
     const auto odometry = [&](const core::OdomReport& r, bool exact) {
       nav_msgs::Odometry odom;
-      odom.header = tf.header;
+      odom.header = header;
       odom.child_frame_id = p.frame;  // the twist is in this frame (nav_msgs/Odometry)
       odom.pose.pose = toPose(r.p_WL, r.q_WL);
       odom.twist.twist.linear = toVector3(r.v_L);
@@ -50,20 +53,27 @@ void SimNode::publish() {
       }
       return odom;
     };
-    const core::OdomReport exact = core::exactOdom(link);
+    // Built only for a topic someone listens to (counted_publisher.h); the
+    // noise is drawn all the same, so what a subscriber sees does not
+    // depend on when others came.
     if (p.odom_noise) {  // noisy odom, the exact state on ground_truth
-      p.odom.publish(odometry(p.odom_noise->report(link, simTime() - p.last_odom), false));
+      const core::OdomReport noisy = p.odom_noise->report(link, simTime() - p.last_odom);
       p.last_odom = simTime();
-      p.ground_truth.publish(odometry(exact, true));
-    } else {
-      p.odom.publish(odometry(exact, true));
+      if (p.odom.listened()) p.odom.publish(odometry(noisy, false));
+      if (p.ground_truth.listened()) p.ground_truth.publish(odometry(core::exactOdom(link), true));
+    } else if (p.odom.listened()) {
+      p.odom.publish(odometry(core::exactOdom(link), true));
     }
   }
+  // One message for all bodies, as robot_state_publisher sends a robot's
+  // links: a listener sees every body at one stamp at once, and the node
+  // makes one publish() per update, not one per body.
+  if (!tf_batch_.empty()) tf_.sendTransform(tf_batch_);
   resendMarkersIfDue();
 }
 
 void SimNode::publishBodyStates() {
-  if (!ros::ok() || body_states_pub_.getNumSubscribers() == 0) return;
+  if (!ros::ok() || !body_states_pub_.listened()) return;
   BodyStates msg;
   msg.header.stamp = stamp();
   msg.header.frame_id = settings_.world_frame;

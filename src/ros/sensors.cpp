@@ -23,7 +23,7 @@ void SimNode::sampleSensors() {
     if (!p.imu || steps_ % p.imu_every != 0) continue;
     const core::ImuReading r = p.imu->sample(model_.body(i), state_.bodies[i], model_.gravity(),
                                              static_cast<double>(p.imu_every) * model_.dt());
-    if (!ros::ok() || p.imu_pub.getNumSubscribers() == 0) continue;  // sampled all the same: the noise stays seeded
+    if (!ros::ok() || !p.imu_pub.listened()) continue;  // sampled all the same: the noise stays seeded
     const core::ImuSettings& s = p.imu->settings();
     sensor_msgs::Imu msg;
     msg.header.stamp = stamp();

@@ -143,9 +143,9 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   scene_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, on_subscriber, {}, {}, true);
   body_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("body_markers", 1, on_subscriber, {}, {}, true);
   if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-  body_states_pub_ = pnh_.advertise<BodyStates>("body_states", 10);
-  contacts_pub_ = pnh_.advertise<Contacts>("contacts", 10);
-  contact_markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("contact_markers", 10);
+  body_states_pub_ = CountedPublisher::advertise<BodyStates>(pnh_, "body_states", 10);
+  contacts_pub_ = CountedPublisher::advertise<Contacts>(pnh_, "contacts", 10);
+  contact_markers_pub_ = CountedPublisher::advertise<visualization_msgs::MarkerArray>(pnh_, "contact_markers", 10);
   services_ = {pnh_.advertiseService("apply_wrench", &SimNode::applyWrench, this),
                pnh_.advertiseService("apply_impulse", &SimNode::applyImpulse, this),
                pnh_.advertiseService("clear_wrenches", &SimNode::clearWrenches, this),
@@ -203,15 +203,15 @@ SimNode::BodyPorts SimNode::openPorts(const core::BodyModel& body, const core::B
   }
   if (odom_noise) {
     ports.odom_noise.emplace(*odom_noise);
-    ports.ground_truth = nh_.advertise<nav_msgs::Odometry>(prefix + "ground_truth", 10);
+    ports.ground_truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh_, prefix + "ground_truth", 10);
     ports.last_odom = simTime();
   }
   if (imu_settings) {
     ports.imu.emplace(*imu_settings, start);
     ports.imu_every = std::max(1LL, std::llround(1.0 / (imu->settings.rate * model_.dt())));
-    ports.imu_pub = nh_.advertise<sensor_msgs::Imu>(prefix + "imu", 100);
+    ports.imu_pub = CountedPublisher::advertise<sensor_msgs::Imu>(nh_, prefix + "imu", 100);
   }
-  ports.odom = nh_.advertise<nav_msgs::Odometry>(prefix + "odom", 10);
+  ports.odom = CountedPublisher::advertise<nav_msgs::Odometry>(nh_, prefix + "odom", 10);
   ports.wrench = pnh_.subscribe<geometry_msgs::WrenchStamped>(
       prefix + "wrench", 10, [this, name](const geometry_msgs::WrenchStamped::ConstPtr& m) { onWrench(name, m); });
   return ports;

@@ -3,6 +3,7 @@
 // from its own folder. world.test and world_config.test run these.
 #include <geometry_msgs/WrenchStamped.h>
 #include <nav_msgs/Odometry.h>
+#include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -10,6 +11,7 @@
 #include <complex>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "node_fixture.h"
 #include "rigid_body_sim/ClearWrenches.h"
@@ -62,6 +64,51 @@ TEST_F(World, EachBodyHasItsFrameTopicAndName) {
   EXPECT_EQ(odom["ball"].child_frame_id, "ball/ball");
   ASSERT_TRUE(spinUntil([&] { return buffer.canTransform("world", "ball/ball", ros::Time(0)); }, 10.0));
   EXPECT_NEAR(buffer.lookupTransform("world", "ball/ball", ros::Time(0)).transform.translation.x, 2.0, 1e-12);
+}
+
+// Each state update reaches /tf as one message holding every body at one
+// stamp, as robot_state_publisher sends a robot's links: a listener never
+// holds one body at a newer time than another, and the node makes one
+// publish() per update instead of one per body (bench/README.md, the node
+// with N bodies).
+TEST_F(World, OneTfMessageCarriesEveryBodyAtOneStamp) {
+  std::vector<tf2_msgs::TFMessage> got;
+  const ros::Subscriber sub = nh_.subscribe<tf2_msgs::TFMessage>(
+      "/tf", 100, [&](const tf2_msgs::TFMessage::ConstPtr& m) { got.push_back(*m); });
+  ASSERT_TRUE(spinUntil([&] { return sub.getNumPublishers() > 0; }, 10.0));
+  ASSERT_TRUE(trigger("unpause"));
+  ASSERT_TRUE(spinUntil([&] { return got.size() >= 5; }, 10.0));
+  for (const tf2_msgs::TFMessage& m : got) {
+    ASSERT_EQ(m.transforms.size(), 2u);
+    EXPECT_EQ(m.transforms[0].child_frame_id, "crate/base_link");
+    EXPECT_EQ(m.transforms[1].child_frame_id, "ball/ball");
+    EXPECT_EQ(m.transforms[0].header.stamp, m.transforms[1].header.stamp);
+    EXPECT_EQ(m.transforms[0].header.frame_id, "world");
+  }
+  EXPECT_LT(got.front().transforms[0].header.stamp, got.back().transforms[0].header.stamp);
+}
+
+// The node counts each odometry topic's subscribers itself and builds no
+// message no one would get (counted_publisher.h). A subscriber who leaves
+// and comes back, or a second one beside the first, is counted again.
+TEST_F(World, OdomReachesSubscribersThatLeaveAndComeBack) {
+  ASSERT_TRUE(trigger("unpause"));
+  int first = 0, second = 0;
+  for (int round = 0; round < 2; ++round) {
+    first = 0;
+    ros::Subscriber sub =
+        nh_.subscribe<nav_msgs::Odometry>("/ball/odom", 10, [&](const nav_msgs::Odometry::ConstPtr&) { ++first; });
+    ASSERT_TRUE(spinUntil([&] { return first >= 3; }, 10.0)) << "round " << round;
+    sub.shutdown();
+  }
+  ros::Subscriber a =
+      nh_.subscribe<nav_msgs::Odometry>("/ball/odom", 10, [&](const nav_msgs::Odometry::ConstPtr&) { ++first; });
+  ros::Subscriber b =
+      nh_.subscribe<nav_msgs::Odometry>("/ball/odom", 10, [&](const nav_msgs::Odometry::ConstPtr&) { ++second; });
+  ASSERT_TRUE(spinUntil([&] { return first >= 3 && second >= 3; }, 10.0));
+  a.shutdown();  // the other stays: still counted
+  second = 0;
+  EXPECT_TRUE(spinUntil([&] { return second >= 3; }, 10.0));
 }
 
 TEST_F(World, AnotherBodysFrameGivesTheAxesAndTurnsWithIt) {

@@ -38,6 +38,7 @@
 #include "rigid_body_sim/core/velocity_driver.h"
 #include "rigid_body_sim/core/wrench_schedule.h"
 #include "rigid_body_sim/io/world.h"
+#include "rigid_body_sim/ros/counted_publisher.h"
 #include "rigid_body_sim/ros/params.h"
 #include "rigid_body_sim/ros/sim_clock.h"
 
@@ -176,16 +177,16 @@ class SimNode {
   struct BodyPorts {
     std::string prefix;                          ///< "" or "NAME/", before its frames and topics
     std::string frame;                           ///< its tf frame: prefix + root link
-    ros::Publisher odom;                         ///< PREFIXodom
+    CountedPublisher odom;                       ///< PREFIXodom
     ros::Subscriber wrench;                      ///< ~PREFIXwrench
     std::optional<HeldWrench> held;              ///< from its ~wrench topic
     bool speed_limited = false;                  ///< the speed limits have held it (warned once)
     std::optional<core::Imu> imu;                ///< its IMU (sensors.cpp), sampled whether or not anyone listens
-    ros::Publisher imu_pub;                      ///< PREFIXimu, sensor_msgs/Imu
+    CountedPublisher imu_pub;                    ///< PREFIXimu, sensor_msgs/Imu
     std::string imu_frame;                       ///< prefix + the IMU's frame_id
     long long imu_every = 1;                     ///< steps per IMU sample
     std::optional<core::OdomNoise> odom_noise;   ///< noise on odom; the exact state then goes to ground_truth
-    ros::Publisher ground_truth;                 ///< PREFIXground_truth, with odom_noise
+    CountedPublisher ground_truth;               ///< PREFIXground_truth, with odom_noise
     double last_odom = 0.0;                      ///< s of sim time of its last odom report (for the drift)
     std::optional<core::VelocityDriver> driver;  ///< drives it toward its cmd_vel
     ros::Subscriber cmd_vel;                     ///< PREFIXcmd_vel, geometry_msgs/Twist
@@ -209,7 +210,7 @@ class SimNode {
   void publishContacts();                ///< ~contacts and ~contact_markers, while someone subscribes
   std::vector<core::Contact> contacts_;  ///< the sleeping bodies' contacts
   std::vector<char> kept_for_;           ///< per body: asleep, its contacts in contacts_
-  ros::Publisher contacts_pub_, contact_markers_pub_;
+  CountedPublisher contacts_pub_, contact_markers_pub_;
   /// Samples the IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();
   /// The IMU of body i starts a new period at its state now (after set_state, reset).
@@ -231,8 +232,10 @@ class SimNode {
   double ref_sim_ = 0.0;
   std::vector<double> tick_periods_;  ///< s, when ~report_timing
 
-  ros::Publisher clock_pub_, scene_pub_, body_pub_, body_states_pub_;
+  ros::Publisher clock_pub_, scene_pub_, body_pub_;
+  CountedPublisher body_states_pub_;
   tf2_ros::TransformBroadcaster tf_;
+  std::vector<geometry_msgs::TransformStamped> tf_batch_;  ///< every body's transform, sent as one /tf message
   /// Made again when a body goes: tf2_ros keeps every static transform it was given.
   std::optional<tf2_ros::StaticTransformBroadcaster> static_tf_;
   visualization_msgs::MarkerArray scene_markers_, body_markers_;
