@@ -6,28 +6,35 @@ namespace rigid_body_sim::node {
 
 using core::Quat;
 
+void SimNode::indexBodies() {
+  std::vector<BodyDirectory::Entry> entries(ports_.size());
+  for (std::size_t i = 0; i < ports_.size(); ++i) {
+    const BodyPorts& p = ports_[i];
+    entries[i].name = model_.body(i).name;
+    entries[i].frame = p.frame;
+    for (const core::FixedLink& link : model_.body(i).fixed_links)
+      entries[i].other_frames.push_back(p.prefix + link.name);
+    if (p.imu) entries[i].other_frames.push_back(p.imu_frame);
+  }
+  directory_.assign(std::move(entries));
+}
+
 std::optional<int> SimNode::findBody(const std::string& name, std::string& error) const {
   if (model_.bodyCount() == 0) {
     error = "the world has no bodies (~spawn_body adds one)";
     return std::nullopt;
   }
   if (name.empty() && model_.bodyCount() == 1) return 0;
-  std::string names;
-  for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
-    if (model_.body(i).name == name) return static_cast<int>(i);
-    names += (i ? ", '" : "'") + model_.body(i).name + "'";
-  }
-  error = name.empty() ? "there are several bodies: give body (" + names + ")"
-                       : "unknown body '" + name + "' (the bodies: " + names + ")";
+  if (const auto found = directory_.byName(name)) return found;
+  error = name.empty() ? "there are several bodies: give body (" + directory_.names() + ")"
+                       : "unknown body '" + name + "' (the bodies: " + directory_.names() + ")";
   return std::nullopt;
 }
 
 std::optional<SimNode::Axes> SimNode::findFrame(const std::string& frame, int body, std::string& error) const {
   if (frame.empty() || frame == settings_.world_frame || frame == "world") return Axes{};
   if (frame == ports_[body].frame || frame == model_.body(body).link) return Axes{core::Frame::kBody, -1};
-  for (std::size_t i = 0; i < ports_.size(); ++i) {
-    if (frame == ports_[i].frame) return Axes{core::Frame::kWorld, static_cast<int>(i)};
-  }
+  if (const auto other = directory_.byFrame(frame)) return Axes{core::Frame::kWorld, *other};
   error = "unknown frame '" + frame + "' (use '" + settings_.world_frame + "', the body's frame '" +
           ports_[body].frame + "'" + (ports_.size() > 1 ? " or another body's tf frame" : "") + ")";
   return std::nullopt;
@@ -35,16 +42,12 @@ std::optional<SimNode::Axes> SimNode::findFrame(const std::string& frame, int bo
 
 std::optional<core::Pose> SimNode::findPose(const std::string& frame, std::string& error) const {
   if (frame.empty() || frame == settings_.world_frame || frame == "world") return core::Pose{};
-  std::string frames;
-  for (std::size_t i = 0; i < ports_.size(); ++i) {
-    if (frame == ports_[i].frame) {
-      const core::LinkState link = core::linkState(model_.body(i), state_.bodies[i]);
-      return core::Pose{link.q_WL, link.p_WL};
-    }
-    frames += ", '" + ports_[i].frame + "'";
+  if (const auto body = directory_.byFrame(frame)) {
+    const core::LinkState link = core::linkState(model_.body(*body), state_.bodies[*body]);
+    return core::Pose{link.q_WL, link.p_WL};
   }
   error = "frame: unknown frame '" + frame + "' (use '" + settings_.world_frame + "'" +
-          (frames.empty() ? "" : " or a body's tf frame" + frames) + ")";
+          (directory_.size() == 0 ? "" : " or a body's tf frame" + directory_.frames()) + ")";
   return std::nullopt;
 }
 

@@ -120,6 +120,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     if (const std::string warning = io::touchesNothing(body); !warning.empty())
       ROS_WARN("sim_node: %s", warning.c_str());
   }
+  indexBodies();
   if (model_.bodyCount() == 0) ROS_INFO("sim_node: an empty world (bodies: []); ~spawn_body adds bodies");
   ROS_INFO("sim_node: ~rate %g Hz, ~dt %g s, ~realtime_factor %g, ~publish_rate %g Hz (every %lld steps)",
            settings_.rate, model_.dt(), settings_.realtime_factor, settings_.publish_rate, publish_every_);

@@ -170,20 +170,15 @@ SpawnBody::Response SimNode::insertBody(const PendingSpawn& spawn) {
     }
     new_frames.push_back(imu_frame);
   }
-  for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
-    const core::BodyModel& other = model_.body(i);
-    if (other.name == req.name) {
-      res.message = "name '" + req.name + "' is taken by a body in the world";
+  if (directory_.byName(req.name)) {
+    res.message = "name '" + req.name + "' is taken by a body in the world";
+    return res;
+  }
+  for (const std::string& frame : new_frames) {
+    if (const auto owner = directory_.ownerOf(frame)) {
+      res.message = "name '" + req.name + "': the new body's frame '" + frame + "' is a frame of body '" +
+                    model_.body(*owner).name + "'";
       return res;
-    }
-    std::vector<std::string> taken{ports_[i].frame};
-    for (const core::FixedLink& link : other.fixed_links) taken.push_back(ports_[i].prefix + link.name);
-    for (const std::string& frame : new_frames) {
-      if (std::find(taken.begin(), taken.end(), frame) != taken.end()) {
-        res.message =
-            "name '" + req.name + "': the new body's frame '" + frame + "' is a frame of body '" + other.name + "'";
-        return res;
-      }
     }
   }
   if (std::find(new_frames.begin(), new_frames.end(), settings_.world_frame) != new_frames.end()) {

@@ -53,6 +53,7 @@ void SimNode::freshWorkspace() {
 
 void SimNode::afterEdit(bool deleted) {
   freshWorkspace();
+  indexBodies();
   body_markers_ = bodyMarkers(model_, frames(), colours());
   if (deleted) {
     // rviz forgets every body marker, then draws those left. tf2_ros's

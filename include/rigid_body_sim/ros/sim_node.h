@@ -38,6 +38,7 @@
 #include "rigid_body_sim/core/velocity_driver.h"
 #include "rigid_body_sim/core/wrench_schedule.h"
 #include "rigid_body_sim/io/world.h"
+#include "rigid_body_sim/ros/body_directory.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
 #include "rigid_body_sim/ros/params.h"
 #include "rigid_body_sim/ros/sim_clock.h"
@@ -194,6 +195,9 @@ class SimNode {
     std::size_t colour = 0;                      ///< its markers' colour: the order it entered the world in
   };
   std::vector<BodyPorts> ports_;
+  BodyDirectory directory_;  ///< the bodies by name and by frame
+  /// Indexes the bodies by name and frame again (at start, after each edit).
+  void indexBodies();
   std::size_t bodies_entered_ = 0;  ///< bodies that have entered the world, the next one's colour
   /// The topics and frame of body i of the model, under `prefix`, and its
   /// IMU if it has one (a frame_id that is one of the body's frames throws).
