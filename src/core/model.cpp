@@ -161,35 +161,50 @@ PreparedBody BodyBuilder::build(const BodySpec& spec) const {
 }
 
 Model Model::withBody(const PreparedBody& body) const {
-  const std::string& name = body.body().name;
-  for (const BodyModel& b : bodies_) {
-    if (b.name == name) detail::fail("name", "'" + name + "'", "another body has this name; names must be unique");
-  }
   Model m = *this;  // the other bodies' distance grids are shared, not copied
-  m.bodies_.push_back(body.body());
-  for (BodyModel& b : m.bodies_) {  // a one-body world had no solids: contact between bodies needs them
-    if (b.solid_B.empty()) {
-      BodySpec shapes;
-      shapes.name = b.name;
-      shapes.collision = b.collision;
-      detail::buildSolid(shapes, solver_, b);
-    }
-  }
-  validateDamping(damping_, dt_, m.bodies_);
-  validatePenalty(contact_, dt_, m.bodies_);
-  validateBarrier(contact_, limits_, gravity_W_, m.bodies_);
-  m.deriveSettings();
+  m.addBody(body);
   return m;
 }
 
 Model Model::withoutBody(std::size_t i) const {
+  Model m = *this;
+  m.removeBody(i);
+  return m;
+}
+
+void Model::addBody(const PreparedBody& body) {
+  const std::string& name = body.body().name;
+  for (const BodyModel& b : bodies_) {
+    if (b.name == name) detail::fail("name", "'" + name + "'", "another body has this name; names must be unique");
+  }
+  bodies_.push_back(body.body());
+  try {
+    for (BodyModel& b : bodies_) {  // a one-body world had no solids: contact between bodies needs them
+      if (b.solid_B.empty()) {
+        BodySpec shapes;
+        shapes.name = b.name;
+        shapes.collision = b.collision;
+        detail::buildSolid(shapes, solver_, b);
+      }
+    }
+    validateDamping(damping_, dt_, bodies_);
+    validatePenalty(contact_, dt_, bodies_);
+    validateBarrier(contact_, limits_, gravity_W_, bodies_);
+  } catch (...) {
+    // Unchanged but for the solids built above, which only bodies use.
+    bodies_.pop_back();
+    deriveSettings();
+    throw;
+  }
+  deriveSettings();
+}
+
+void Model::removeBody(std::size_t i) {
   if (i >= bodies_.size()) {
     detail::fail("body", std::to_string(i), "no such body (" + std::to_string(bodies_.size()) + " in the model)");
   }
-  Model m = *this;
-  m.bodies_.erase(m.bodies_.begin() + static_cast<std::ptrdiff_t>(i));
-  m.deriveSettings();
-  return m;
+  bodies_.erase(bodies_.begin() + static_cast<std::ptrdiff_t>(i));
+  deriveSettings();
 }
 
 Model Model::retuned(const Tuning& t) const {

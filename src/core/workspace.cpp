@@ -9,6 +9,16 @@ Workspace::~Workspace() = default;
 Workspace::Workspace(Workspace&&) noexcept = default;
 Workspace& Workspace::operator=(Workspace&&) noexcept = default;
 
+Workspace Workspace::forEditedModel() {
+  Workspace fresh;
+  fresh.threads = threads;
+  fresh.min_parallel_work = min_parallel_work;
+  fresh.skip_fixed_points = skip_fixed_points;
+  if (scratch) fresh.scratch->pool = std::move(scratch->pool);  // threads are not a cache
+  *this = Workspace();
+  return fresh;
+}
+
 namespace detail {
 
 int partsFor(Workspace& ws, std::size_t work) {

@@ -117,6 +117,76 @@ TEST(WorldEdit, TheSameEditsAtTheSameStepsGiveTheSameBits) {
   EXPECT_TRUE(bitIdentical(once(), once()));
 }
 
+// The node edits its model in place between steps (an edited copy of a
+// world of 1,000 bodies cost the loop milliseconds and the heap its
+// copies) and keeps its worker threads: the bits are those of the copies.
+TEST(WorldEdit, EditsInPlaceGiveTheBitsOfEditedCopies) {
+  const core::ModelSpec spec = ground({named(boxBody(kHalf), "a"), named(boxBody(kHalf), "b")});
+  const auto start = [](const core::Model& model) {
+    core::State s;
+    s.bodies = {at(model, 0, Vec3(0, 0, 0.5)), at(model, 1, Vec3(0.1, 0, 1.0))};
+    return s;
+  };
+  const core::Model first(spec);
+  core::State copied = start(first);
+  {
+    core::Model model = first;
+    core::Workspace ws;
+    ws.threads = 2;
+    ws.min_parallel_work = 1;
+    run(model, copied, ws, 100);
+    model = model.withBody(named(ballBody(0.1), "c"));
+    ws = core::Workspace();
+    ws.threads = 2;
+    ws.min_parallel_work = 1;
+    copied.bodies.push_back(at(model, 2, Vec3(0, 0.05, 2.0), Vec3(0.5, 0, 0)));
+    run(model, copied, ws, 200);
+    core::removeBody(model, copied, 0);
+    model = model.withoutBody(0);
+    ws = core::Workspace();
+    ws.threads = 2;
+    ws.min_parallel_work = 1;
+    run(model, copied, ws, 300);
+  }
+  core::State in_place = start(first);
+  core::Model model = first;
+  core::Workspace ws;
+  ws.threads = 2;
+  ws.min_parallel_work = 1;
+  run(model, in_place, ws, 100);
+  model.addBody(model.bodyBuilder().build(named(ballBody(0.1), "c")));
+  ws = ws.forEditedModel();
+  EXPECT_EQ(ws.threads, 2);
+  in_place.bodies.push_back(at(model, 2, Vec3(0, 0.05, 2.0), Vec3(0.5, 0, 0)));
+  run(model, in_place, ws, 200);
+  core::removeBody(model, in_place, 0);
+  model.removeBody(0);
+  ws = ws.forEditedModel();
+  run(model, in_place, ws, 300);
+  EXPECT_TRUE(bitIdentical(copied, in_place));
+  EXPECT_EQ(model.bodyCount(), 2u);
+  EXPECT_EQ(model.body(1).name, "c");
+}
+
+// A body the model refuses only beside the others (here the penalty
+// spring, which no builder checks: it needs the step) leaves the model as
+// it was, in place too.
+TEST(WorldEdit, AnAddBodyTheModelRefusesLeavesItAsItWas) {
+  core::ModelSpec spec = ground({named(boxBody(kHalf), "box")});
+  spec.contact.method = core::ContactMethod::kPenaltyQuadratic;
+  spec.contact.penalty_stiffness = 1e5;  // k dt^2 / m = 0.1 for the 1 kg box at dt = 1 ms
+  core::Model model(spec);
+  core::BodySpec light = named(ballBody(0.01), "light");
+  light.mass = 1e-3;  // k dt^2 / m = 100: unstable
+  const core::PreparedBody prepared = model.bodyBuilder().build(light);
+  expectThrowsWith<std::invalid_argument>([&] { model.addBody(prepared); },
+                                          {"contact.penalty_stiffness", "body 'light'"});
+  EXPECT_EQ(model.bodyCount(), 1u);
+  EXPECT_EQ(model.body(0).name, "box");
+  model.addBody(model.bodyBuilder().build(named(boxBody(kHalf), "second")));
+  EXPECT_EQ(model.bodyCount(), 2u);
+}
+
 TEST(WorldEdit, ABodyBuiltOnAnotherThreadIsTheBodyWithBodyBuilds) {
   // The node builds a spawned body off its loop (a mesh's grid takes
   // seconds) from a builder taken at start, while the model is retuned:

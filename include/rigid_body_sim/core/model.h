@@ -196,6 +196,12 @@ class Model {
   /// This model without body i (the later ones move down by one); it may
   /// leave no body at all. Pair it with removeBody() on the state.
   Model withoutBody(std::size_t i) const;
+  /// withBody() and withoutBody() on this model, in place: an edit between
+  /// two steps copies none of the other bodies (the node's spawns and
+  /// deletes, issue 32). addBody() leaves the model as it was when it
+  /// throws. Step an edited model with Workspace::forEditedModel().
+  void addBody(const PreparedBody& body);
+  void removeBody(std::size_t i);
   /// The coefficients of a contact between `body` and `other` (< 0: the
   /// scene), by the contact settings' combine rules.
   double friction(int body, int other) const {

@@ -55,6 +55,11 @@ struct Workspace {
   /// their pose before it, at rest: the caller clears their loads and says so.
   std::vector<Divergence> diverged;
 
+  /// A workspace for a model edited since this one stepped it (a body added
+  /// or removed): the same knobs and worker threads, none of the caches,
+  /// which assumed the old model; this one is left empty.
+  Workspace forEditedModel();
+
   /// The stages' scratch memory; not for callers.
   std::unique_ptr<detail::StepScratch> scratch;
 };
