@@ -6,16 +6,18 @@ namespace rigid_body_sim::node {
 
 using core::Quat;
 
+BodyDirectory::Entry SimNode::directoryEntry(std::size_t i) const {
+  const BodyPorts& p = ports_[i];
+  BodyDirectory::Entry e{model_.body(i).name, p.frame, {}};
+  for (const core::FixedLink& link : model_.body(i).fixed_links) e.other_frames.push_back(p.prefix + link.name);
+  if (p.imu) e.other_frames.push_back(p.imu_frame);
+  return e;
+}
+
 void SimNode::indexBodies() {
-  std::vector<BodyDirectory::Entry> entries(ports_.size());
-  for (std::size_t i = 0; i < ports_.size(); ++i) {
-    const BodyPorts& p = ports_[i];
-    entries[i].name = model_.body(i).name;
-    entries[i].frame = p.frame;
-    for (const core::FixedLink& link : model_.body(i).fixed_links)
-      entries[i].other_frames.push_back(p.prefix + link.name);
-    if (p.imu) entries[i].other_frames.push_back(p.imu_frame);
-  }
+  std::vector<BodyDirectory::Entry> entries;
+  entries.reserve(ports_.size());
+  for (std::size_t i = 0; i < ports_.size(); ++i) entries.push_back(directoryEntry(i));
   directory_.assign(std::move(entries));
 }
 

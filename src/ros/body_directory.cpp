@@ -12,19 +12,35 @@ std::optional<int> find(const std::unordered_map<std::string, int>& map, const s
 }  // namespace
 
 void BodyDirectory::assign(std::vector<Entry> bodies) {
-  bodies_ = std::move(bodies);
   by_name_.clear();
   by_frame_.clear();
   owner_.clear();
-  by_name_.reserve(bodies_.size());
-  by_frame_.reserve(bodies_.size());
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    const int index = static_cast<int>(i);
-    const Entry& e = bodies_[i];
-    by_name_.emplace(e.name, index);
-    by_frame_.emplace(e.frame, index);
-    owner_.emplace(e.frame, index);
-    for (const std::string& frame : e.other_frames) owner_.emplace(frame, index);
+  bodies_.clear();
+  bodies_.reserve(bodies.size());
+  for (Entry& e : bodies) add(std::move(e));
+}
+
+void BodyDirectory::add(Entry body) {
+  const int index = static_cast<int>(bodies_.size());
+  by_name_.emplace(body.name, index);
+  by_frame_.emplace(body.frame, index);
+  owner_.emplace(body.frame, index);
+  for (const std::string& frame : body.other_frames) owner_.emplace(frame, index);
+  bodies_.push_back(std::move(body));
+}
+
+void BodyDirectory::erase(std::size_t i) {
+  const Entry& gone = bodies_.at(i);
+  by_name_.erase(gone.name);
+  by_frame_.erase(gone.frame);
+  owner_.erase(gone.frame);
+  for (const std::string& frame : gone.other_frames) owner_.erase(frame);
+  bodies_.erase(bodies_.begin() + static_cast<std::ptrdiff_t>(i));
+  const int index = static_cast<int>(i);
+  for (auto* map : {&by_name_, &by_frame_, &owner_}) {
+    for (auto& [key, body] : *map) {
+      if (body > index) --body;
+    }
   }
 }
 

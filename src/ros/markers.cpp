@@ -1,5 +1,6 @@
 #include "rigid_body_sim/ros/markers.h"
 
+#include <algorithm>
 #include <array>
 
 #include "rigid_body_sim/core/sdf_surface.h"
@@ -144,20 +145,33 @@ MarkerArray sceneMarkers(const std::vector<core::Sdf>& scene, const std::string&
   return markers;
 }
 
-MarkerArray bodyMarkers(const core::Model& model, const std::vector<std::string>& frames,
-                        const std::vector<std::size_t>& colours) {
+void appendBodyMarkers(const core::BodyModel& body, const std::string& frame, std::size_t colour,
+                       MarkerArray& markers) {
   static const std::array<std::array<float, 4>, 4> kColours = {
       {{0.85f, 0.45f, 0.2f, 1.0f}, {0.25f, 0.55f, 0.85f, 1.0f}, {0.4f, 0.7f, 0.3f, 1.0f}, {0.75f, 0.3f, 0.6f, 1.0f}}};
-  MarkerArray markers;
-  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
-    const core::BodyModel& b = model.body(i);
-    Marker base = newMarker(frames[i], b.name, kColours[colours[i] % kColours.size()]);
-    base.frame_locked = true;
-    for (const core::CollisionShape& shape : b.collision) {
-      markers.markers.push_back(shapeMarker(shape, base));
-      markers.markers.back().id = base.id++;
-    }
+  Marker base = newMarker(frame, body.name, kColours[colour % kColours.size()]);
+  base.frame_locked = true;
+  for (const core::CollisionShape& shape : body.collision) {
+    markers.markers.push_back(shapeMarker(shape, base));
+    markers.markers.back().id = base.id++;
   }
+}
+
+void eraseBodyMarkers(const std::string& body, MarkerArray& markers) {
+  std::vector<Marker>& m = markers.markers;
+  m.erase(std::remove_if(m.begin(), m.end(), [&](const Marker& x) { return x.ns == body && x.action == Marker::ADD; }),
+          m.end());
+  if (m.empty() || m.front().action != Marker::DELETEALL) {
+    Marker clear;
+    clear.action = Marker::DELETEALL;
+    m.insert(m.begin(), clear);
+  }
+}
+
+MarkerArray bodyMarkers(const core::Model& model, const std::vector<std::string>& frames,
+                        const std::vector<std::size_t>& colours) {
+  MarkerArray markers;
+  for (std::size_t i = 0; i < model.bodyCount(); ++i) appendBodyMarkers(model.body(i), frames[i], colours[i], markers);
   return markers;
 }
 

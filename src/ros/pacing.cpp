@@ -138,6 +138,17 @@ void SimNode::run() {
         d.size(), 1.0 / settings_.rate, 1e6 * d[d.size() / 2], 1e6 * d[d.size() * 99 / 100], 1e6 * d.back(), simTime());
     std::fflush(stdout);
   }
+  const auto edits = [](const char* what, std::vector<double> d) {
+    if (d.empty()) return;
+    std::sort(d.begin(), d.end());
+    std::printf("sim_node: timing: %zu %s on the loop, p50 %.3f ms, p90 %.3f ms, max %.3f ms\n", d.size(), what,
+                1e3 * d[d.size() / 2], 1e3 * d[d.size() * 9 / 10], 1e3 * d.back());
+    std::fflush(stdout);
+  };
+  if (settings_.report_timing) {
+    edits("spawns", spawn_times_);
+    edits("deletes", delete_times_);
+  }
 }
 
 }  // namespace rigid_body_sim::node

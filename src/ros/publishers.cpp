@@ -99,12 +99,15 @@ void SimNode::publishBodyStates() {
   body_states_pub_.publish(msg);
 }
 
-void SimNode::publishFixedFrames() {
+void SimNode::publishFixedFrames(std::size_t first) {
   if (!ros::ok()) return;
   // Links fixed to a body: their frames under the body's prefix, as
   // robot_state_publisher publishes them for one robot (static: they never move).
-  std::vector<geometry_msgs::TransformStamped> fixed;
-  for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
+  std::vector<geometry_msgs::TransformStamped>& fixed = static_frames_.transforms;
+  const bool had = !fixed.empty();
+  if (first == 0) fixed.clear();
+  const std::size_t before = fixed.size();
+  for (std::size_t i = first; i < model_.bodyCount(); ++i) {
     const core::BodyModel& body = model_.body(i);
     const std::string& prefix = ports_[i].prefix;
     for (const core::FixedLink& link : body.fixed_links) {
@@ -125,7 +128,9 @@ void SimNode::publishFixedFrames() {
       fixed.push_back(tf);
     }
   }
-  if (!fixed.empty()) static_tf_->sendTransform(fixed);
+  // A new set whole (latched: a later subscriber gets it), or fewer frames
+  // after a delete; nothing when nothing changed.
+  if (fixed.size() > before || (first == 0 && had)) tf_static_pub_.publish(static_frames_);
 }
 
 BodyState SimNode::bodyState(int body, const Axes& axes) const {

@@ -8,6 +8,7 @@
 #include <sensor_msgs/Imu.h>
 
 #include <algorithm>
+#include <boost/make_shared.hpp>
 #include <cmath>
 #include <filesystem>
 
@@ -113,7 +114,8 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     const BodyDevices devices = c.bodies_listed
                                     ? BodyDevices{c.bodies[i].imu, c.bodies[i].odom_noise, c.bodies[i].cmd_vel}
                                     : BodyDevices{c.imu, c.odom_noise, c.cmd_vel};
-    ports_.push_back(openPorts(body, state_.bodies[i], several ? body.name + "/" : "", devices));
+    ports_.push_back(openPorts(body, several ? body.name + "/" : "", devices));
+    startPorts(ports_.back(), state_.bodies[i]);
     ports_.back().colour = bodies_entered_++;
     ROS_INFO("sim_node: body '%s' (frame '%s'), %.6g kg, %zu collision points", body.name.c_str(),
              ports_.back().frame.c_str(), body.mass, body.contact_points.size());
@@ -162,7 +164,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   spawn_service_ = spawn_nh.advertiseService("spawn_body", &SimNode::spawnBody, this);
   spawn_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &spawn_queue_);
   spawn_spinner_->start();
-  static_tf_.emplace();
+  tf_static_pub_ = nh_.advertise<tf2_msgs::TFMessage>("/tf_static", 100, true);
   startReconfigure();
   scene_pub_.publish(scene_markers_);
   body_pub_.publish(body_markers_);
@@ -176,8 +178,8 @@ SimNode::~SimNode() {
   if (spawn_spinner_) spawn_spinner_->stop();
 }
 
-SimNode::BodyPorts SimNode::openPorts(const core::BodyModel& body, const core::BodyState& start,
-                                      const std::string& prefix, const BodyDevices& devices) {
+SimNode::BodyPorts SimNode::openPorts(const core::BodyModel& body, const std::string& prefix,
+                                      const BodyDevices& devices) {
   const auto& [imu, odom_noise, cmd_vel] = devices;
   BodyPorts ports;
   ports.prefix = prefix;
@@ -197,25 +199,55 @@ SimNode::BodyPorts SimNode::openPorts(const core::BodyModel& body, const core::B
     imu_settings->X_LS = mountOf(body, imu->link, imu->key) * imu->settings.X_LS;
   }
   const std::string name = body.name;  // by name: a deletion moves the later bodies' indices
+  // Through handles of the body's own: a NodeHandle keeps a record of every
+  // topic opened through it for as long as it lives (264 bytes each, which
+  // the node's own handles kept for every body ever spawned).
+  ports.nh = nh_;
+  ports.pnh = pnh_;
   if (cmd_vel) {
     ports.driver.emplace(*cmd_vel);
-    ports.cmd_vel = nh_.subscribe<geometry_msgs::Twist>(
+    ports.cmd_vel = ports.nh.subscribe<geometry_msgs::Twist>(
         prefix + "cmd_vel", 10, [this, name](const geometry_msgs::Twist::ConstPtr& m) { onCmdVel(name, m); });
   }
   if (odom_noise) {
-    ports.odom_noise.emplace(*odom_noise);
-    ports.ground_truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh_, prefix + "ground_truth", 10);
-    ports.last_odom = simTime();
+    ports.odom_noise = std::make_unique<core::OdomNoise>(*odom_noise);
+    ports.ground_truth = CountedPublisher::advertise<nav_msgs::Odometry>(ports.nh, prefix + "ground_truth", 10);
   }
   if (imu_settings) {
-    ports.imu.emplace(*imu_settings, start);
-    ports.imu_every = std::max(1LL, std::llround(1.0 / (imu->settings.rate * model_.dt())));
-    ports.imu_pub = CountedPublisher::advertise<sensor_msgs::Imu>(nh_, prefix + "imu", 100);
+    ports.imu = std::make_unique<core::Imu>(*imu_settings, core::BodyState{});  // startPorts() gives it the start
+    ports.imu_every = std::max(1LL, std::llround(1.0 / (imu->settings.rate * dt_)));
+    ports.imu_pub = CountedPublisher::advertise<sensor_msgs::Imu>(ports.nh, prefix + "imu", 100);
   }
-  ports.odom = CountedPublisher::advertise<nav_msgs::Odometry>(nh_, prefix + "odom", 10);
-  ports.wrench = pnh_.subscribe<geometry_msgs::WrenchStamped>(
+  ports.odom = CountedPublisher::advertise<nav_msgs::Odometry>(ports.nh, prefix + "odom", 10);
+  ports.wrench = ports.pnh.subscribe<geometry_msgs::WrenchStamped>(
       prefix + "wrench", 10, [this, name](const geometry_msgs::WrenchStamped::ConstPtr& m) { onWrench(name, m); });
   return ports;
+}
+
+void SimNode::startPorts(BodyPorts& ports, const core::BodyState& start) {
+  if (ports.imu) ports.imu->restart(start);
+  ports.last_odom = simTime();
+}
+
+namespace {
+
+/// Lets what it holds go when the queue calls it, on the queue's thread.
+class Release : public ros::CallbackInterface {
+ public:
+  explicit Release(std::shared_ptr<void> what) : what_(std::move(what)) {}
+  CallResult call() override {
+    what_.reset();
+    return Success;
+  }
+
+ private:
+  std::shared_ptr<void> what_;
+};
+
+}  // namespace
+
+void SimNode::closeLater(BodyPorts&& ports) {
+  spawn_queue_.addCallback(boost::make_shared<Release>(std::make_shared<BodyPorts>(std::move(ports))));
 }
 
 std::vector<std::size_t> SimNode::colours() const {

@@ -1,8 +1,8 @@
 // ~spawn_body: read, checked and built on the spawn thread (a mesh body's
 // distance grid takes up to seconds, which the loop must not wait for), then
 // added by the loop between two steps (insertPendingBodies). A step never
-// sees the model change: the edit replaces it by an edited copy
-// (core::Model::withBody). Deleting is in world_requests.cpp.
+// sees the model change: the loop adds the body in place between steps
+// (core::Model::addBody). Deleting is in world_requests.cpp.
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -104,7 +104,7 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
       return false;
     }
   };
-  BodyDevices& d = pending->devices;
+  BodyDevices d;
   const double dt = dt_;
   if (!parsed(
           "imu", req.imu, [dt](const std::string& y) { return io::parseImuText(y, "imu", dt); }, d.imu) ||
@@ -113,6 +113,12 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
           d.odom_noise) ||
       !parsed(
           "cmd_vel", req.cmd_vel, [](const std::string& y) { return io::parseDriverText(y, "cmd_vel"); }, d.cmd_vel)) {
+    return true;
+  }
+  try {
+    pending->ports = std::make_unique<BodyPorts>(openPorts(pending->body.body(), req.name + "/", d));
+  } catch (const std::exception& e) {
+    res.message = e.what();
     return true;
   }
   pending->request = req;
@@ -141,17 +147,21 @@ void SimNode::insertPendingBodies() {
   for (const auto& spawn : pending) {
     // No request may end the node: whatever escapes is the request's answer.
     SpawnBody::Response res;
+    const auto start = std::chrono::steady_clock::now();
     try {
       res = insertBody(*spawn);
     } catch (const std::exception& e) {
       res.success = false;
       res.message = "body '" + spawn->request.name + "' was not added: " + e.what();
     }
+    if (settings_.report_timing) {
+      spawn_times_.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
     spawn->done.set_value(res);
   }
 }
 
-SpawnBody::Response SimNode::insertBody(const PendingSpawn& spawn) {
+SpawnBody::Response SimNode::insertBody(PendingSpawn& spawn) {
   SpawnBody::Response res;
   res.success = false;
   const SpawnBody::Request& req = spawn.request;
@@ -161,15 +171,7 @@ SpawnBody::Response SimNode::insertBody(const PendingSpawn& spawn) {
   const std::string prefix = req.name + "/";
   std::vector<std::string> new_frames{prefix + body.link};
   for (const core::FixedLink& link : body.fixed_links) new_frames.push_back(prefix + link.name);
-  if (spawn.devices.imu) {
-    const std::string imu_frame = prefix + spawn.devices.imu->frame_id;
-    if (std::find(new_frames.begin(), new_frames.end(), imu_frame) != new_frames.end()) {
-      res.message =
-          "imu: frame_id '" + spawn.devices.imu->frame_id + "' is a frame of the body itself; name the sensor's own";
-      return res;
-    }
-    new_frames.push_back(imu_frame);
-  }
+  if (spawn.ports->imu) new_frames.push_back(spawn.ports->imu_frame);  // not one of the body's (openPorts)
   if (directory_.byName(req.name)) {
     res.message = "name '" + req.name + "' is taken by a body in the world";
     return res;
@@ -198,22 +200,22 @@ SpawnBody::Response SimNode::insertBody(const PendingSpawn& spawn) {
        checkSpeed(link.v_WL, model_.limits().linear, "twist.linear", "limits.max_linear_speed", "m/s"),
        checkSpeed(link.w_W, model_.limits().angular, "twist.angular", "limits.max_angular_speed", "rad/s")});
   if (!res.message.empty()) return res;
-  // Everything that may refuse runs before the world changes: the ports
-  // (an IMU on no such link), then the edited model.
+  // Everything that may refuse runs before the world changes (the ports,
+  // opened on the spawn thread, refused an IMU on no such link).
   try {
     const core::BodyState start = core::bodyStateFromLink(body, link);
-    BodyPorts ports = openPorts(body, start, prefix, spawn.devices);
-    core::Model edited = model_.withBody(spawn.body);
-    world_.model = std::move(edited);
+    world_.model.addBody(spawn.body);  // in place, unchanged if it throws
     state_.bodies.push_back(start);
     initial_.bodies.push_back(start);  // reset puts it back where it was spawned
+    BodyPorts& ports = *spawn.ports;
+    startPorts(ports, start);
     ports.colour = bodies_entered_++;
     ports_.push_back(std::move(ports));
   } catch (const std::exception& e) {
     res.message = e.what();
     return res;
   }
-  afterEdit(false);
+  afterSpawn();
   res.success = true;
   res.message = "body '" + req.name + "' added at t = " + now() + ": frame '" + ports_.back().frame + "', topics '" +
                 nh_.resolveName(prefix + "odom") + "' and '" + pnh_.resolveName(prefix + "wrench") + "'";

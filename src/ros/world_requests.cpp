@@ -1,7 +1,9 @@
 // ~delete_body, and what follows any edit of the world (a fresh workspace,
 // the markers and fixed frames again). A body goes between two steps: the
-// model is replaced by an edited copy (core::Model::withoutBody), never
+// model is edited in place (core::Model::removeBody), never
 // changed during a step. Spawning is in spawn_requests.cpp.
+#include <chrono>
+
 #include "rigid_body_sim/ros/markers.h"
 #include "rigid_body_sim/ros/sim_node.h"
 
@@ -20,14 +22,15 @@ bool SimNode::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res) {
     return true;
   }
   const int i = *found;
-  core::Model edited = model_.withoutBody(static_cast<std::size_t>(i));
+  const auto start = std::chrono::steady_clock::now();
   core::removeBody(model_, state_, i);  // wakes what may touch it
   core::removeBody(model_, initial_, i);
-  world_.model = std::move(edited);
+  world_.model.removeBody(static_cast<std::size_t>(i));  // in place: the others are not copied
   const std::size_t dropped = schedule_.removeBody(i);
   forgetContactsOf(i);
-  ports_.erase(ports_.begin() + i);  // its publisher and subscriber go with it
-  for (BodyPorts& p : ports_) {      // wrenches held in its axes go too
+  closeLater(std::move(ports_[i]));  // its topics, off the loop
+  ports_.erase(ports_.begin() + i);
+  for (BodyPorts& p : ports_) {  // wrenches held in its axes go too
     if (!p.held || p.held->axes.other < i) continue;
     if (p.held->axes.other == i) {
       p.held.reset();
@@ -35,7 +38,10 @@ bool SimNode::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res) {
       --p.held->axes.other;
     }
   }
-  afterEdit(true);
+  afterDelete(i, req.name);
+  if (settings_.report_timing) {
+    delete_times_.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
   res.success = true;
   res.message = "body '" + req.name + "' deleted at t = " + now() + " (" + std::to_string(dropped) +
                 " timed wrenches went with it); " + std::to_string(model_.bodyCount()) + " bodies left";
@@ -43,26 +49,25 @@ bool SimNode::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res) {
   return true;
 }
 
-void SimNode::freshWorkspace() {
-  core::Workspace fresh;
-  fresh.threads = workspace_.threads;
-  fresh.min_parallel_work = workspace_.min_parallel_work;
-  fresh.skip_fixed_points = workspace_.skip_fixed_points;
-  workspace_ = std::move(fresh);
+void SimNode::freshWorkspace() { workspace_ = workspace_.forEditedModel(); }
+
+// Each edit touches what the body it adds or removes has: a spawn at
+// N = 1000 rebuilt every body's markers and names, and opened its topics
+// (round trips to the master), and cost the loop 5-6 ms (bench/spawn_memory.sh).
+void SimNode::afterSpawn() {
+  const std::size_t last = model_.bodyCount() - 1;
+  freshWorkspace();
+  directory_.add(directoryEntry(last));
+  appendBodyMarkers(model_.body(last), ports_[last].frame, ports_[last].colour, body_markers_);
+  body_pub_.publish(body_markers_);  // latched: the whole set, for a subscriber who comes later
+  publishFixedFrames(last);
 }
 
-void SimNode::afterEdit(bool deleted) {
+void SimNode::afterDelete(int body, const std::string& name) {
   freshWorkspace();
-  indexBodies();
-  body_markers_ = bodyMarkers(model_, frames(), colours());
-  if (deleted) {
-    // rviz forgets every body marker, then draws those left. tf2_ros's
-    // static broadcaster keeps all it was sent: a new one sends the rest.
-    visualization_msgs::Marker clear;
-    clear.action = visualization_msgs::Marker::DELETEALL;
-    body_markers_.markers.insert(body_markers_.markers.begin(), clear);
-    static_tf_.emplace();
-  }
+  directory_.erase(static_cast<std::size_t>(body));
+  // rviz forgets every body marker, then draws those left.
+  eraseBodyMarkers(name, body_markers_);
   body_pub_.publish(body_markers_);
   publishFixedFrames();
 }

@@ -31,7 +31,23 @@ TEST(BodyDirectory, FindsABodyByNameByTfFrameAndByAnyOfItsFrames) {
   EXPECT_FALSE(d.ownerOf("world"));
 }
 
-// After a deletion the node indexes again: the later bodies move down.
+// A delete forgets the body and its frames; the later bodies move down.
+TEST(BodyDirectory, EraseMovesTheLaterBodiesDown) {
+  BodyDirectory d = threeBodies();
+  d.erase(1);
+  EXPECT_FALSE(d.byName("ball"));
+  EXPECT_FALSE(d.byFrame("ball/ball"));
+  EXPECT_FALSE(d.ownerOf("ball/imu_link"));
+  EXPECT_EQ(d.byName("crate"), 0);
+  EXPECT_EQ(d.ownerOf("crate/lid"), 0);
+  EXPECT_EQ(d.byName("arm"), 1);
+  EXPECT_EQ(d.byFrame("arm/base"), 1);
+  EXPECT_EQ(d.size(), 2u);
+  EXPECT_EQ(d.entry(1).name, "arm");
+  d.add({"ball", "ball/ball", {}});  // the name is free again
+  EXPECT_EQ(d.byName("ball"), 2);
+}
+
 TEST(BodyDirectory, AssignForgetsWhatItHeld) {
   BodyDirectory d = threeBodies();
   d.assign({{"crate", "crate/base_link", {"crate/lid"}}, {"arm", "arm/base", {}}});
@@ -40,6 +56,18 @@ TEST(BodyDirectory, AssignForgetsWhatItHeld) {
   EXPECT_EQ(d.byName("arm"), 1);
   EXPECT_EQ(d.byFrame("arm/base"), 1);
   EXPECT_EQ(d.size(), 2u);
+}
+
+// A spawn indexes one more body, last, as assign() would have.
+TEST(BodyDirectory, AddIndexesOneMoreLast) {
+  BodyDirectory d = threeBodies();
+  d.add({"probe", "probe/base", {"probe/imu"}});
+  EXPECT_EQ(d.byName("probe"), 3);
+  EXPECT_EQ(d.byFrame("probe/base"), 3);
+  EXPECT_EQ(d.ownerOf("probe/imu"), 3);
+  EXPECT_EQ(d.byName("ball"), 1);
+  EXPECT_EQ(d.size(), 4u);
+  EXPECT_EQ(d.entry(3).name, "probe");
 }
 
 // A message lists a few names, then says how many more: an error in a

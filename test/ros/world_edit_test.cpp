@@ -293,8 +293,8 @@ TEST_F(NodeSpawn, BadRequestsAreRefusedNamingTheFieldAndChangeNothing) {
   imu.imu = "{rate: 0}";
   refused(imu, "imu: config key imu.rate = 0");
   imu.imu = "{frame_id: base_link}";
-  refused(imu, "imu: frame_id 'base_link' is a frame of the body itself");
-  // An IMU on no such link: refused by the loop, which once threw it and ended the node.
+  refused(imu, "imu.frame_id 'base_link' of body 'extra': is already a frame");
+  // An IMU on no such link: refused on the spawn thread, where the loop once threw it and ended the node.
   imu.imu = "{link: nope}";
   refused(imu, "config key 'imu.link' = 'nope': no such link of body 'extra'");
   imu.imu = "{rate: 100, rate: 200}";

@@ -23,6 +23,10 @@ class BodyDirectory {
 
   /// Forgets what it held and indexes `bodies` (entry i is body i).
   void assign(std::vector<Entry> bodies);
+  /// Indexes one more body, last (a spawn: the others are not touched).
+  void add(Entry body);
+  /// Forgets body i; the later ones move down by one (a delete).
+  void erase(std::size_t i);
 
   std::size_t size() const { return bodies_.size(); }
   const Entry& entry(std::size_t i) const { return bodies_[i]; }

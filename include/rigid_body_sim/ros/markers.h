@@ -24,5 +24,11 @@ visualization_msgs::MarkerArray sceneMarkers(const std::vector<core::Sdf>& scene
 /// order it entered the world in: a body keeps its colour when another leaves).
 visualization_msgs::MarkerArray bodyMarkers(const core::Model& model, const std::vector<std::string>& frames,
                                             const std::vector<std::size_t>& colours);
+/// `markers` without body `body`'s, after a DELETEALL (rviz forgets what it
+/// drew, then draws those left).
+void eraseBodyMarkers(const std::string& body, visualization_msgs::MarkerArray& markers);
+/// One body's markers, as bodyMarkers() draws body i, after those in `markers`.
+void appendBodyMarkers(const core::BodyModel& body, const std::string& frame, std::size_t colour,
+                       visualization_msgs::MarkerArray& markers);
 
 }  // namespace rigid_body_sim::node

@@ -9,7 +9,7 @@
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
-#include <tf2_ros/static_transform_broadcaster.h>
+#include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -71,8 +71,10 @@ class SimNode {
   void reportStep();
   void publish();
   void publishClock();
-  void publishBodyStates();   ///< ~body_states, while someone subscribes
-  void publishFixedFrames();  ///< links fixed to a body, on /tf_static
+  void publishBodyStates();  ///< ~body_states, while someone subscribes
+  /// Links fixed to bodies `first` on, added to static_frames_ (0: all of
+  /// them, the set made again), which goes to /tf_static whole.
+  void publishFixedFrames(std::size_t first = 0);
   void resendMarkersIfDue();
 
   // Requests. Each validates first: a refused request changes nothing.
@@ -99,18 +101,22 @@ class SimNode {
     std::optional<core::OdomNoiseSettings> odom_noise;
     std::optional<core::DriverSettings> cmd_vel;
   };
+  struct BodyPorts;
   struct PendingSpawn {
     SpawnBody::Request request;
     core::PreparedBody body;
-    BodyDevices devices;
+    std::unique_ptr<BodyPorts> ports;        ///< opened on the spawn thread (openPorts)
     std::promise<SpawnBody::Response> done;  ///< what the loop answers
   };
   /// Adds the spawns built since the last tick (loop thread, between steps).
   void insertPendingBodies();
   /// The body of `spawn` into the model, state and topics, or why not.
-  SpawnBody::Response insertBody(const PendingSpawn& spawn);
-  /// After an edit of the model: a fresh workspace, the markers and fixed frames again.
-  void afterEdit(bool deleted);
+  SpawnBody::Response insertBody(PendingSpawn& spawn);
+  /// After a body was added last: a fresh workspace, its names, markers and fixed frames.
+  void afterSpawn();
+  /// After body `body`, named `name`, was deleted: a fresh workspace, the
+  /// names, markers and fixed frames without it.
+  void afterDelete(int body, const std::string& name);
   /// A new workspace with the same knobs: its caches assumed the old model.
   void freshWorkspace();
 
@@ -176,35 +182,45 @@ class SimNode {
   /// the root link, `odom`, `~wrench`); every other body, listed in a world
   /// or spawned, has them under its name ("NAME/").
   struct BodyPorts {
-    std::string prefix;                          ///< "" or "NAME/", before its frames and topics
-    std::string frame;                           ///< its tf frame: prefix + root link
-    CountedPublisher odom;                       ///< PREFIXodom
-    ros::Subscriber wrench;                      ///< ~PREFIXwrench
-    std::optional<HeldWrench> held;              ///< from its ~wrench topic
-    bool speed_limited = false;                  ///< the speed limits have held it (warned once)
-    std::optional<core::Imu> imu;                ///< its IMU (sensors.cpp), sampled whether or not anyone listens
-    CountedPublisher imu_pub;                    ///< PREFIXimu, sensor_msgs/Imu
-    std::string imu_frame;                       ///< prefix + the IMU's frame_id
-    long long imu_every = 1;                     ///< steps per IMU sample
-    std::optional<core::OdomNoise> odom_noise;   ///< noise on odom; the exact state then goes to ground_truth
-    CountedPublisher ground_truth;               ///< PREFIXground_truth, with odom_noise
-    double last_odom = 0.0;                      ///< s of sim time of its last odom report (for the drift)
-    std::optional<core::VelocityDriver> driver;  ///< drives it toward its cmd_vel
-    ros::Subscriber cmd_vel;                     ///< PREFIXcmd_vel, geometry_msgs/Twist
-    bool clipped = false;                        ///< a command was clipped (warned once)
-    std::size_t colour = 0;                      ///< its markers' colour: the order it entered the world in
+    std::string prefix;              ///< "" or "NAME/", before its frames and topics
+    ros::NodeHandle nh, pnh;         ///< its topics' handles (the node's, copied: openPorts)
+    std::string frame;               ///< its tf frame: prefix + root link
+    CountedPublisher odom;           ///< PREFIXodom
+    ros::Subscriber wrench;          ///< ~PREFIXwrench
+    std::optional<HeldWrench> held;  ///< from its ~wrench topic
+    bool speed_limited = false;      ///< the speed limits have held it (warned once)
+    /// Its IMU (sensors.cpp), sampled whether or not anyone listens. The
+    /// devices with a random generator (2.5 KB each) are held apart: in
+    /// place they made every body's ports 6 KB, devices or not.
+    std::unique_ptr<core::Imu> imu;
+    CountedPublisher imu_pub;                     ///< PREFIXimu, sensor_msgs/Imu
+    std::string imu_frame;                        ///< prefix + the IMU's frame_id
+    long long imu_every = 1;                      ///< steps per IMU sample
+    std::unique_ptr<core::OdomNoise> odom_noise;  ///< noise on odom; the exact state then goes to ground_truth
+    CountedPublisher ground_truth;                ///< PREFIXground_truth, with odom_noise
+    double last_odom = 0.0;                       ///< s of sim time of its last odom report (for the drift)
+    std::optional<core::VelocityDriver> driver;   ///< drives it toward its cmd_vel
+    ros::Subscriber cmd_vel;                      ///< PREFIXcmd_vel, geometry_msgs/Twist
+    bool clipped = false;                         ///< a command was clipped (warned once)
+    std::size_t colour = 0;                       ///< its markers' colour: the order it entered the world in
   };
   std::vector<BodyPorts> ports_;
   BodyDirectory directory_;  ///< the bodies by name and by frame
-  /// Indexes the bodies by name and frame again (at start, after each edit).
+  /// What directory_ holds for body i.
+  BodyDirectory::Entry directoryEntry(std::size_t i) const;
+  /// Indexes the bodies by name and frame again (at start, after a delete).
   void indexBodies();
   std::size_t bodies_entered_ = 0;  ///< bodies that have entered the world, the next one's colour
-  /// The topics and frame of body i of the model, under `prefix`, and its
-  /// IMU if it has one (a frame_id that is one of the body's frames throws).
-  /// The ports of `body`, starting at `start`; throws io::ConfigError (an
-  /// IMU on no such link, or on a taken frame) before anything is advertised.
-  BodyPorts openPorts(const core::BodyModel& body, const core::BodyState& start, const std::string& prefix,
-                      const BodyDevices& devices);
+  /// The ports of `body` under `prefix`: its frames, topics and devices.
+  /// Throws io::ConfigError (an IMU on no such link, or on a taken frame)
+  /// before anything is advertised. Reads only its arguments, so the spawn
+  /// thread opens a spawned body's ports: each topic is a round trip to the
+  /// master, 1-2 ms the loop does not wait for. startPorts() starts them.
+  BodyPorts openPorts(const core::BodyModel& body, const std::string& prefix, const BodyDevices& devices);
+  /// Starts `ports`' sensors at `start`, now (loop thread).
+  void startPorts(BodyPorts& ports, const core::BodyState& start);
+  /// Closes `ports` on the spawn thread: closing a topic waits for the master too.
+  void closeLater(BodyPorts&& ports);
   void onCmdVel(const std::string& body, const geometry_msgs::Twist::ConstPtr& msg);
   // Contacts (contacts.cpp): the step reports the awake bodies' contacts;
   // the loop keeps those a body fell asleep with (per step: a scan, no copy).
@@ -235,13 +251,19 @@ class SimNode {
   std::chrono::steady_clock::time_point ref_wall_;
   double ref_sim_ = 0.0;
   std::vector<double> tick_periods_;  ///< s, when ~report_timing
+  /// s the loop spent on each spawn's insertion and each delete, when ~report_timing.
+  std::vector<double> spawn_times_, delete_times_;
 
   ros::Publisher clock_pub_, scene_pub_, body_pub_;
   CountedPublisher body_states_pub_;
   tf2_ros::TransformBroadcaster tf_;
   std::vector<geometry_msgs::TransformStamped> tf_batch_;  ///< every body's transform, sent as one /tf message
-  /// Made again when a body goes: tf2_ros keeps every static transform it was given.
-  std::optional<tf2_ros::StaticTransformBroadcaster> static_tf_;
+  /// /tf_static, latched, as tf2_ros's static broadcaster sends it: every
+  /// fixed frame in one message. The node keeps the set itself so that a
+  /// deleted body's frames leave it (the broadcaster keeps all it was given,
+  /// and making a new one cost two round trips to the master per delete).
+  ros::Publisher tf_static_pub_;
+  tf2_msgs::TFMessage static_frames_;
   visualization_msgs::MarkerArray scene_markers_, body_markers_;
   struct MarkersResend {
     ros::WallTime connected;  ///< when a subscriber to the markers connected

@@ -1,0 +1,65 @@
+// Spawns or deletes N bodies through sim_node's services, one call at a
+// time, over persistent connections (bench/spawn_memory.sh): "spawn" adds
+// NAME0..NAME{N-1} on a square grid 0.6 m apart at height Z, "delete"
+// removes them. Prints the calls' median and largest latency, in ms.
+// Usage: spawn_many spawn|delete N URDF_FILE [Z]
+#include <ros/ros.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/DeleteBody.h"
+#include "rigid_body_sim/SpawnBody.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "spawn_many", ros::init_options::AnonymousName);
+  if (argc < 4) {
+    std::fprintf(stderr, "usage: spawn_many spawn|delete N URDF_FILE [Z]\n");
+    return 2;
+  }
+  const std::string what = argv[1];
+  const int n = std::atoi(argv[2]);
+  const double z = argc > 4 ? std::atof(argv[4]) : 0.5;
+  const int side = static_cast<int>(std::ceil(std::sqrt(n)));
+  ros::NodeHandle nh;
+  ros::service::waitForService("/sim_node/spawn_body");
+  ros::ServiceClient spawn = nh.serviceClient<rigid_body_sim::SpawnBody>("/sim_node/spawn_body", true);
+  ros::ServiceClient remove = nh.serviceClient<rigid_body_sim::DeleteBody>("/sim_node/delete_body", true);
+  std::vector<double> ms;
+  for (int i = 0; i < n; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    std::string message;
+    bool ok = false;
+    if (what == "spawn") {
+      rigid_body_sim::SpawnBody s;
+      s.request.name = "b" + std::to_string(i);
+      s.request.urdf_file = argv[3];
+      s.request.pose.position.x = 0.6 * (i % side);
+      s.request.pose.position.y = 0.6 * (i / side);
+      s.request.pose.position.z = z;
+      s.request.pose.orientation.w = 1.0;
+      ok = spawn.call(s) && s.response.success;
+      message = s.response.message;
+    } else {
+      rigid_body_sim::DeleteBody d;
+      d.request.name = "b" + std::to_string(i);
+      ok = remove.call(d) && d.response.success;
+      message = d.response.message;
+    }
+    if (!ok) {
+      std::fprintf(stderr, "%s b%d failed: %s\n", what.c_str(), i, message.c_str());
+      return 1;
+    }
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(ms.begin(), ms.end());
+  if (!ms.empty()) {
+    std::printf("%s %d: a call's latency median %.3f ms, max %.3f ms\n", what.c_str(), n, ms[ms.size() / 2], ms.back());
+  }
+  return 0;
+}
