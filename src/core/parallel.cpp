@@ -2,8 +2,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <thread>
 
 namespace rigid_body_sim::core {
+namespace {
+
+constexpr int kSpinsBeforeYield = 256;  ///< about a microsecond or two of spinning
+
+}  // namespace
 
 WorkerPool::WorkerPool(int threads) {
   for (int k = 1; k < threads; ++k) helpers_.emplace_back([this, k] { helper(k); });
@@ -28,8 +34,13 @@ void WorkerPool::run(int parts, const std::function<void(int)>& part) {
   }
   wake_.notify_all();
   for (int k = 0; k < parts; k += threads()) part(k);
-  while (pending_.load(std::memory_order_acquire) != 0) {
-  }  // the helpers' parts are about as long as ours: spin
+  // The helpers' parts are about as long as ours: spin, but give the core
+  // up now and then. A helper another thread has taken the core from (a
+  // ROS node's own threads, on two cores) finishes only once it runs
+  // again, and a caller that never yields can hold that core all the while.
+  for (int spins = 0; pending_.load(std::memory_order_acquire) != 0; ++spins) {
+    if (spins >= kSpinsBeforeYield) std::this_thread::yield();
+  }
 }
 
 void WorkerPool::helper(int index) {
@@ -37,8 +48,10 @@ void WorkerPool::helper(int index) {
   for (;;) {
     // Spin a little (steps come back to back), then sleep until woken.
     const auto spin_until = std::chrono::steady_clock::now() + std::chrono::microseconds(200);
-    while (generation_.load(std::memory_order_acquire) == seen && !stop_ &&
-           std::chrono::steady_clock::now() < spin_until) {
+    for (int spins = 0;
+         generation_.load(std::memory_order_acquire) == seen && !stop_ && std::chrono::steady_clock::now() < spin_until;
+         ++spins) {
+      if (spins >= kSpinsBeforeYield) std::this_thread::yield();
     }
     const std::function<void(int)>* job;
     int parts;

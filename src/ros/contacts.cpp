@@ -23,8 +23,19 @@ bool touching(const core::Contact& c) { return c.normal_impulse > 0.0 || c.separ
 
 void SimNode::keepContacts() {
   // contacts_ holds the sleeping bodies' contacts, which the step no longer
-  // reports: taken once, from the step in which the body fell asleep.
+  // reports: taken once, from the step in which the body fell asleep. They
+  // change only when a body falls asleep or wakes: a step that changed no
+  // body's sleep leaves them as they are (a resting pile of 1,000 boxes
+  // keeps about 4,000, which a scan per step cost the loop).
   const std::size_t n = model_.bodyCount();
+  bool changed = was_asleep_.size() != n;
+  was_asleep_.resize(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const char asleep = state_.bodies[i].asleep ? 1 : 0;
+    changed = changed || asleep != was_asleep_[i];
+    was_asleep_[i] = asleep;
+  }
+  if (!changed) return;
   kept_for_.resize(n, 0);
   const auto asleep = [&](int b) { return b < 0 || state_.bodies[b].asleep; };
   contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(),
@@ -49,6 +60,7 @@ void SimNode::forgetContactsOf(int body) {
   }
   contacts_ = std::move(kept);
   if (static_cast<std::size_t>(body) < kept_for_.size()) kept_for_.erase(kept_for_.begin() + body);
+  if (static_cast<std::size_t>(body) < was_asleep_.size()) was_asleep_.erase(was_asleep_.begin() + body);
 }
 
 void SimNode::publishContacts() {

@@ -29,16 +29,17 @@ void SimNode::publish() {
   std_msgs::Header header;
   header.stamp = now;
   header.frame_id = settings_.world_frame;
-  tf_batch_.clear();
+  // Filled in place: its strings keep their memory from one update to the next.
+  tf_batch_.resize(settings_.publish_tf ? model_.bodyCount() : 0);
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
     const core::LinkState link = core::linkState(model_.body(i), state_.bodies[i]);
     BodyPorts& p = ports_[i];
     if (settings_.publish_tf) {
-      geometry_msgs::TransformStamped tf;
-      tf.header = header;
+      geometry_msgs::TransformStamped& tf = tf_batch_[i];
+      tf.header.stamp = header.stamp;
+      tf.header.frame_id = header.frame_id;
       tf.child_frame_id = p.frame;
       tf.transform = toTransform(link.p_WL, link.q_WL);
-      tf_batch_.push_back(std::move(tf));
     }
     const auto odometry = [&](const core::OdomReport& r, bool exact) {
       nav_msgs::Odometry odom;

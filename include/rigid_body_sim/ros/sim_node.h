@@ -230,6 +230,7 @@ class SimNode {
   void publishContacts();                ///< ~contacts and ~contact_markers, while someone subscribes
   std::vector<core::Contact> contacts_;  ///< the sleeping bodies' contacts
   std::vector<char> kept_for_;           ///< per body: asleep, its contacts in contacts_
+  std::vector<char> was_asleep_;         ///< per body: asleep after the last step keepContacts saw
   CountedPublisher contacts_pub_, contact_markers_pub_;
   /// Samples the IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();
