@@ -90,10 +90,10 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   }
   NodeParams p;
   NodeSettings& n = p.node;
-  const std::set<std::string> node_keys{"rate",           "realtime_factor", "publish_rate",     "world_frame",
-                                        "wrench_timeout", "covariance",      "scene_size",       "report_timing",
-                                        "config_file",    "publish_tf",      "body_states_rate", "body_states_twist",
-                                        "paused",         "physics"};  // ~physics: the dynamic_reconfigure server's own
+  const std::set<std::string> node_keys{
+      "rate",       "realtime_factor", "publish_rate", "world_frame", "wrench_timeout",   "covariance",
+      "scene_size", "report_timing",   "config_file",  "publish_tf",  "body_states_rate", "body_states_twist",
+      "paused",     "per_body_topics", "physics"};  // ~physics: the dynamic_reconfigure server's own
   using R = NodeSettings;
   if (all.hasMember("rate")) n.rate = number(all["rate"], "rate", R::kMinRate, R::kMaxRate, "Hz");
   if (all.hasMember("realtime_factor")) {
@@ -118,6 +118,9 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   if (all.hasMember("report_timing")) n.report_timing = flag(all["report_timing"], "report_timing");
   if (all.hasMember("publish_tf")) n.publish_tf = flag(all["publish_tf"], "publish_tf");
   if (all.hasMember("paused")) n.paused = flag(all["paused"], "paused");
+  if (all.hasMember("per_body_topics")) {
+    n.per_body_topics = number(all["per_body_topics"], "per_body_topics", 0.0, 1e9, "bodies");
+  }
   if (all.hasMember("body_states_rate")) {
     n.body_states_rate = number(all["body_states_rate"], "body_states_rate", R::kMinPublishRate, R::kMaxRate, "Hz");
   }

@@ -107,6 +107,13 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   body_states_every_ = std::max(1LL, std::llround(1.0 / (settings_.body_states_rate * model_.dt())));
   // One body keeps the single-body names; several get theirs under their name.
   const bool several = model_.bodyCount() > 1;
+  const bool all_topics = static_cast<double>(model_.bodyCount()) <= settings_.per_body_topics;
+  if (!all_topics) {
+    ROS_INFO(
+        "sim_node: %zu bodies, more than ~per_body_topics %g: odometry and wrench topics only for bodies with "
+        "a device (imu, odom_noise, cmd_vel); ~body_states, /tf and the services carry every body",
+        model_.bodyCount(), settings_.per_body_topics);
+  }
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
     const core::BodyModel& body = model_.body(i);
     requireOwnWorldFrame(settings_.world_frame, several ? body.name + "/" : "", body);
@@ -114,7 +121,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     const BodyDevices devices = c.bodies_listed
                                     ? BodyDevices{c.bodies[i].imu, c.bodies[i].odom_noise, c.bodies[i].cmd_vel}
                                     : BodyDevices{c.imu, c.odom_noise, c.cmd_vel};
-    ports_.push_back(openPorts(body, several ? body.name + "/" : "", devices));
+    ports_.push_back(openPorts(body, several ? body.name + "/" : "", devices, all_topics));
     startPorts(ports_.back(), state_.bodies[i]);
     ports_.back().colour = bodies_entered_++;
     ROS_INFO("sim_node: body '%s' (frame '%s'), %.6g kg, %zu collision points", body.name.c_str(),
@@ -179,7 +186,7 @@ SimNode::~SimNode() {
 }
 
 SimNode::BodyPorts SimNode::openPorts(const core::BodyModel& body, const std::string& prefix,
-                                      const BodyDevices& devices) {
+                                      const BodyDevices& devices, bool topics) {
   const auto& [imu, odom_noise, cmd_vel] = devices;
   BodyPorts ports;
   ports.prefix = prefix;
@@ -218,6 +225,7 @@ SimNode::BodyPorts SimNode::openPorts(const core::BodyModel& body, const std::st
     ports.imu_every = std::max(1LL, std::llround(1.0 / (imu->settings.rate * dt_)));
     ports.imu_pub = CountedPublisher::advertise<sensor_msgs::Imu>(ports.nh, prefix + "imu", 100);
   }
+  if (!topics && !cmd_vel && !odom_noise && !imu) return ports;
   ports.odom = CountedPublisher::advertise<nav_msgs::Odometry>(ports.nh, prefix + "odom", 10);
   ports.wrench = ports.pnh.subscribe<geometry_msgs::WrenchStamped>(
       prefix + "wrench", 10, [this, name](const geometry_msgs::WrenchStamped::ConstPtr& m) { onWrench(name, m); });

@@ -42,6 +42,16 @@ inline bool plainAscii(const std::string& text) {
 }
 
 /// Waits (wall time) until `done` or `seconds` pass, spinning callbacks.
+/// Whether the master lists `topic` as published by someone.
+inline bool advertised(const std::string& topic) {
+  ros::master::V_TopicInfo topics;
+  ros::master::getTopics(topics);
+  for (const auto& t : topics) {
+    if (t.name == topic) return true;
+  }
+  return false;
+}
+
 inline bool spinUntil(const std::function<bool()>& done, double seconds) {
   const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
   while (ros::ok() && ros::WallTime::now() < end) {

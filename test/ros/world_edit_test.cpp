@@ -79,15 +79,6 @@ bool sameBits(const geometry_msgs::Twist& a, const geometry_msgs::Twist& b) {
   return sameBits(values(a), values(b));
 }
 
-bool advertised(const std::string& topic) {
-  ros::master::V_TopicInfo topics;
-  ros::master::getTopics(topics);
-  for (const auto& t : topics) {
-    if (t.name == topic) return true;
-  }
-  return false;
-}
-
 class WorldEdit : public Node {
  protected:
   SpawnBody::Response spawn(const SpawnBody::Request& req) {

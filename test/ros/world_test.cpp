@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "node_fixture.h"
+#include "rigid_body_sim/BodyStates.h"
 #include "rigid_body_sim/ClearWrenches.h"
 #include "rigid_body_sim/SetState.h"
+#include "rigid_body_sim/SpawnBody.h"
 
 namespace {
 
@@ -231,6 +233,40 @@ TEST_F(ConfigOutside, RelativeUrdfPathsResolveFromTheConfigsFolder) {
   get.request.body = "ball";                           // and a package:// one beside it
   get = call("get_state", get);
   ASSERT_TRUE(get.response.success) << get.response.message;
+}
+
+// A world larger than ~per_body_topics (big_world.test: three bodies, the
+// limit two): no odometry or wrench topic for a body without a device, its
+// topics for the one with cmd_vel; ~body_states, tf and the services carry
+// every body, and a spawned body has its topics.
+class BigWorld : public Node {};
+
+TEST_F(BigWorld, OnlyBodiesWithADeviceHaveTheirTopics) {
+  ASSERT_TRUE(spinUntil([] { return advertised("/cart/odom"); }, 30.0));
+  EXPECT_FALSE(advertised("/crate/odom"));
+  EXPECT_FALSE(advertised("/ball/odom"));
+  ros::master::V_TopicInfo topics;
+  ros::master::getTopics(topics);
+  for (const auto& t : topics) EXPECT_EQ(t.name.find("/sim_node/crate/"), std::string::npos) << t.name;
+  std::map<std::string, int> seen;
+  const ros::Subscriber states = nh_.subscribe<rigid_body_sim::BodyStates>(
+      "/sim_node/body_states", 10, [&](const rigid_body_sim::BodyStates::ConstPtr& m) {
+        for (const std::string& name : m->names) ++seen[name];
+      });
+  ASSERT_TRUE(trigger("unpause"));
+  ASSERT_TRUE(spinUntil([&] { return seen.size() == 3; }, 10.0));
+  rigid_body_sim::ApplyImpulse kick;  // services address every body
+  kick.request.body = "crate";
+  kick.request.linear = vec(0, 0.5, 0);
+  EXPECT_TRUE(call("apply_impulse", kick).response.success);
+  rigid_body_sim::SpawnBody spawn;
+  spawn.request.name = "probe";
+  spawn.request.urdf_file = "package://rigid_body_sim/urdf/ball.urdf";
+  spawn.request.pose.position.x = 5.0;
+  spawn.request.pose.orientation.w = 1.0;
+  spawn = call("spawn_body", spawn);
+  ASSERT_TRUE(spawn.response.success) << spawn.response.message;
+  EXPECT_TRUE(spinUntil([] { return advertised("/probe/odom"); }, 10.0));
 }
 
 }  // namespace

@@ -28,6 +28,12 @@ struct NodeSettings {
   /// that to the user's own estimator (REP 105). Fixed links stay on /tf_static.
   bool publish_tf = true;
   double body_states_rate = 100.0;  ///< ~body_states_rate: Hz of sim time of ~body_states, [0.01, 1e4]
+  /// ~per_body_topics: a world of at most this many bodies at start gives
+  /// each its odometry and wrench topics; a larger one only those with a
+  /// device (imu, odom_noise, cmd_vel), each a round trip to the master and
+  /// its memory. ~body_states, /tf and the services carry every body; a
+  /// spawned body always has its topics. [0, 1e9]
+  double per_body_topics = 100;
   /// ~body_states_twist: "body" (each twist in its root link frame, as
   /// nav_msgs/Odometry) or "world" (in ~world_frame's axes, as Gazebo's model_states).
   bool body_states_twist_in_world = false;

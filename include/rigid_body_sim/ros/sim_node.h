@@ -216,7 +216,10 @@ class SimNode {
   /// before anything is advertised. Reads only its arguments, so the spawn
   /// thread opens a spawned body's ports: each topic is a round trip to the
   /// master, 1-2 ms the loop does not wait for. startPorts() starts them.
-  BodyPorts openPorts(const core::BodyModel& body, const std::string& prefix, const BodyDevices& devices);
+  /// `topics` false: only its devices' topics, none for odometry or wrenches
+  /// (~per_body_topics).
+  BodyPorts openPorts(const core::BodyModel& body, const std::string& prefix, const BodyDevices& devices,
+                      bool topics = true);
   /// Starts `ports`' sensors at `start`, now (loop thread).
   void startPorts(BodyPorts& ports, const core::BodyState& start);
   /// Closes `ports` on the spawn thread: closing a topic waits for the master too.
