@@ -127,32 +127,30 @@ TEST(WorldEdit, EditsInPlaceGiveTheBitsOfEditedCopies) {
     s.bodies = {at(model, 0, Vec3(0, 0, 0.5)), at(model, 1, Vec3(0.1, 0, 1.0))};
     return s;
   };
+  const auto two_threads = [] {
+    core::Workspace ws;
+    ws.threads = 2;
+    ws.min_parallel_work = 1;
+    return ws;
+  };
   const core::Model first(spec);
   core::State copied = start(first);
   {
     core::Model model = first;
-    core::Workspace ws;
-    ws.threads = 2;
-    ws.min_parallel_work = 1;
+    core::Workspace ws = two_threads();
     run(model, copied, ws, 100);
     model = model.withBody(named(ballBody(0.1), "c"));
-    ws = core::Workspace();
-    ws.threads = 2;
-    ws.min_parallel_work = 1;
+    ws = two_threads();
     copied.bodies.push_back(at(model, 2, Vec3(0, 0.05, 2.0), Vec3(0.5, 0, 0)));
     run(model, copied, ws, 200);
     core::removeBody(model, copied, 0);
     model = model.withoutBody(0);
-    ws = core::Workspace();
-    ws.threads = 2;
-    ws.min_parallel_work = 1;
+    ws = two_threads();
     run(model, copied, ws, 300);
   }
   core::State in_place = start(first);
   core::Model model = first;
-  core::Workspace ws;
-  ws.threads = 2;
-  ws.min_parallel_work = 1;
+  core::Workspace ws = two_threads();
   run(model, in_place, ws, 100);
   model.addBody(model.bodyBuilder().build(named(ballBody(0.1), "c")));
   ws = ws.forEditedModel();
