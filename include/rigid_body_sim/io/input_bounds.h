@@ -52,8 +52,9 @@ std::string yamlProblem(const std::string& text);
 
 /// Why an XML text is refused before it is parsed: a NUL byte (the parser
 /// stops there, the rest unread), elements nested deeper than kXmlDepth
-/// (the parser recurses), or more than kUrdfLinks <link> elements. "" when it is accepted. A scan of tags only: comments, CDATA,
-/// processing instructions and declarations are skipped.
+/// (the parser recurses), or more than kUrdfLinks <link> elements. "" when
+/// it is accepted. A scan of tags only: comments, CDATA, processing
+/// instructions and declarations are skipped.
 std::string xmlProblem(const std::string& xml);
 
 /// Why a mesh file's bytes are refused before any reader allocates: a
