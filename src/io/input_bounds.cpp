@@ -204,11 +204,46 @@ std::string yamlProblem(const std::string& text) {
   return check.problem;
 }
 
+namespace {
+
+/// Where `text` stops being UTF-8 (a byte that starts no character, or a
+/// character cut short or not continued), or npos.
+std::size_t notUtf8At(const std::string& text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char lead = byte(i);
+    std::size_t length = 0;
+    if (lead < 0x80) {
+      length = 1;
+    } else if (lead >= 0xC2 && lead <= 0xDF) {
+      length = 2;
+    } else if (lead >= 0xE0 && lead <= 0xEF) {
+      length = 3;
+    } else if (lead >= 0xF0 && lead <= 0xF4) {
+      length = 4;
+    }
+    if (length == 0 || i + length > text.size()) return i;
+    for (std::size_t k = i + 1; k < i + length; ++k) {
+      if ((byte(k) & 0xC0) != 0x80) return i;
+    }
+    i += length;
+  }
+  return std::string::npos;
+}
+
+}  // namespace
+
 std::string xmlProblem(const std::string& xml) {
   // TinyXML, which urdfdom parses with, reads a C string: it would stop at
   // a NUL byte and the rest of the text would be dropped unread.
   if (const std::size_t nul = xml.find('\0'); nul != std::string::npos) {
     return "byte " + std::to_string(nul) + " is NUL: a URDF is text (the parser would stop there, the rest unread)";
+  }
+  // And after an XML declaration it steps over a character by the length
+  // its first byte announces: a character cut short by the end of the text
+  // took it past the end (urdf_fuzzer, under ASan, in CI).
+  if (const std::size_t at = notUtf8At(xml); at != std::string::npos) {
+    return "byte " + std::to_string(at) + " is not UTF-8: a URDF is UTF-8 text, XML's default";
   }
   int depth = 0;
   int links = 0;

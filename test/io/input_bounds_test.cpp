@@ -125,6 +125,21 @@ TEST(InputBounds, AUrdfWithANulByteIsRefusedNotReadToTheNul) {
   EXPECT_EQ(io::xmlProblem(one), "");
 }
 
+// After an XML declaration TinyXML reads UTF-8, a character at a time by
+// the length its first byte announces: a text cut inside one (0xd7 starts
+// two bytes) took it past the end of the text. CI's urdf_fuzzer found it
+// (fuzz/seeds/urdf/cut_utf8_character.urdf is the input, minimised).
+TEST(InputBounds, AUrdfThatIsNotUtf8IsRefusedBeforeTheParserReadsIt) {
+  const std::string cut = "<?xml version=\"1.0\"?><r e=>\xd7";
+  EXPECT_NE(io::xmlProblem(cut).find("byte " + std::to_string(cut.size() - 1) + " is not UTF-8"), std::string::npos)
+      << io::xmlProblem(cut);
+  expectThrowsWith<io::UrdfError>([&] { io::loadUrdfString(cut, "cut.urdf"); }, {"cut.urdf", "is not UTF-8"});
+  EXPECT_NE(io::xmlProblem("<robot name=\"\xff\"/>").find("byte 13 is not UTF-8"), std::string::npos);
+  EXPECT_NE(io::xmlProblem("<robot name=\"\xe2\x82\"/>").find("byte 13 is not UTF-8"), std::string::npos);
+  // Whole characters pass: a name with an accent, and a euro sign.
+  EXPECT_EQ(io::xmlProblem("<?xml version=\"1.0\"?><robot name=\"caf\xc3\xa9 \xe2\x82\xac\"/>"), "");
+}
+
 TEST(InputBounds, AChainOfTenThousandLinksLoadsWithoutRecursion) {
   // The loader's own recursion overflowed the stack at 10,000 links.
   const core::BodySpec body = io::loadUrdfString(chain(10000), "chain.urdf");

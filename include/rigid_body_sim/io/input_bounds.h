@@ -51,7 +51,8 @@ std::string readInput(const std::string& path, std::uintmax_t max_bytes, const s
 std::string yamlProblem(const std::string& text);
 
 /// Why an XML text is refused before it is parsed: a NUL byte (the parser
-/// stops there, the rest unread), elements nested deeper than kXmlDepth
+/// stops there, the rest unread), bytes that are not UTF-8 (the parser
+/// stepped past the end of a text cut inside a character), elements nested deeper than kXmlDepth
 /// (the parser recurses), or more than kUrdfLinks <link> elements. "" when
 /// it is accepted. A scan of tags only: comments, CDATA, processing
 /// instructions and declarations are skipped.
