@@ -14,7 +14,7 @@ namespace {
 
 /// `all` sorted by (a, o) into `sorted`, in time linear in N and the pairs:
 /// counted by a, then each body's few by o. std::sort's N log N was 3.5 % of
-/// a step at N = 10,000 against 2.4 % at N = 1000 (bench/README.md).
+/// a step at N = 10,000 against 2.4 % at N = 1000 (bench/HISTORY.md).
 void sortDirections(int n, const std::vector<std::pair<int, int>>& all, std::vector<int>& starts,
                     std::vector<std::pair<int, int>>& sorted) {
   starts.assign(n + 1, 0);

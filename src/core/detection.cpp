@@ -159,7 +159,7 @@ constexpr std::ptrdiff_t kFetchAhead = 4;
 /// Asks the cache for what scanBody reads of body o: at N = 10,000 the
 /// bodies' data (6 MB of models, 1.3 MB of states) outgrows the 2 MB L2,
 /// and the first read of the other body's solid was a fifth of the scan's
-/// time (perf, bench/README.md). Changes no result.
+/// time (perf, bench/HISTORY.md). Changes no result.
 inline void fetchPairData(const Model& model, const State& state, int o) {
   const BodyModel& b = model.body(o);
   __builtin_prefetch(&b.solid_B);

@@ -76,7 +76,7 @@ void applyDamping(const Model& model, double h, BodyState& s) {
 // Π_{n+1} = cay(−h Ω̂_m) Π_n with Ω_m = I⁻¹(Π_n + Π_{n+1})/2. Rotating the
 // body by cay(h Ω̂_m), which is the quaternion update of §5.7 evaluated with
 // Ω_m, therefore leaves the world angular momentum R Π unchanged. First-order
-// variants drift about 1% in energy over 20 s (bench/README.md).
+// variants drift about 1% in energy over 20 s (bench/HISTORY.md).
 // Gyroscopic off: Ω = ω_{n+1}, exact only for isotropic inertia.
 Quat gyroscopicRotation(const Model& model, const BodyModel& b, double h, BodyState& s) {
   if (!model.gyroscopic()) {

@@ -1,7 +1,7 @@
 // A YAML document loaded as YAML::Load would, except that the items of one
 // sequence under the root map are handed over one at a time and not kept:
 // the `bodies` list of a world of 10,000 bodies took 7 KB of yaml-cpp tree
-// an entry, more than the bodies themselves (bench/README.md). Private to io.
+// an entry, more than the bodies themselves (bench/HISTORY.md). Private to io.
 #pragma once
 
 #include <yaml-cpp/yaml.h>

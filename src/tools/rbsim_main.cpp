@@ -186,7 +186,7 @@ void checkStep(const core::Model& model, const core::Workspace& ws, double t, st
 
 /// The config file with the command line's overrides. Its bodies list is
 /// read an entry at a time: as a YAML tree it took about 7 KB a body, more
-/// than the bodies themselves (bench/README.md).
+/// than the bodies themselves (bench/HISTORY.md).
 io::SimConfig readConfig(const Args& args) {
   std::vector<std::string> overrides = args.sets;
   if (!args.dt.empty()) overrides.push_back("dt=" + args.dt);

@@ -201,7 +201,7 @@ TEST(Rocking, OnABouncySurfaceTheRockingImpactsStayPlastic) { expectHousnersShar
 // P = K⁻¹ Δu with Δu = (1 + e) 3 m/s along n, the tangential velocity
 // stopped; v⁺ = v⁻ + P/m, ω⁺ = I⁻¹ (r × P). (Bullet 3.24 with the same
 // settings leaves with v⁺ = (0, 0.32, −2.06) against the law's
-// (−1.46, 0.70, −1.30) and 10 % more kinetic energy: bench/README.md.)
+// (−1.46, 0.70, −1.30) and 10 % more kinetic energy: bench/HISTORY.md.)
 TEST(Impact, ABoxOnOneCornerLeavesAsNewtonsLawAtThatCornerSays) {
   const double e = 0.5, v = 3.0;
   core::ModelSpec ms = onGround(boxBody(kHalf), impulse(e, 2.0));

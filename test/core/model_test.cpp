@@ -21,7 +21,7 @@ void expectRefused(const core::ModelSpec& s, std::initializer_list<std::string> 
 TEST(ModelValidation, AcceptsTheShippedBox) { EXPECT_NO_THROW(core::Model m(good())); }
 
 // A pile of equal boxes keeps one copy of their points and solid (the N =
-// 10,000 pile went from 6.6 to 4.0 KB per body, bench/README.md); a body of
+// 10,000 pile went from 6.6 to 4.0 KB per body, bench/HISTORY.md); a body of
 // other shape or mass properties gets its own, and each is what it would
 // be alone.
 TEST(Model, BodiesBuiltAlikeShareTheirPointsAndSolid) {

@@ -74,7 +74,7 @@ class Node : public ::testing::Test {
   /// Calls sim_node's service `name` as a user's test should at these rates:
   /// on a persistent connection, one per service. ROS 1's connection per
   /// call loses about one call in 10⁵ in transport, from any server
-  /// (bench/service_churn.sh, bench/README.md), which a test of thousands of calls
+  /// (bench/service_churn.sh, bench/HISTORY.md), which a test of thousands of calls
   /// meets now and then.
   template <class Srv>
   Srv call(const std::string& name, Srv srv) {

@@ -71,7 +71,7 @@ TEST_F(World, EachBodyHasItsFrameTopicAndName) {
 // Each state update reaches /tf as one message holding every body at one
 // stamp, as robot_state_publisher sends a robot's links: a listener never
 // holds one body at a newer time than another, and the node makes one
-// publish() per update instead of one per body (bench/README.md, the node
+// publish() per update instead of one per body (bench/HISTORY.md, the node
 // with N bodies).
 TEST_F(World, OneTfMessageCarriesEveryBodyAtOneStamp) {
   std::vector<tf2_msgs::TFMessage> got;

@@ -63,7 +63,7 @@ struct ModelSpec {
 /// What the step reads comes first, grouped by the cache line it shares
 /// with what is read with it, and each body starts on a line: at N = 10,000
 /// the bodies' models outgrow the L2 cache, and a stage's cost per body is
-/// the lines it touches (bench/README.md).
+/// the lines it touches (bench/HISTORY.md).
 struct alignas(64) BodyModel {
   // The solve and the integrator.
   double inv_mass = 1.0;              ///< 1/kg

@@ -159,7 +159,7 @@ struct SolverSettings {
   /// |Δu|²/|u|² (1e-12 relative), and the most sub-steps when it cannot
   /// contract. Constants, not settings: the hottest loop of a one-body step
   /// runs them, and a compile-time trip count saves 4% of its instructions
-  /// (bench/README.md); no scene needs others (the sub-steps keep it exact).
+  /// (bench/HISTORY.md); no scene needs others (the sub-steps keep it exact).
   static constexpr int kGyroscopicIterations = 40;
   static constexpr double kGyroscopicTolerance2 = 1e-24;
   static constexpr int kGyroscopicMaxSubsteps = 1 << 16;

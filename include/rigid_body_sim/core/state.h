@@ -12,7 +12,7 @@ namespace rigid_body_sim::core {
 /// State of one body, in its body frame B (centre of mass, principal axes).
 /// Two cache lines: the pose and whether it sleeps (all that detection
 /// reads), then the velocities (at N = 10,000 the states outgrow the L2
-/// cache; bench/README.md).
+/// cache; bench/HISTORY.md).
 struct alignas(64) BodyState {
   Vec3 p_WB = Vec3::Zero();      ///< centre of mass in the world (m)
   bool asleep = false;           ///< not integrated until woken (see SleepSettings)

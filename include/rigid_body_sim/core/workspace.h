@@ -38,7 +38,7 @@ struct Workspace {
   int threads = 0;
   /// Awake bodies (or contacts) below which a stage runs on one thread: a
   /// hand-over to the other core costs about 1–1.5 µs, and an awake body's
-  /// step 0.5–1.5 µs (bench/README.md).
+  /// step 0.5–1.5 µs (bench/HISTORY.md).
   std::size_t min_parallel_work = 32;
   /// Take a step that would return its input unchanged as such (fixed_point.h);
   /// false computes every step (the tests compare the two, state for state).

@@ -81,7 +81,7 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir = "");
 /// with each of `overrides` (KEY=VALUE, applyOverride) applied, but the
 /// `bodies` list is parsed an entry at a time as it is read, never held
 /// whole as a YAML tree (about 7 KB an entry: 70 MB for a world of 10,000
-/// bodies, bench/README.md). ConfigError as parseConfig and loadYamlText.
+/// bodies, bench/HISTORY.md). ConfigError as parseConfig and loadYamlText.
 SimConfig parseConfigText(const std::string& yaml, const std::string& source,
                           const std::vector<std::string>& overrides = {}, const std::string& base_dir = "");
 /// parseConfigText of the file at `path` (at most InputCaps::kConfigBytes).

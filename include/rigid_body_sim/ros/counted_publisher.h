@@ -2,7 +2,7 @@
 // getNumSubscribers() find their topic by a linear search of every topic the
 // process advertises; with one odometry topic per body that is O(N) per
 // message and O(N²) per state update (10,000 bodies ran at 2 % of real time,
-// bench/README.md). The count, kept by roscpp's connect and disconnect
+// bench/HISTORY.md). The count, kept by roscpp's connect and disconnect
 // callbacks, tells the node which messages no one would receive, so it
 // neither builds nor sends them.
 #pragma once
