@@ -16,6 +16,26 @@ mapfile -t sources < <(git ls-files '*.h' '*.cpp')
 echo "lint: clang-format over ${#sources[@]} sources" >&2
 clang-format --dry-run --Werror "${sources[@]}"
 
+# The docs a newcomer reads stay short and ARCHITECTURE.md names every
+# source unit (a header or source of the same stem names both).
+docs_ok=1
+for limit in README.md:300 bench/README.md:400; do
+  lines=$(wc -l <"${limit%%:*}")
+  if [ "$lines" -gt "${limit##*:}" ]; then
+    echo "lint: ${limit%%:*} has $lines lines, at most ${limit##*:}: move reference text to docs/" >&2
+    docs_ok=0
+  fi
+done
+for f in $(git ls-files src include); do
+  stem=$(basename "${f%.*}")
+  if ! grep -qE "\b$stem\.(h|cpp)\b" ARCHITECTURE.md; then
+    echo "lint: ARCHITECTURE.md does not name $f" >&2
+    docs_ok=0
+  fi
+done
+[ "$docs_ok" -eq 1 ] || exit 1
+echo "lint: docs: README.md, bench/README.md within their lengths; ARCHITECTURE.md names every source unit" >&2
+
 # The translation units of the change under src/: changed .cpp files, and
 # the .cpp beside a changed header (its checks run through HeaderFilterRegex).
 base=${RBS_LINT_BASE:-HEAD~1}

@@ -114,7 +114,7 @@ std::string listeningAddress(int port) {
 }
 
 TEST_F(Tf, ListensWhereTheReadmesSecurityNoteSays) {
-  // README, Security: with ROS_HOSTNAME=localhost the master listens on
+  // docs/ros_api.md, Security: with ROS_HOSTNAME=localhost the master listens on
   // 127.0.0.1, but roscpp's XML-RPC server (where anyone may call shutdown)
   // on every address. It said the opposite once.
   XmlRpc::XmlRpcValue args, result, payload;

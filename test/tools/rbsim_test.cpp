@@ -96,7 +96,7 @@ TEST(Rbsim, ReportsPenetrationAndRestOfADroppedBox) {
   EXPECT_LT(j["max_penetration"].as<double>(), 1e-3);
   const double z = seq(j["final"]["position"])[2];
   EXPECT_TRUE(std::abs(z - 0.05) < 1e-3 || std::abs(z - 0.1) < 1e-3 || std::abs(z - 0.2) < 1e-3) << z;
-  // The README's drop: the config names its body, no --urdf needed.
+  // docs/rbsim.md's drop: the config names its body, no --urdf needed.
   const Result drop = rbsim("--config " + std::string(RBS_SOURCE_DIR) + "/config/drop.yaml --duration 5 --quiet");
   ASSERT_EQ(drop.code, 0) << drop.err;
   const YAML::Node d = YAML::Load(drop.out);

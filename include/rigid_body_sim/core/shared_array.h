@@ -1,7 +1,7 @@
 // An immutable array that copies of a model, and bodies built alike, share:
 // a pile of 10,000 equal boxes keeps one copy of their contact points, so
-// the points stay in cache and the model costs little to copy (a spawn or a
-// delete copies it). Reads as a const std::vector.
+// the points stay in cache and a model costs little to copy (retuned()
+// copies it). Reads as a const std::vector.
 #pragma once
 
 #include <cstddef>

@@ -1,8 +1,10 @@
 // Common Eigen aliases and small helpers of the core. Eigen only.
 //
-// Frame names follow Drake's monogram notation: p_WB is the position of B in
-// W, q_WB the orientation of B in W, v_WB the velocity of B in W, w_B an
-// angular velocity expressed in B. Frames used throughout:
+// Frame names follow Drake's monogram notation, shortened: p_WB is the
+// position of B in W, q_WB the orientation of B in W, v_WB the velocity of B
+// in W (all expressed in W); a single frame letter says only the frame a
+// vector is expressed in: w_B is B's angular velocity in W expressed in B
+// (Drake's w_WB_B), force_W a force in world axes. Frames used throughout:
 //   W  the world (inertial) frame, z up (REP 103)
 //   L  the URDF root link frame: what users see and what is reported
 //   B  the body frame: origin at the centre of mass, axes along the

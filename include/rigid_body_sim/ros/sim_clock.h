@@ -1,6 +1,6 @@
 // The node's one clock: every stamp it publishes (odometry, tf, /clock), every
 // time in a service response or message, and every time a user gives it
-// (apply_wrench's start_time) are read on this clock (README, "Time").
+// (apply_wrench's start_time) are read on this clock (docs/ros_api.md, "Time").
 //
 // - With /use_sim_time: sim time itself, steps × Δt from 0, published on /clock.
 // - Without: wall time at an anchor plus the sim time since the anchor. It
