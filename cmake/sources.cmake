@@ -28,6 +28,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/sdf.cpp
   ${RBS_SOURCE_ROOT}/src/core/sdf_grid.cpp
   ${RBS_SOURCE_ROOT}/src/core/sdf_surface.cpp
+  ${RBS_SOURCE_ROOT}/src/core/setting_keys.cpp
   ${RBS_SOURCE_ROOT}/src/core/shape_matching.cpp
   ${RBS_SOURCE_ROOT}/src/core/sleep.cpp
   ${RBS_SOURCE_ROOT}/src/core/solver_contact.cpp

@@ -13,12 +13,12 @@ namespace rigid_body_sim::core {
 double barrierPotential(const ContactSettings& cs, double phi) {
   const double eps = cs.barrier_buffer;
   if (phi >= eps) return 0.0;
-  phi = std::max(phi, kBarrierFloor);
+  phi = std::max(phi, SolverSettings::kBarrierFloor);
   return cs.barrier_strength * (std::log(eps / phi) - 1.0 + phi / eps);
 }
 
 double barrierForce(const ContactSettings& cs, double phi0, double phi1) {
-  const double a = std::max(phi0, kBarrierFloor), b = std::max(phi1, kBarrierFloor);
+  const double a = std::max(phi0, SolverSettings::kBarrierFloor), b = std::max(phi1, SolverSettings::kBarrierFloor);
   if (std::abs(b - a) > 1e-6 * std::min(a, b)) {
     return (barrierPotential(cs, a) - barrierPotential(cs, b)) / (b - a);
   }
@@ -27,10 +27,6 @@ double barrierForce(const ContactSettings& cs, double phi0, double phi1) {
 }
 
 namespace {
-
-/// Relative mismatch between the end separations a pass assumed and where
-/// it ended above which the step is halved.
-constexpr double kBarrierSettle = 0.01;
 
 /// Each contact's separation at the end of the step from `before` to
 /// `after`: its point carried by the body (and, between bodies, the other
@@ -68,7 +64,7 @@ bool tooStiff(const Model& model, const Workspace& ws, double h) {
   const std::vector<double>& end = ws.scratch->barrier_end;
   for (std::size_t n = 0; n < ws.contacts.size(); ++n) {
     const Contact& c = ws.contacts[n];
-    const double phi = std::max(std::min(c.separation, end[n]), kBarrierFloor);  // the stiffer end
+    const double phi = std::max(std::min(c.separation, end[n]), SolverSettings::kBarrierFloor);  // the stiffer end
     if (phi >= cs.barrier_buffer) continue;
     const double k = cs.barrier_strength / (phi * phi);
     double w = weight(c.body, c.r_W);
@@ -128,7 +124,8 @@ void advanceKeepingBarrier(const Model& model, State& state, const Loads& loads,
   bool redo = false;
   for (std::size_t k = 0; k < sc.barrier_end.size() && !redo; ++k) {
     const double assumed = sc.barrier_end[k], settled = sc.barrier_settled[k];
-    redo = std::abs(settled - assumed) > kBarrierSettle * std::max(std::min(settled, assumed), kBarrierFloor);
+    redo = std::abs(settled - assumed) >
+           SolverSettings::kBarrierSettle * std::max(std::min(settled, assumed), SolverSettings::kBarrierFloor);
   }
   sc.barrier_end.swap(sc.barrier_settled);
   redo = redo || tooStiff(model, ws, h) || crossesTooFar(model, before, state);

@@ -14,9 +14,6 @@
 #pragma GCC visibility push(hidden)
 namespace rigid_body_sim::core {
 
-/// m: the barrier is evaluated no closer than this (ρ/φ stays finite).
-constexpr double kBarrierFloor = 1e-9;
-
 /// U(φ) = ρ (ln(ε/φ) − 1 + φ/ε) inside the buffer ε, 0 beyond (J): the
 /// potential whose force is ρ (1/φ − 1/ε).
 double barrierPotential(const ContactSettings& cs, double phi);

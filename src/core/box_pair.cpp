@@ -7,18 +7,6 @@
 namespace rigid_body_sim::core::detail {
 namespace {
 
-/// How much less a later axis must overlap than the best so far to replace
-/// it, relative to the best's magnitude: the other box's faces 2 %, an edge
-/// pair 5 % (ODE's box-box test prefers faces by the same 5 %). Keeps one
-/// axis from step to step where two nearly tie, so the solver warm-starts.
-constexpr double kOtherFaceMargin = 0.02;
-constexpr double kEdgeMargin = 0.05;
-/// And in absolute terms (m), for overlaps near zero.
-constexpr double kAbsoluteMargin = 1e-6;
-/// Edges closer to parallel than this (|a × b|, unit edges) give no axis:
-/// the faces already cover them.
-constexpr double kParallelSine = 1e-3;
-
 /// The middle of the box's edge along `axis` that lies farthest along n.
 Vec3 supportEdge(const BoxInFrame& b, int axis, const Vec3& n) {
   Vec3 p = b.centre_F;
@@ -65,7 +53,8 @@ PairPlane boxPairPlane(const BoxInFrame& base, const BoxInFrame& other, bool bas
   // first time); every axis counts toward the gap.
   const auto consider = [&](const Vec3& L, double overlap, double margin, int face, int edge_base, int edge_other) {
     plane.gap = std::max(plane.gap, -overlap);
-    if (best_overlap != INFINITY && !(overlap < best_overlap - margin * std::abs(best_overlap) - kAbsoluteMargin)) {
+    if (best_overlap != INFINITY &&
+        !(overlap < best_overlap - margin * std::abs(best_overlap) - SolverSettings::kBoxAbsoluteMargin)) {
       return;
     }
     best_overlap = overlap;
@@ -86,21 +75,21 @@ PairPlane boxPairPlane(const BoxInFrame& base, const BoxInFrame& other, bool bas
   };
   if (base_first) {
     base_faces(0.0);
-    other_faces(kOtherFaceMargin);
+    other_faces(SolverSettings::kBoxFaceMargin);
   } else {
     other_faces(0.0);
-    base_faces(kOtherFaceMargin);
+    base_faces(SolverSettings::kBoxFaceMargin);
   }
   for (int i = 0; i < 3; ++i) {
     const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
     for (int j = 0; j < 3; ++j) {
       const double sine = std::sqrt(std::max(0.0, 1.0 - C(i, j) * C(i, j)));
-      if (!(sine > kParallelSine)) continue;
+      if (!(sine > SolverSettings::kBoxParallelSine)) continue;
       const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
       const Vec3 L = Vec3::Unit(i).cross(Vec3(C.col(j)));
       const double ra = hb(i1) * A(i2, j) + hb(i2) * A(i1, j);
       const double rb = ho(j1) * A(i, j2) + ho(j2) * A(i, j1);
-      consider(L / sine, (ra + rb - std::abs(t.dot(L))) / sine, kEdgeMargin, -1, i, j);
+      consider(L / sine, (ra + rb - std::abs(t.dot(L))) / sine, SolverSettings::kBoxEdgeMargin, -1, i, j);
     }
   }
   if (best_L.dot(t) < 0.0) best_L = -best_L;  // from base toward other

@@ -88,10 +88,6 @@ void scanScene(const Model& model, const BodyState& s, int body, double margin, 
   }
 }
 
-/// A face point's contact with another body counts only if the solid's
-/// normal there is within 30° of the face's own, reversed.
-constexpr double kFaceContactCos = 0.8660254037844387;  // cos 30°
-
 /// The same for the points of body a against the solid of body o: each
 /// point is taken into o's frame, where the solid is.
 template <class Visit>
@@ -141,7 +137,7 @@ template <class Visit>
     // edges o's gradient turns sideways (a box sliding over another's face
     // samples would stop at each one), and o's own points against a's solid
     // give those contacts their true normal.
-    if (p.normal_B.dot(p.normal_B) > 0.0 && (R_OA * p.normal_B).dot(n_O) > -kFaceContactCos) continue;
+    if (p.normal_B.dot(p.normal_B) > 0.0 && (R_OA * p.normal_B).dot(n_O) > -SolverSettings::kFaceContactCos) continue;
     visit(i, separation, Vec3(R_WO * n_O), r_B);
   }
   if (!boxes) return;

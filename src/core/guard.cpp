@@ -39,8 +39,8 @@ std::string whatDiverged(const BodyState& s) {
 
 void holdToLimits(const Model& model, int i, BodyState& s, Workspace& ws) {
   const SpeedLimits& limits = model.limits();
-  const bool linear = clampLength(s.v_WB, limits.linear);
-  const bool angular = clampLength(s.w_B, limits.angular);  // |ω| is the same in B as in W
+  const bool linear = clampLength(s.v_WB, limits.max_linear_speed);
+  const bool angular = clampLength(s.w_B, limits.max_angular_speed);  // |ω| is the same in B as in W
   if ((linear || angular) && (ws.speed_limited.empty() || ws.speed_limited.back() != i)) {
     ws.speed_limited.push_back(i);
   }

@@ -21,7 +21,9 @@ void holdToLimits(const Model& model, int i, BodyState& s, Workspace& ws);
 /// when faster. A velocity with a non-finite component is left to the guard.
 inline void limitSpeeds(const Model& model, int i, BodyState& s, Workspace& ws) {
   const SpeedLimits& l = model.limits();
-  if (s.v_WB.squaredNorm() <= l.linear * l.linear && s.w_B.squaredNorm() <= l.angular * l.angular) return;
+  if (s.v_WB.squaredNorm() <= l.max_linear_speed * l.max_linear_speed &&
+      s.w_B.squaredNorm() <= l.max_angular_speed * l.max_angular_speed)
+    return;
   holdToLimits(model, i, s, ws);
 }
 

@@ -63,8 +63,8 @@ void integrateVelocity(const Model& model, const BodyModel& b, const NetLoad& ne
 // v ← e^(−k h) v: a decay rate, independent of h (docs/physics.md §5.4).
 void applyDamping(const Model& model, double h, BodyState& s) {
   const Damping& d = model.damping();
-  if (d.linear_rate != 0.0) s.v_WB *= h == model.dt() ? model.linearDecay() : std::exp(-d.linear_rate * h);
-  if (d.angular_rate != 0.0) s.w_B *= h == model.dt() ? model.angularDecay() : std::exp(-d.angular_rate * h);
+  if (d.linear != 0.0) s.v_WB *= h == model.dt() ? model.linearDecay() : std::exp(-d.linear * h);
+  if (d.angular != 0.0) s.w_B *= h == model.dt() ? model.angularDecay() : std::exp(-d.angular * h);
 }
 
 // The gyroscopic term −ω × (I ω) of Euler's equation (docs/physics.md §5.6).
@@ -169,7 +169,7 @@ void integrateVelocities(const Model& model, State& state, const Loads& loads, d
     return;
   }
   // Gravity alone changes only v: ω needs no look (it was limited when it changed).
-  const double linear2 = model.limits().linear * model.limits().linear;
+  const double linear2 = model.limits().max_linear_speed * model.limits().max_linear_speed;
   for (std::size_t i = 0; i < state.bodies.size(); ++i) {
     BodyState& s = state.bodies[i];
     if (s.asleep) continue;

@@ -105,12 +105,7 @@ Model::Model(const ModelSpec& spec)
       sleep_(spec.sleep),
       solver_(spec.solver),
       limits_(spec.limits) {
-  detail::requireWithin(spec.dt, ranges::kMinDt, ranges::kMaxDt, "dt", "s");
-  validateGravity(spec.gravity_W);
-  validateLimits(spec.limits);
-  validateContact(spec.contact);
-  validateSleep(spec.sleep);
-  validateSolver(spec.solver);
+  validateSettings(spec);
   for (std::size_t i = 0; i < spec.bodies.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
       if (spec.bodies[i].name == spec.bodies[j].name) {
@@ -144,8 +139,8 @@ Model::Model(const ModelSpec& spec)
 
 void Model::deriveSettings() {
   restitution_threshold_ = std::max(contact_.restitution_threshold, 2.0 * gravity_W_.norm() * dt_);
-  linear_decay_ = std::exp(-damping_.linear_rate * dt_);
-  angular_decay_ = std::exp(-damping_.angular_rate * dt_);
+  linear_decay_ = std::exp(-damping_.linear * dt_);
+  angular_decay_ = std::exp(-damping_.angular * dt_);
   max_restitution_ = contact_.restitution;
   for (BodyModel& b : bodies_) {
     if (!b.own_friction) b.friction = contact_.friction;
@@ -208,11 +203,19 @@ void Model::removeBody(std::size_t i) {
 }
 
 Model Model::retuned(const Tuning& t) const {
-  validateGravity(t.gravity_W);
-  ContactSettings contact = contact_;
-  contact.friction = t.friction;
-  contact.restitution = t.restitution;
-  validateContact(contact);
+  ModelSpec spec;  // the settings in force, with the tuning's
+  spec.dt = dt_;
+  spec.gyroscopic = gyroscopic_;
+  spec.contact = contact_;
+  spec.sleep = sleep_;
+  spec.solver = solver_;
+  spec.limits = limits_;
+  spec.gravity_W = t.gravity_W;
+  spec.damping = t.damping;
+  spec.contact.friction = t.friction;
+  spec.contact.restitution = t.restitution;
+  validateSettings(spec);
+  const ContactSettings& contact = spec.contact;
   validateDamping(t.damping, dt_, bodies_);
   validateBarrier(contact, limits_, t.gravity_W, bodies_);
   Model m = *this;  // the bodies' distance grids are shared, not copied

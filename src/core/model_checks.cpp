@@ -6,15 +6,12 @@
 
 #include "barrier.h"
 #include "rigid_body_sim/core/ranges.h"
+#include "rigid_body_sim/core/setting_keys.h"
 #include "validate.h"
 
 namespace rigid_body_sim::core {
 
 void validateDamping(const Damping& d, double dt, const std::vector<BodyModel>& bodies) {
-  detail::requireNonNegative(d.linear_rate, "damping.linear", "1/s");
-  detail::requireNonNegative(d.angular_rate, "damping.angular", "1/s");
-  detail::requireNonNegative(d.linear_drag, "damping.linear_drag", "N*s/m");
-  detail::requireNonNegative(d.angular_drag, "damping.angular_drag", "N*m*s/rad");
   // The explicit drag step v ← v (1 − σΔt/M) reverses v when σΔt/M ≥ 1.
   for (const BodyModel& b : bodies) {
     const double lin = d.linear_drag * dt * b.inv_mass;
@@ -30,21 +27,6 @@ void validateDamping(const Damping& d, double dt, const std::vector<BodyModel>& 
                        "' (explicit drag would reverse the spin; use damping.angular, a decay rate)");
     }
   }
-}
-
-void validateContact(const ContactSettings& c) {
-  detail::requireWithin(c.restitution, 0.0, 1.0, "contact.restitution", "");
-  detail::requireWithin(c.friction, 0.0, ranges::kMaxFriction, "contact.friction", "");
-  detail::requireWithin(c.restitution_threshold, 0.0, ranges::kMaxThresholdSpeed, "contact.restitution_threshold",
-                        "m/s");
-  detail::requireWithin(c.sample_spacing, ranges::kMinSampleSpacing, ranges::kMaxExtent, "contact.sample_spacing", "m");
-  detail::requireCount(c.iterations, 1, ranges::kMaxIterations, "contact.iterations");
-  detail::requireWithin(c.position_slop, 0.0, ranges::kMaxBuffer, "contact.position_slop", "m");
-  detail::requirePositive(c.penalty_stiffness, "contact.penalty_stiffness", "N/m");  // per body: validatePenalty
-  detail::requireNonNegative(c.penalty_damping, "contact.penalty_damping", "N*s/m");
-  detail::requirePositiveAtMost(c.penalty_buffer, ranges::kMaxBuffer, "contact.penalty_buffer", "m");
-  detail::requirePositiveAtMost(c.barrier_strength, ranges::kMaxBarrierStrength, "contact.barrier_strength", "N*m");
-  detail::requirePositiveAtMost(c.barrier_buffer, ranges::kMaxBuffer, "contact.barrier_buffer", "m");
 }
 
 void validatePenalty(const ContactSettings& c, double dt, const std::vector<BodyModel>& bodies) {
@@ -73,8 +55,10 @@ void validatePenalty(const ContactSettings& c, double dt, const std::vector<Body
 void validateBarrier(const ContactSettings& c, const SpeedLimits& limits, const Vec3& gravity,
                      const std::vector<BodyModel>& bodies) {
   if (c.method != ContactMethod::kPenaltyLogBarrier) return;
-  const double holds = barrierPotential(c, kBarrierFloor);
-  const auto reach = [&](const BodyModel& b) { return limits.linear + limits.angular * b.bound_radius; };
+  const double holds = barrierPotential(c, SolverSettings::kBarrierFloor);
+  const auto reach = [&](const BodyModel& b) {
+    return limits.max_linear_speed + limits.max_angular_speed * b.bound_radius;
+  };
   double fastest = 0.0;
   if (bodies.size() > 1) {
     for (const BodyModel& b : bodies) fastest = std::max(fastest, reach(b));
@@ -86,40 +70,19 @@ void validateBarrier(const ContactSettings& c, const SpeedLimits& limits, const 
       detail::fail("contact.barrier_strength", detail::str(c.barrier_strength),
                    "holds at most " + detail::str(holds) + " J at a contact point, but body '" + b.name +
                        "' can bring " + detail::str(brings) + " J to one at limits.max_linear_speed " +
-                       detail::str(limits.linear) + " m/s and limits.max_angular_speed " + detail::str(limits.angular) +
-                       " rad/s; raise it to at least " + detail::str(c.barrier_strength * brings / holds) +
-                       " or lower the limits");
+                       detail::str(limits.max_linear_speed) + " m/s and limits.max_angular_speed " +
+                       detail::str(limits.max_angular_speed) + " rad/s; raise it to at least " +
+                       detail::str(c.barrier_strength * brings / holds) + " or lower the limits");
     }
   }
 }
 
-void validateGravity(const Vec3& g) {
-  detail::requireFinite(g, "gravity");
-  if (g.norm() > ranges::kMaxGravity) {
-    detail::fail("gravity", detail::str(g),
-                 "|g| = " + detail::str(g.norm()) + " must be at most " + detail::str(ranges::kMaxGravity) + " m/s^2");
-  }
-}
-
-void validateSleep(const SleepSettings& s) {
-  detail::requireWithin(s.linear_velocity, 0.0, ranges::kMaxThresholdSpeed, "sleep.linear_velocity", "m/s");
-  detail::requireWithin(s.angular_velocity, 0.0, ranges::kMaxThresholdSpeed, "sleep.angular_velocity", "rad/s");
-  detail::requireWithin(s.time, 0.0, 1e6, "sleep.time", "s");
-}
-
-void validateLimits(const SpeedLimits& l) {
-  detail::requirePositiveAtMost(l.linear, ranges::kMaxSpeedLimit, "limits.max_linear_speed", "m/s");
-  detail::requirePositiveAtMost(l.angular, ranges::kMaxSpeedLimit, "limits.max_angular_speed", "rad/s");
-}
-
-void validateSolver(const SolverSettings& s) {
-  detail::requirePositive(s.velocity_tolerance, "solver.velocity_tolerance", "m/s");
-  detail::requireNonNegative(s.relative_tolerance, "solver.relative_tolerance", "");
-  detail::requireNonNegative(s.resting_speed, "solver.resting_speed", "m/s");
+void validateSettings(const ModelSpec& spec) {
+  checkSettings(spec);
+  const SolverSettings& s = spec.solver;
   detail::requireNonNegative(s.rounding_speed, "solver.rounding_speed", "m/s");
-  detail::requireCount(s.position_iterations, 0, ranges::kMaxIterations, "solver.position_iterations");
-  detail::requireCount(s.mesh_grid_resolution, 2, ranges::kMaxGridResolution, "solver.mesh_grid_resolution");
-  detail::requireCount(s.large_mesh_grid_resolution, 2, ranges::kMaxGridResolution, "solver.mesh_grid_resolution");
+  detail::requireCount(s.large_mesh_grid_resolution, 2, ranges::kMaxGridResolution,
+                       "solver.large_mesh_grid_resolution");
   if (s.point_group_size < 1)
     detail::fail("solver.point_group_size", std::to_string(s.point_group_size), "must be >= 1");
 }

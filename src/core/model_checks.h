@@ -1,6 +1,7 @@
 // The checks a model's settings must pass (docs/physics.md §5.9), shared by
-// Model's constructor and Model::retuned. Private to the core. Each throws
-// std::invalid_argument naming the key, the value and the allowed range.
+// Model's constructor and Model::retuned: each key's range (setting_keys.h)
+// and the rules that tie settings to the bodies. Private to the core. Each
+// throws std::invalid_argument naming the key, the value and the allowed range.
 #pragma once
 
 #include <vector>
@@ -10,11 +11,9 @@
 #pragma GCC visibility push(hidden)
 namespace rigid_body_sim::core {
 
-void validateGravity(const Vec3& g);
-void validateLimits(const SpeedLimits& l);
-void validateContact(const ContactSettings& c);
-void validateSleep(const SleepSettings& s);
-void validateSolver(const SolverSettings& s);
+/// Every config key's value within its one range (setting_keys.h), and the
+/// solver's settings that have no key.
+void validateSettings(const ModelSpec& spec);
 /// The explicit drag must not reverse a body's velocity: σ Δt / m < 1.
 void validateDamping(const Damping& d, double dt, const std::vector<BodyModel>& bodies);
 /// The penalty spring and damper act explicitly on each body: k h²/m and

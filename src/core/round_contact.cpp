@@ -2,20 +2,16 @@
 
 #include <cmath>
 
+#include "rigid_body_sim/core/settings.h"
+
 namespace rigid_body_sim::core::detail {
 namespace {
-
-/// Below this |n × a| a rim counts as flat on the surface (its deepest point
-/// is then anywhere on it): its first point goes to the fixed `across`
-/// direction, so a cylinder standing on its cap keeps its three contact
-/// points from step to step. A rim that flat is level within ρ × 1e-9 m.
-constexpr double kFlatRim = 1e-9;
 
 /// The unit u across a with n · u least: where a rim is deepest along n.
 Vec3 deepestAcross(const Vec3& n, const Vec3& a, const Vec3& across) {
   const Vec3 perp = n - n.dot(a) * a;
   const double norm = perp.norm();
-  return norm > kFlatRim ? Vec3(-perp / norm) : across;
+  return norm > SolverSettings::kFlatRim ? Vec3(-perp / norm) : across;
 }
 
 /// u turned about a by phase × 120° (phase 2 is −120°).
@@ -25,15 +21,8 @@ Vec3 turned(const Vec3& u, const Vec3& a, int phase) {
   return -0.5 * u + (phase == 1 ? kSin120 : -kSin120) * a.cross(u);
 }
 
-/// A slope ∇φ · a of φ along a line below this counts as level: a line
-/// tilted less than 1 mm per metre on a face touches it at both ends of
-/// what it lies on, the higher end a speculative contact (§5.1), so a
-/// cylinder or capsule lying across a beam rests on both its edges instead
-/// of rocking from one edge to the other.
-constexpr double kLevelSlope = 1e-3;
-
 /// The stretch [t0, t1] of [−h, h] where φ along c + t a is level (|∇φ · a|
-/// ≤ kLevelSlope) and lowest, found by bisection, if the line comes down
+/// ≤ SolverSettings::kLevelSlope) and lowest, found by bisection, if the line comes down
 /// into it from both ends (φ is convex along a line for convex shapes; for
 /// others this is a local minimum). A line lying on a flat face gets the
 /// two ends of what it lies on, one crossing an edge or a curve one point
@@ -46,19 +35,18 @@ bool levelStretch(const Sdf& sdf, const Vec3& c, const Vec3& a, double h, double
     sdf.eval(c + t * a, &n);
     return n.dot(a);
   };
-  if (!(slope(-h) < -kLevelSlope) || !(slope(h) > kLevelSlope)) return false;
-  constexpr double kLength = 1e-12;  // m: 60 halvings take any segment below it
+  if (!(slope(-h) < -SolverSettings::kLevelSlope) || !(slope(h) > SolverSettings::kLevelSlope)) return false;
   double lo = -h, hi = h;
-  for (int k = 0; k < 60 && hi - lo > kLength; ++k) {  // the first level t
+  for (int k = 0; k < 60 && hi - lo > SolverSettings::kLevelLength; ++k) {  // the first level t
     const double mid = 0.5 * (lo + hi);
-    (slope(mid) < -kLevelSlope ? lo : hi) = mid;
+    (slope(mid) < -SolverSettings::kLevelSlope ? lo : hi) = mid;
   }
   t0 = hi;
   lo = t0;
   hi = h;
-  for (int k = 0; k < 60 && hi - lo > kLength; ++k) {  // the last level t
+  for (int k = 0; k < 60 && hi - lo > SolverSettings::kLevelLength; ++k) {  // the last level t
     const double mid = 0.5 * (lo + hi);
-    (slope(mid) <= kLevelSlope ? lo : hi) = mid;
+    (slope(mid) <= SolverSettings::kLevelSlope ? lo : hi) = mid;
   }
   t1 = lo;
   return true;

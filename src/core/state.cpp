@@ -34,7 +34,7 @@ void removeBody(const Model& model, State& state, int i) {
     state.bodies[j].asleep = false;
     state.bodies[j].still_time = 0.0;
   };
-  const double reach = model.body(i).bound_radius + 0.01;  // m
+  const double reach = model.body(i).bound_radius + SolverSettings::kWakeReach;  // m
   for (std::size_t j = 0; j < state.bodies.size(); ++j) {
     const double gap = (state.bodies[j].p_WB - state.bodies[i].p_WB).norm() - model.body(j).bound_radius;
     if (static_cast<int>(j) != i && gap <= reach) wake(static_cast<int>(j));

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "device_config.h"
+#include "rigid_body_sim/core/setting_keys.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/orientation.h"
@@ -45,74 +46,50 @@ core::CombineRule combineRule(const YAML::Node& node, const std::string& key) {
   fail(key, "unknown rule '" + r + "' (min, max, average, multiply, geometric)");
 }
 
-void parseContact(const YAML::Node& node, core::ContactSettings& c) {
-  requireKnownKeys(node, "contact",
-                   {"method", "restitution", "friction", "friction_combine", "restitution_combine",
-                    "restitution_threshold", "sample_spacing", "iterations", "position_slop", "penalty_stiffness",
-                    "penalty_damping", "penalty_buffer", "barrier_strength", "barrier_buffer"});
-  if (node["method"]) c.method = contactMethod(node["method"]);
-  if (node["friction_combine"]) c.friction_combine = combineRule(node["friction_combine"], "contact.friction_combine");
-  if (node["restitution_combine"]) {
-    c.restitution_combine = combineRule(node["restitution_combine"], "contact.restitution_combine");
-  }
-  const std::pair<const char*, double*> numbers[] = {{"restitution", &c.restitution},
-                                                     {"friction", &c.friction},
-                                                     {"restitution_threshold", &c.restitution_threshold},
-                                                     {"sample_spacing", &c.sample_spacing},
-                                                     {"position_slop", &c.position_slop},
-                                                     {"penalty_stiffness", &c.penalty_stiffness},
-                                                     {"penalty_damping", &c.penalty_damping},
-                                                     {"penalty_buffer", &c.penalty_buffer},
-                                                     {"barrier_strength", &c.barrier_strength},
-                                                     {"barrier_buffer", &c.barrier_buffer}};
-  for (const auto& [key, field] : numbers) {
-    if (node[key]) *field = number(node[key], std::string("contact.") + key);
-  }
-  if (node["iterations"]) {
-    const double n = number(node["iterations"], "contact.iterations");
-    if (n != std::floor(n) || n < 1 || n > 1e6)
-      fail("contact.iterations", "expected a whole number >= 1, got " + show(node["iterations"]));
-    c.iterations = static_cast<int>(n);
+/// One setting's value into its ModelSpec field (core/setting_keys.h). Its
+/// range is checked once, by the model built from it; a count is checked
+/// whole here, before it becomes an int.
+void parseSetting(const core::SettingKey& k, const YAML::Node& node, core::ModelSpec& m) {
+  const std::string key(k.key);
+  switch (k.kind) {
+    case core::SettingKey::Kind::kNumber:
+      *k.number(m) = number(node, key);
+      return;
+    case core::SettingKey::Kind::kCount:
+      *k.count(m) = integer(node, key);
+      return;
+    case core::SettingKey::Kind::kFlag:
+      *k.flag(m) = boolean(node, key);
+      return;
+    case core::SettingKey::Kind::kVector:
+      *k.vector(m) = vec3(node, key);
+      return;
+    case core::SettingKey::Kind::kChoice:
+      if (key == "contact.method") m.contact.method = contactMethod(node);
+      if (key == "contact.friction_combine") m.contact.friction_combine = combineRule(node, key);
+      if (key == "contact.restitution_combine") m.contact.restitution_combine = combineRule(node, key);
+      return;
   }
 }
 
-void parseSleep(const YAML::Node& node, core::SleepSettings& s) {
-  requireKnownKeys(node, "sleep", {"enabled", "linear_velocity", "angular_velocity", "time"});
-  if (node["enabled"]) s.enabled = boolean(node["enabled"], "sleep.enabled");
-  if (node["linear_velocity"]) s.linear_velocity = number(node["linear_velocity"], "sleep.linear_velocity");
-  if (node["angular_velocity"]) s.angular_velocity = number(node["angular_velocity"], "sleep.angular_velocity");
-  if (node["time"]) s.time = number(node["time"], "sleep.time");
-}
-
-void parseSolver(const YAML::Node& node, core::SolverSettings& s) {
-  requireKnownKeys(
-      node, "solver",
-      {"velocity_tolerance", "relative_tolerance", "resting_speed", "position_iterations", "mesh_grid_resolution"});
-  if (node["velocity_tolerance"])
-    s.velocity_tolerance = number(node["velocity_tolerance"], "solver.velocity_tolerance");
-  if (node["relative_tolerance"])
-    s.relative_tolerance = number(node["relative_tolerance"], "solver.relative_tolerance");
-  if (node["resting_speed"]) s.resting_speed = number(node["resting_speed"], "solver.resting_speed");
-  if (node["position_iterations"]) {
-    s.position_iterations = integer(node["position_iterations"], "solver.position_iterations");
+/// The model settings of one section of the root (`damping`, `contact`,
+/// ...), or with "" those at the top level: every key the section may have
+/// is in core::settingKeys(), and no other is accepted.
+void parseSection(const YAML::Node& root, const std::string& section, core::ModelSpec& m) {
+  const YAML::Node node = section.empty() ? root : root[section];
+  if (!node) return;
+  if (!section.empty()) {
+    std::set<std::string> known;
+    for (const core::SettingKey& k : core::settingKeys()) {
+      if (k.section() == section) known.emplace(k.name());
+    }
+    requireKnownKeys(node, section, known);
   }
-  if (node["mesh_grid_resolution"]) {
-    s.mesh_grid_resolution = integer(node["mesh_grid_resolution"], "solver.mesh_grid_resolution");
+  for (const core::SettingKey& k : core::settingKeys()) {
+    if (k.section() != section) continue;
+    const std::string name(k.name());
+    if (node[name]) parseSetting(k, node[name], m);
   }
-}
-
-void parseLimits(const YAML::Node& node, core::SpeedLimits& l) {
-  requireKnownKeys(node, "limits", {"max_linear_speed", "max_angular_speed"});
-  if (node["max_linear_speed"]) l.linear = number(node["max_linear_speed"], "limits.max_linear_speed");
-  if (node["max_angular_speed"]) l.angular = number(node["max_angular_speed"], "limits.max_angular_speed");
-}
-
-void parseDamping(const YAML::Node& node, core::Damping& d) {
-  requireKnownKeys(node, "damping", {"linear", "angular", "linear_drag", "angular_drag"});
-  if (node["linear"]) d.linear_rate = number(node["linear"], "damping.linear");
-  if (node["angular"]) d.angular_rate = number(node["angular"], "damping.angular");
-  if (node["linear_drag"]) d.linear_drag = number(node["linear_drag"], "damping.linear_drag");
-  if (node["angular_drag"]) d.angular_drag = number(node["angular_drag"], "damping.angular_drag");
 }
 
 void parseInitial(const YAML::Node& node, core::LinkState& s, const std::string& path = "initial") {
@@ -193,16 +170,11 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
   requireKnownKeys(root, "",
                    {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver",
                     "limits", "bodies", "imu", "odom_noise", "cmd_vel"});
-  if (root["dt"]) c.model.dt = number(root["dt"], "dt");
-  if (root["gravity"]) c.model.gravity_W = vec3(root["gravity"], "gravity");
-  if (root["gyroscopic"]) c.model.gyroscopic = boolean(root["gyroscopic"], "gyroscopic");
-  if (root["damping"]) parseDamping(root["damping"], c.model.damping);
+  parseSection(root, "", c.model);  // dt, gravity, gyroscopic
+  parseSection(root, "damping", c.model);
   if (root["initial"]) parseInitial(root["initial"], c.initial);
   if (root["scene"]) c.model.scene = parseScene(root["scene"], base_dir);
-  if (root["contact"]) parseContact(root["contact"], c.model.contact);
-  if (root["sleep"]) parseSleep(root["sleep"], c.model.sleep);
-  if (root["solver"]) parseSolver(root["solver"], c.model.solver);
-  if (root["limits"]) parseLimits(root["limits"], c.model.limits);
+  for (const char* section : {"contact", "sleep", "solver", "limits"}) parseSection(root, section, c.model);
   if (root["bodies"]) {
     if (root["initial"]) fail("initial", "with a bodies list, give each body its own bodies[i].initial");
     if (streamed && streamed->refused) std::rethrow_exception(streamed->refused);

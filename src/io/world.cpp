@@ -28,11 +28,13 @@ core::BodyState startState(const core::Model& model, std::size_t i, const core::
   if (link.p_WL.stableNorm() > kMaxStartDistance) {
     refuse("position", link.p_WL.stableNorm(), "m", "the farthest a body may start", kMaxStartDistance);
   }
-  if (link.v_WL.stableNorm() > model.limits().linear) {
-    refuse("linear_velocity", link.v_WL.stableNorm(), "m/s", "limits.max_linear_speed", model.limits().linear);
+  if (link.v_WL.stableNorm() > model.limits().max_linear_speed) {
+    refuse("linear_velocity", link.v_WL.stableNorm(), "m/s", "limits.max_linear_speed",
+           model.limits().max_linear_speed);
   }
-  if (link.w_W.stableNorm() > model.limits().angular) {
-    refuse("angular_velocity", link.w_W.stableNorm(), "rad/s", "limits.max_angular_speed", model.limits().angular);
+  if (link.w_W.stableNorm() > model.limits().max_angular_speed) {
+    refuse("angular_velocity", link.w_W.stableNorm(), "rad/s", "limits.max_angular_speed",
+           model.limits().max_angular_speed);
   }
   return core::bodyStateFromLink(model.body(i), link);
 }

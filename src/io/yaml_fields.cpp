@@ -70,7 +70,7 @@ double positiveNumber(const YAML::Node& node, const std::string& key) {
 
 int integer(const YAML::Node& node, const std::string& key) {
   const double x = number(node, key);
-  if (x != std::floor(x) || std::abs(x) > 1e9) fail(key, "expected an integer, got " + show(node));
+  if (x != std::floor(x) || std::abs(x) > 1e9) fail(key, "expected a whole number, got " + show(node));
   return static_cast<int>(x);
 }
 

@@ -74,9 +74,9 @@ bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& r
   if (axes.other >= 0) impulse = core::inWorldAxes(impulse, orientationOf(axes, body));
   core::applyImpulse(model_.body(body), after, impulse);
   const std::string speed =
-      checkSpeed(after.v_WB, model_.limits().linear, "resulting velocity", "limits.max_linear_speed", "m/s");
-  const std::string spin =
-      checkSpeed(after.w_B, model_.limits().angular, "resulting angular velocity", "limits.max_angular_speed", "rad/s");
+      checkSpeed(after.v_WB, model_.limits().max_linear_speed, "resulting velocity", "limits.max_linear_speed", "m/s");
+  const std::string spin = checkSpeed(after.w_B, model_.limits().max_angular_speed, "resulting angular velocity",
+                                      "limits.max_angular_speed", "rad/s");
   if (!speed.empty() || !spin.empty()) {
     res.message = speed.empty() ? spin : speed;
     return true;

@@ -74,7 +74,8 @@ void SimNode::reportStep() {
     ROS_WARN(
         "sim_node: body '%s' reached the speed limits at t = %s (limits.max_linear_speed %g m/s, "
         "limits.max_angular_speed %g rad/s): its velocity is held to them (said once per body)",
-        model_.body(i).name.c_str(), now().c_str(), model_.limits().linear, model_.limits().angular);
+        model_.body(i).name.c_str(), now().c_str(), model_.limits().max_linear_speed,
+        model_.limits().max_angular_speed);
   }
 }
 

@@ -9,45 +9,114 @@
 
 namespace rigid_body_sim::node {
 
-void requireParamWithin(double x, const std::string& key, double lo, double hi, const std::string& unit) {
-  if (!std::isfinite(x) || x < lo || x > hi) {
-    std::ostringstream os;
-    os << "parameter '~" << key << "' = " << x << ": must be within [" << lo << ", " << hi << "]"
-       << (unit.empty() ? "" : " " + unit);
-    throw io::ConfigError(os.str());
-  }
+namespace {
+
+using Kind = NodeParamKey::Kind;
+
+NodeParamKey number(std::string_view key, std::string_view unit, double min, double max,
+                    double* (*field)(NodeSettings&)) {
+  NodeParamKey k;
+  k.key = key;
+  k.unit = unit;
+  k.min = min;
+  k.max = max;
+  k.number = field;
+  return k;
 }
 
-void requireRealtimeFactor(double x) {
-  using R = NodeSettings;
-  if (x == 0.0) return;
-  if (!std::isfinite(x) || x < R::kMinRealtimeFactor || x > R::kMaxRealtimeFactor) {
+NodeParamKey flag(std::string_view key, bool* (*field)(NodeSettings&)) {
+  NodeParamKey k;
+  k.key = key;
+  k.kind = Kind::kFlag;
+  k.flag = field;
+  return k;
+}
+
+NodeParamKey text(std::string_view key) {
+  NodeParamKey k;
+  k.key = key;
+  k.kind = Kind::kText;
+  return k;
+}
+
+// A tick at least every second keeps SIGINT and the services answered; at
+// most 1e4 a second keeps the loop from spinning. The slowest slow motion,
+// other than 0 (as fast as possible), is a 1 ms step each wall second
+// (1e-300 froze the simulation without a word).
+std::vector<NodeParamKey> makeKeys() {
+  constexpr double kMaxRate = 1e4;  // Hz
+  NodeParamKey realtime = number("realtime_factor", "", 1e-3, 1e3, [](NodeSettings& n) { return &n.realtime_factor; });
+  realtime.zero_too = true;
+  realtime.zero_means = "as fast as possible";
+  NodeParamKey timeout =
+      number("wrench_timeout", "s", 0.0, core::ranges::kMaxDuration, [](NodeSettings& n) { return &n.wrench_timeout; });
+  timeout.zero_means = "held until cleared";
+  // clang-format off
+  return {
+      number("rate", "Hz", 1.0, kMaxRate, [](NodeSettings& n) { return &n.rate; }),
+      realtime,
+      number("publish_rate", "Hz", core::ranges::kMinRate, kMaxRate, [](NodeSettings& n) { return &n.publish_rate; }),
+      text("world_frame"),
+      timeout,
+      number("covariance", "", 0.0, 1e6, [](NodeSettings& n) { return &n.covariance; }),
+      number("scene_size", "m", 1e-3, 1e6, [](NodeSettings& n) { return &n.scene_size; }),
+      flag("report_timing", [](NodeSettings& n) { return &n.report_timing; }),
+      flag("paused", [](NodeSettings& n) { return &n.paused; }),
+      flag("publish_tf", [](NodeSettings& n) { return &n.publish_tf; }),
+      number("body_states_rate", "Hz", core::ranges::kMinRate, kMaxRate,
+             [](NodeSettings& n) { return &n.body_states_rate; }),
+      number("per_body_topics", "bodies", 0.0, 1e9, [](NodeSettings& n) { return &n.per_body_topics; }),
+      text("body_states_twist"),
+      text("config_file"),
+  };
+  // clang-format on
+}
+
+}  // namespace
+
+const std::vector<NodeParamKey>& nodeParamKeys() {
+  static const std::vector<NodeParamKey> keys = makeKeys();
+  return keys;
+}
+
+const NodeParamKey* findNodeParamKey(std::string_view key) {
+  for (const NodeParamKey& k : nodeParamKeys()) {
+    if (k.key == key) return &k;
+  }
+  return nullptr;
+}
+
+void checkNodeParam(const NodeParamKey& key, double x) {
+  if (key.zero_too && x == 0.0) return;
+  if (!std::isfinite(x) || x < key.min || x > key.max) {
     std::ostringstream os;
-    os << "parameter '~realtime_factor' = " << x << ": must be 0 (as fast as possible) or within ["
-       << R::kMinRealtimeFactor << ", " << R::kMaxRealtimeFactor << "]";
+    os << "parameter '~" << key.key << "' = " << x << ": must be " << (key.zero_too ? "0 (" : "")
+       << (key.zero_too ? std::string(key.zero_means) + ") or " : "") << "within [" << key.min << ", " << key.max << "]"
+       << (key.unit.empty() ? "" : " " + std::string(key.unit))
+       << (!key.zero_too && !key.zero_means.empty() ? " (0: " + std::string(key.zero_means) + ")" : "");
     throw io::ConfigError(os.str());
   }
 }
 
 namespace {
 
-/// A number parameter within [lo, hi]: anything outside is refused with the
-/// range (a rate of 1e-9 Hz would sleep 30 years between ticks and never
+/// A number parameter within its range: anything outside is refused with
+/// the range (a rate of 1e-9 Hz would sleep 30 years between ticks and never
 /// answer SIGINT; 1e300 would spin the loop at full CPU).
-double number(const XmlRpc::XmlRpcValue& v, const std::string& key, double lo, double hi, const std::string& unit) {
+double numberParam(const XmlRpc::XmlRpcValue& v, const NodeParamKey& key) {
   double x = 0.0;
   if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) {
     x = static_cast<double>(const_cast<XmlRpc::XmlRpcValue&>(v));
   } else if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) {
     x = static_cast<int>(const_cast<XmlRpc::XmlRpcValue&>(v));
   } else {
-    throw io::ConfigError("parameter '~" + key + "': expected a number, got " + v.toXml());
+    throw io::ConfigError("parameter '~" + std::string(key.key) + "': expected a number, got " + v.toXml());
   }
-  requireParamWithin(x, key, lo, hi, unit);
+  checkNodeParam(key, x);
   return x;
 }
 
-bool flag(const XmlRpc::XmlRpcValue& v, const std::string& key) {
+bool flagParam(const XmlRpc::XmlRpcValue& v, const std::string& key) {
   if (v.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
     throw io::ConfigError("parameter '~" + key + "': expected true or false, got " + v.toXml());
   }
@@ -90,39 +159,17 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   }
   NodeParams p;
   NodeSettings& n = p.node;
-  const std::set<std::string> node_keys{
-      "rate",       "realtime_factor", "publish_rate", "world_frame", "wrench_timeout",   "covariance",
-      "scene_size", "report_timing",   "config_file",  "publish_tf",  "body_states_rate", "body_states_twist",
-      "paused",     "per_body_topics", "physics"};  // ~physics: the dynamic_reconfigure server's own
-  using R = NodeSettings;
-  if (all.hasMember("rate")) n.rate = number(all["rate"], "rate", R::kMinRate, R::kMaxRate, "Hz");
-  if (all.hasMember("realtime_factor")) {
-    n.realtime_factor = number(all["realtime_factor"], "realtime_factor", 0.0, R::kMaxRealtimeFactor, "");
-    requireRealtimeFactor(n.realtime_factor);
-  }
-  if (all.hasMember("publish_rate")) {
-    n.publish_rate = number(all["publish_rate"], "publish_rate", R::kMinPublishRate, R::kMaxRate, "Hz");
+  for (const NodeParamKey& k : nodeParamKeys()) {
+    const std::string key(k.key);
+    if (!all.hasMember(key)) continue;
+    if (k.number) *k.number(n) = numberParam(all[key], k);
+    if (k.flag) *k.flag(n) = flagParam(all[key], key);
   }
   if (all.hasMember("world_frame")) {
     if (all["world_frame"].getType() != XmlRpc::XmlRpcValue::TypeString || std::string(all["world_frame"]).empty()) {
       throw io::ConfigError("parameter '~world_frame': expected a non-empty frame name");
     }
     n.world_frame = static_cast<std::string>(all["world_frame"]);
-  }
-  if (all.hasMember("wrench_timeout")) {
-    n.wrench_timeout =
-        number(all["wrench_timeout"], "wrench_timeout", 0.0, R::kMaxDuration, "s (0: held until cleared)");
-  }
-  if (all.hasMember("covariance")) n.covariance = number(all["covariance"], "covariance", 0.0, 1e6, "");
-  if (all.hasMember("scene_size")) n.scene_size = number(all["scene_size"], "scene_size", 1e-3, 1e6, "m");
-  if (all.hasMember("report_timing")) n.report_timing = flag(all["report_timing"], "report_timing");
-  if (all.hasMember("publish_tf")) n.publish_tf = flag(all["publish_tf"], "publish_tf");
-  if (all.hasMember("paused")) n.paused = flag(all["paused"], "paused");
-  if (all.hasMember("per_body_topics")) {
-    n.per_body_topics = number(all["per_body_topics"], "per_body_topics", 0.0, 1e9, "bodies");
-  }
-  if (all.hasMember("body_states_rate")) {
-    n.body_states_rate = number(all["body_states_rate"], "body_states_rate", R::kMinPublishRate, R::kMaxRate, "Hz");
   }
   if (all.hasMember("body_states_twist")) {
     XmlRpc::XmlRpcValue& v = all["body_states_twist"];
@@ -144,7 +191,8 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
   // Everything else is a simulation key: the same parser as rbsim's config.
   YAML::Node sim(YAML::NodeType::Map);
   for (auto it = all.begin(); it != all.end(); ++it) {
-    if (!node_keys.count(it->first)) sim[it->first] = toYaml(it->second);
+    // ~physics: the dynamic_reconfigure server's own
+    if (!findNodeParamKey(it->first) && it->first != "physics") sim[it->first] = toYaml(it->second);
   }
   p.sim = io::parseConfig(sim, std::filesystem::path(n.config_file).parent_path().string());
   p.sim_yaml = sim;

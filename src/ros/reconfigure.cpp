@@ -25,10 +25,10 @@ PhysicsConfig SimNode::physicsNow() const {
   c.gravity_x = t.gravity_W.x();
   c.gravity_y = t.gravity_W.y();
   c.gravity_z = t.gravity_W.z();
-  c.friction = t.friction;
-  c.restitution = t.restitution;
-  c.linear_damping = t.damping.linear_rate;
-  c.angular_damping = t.damping.angular_rate;
+  c.contact_friction = t.friction;
+  c.contact_restitution = t.restitution;
+  c.damping_linear = t.damping.linear;
+  c.damping_angular = t.damping.angular;
   c.realtime_factor = settings_.realtime_factor;
   c.publish_rate = settings_.publish_rate;
   c.paused = paused_;
@@ -49,14 +49,13 @@ void SimNode::onReconfigure(PhysicsConfig& config, uint32_t) {
   // The model's settings: all or none (gravity's magnitude is one check).
   core::Tuning t = model_.tuning();
   t.gravity_W = core::Vec3(config.gravity_x, config.gravity_y, config.gravity_z);
-  t.friction = config.friction;
-  t.restitution = config.restitution;
-  t.damping.linear_rate = config.linear_damping;
-  t.damping.angular_rate = config.angular_damping;
+  t.friction = config.contact_friction;
+  t.restitution = config.contact_restitution;
+  t.damping.linear = config.damping_linear;
+  t.damping.angular = config.damping_angular;
   const core::Tuning was = model_.tuning();
   const bool changed = t.gravity_W != was.gravity_W || t.friction != was.friction || t.restitution != was.restitution ||
-                       t.damping.linear_rate != was.damping.linear_rate ||
-                       t.damping.angular_rate != was.damping.angular_rate;
+                       t.damping.linear != was.damping.linear || t.damping.angular != was.damping.angular;
   if (changed) {
     try {
       world_.model = model_.retuned(t);
@@ -68,23 +67,22 @@ void SimNode::onReconfigure(PhysicsConfig& config, uint32_t) {
         b.still_time = 0.0;
       }
       ROS_INFO("sim_node: ~physics: gravity (%g, %g, %g) m/s^2, friction %g, restitution %g, damping %g %g 1/s",
-               t.gravity_W.x(), t.gravity_W.y(), t.gravity_W.z(), t.friction, t.restitution, t.damping.linear_rate,
-               t.damping.angular_rate);
+               t.gravity_W.x(), t.gravity_W.y(), t.gravity_W.z(), t.friction, t.restitution, t.damping.linear,
+               t.damping.angular);
     } catch (const std::exception& e) {
       ROS_WARN("sim_node: ~physics refused: %s; the model keeps its settings", e.what());
       config.gravity_x = now.gravity_x;
       config.gravity_y = now.gravity_y;
       config.gravity_z = now.gravity_z;
-      config.friction = now.friction;
-      config.restitution = now.restitution;
-      config.linear_damping = now.linear_damping;
-      config.angular_damping = now.angular_damping;
+      config.contact_friction = now.contact_friction;
+      config.contact_restitution = now.contact_restitution;
+      config.damping_linear = now.damping_linear;
+      config.damping_angular = now.damping_angular;
     }
   }
   // The node's settings, each checked as its parameter is at start.
-  using R = NodeSettings;
   try {
-    requireRealtimeFactor(config.realtime_factor);
+    checkNodeParam(*findNodeParamKey("realtime_factor"), config.realtime_factor);
     if (config.realtime_factor != settings_.realtime_factor) {
       params_.node.realtime_factor = config.realtime_factor;
       rebaseClock();
@@ -94,7 +92,7 @@ void SimNode::onReconfigure(PhysicsConfig& config, uint32_t) {
     config.realtime_factor = now.realtime_factor;
   }
   try {
-    requireParamWithin(config.publish_rate, "publish_rate", R::kMinPublishRate, R::kMaxRate, "Hz");
+    checkNodeParam(*findNodeParamKey("publish_rate"), config.publish_rate);
     params_.node.publish_rate = config.publish_rate;
     publish_every_ = std::max(1LL, std::llround(1.0 / (config.publish_rate * model_.dt())));
   } catch (const std::exception& e) {

@@ -197,8 +197,8 @@ SpawnBody::Response SimNode::insertBody(PendingSpawn& spawn) {
   link.w_W = X_WF->rotation * fromVector3(req.twist.angular);
   res.message = firstProblem(
       {checkVector(link.p_WL, kMaxPosition, "pose.position (in the world)", "m"),
-       checkSpeed(link.v_WL, model_.limits().linear, "twist.linear", "limits.max_linear_speed", "m/s"),
-       checkSpeed(link.w_W, model_.limits().angular, "twist.angular", "limits.max_angular_speed", "rad/s")});
+       checkSpeed(link.v_WL, model_.limits().max_linear_speed, "twist.linear", "limits.max_linear_speed", "m/s"),
+       checkSpeed(link.w_W, model_.limits().max_angular_speed, "twist.angular", "limits.max_angular_speed", "rad/s")});
   if (!res.message.empty()) return res;
   // Everything that may refuse runs before the world changes (the ports,
   // opened on the spawn thread, refused an IMU on no such link).

@@ -30,10 +30,10 @@ bool SimNode::setState(SetState::Request& req, SetState::Response& res) {
   const Vec3 p = fromPoint(req.state.pose.position);
   const Vec3 v = fromVector3(req.state.twist.linear), w = fromVector3(req.state.twist.angular);
   const Quat q = fromQuaternion(req.state.pose.orientation);
-  res.message =
-      firstProblem({checkVector(p, kMaxPosition, "position", "m"),
-                    checkSpeed(v, model_.limits().linear, "linear velocity", "limits.max_linear_speed", "m/s"),
-                    checkSpeed(w, model_.limits().angular, "angular velocity", "limits.max_angular_speed", "rad/s")});
+  res.message = firstProblem(
+      {checkVector(p, kMaxPosition, "position", "m"),
+       checkSpeed(v, model_.limits().max_linear_speed, "linear velocity", "limits.max_linear_speed", "m/s"),
+       checkSpeed(w, model_.limits().max_angular_speed, "angular velocity", "limits.max_angular_speed", "rad/s")});
   if (!res.message.empty()) return true;
   if (!q.coeffs().allFinite() || std::abs(q.norm() - 1.0) > 1e-3) {
     std::ostringstream os;

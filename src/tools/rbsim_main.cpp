@@ -179,8 +179,8 @@ void checkStep(const core::Model& model, const core::Workspace& ws, double t, st
     std::fprintf(stderr,
                  "rbsim: warning: body '%s' reached the speed limits at t = %s s (limits.max_linear_speed %s m/s, "
                  "limits.max_angular_speed %s rad/s): its velocity is held to them\n",
-                 model.body(i).name.c_str(), text(t).c_str(), text(model.limits().linear).c_str(),
-                 text(model.limits().angular).c_str());
+                 model.body(i).name.c_str(), text(t).c_str(), text(model.limits().max_linear_speed).c_str(),
+                 text(model.limits().max_angular_speed).c_str());
   }
 }
 

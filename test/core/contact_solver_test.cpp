@@ -423,7 +423,7 @@ TEST(Determinism, EveryMethodIsBitIdenticalRunToRun) {
     c.method = method;
     c.barrier_strength = 2.0;  // N·m: holds what the box brings at 5 m/s and 5 rad/s (§7.2)
     core::ModelSpec ms = onGround(boxBody(kHalf), c);
-    ms.limits.linear = ms.limits.angular = 5.0;
+    ms.limits.max_linear_speed = ms.limits.max_angular_speed = 5.0;
     const core::Model model(ms);
     auto run = [&] {
       core::State s = stateAt(model, Vec3(0, 0, 0.5), Quat(Eigen::AngleAxisd(0.5, Vec3(1, 2, 0.3).normalized())),

@@ -20,8 +20,8 @@ core::ModelSpec freeSpace() { return spec(boxBody(Vec3(0.2, 0.1, 0.05)), 1e-3, V
 
 TEST(SpeedLimits, ALoadBeyondThemEndsAtTheLimitInItsDirection) {
   core::ModelSpec ms = freeSpace();
-  ms.limits.linear = 50.0;
-  ms.limits.angular = 20.0;
+  ms.limits.max_linear_speed = 50.0;
+  ms.limits.max_angular_speed = 20.0;
   const core::Model model(ms);
   core::State s = core::restState(model);
   core::Loads loads(1);
@@ -41,7 +41,7 @@ TEST(SpeedLimits, ALoadBeyondThemEndsAtTheLimitInItsDirection) {
 
 TEST(SpeedLimits, GravityAloneStopsAtTheLinearLimit) {
   core::ModelSpec ms = spec(shippedBox(), 1e-3, Vec3(0.0, 0.0, -9.81));
-  ms.limits.linear = 10.0;
+  ms.limits.max_linear_speed = 10.0;
   const core::Model model(ms);
   core::State s = core::restState(model);
   core::Workspace ws;
@@ -65,8 +65,8 @@ TEST(SpeedLimits, AnAcceptedTorqueThroughALeverStaysFinite) {
   }
   const core::BodyState& b = s.bodies[0];
   EXPECT_TRUE(b.p_WB.allFinite() && b.v_WB.allFinite() && b.q_WB.coeffs().allFinite() && b.w_B.allFinite());
-  EXPECT_LE(b.v_WB.norm(), model.limits().linear * (1 + 1e-12));
-  EXPECT_LE(b.w_B.norm(), model.limits().angular * (1 + 1e-12));
+  EXPECT_LE(b.v_WB.norm(), model.limits().max_linear_speed * (1 + 1e-12));
+  EXPECT_LE(b.w_B.norm(), model.limits().max_angular_speed * (1 + 1e-12));
   EXPECT_NEAR(b.q_WB.norm(), 1.0, 1e-12);
 }
 

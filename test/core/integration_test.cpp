@@ -57,8 +57,8 @@ TEST(Integration, VelocitiesTakeGravityAsAnAccelerationAndTorqueInTheBodyFrame) 
 
 TEST(Integration, DampingIsADecayRateWhateverTheStep) {
   core::ModelSpec ms = spec(shippedBox(), 1e-3, Vec3::Zero());
-  ms.damping.linear_rate = 2.0;
-  ms.damping.angular_rate = 0.5;
+  ms.damping.linear = 2.0;
+  ms.damping.angular = 0.5;
   const core::Model model(ms);
   for (const double h : {1e-3, 0.25e-3}) {  // the model's step, and a half of a half (log-barrier sub-steps)
     core::BodyState s;

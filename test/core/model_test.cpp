@@ -115,10 +115,10 @@ TEST(ModelValidation, MagnitudesOutsidePhysicalSenseAreRefused) {
   expectRefused(s, {"contact.penalty_stiffness = 1e+300", "k*dt^2/mass", "for body 'box'"});
   for (const double bad : {0.0, -1.0, 1e5, std::numeric_limits<double>::quiet_NaN()}) {
     s = good();
-    s.limits.linear = bad;
+    s.limits.max_linear_speed = bad;
     expectRefused(s, {"limits.max_linear_speed = ", "at most 10000 m/s"});
     s = good();
-    s.limits.angular = bad;
+    s.limits.max_angular_speed = bad;
     expectRefused(s, {"limits.max_angular_speed = ", "at most 10000 rad/s"});
   }
 }
@@ -155,10 +155,10 @@ TEST(ModelValidation, Gravity) {
 
 TEST(ModelValidation, Damping) {
   core::ModelSpec s = good();
-  s.damping.linear_rate = -0.5;
-  expectRefused(s, {"damping.linear = -0.5", ">= 0 1/s"});
+  s.damping.linear = -0.5;
+  expectRefused(s, {"damping.linear = -0.5", "must be within [0, 1000000] 1/s"});
   s = good();
-  s.damping.angular_rate = std::numeric_limits<double>::infinity();
+  s.damping.angular = std::numeric_limits<double>::infinity();
   expectRefused(s, {"damping.angular = inf"});
   s = good();
   s.damping.linear_drag = 2000.0;  // σ Δt / M = 2
@@ -206,7 +206,7 @@ TEST(ModelTuning, RetunedChangesTheSettingsAndKeepsEachBodysOwnSurface) {
   core::Tuning t = model.tuning();
   EXPECT_EQ(t.gravity_W, Vec3(0, 0, -9.81));
   t.gravity_W = Vec3(0, 0, -2);
-  t.damping.linear_rate = 0.5;
+  t.damping.linear = 0.5;
   t.friction = 0.3;
   t.restitution = 0.4;
   const core::Model tuned = model.retuned(t);
@@ -244,7 +244,7 @@ TEST(ModelTuning, ARefusedTuningNamesTheKeyAndChangesNothing) {
   t.friction = std::nan("");
   expectThrowsWith<std::invalid_argument>([&] { (void)model.retuned(t); }, {"contact.friction"});
   t = model.tuning();
-  t.damping.linear_rate = -1.0;
+  t.damping.linear = -1.0;
   expectThrowsWith<std::invalid_argument>([&] { (void)model.retuned(t); }, {"damping.linear"});
   EXPECT_EQ(model.gravity(), Vec3(0, 0, -9.81));
 }

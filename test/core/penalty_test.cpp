@@ -41,9 +41,9 @@ double barrierHolds(const core::ContactSettings& c) {
 core::ModelSpec barrierSpec(double rho) {
   core::ModelSpec ms = penaltySpec(core::ContactMethod::kPenaltyLogBarrier);
   ms.contact.barrier_strength = rho;
-  ms.limits.angular = 1.0;
+  ms.limits.max_angular_speed = 1.0;
   const double holds = barrierHolds(ms.contact) - 9.81 * ms.contact.barrier_buffer;
-  ms.limits.linear = (1 - 1e-9) * (std::sqrt(2 * holds) - ms.limits.angular * kReach);
+  ms.limits.max_linear_speed = (1 - 1e-9) * (std::sqrt(2 * holds) - ms.limits.max_angular_speed * kReach);
   return ms;
 }
 
@@ -107,7 +107,7 @@ TEST(Penalty, LogBarrierNeverGainsEnergyAtTheSpeedsItAccepts) {
     const core::Model model(barrierSpec(rho));
     for (const double share : {0.0, 0.5, 1.0}) {
       for (const Vec3& rpy : kTurns) {
-        const double speed = share * model.limits().linear;
+        const double speed = share * model.limits().max_linear_speed;
         const auto [most, e0] = mostEnergyAfterADrop(model, speed, rpy);
         EXPECT_LE(most, e0 * (1 + 1e-12)) << "rho " << rho << ", " << speed << " m/s, rpy " << rpy.transpose();
       }
@@ -121,7 +121,7 @@ TEST(Penalty, LogBarrierRefusesSpeedLimitsItCannotStop) {
   // key and the strength that would do.
   core::ModelSpec ms = barrierSpec(0.5);
   EXPECT_NO_THROW(core::Model{ms});
-  ms.limits.linear *= 1.001;
+  ms.limits.max_linear_speed *= 1.001;
   expectThrowsWith<std::invalid_argument>([&] { core::Model m(ms); },
                                           {"contact.barrier_strength = 0.5: holds at most ", "body 'box' can bring",
                                            "raise it to at least", "or lower the limits"});

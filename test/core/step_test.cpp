@@ -75,8 +75,8 @@ TEST(Damping, DecayRateIsIndependentOfTheTimeStep) {
   core::BodySpec body = shippedBox();
   for (double dt : {1e-3, 1e-2, 0.1}) {
     core::ModelSpec ms = spec(body, dt, Vec3::Zero(), /*gyroscopic=*/false);
-    ms.damping.linear_rate = 0.7;
-    ms.damping.angular_rate = 1.3;
+    ms.damping.linear = 0.7;
+    ms.damping.angular = 1.3;
     const core::Model model(ms);
     core::LinkState start;
     start.v_WL = Vec3(2.0, 0.0, 0.0);
@@ -123,7 +123,7 @@ TEST(Determinism, TwoRunsAreBitIdentical) {
   core::BodySpec body = shippedBox();
   body.I_C_L(0, 2) = body.I_C_L(2, 0) = 0.0007;
   core::ModelSpec ms = spec(body, 1e-3, kGravity);
-  ms.damping.angular_rate = 0.01;
+  ms.damping.angular = 0.01;
   const core::Model model(ms);
   core::LinkState start;
   start.w_W = Vec3(0.3, 4.0, -0.2);

@@ -23,8 +23,8 @@ TEST(Config, ShippedDefaultsAreTheCodeDefaults) {
   EXPECT_EQ(file.model.dt, code.model.dt);
   EXPECT_EQ(file.model.gravity_W, code.model.gravity_W);
   EXPECT_EQ(file.model.gyroscopic, code.model.gyroscopic);
-  EXPECT_EQ(file.model.damping.linear_rate, code.model.damping.linear_rate);
-  EXPECT_EQ(file.model.damping.angular_rate, code.model.damping.angular_rate);
+  EXPECT_EQ(file.model.damping.linear, code.model.damping.linear);
+  EXPECT_EQ(file.model.damping.angular, code.model.damping.angular);
   EXPECT_EQ(file.model.damping.linear_drag, code.model.damping.linear_drag);
   EXPECT_EQ(file.model.damping.angular_drag, code.model.damping.angular_drag);
   EXPECT_EQ(file.initial.p_WL, code.initial.p_WL);
@@ -46,8 +46,8 @@ TEST(Config, ShippedDefaultsAreTheCodeDefaults) {
   EXPECT_EQ(fc.penalty_buffer, cc.penalty_buffer);
   EXPECT_EQ(fc.barrier_strength, cc.barrier_strength);
   EXPECT_EQ(fc.barrier_buffer, cc.barrier_buffer);
-  EXPECT_EQ(file.model.limits.linear, code.model.limits.linear);
-  EXPECT_EQ(file.model.limits.angular, code.model.limits.angular);
+  EXPECT_EQ(file.model.limits.max_linear_speed, code.model.limits.max_linear_speed);
+  EXPECT_EQ(file.model.limits.max_angular_speed, code.model.limits.max_angular_speed);
   const core::SleepSettings &fs = file.model.sleep, &cs = code.model.sleep;
   EXPECT_EQ(fs.enabled, cs.enabled);
   EXPECT_EQ(fs.linear_velocity, cs.linear_velocity);
@@ -129,7 +129,7 @@ TEST(Config, SolverKeysSetTheTolerancesAUserMayNeed) {
   EXPECT_EQ(c.model.solver.position_iterations, 8);
   EXPECT_EQ(c.model.solver.mesh_grid_resolution, 48);
   expectRefused("solver: {stall_ratio: 0.5}", {"'solver.stall_ratio'", "unknown key"});
-  expectRefused("solver: {position_iterations: 2.5}", {"'solver.position_iterations'", "integer"});
+  expectRefused("solver: {position_iterations: 2.5}", {"'solver.position_iterations'", "whole number"});
   const io::SimConfig zero = parse("scene: []\nsolver: {velocity_tolerance: 0}");
   expectThrowsWith<std::invalid_argument>([&] { io::buildModel(zero, shippedBox()); },
                                           {"solver.velocity_tolerance = 0", "> 0"});
@@ -186,8 +186,8 @@ initial:
   EXPECT_EQ(c.model.dt, 0.002);
   EXPECT_EQ(c.model.gravity_W, Vec3(0, 0, -1.62));
   EXPECT_FALSE(c.model.gyroscopic);
-  EXPECT_EQ(c.model.damping.linear_rate, 0.1);
-  EXPECT_EQ(c.model.damping.angular_rate, 0.2);
+  EXPECT_EQ(c.model.damping.linear, 0.1);
+  EXPECT_EQ(c.model.damping.angular, 0.2);
   EXPECT_EQ(c.model.damping.linear_drag, 0.3);
   EXPECT_EQ(c.model.damping.angular_drag, 0.0004);
   EXPECT_EQ(c.initial.p_WL, Vec3(1, 2, 3));
@@ -216,7 +216,7 @@ TEST(Config, OverridesSetAnyKeyWithAYamlValue) {
   EXPECT_EQ(c.model.gravity_W, Vec3::Zero());
   EXPECT_EQ(c.initial.w_W, Vec3(0.01, 3, 0.01));
   EXPECT_EQ(c.initial.p_WL, Vec3(0, 0, 1));  // untouched sibling
-  EXPECT_EQ(c.model.damping.linear_rate, 0.5);
+  EXPECT_EQ(c.model.damping.linear, 0.5);
   EXPECT_FALSE(c.model.gyroscopic);
   EXPECT_EQ(c.model.dt, 0.01);
   YAML::Node empty;
@@ -252,10 +252,10 @@ TEST(Config, RefusalsNameTheKeyAndTheValue) {
 
 TEST(Config, SpeedLimitsAreKeys) {
   const io::SimConfig c = parse("limits: {max_linear_speed: 20, max_angular_speed: 7}");
-  EXPECT_EQ(c.model.limits.linear, 20.0);
-  EXPECT_EQ(c.model.limits.angular, 7.0);
+  EXPECT_EQ(c.model.limits.max_linear_speed, 20.0);
+  EXPECT_EQ(c.model.limits.max_angular_speed, 7.0);
   const io::SimConfig d = parse("dt: 0.001");
-  EXPECT_EQ(d.model.limits.linear, core::SpeedLimits().linear);
+  EXPECT_EQ(d.model.limits.max_linear_speed, core::SpeedLimits().max_linear_speed);
 }
 
 TEST(Config, BodiesListNamesUrdfsAndInitialStates) {

@@ -69,7 +69,7 @@ TEST_F(Reconfigure, ShowsWhatIsInForceAndChangesItBetweenSteps) {
       });
   ASSERT_TRUE(spinUntil([&] { return got; }, 10.0));
   EXPECT_EQ(values(shown).at("gravity_z"), -5.0);
-  EXPECT_EQ(values(shown).at("friction"), 0.3);
+  EXPECT_EQ(values(shown).at("contact_friction"), 0.3);
   // paused through ~physics is the pause service's pause: step works.
   EXPECT_EQ(set({}, {{"paused", true}}).at("paused"), 1.0);
   EXPECT_NEAR(fallFor(1000), -5.0, 1e-9);  // 1000 steps of 1 ms: v = g t
@@ -84,9 +84,9 @@ TEST_F(Reconfigure, ShowsWhatIsInForceAndChangesItBetweenSteps) {
   EXPECT_NEAR(fallFor(1000), -2.0, 1e-9);
   // Far outside the model's range: refused too, not clamped to the range's
   // edge by dynamic_reconfigure first (-5000 became -1000 and was accepted).
-  now = set({{"gravity_z", -5000.0}, {"friction", 50.0}});
+  now = set({{"gravity_z", -5000.0}, {"contact_friction", 50.0}});
   EXPECT_EQ(now.at("gravity_z"), -2.0);
-  EXPECT_EQ(now.at("friction"), 0.3);
+  EXPECT_EQ(now.at("contact_friction"), 0.3);
   EXPECT_NEAR(fallFor(1000), -2.0, 1e-9);
   // A real-time factor that would freeze the simulation: refused, 1 stays.
   EXPECT_EQ(set({{"realtime_factor", 1e-300}}).at("realtime_factor"), 1.0);

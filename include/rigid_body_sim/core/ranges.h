@@ -8,14 +8,18 @@
 namespace rigid_body_sim::core::ranges {
 
 // -- the world
-constexpr double kMinDt = 1e-6;         ///< s (1 MHz)
-constexpr double kMaxDt = 0.1;          ///< s (10 Hz: coarser steps miss every contact)
-constexpr double kMaxGravity = 1e3;     ///< m/s², |g| (100 g; Jupiter's is 25)
-constexpr double kMaxSpeedLimit = 1e4;  ///< m/s and rad/s: SpeedLimits may be set up to this
+constexpr double kMinDt = 1e-6;      ///< s (1 MHz)
+constexpr double kMaxDt = 0.1;       ///< s (10 Hz: coarser steps miss every contact)
+constexpr double kMaxGravity = 1e3;  ///< m/s², |g| (100 g; Jupiter's is 25)
+constexpr double kMaxSpeedLimit = 1e4;
+/// 1/s: the fastest damping decay rate (v halves in 0.7 µs; beyond, a typo,
+/// and live tuning's widest value, 1e9, is refused rather than taken).
+constexpr double kMaxDecayRate = 1e6;  ///< m/s and rad/s: SpeedLimits may be set up to this
 /// Hz, the slowest a sensor samples or the node publishes: one sample every
 /// 100 s of sim time. A slower one is a typo (1e-300 Hz overflowed the step
 /// counter that paces it, and sampled at every step).
 constexpr double kMinRate = 0.01;
+constexpr double kMaxDuration = 1e6;  ///< s: the sleep time, and the node's durations (11 days)
 
 // -- a body
 constexpr double kMinMass = 1e-6;          ///< kg (a milligram)

@@ -1,8 +1,10 @@
 // Every setting of the simulation, with its unit, in one place (as Jolt's
 // PhysicsSettings): what a config file sets (damping, contact, sleep, the
-// solver's tolerances) and the numerical constants of each stage. The
-// config keys are those of config/default.yaml (`contact.friction`,
-// `solver.velocity_tolerance`, ...); the fields below say which have none.
+// solver's tolerances, the speed limits) and the numerical constants of each
+// stage. A field is named as the last part of its config key
+// (config/default.yaml: `contact.friction` is ContactSettings::friction);
+// setting_keys.h lists the keys with their one range each. The fields below
+// say which have no key.
 #pragma once
 
 #include <cmath>
@@ -15,8 +17,8 @@ namespace rigid_body_sim::core {
 ///  - a drag force f = −σ v (and τ = −σ_ω ω), integrated explicitly
 ///    like every other force, so its effect depends on Δt.
 struct Damping {
-  double linear_rate = 0.0;   ///< 1/s
-  double angular_rate = 0.0;  ///< 1/s
+  double linear = 0.0;        ///< 1/s
+  double angular = 0.0;       ///< 1/s
   double linear_drag = 0.0;   ///< σ, N·s/m
   double angular_drag = 0.0;  ///< σ_ω, N·m·s/rad
 };
@@ -100,8 +102,8 @@ struct SleepSettings {
 /// 50 rad/s; 100 rad/s here lets a 0.1 m wheel roll at 10 m/s. Config keys
 /// limits.max_linear_speed and limits.max_angular_speed, each in (0, 1e4].
 struct SpeedLimits {
-  double linear = 500.0;   ///< m/s
-  double angular = 100.0;  ///< rad/s
+  double max_linear_speed = 500.0;   ///< m/s
+  double max_angular_speed = 100.0;  ///< rad/s
 };
 
 /// The numerical constants of the stages: tolerances, iteration limits and
@@ -154,6 +156,35 @@ struct SolverSettings {
   double reduction_tie_distance2 = 1e-18;  ///< m²
   double reduction_tie_relative = 1e-9;
 
+  // -- detection's fixed choices (§5.1): constants, not settings (no scene
+  // needs others, and the hot loops read them as immediates)
+  /// A face point's contact with another body counts only if the solid's
+  /// normal there is within 30° of the face's own, reversed (cos 30°).
+  static constexpr double kFaceContactCos = 0.8660254037844387;
+  /// Two boxes: how much less a later axis must overlap than the best so far
+  /// to replace it, relative to the best's magnitude (the other box's faces
+  /// 2 %, an edge pair 5 %, as ODE's box-box test prefers faces), and in
+  /// absolute terms (m) for overlaps near zero; so one axis is kept from step
+  /// to step where two nearly tie, and the solver warm-starts.
+  static constexpr double kBoxFaceMargin = 0.02;
+  static constexpr double kBoxEdgeMargin = 0.05;
+  static constexpr double kBoxAbsoluteMargin = 1e-6;  ///< m
+  /// Box edges closer to parallel than this |a × b| (unit edges) give no
+  /// axis: the faces already cover them.
+  static constexpr double kBoxParallelSine = 1e-3;
+  /// Round features: below this |n × a| a rim counts as flat on the surface
+  /// (level within ρ × 1e-9 m), and its first point goes to a fixed
+  /// direction, so a cylinder standing on its cap keeps its three points.
+  static constexpr double kFlatRim = 1e-9;
+  /// A slope ∇φ · a along a cylinder's side or a capsule's segment below
+  /// this counts as level (1 mm per metre), so a body lying across a beam
+  /// rests on both its edges instead of rocking between them.
+  static constexpr double kLevelSlope = 1e-3;
+  /// m: the bisection for where such a line is level stops below this.
+  static constexpr double kLevelLength = 1e-12;
+  /// m: a deleted body wakes the bodies within its bound radius plus this.
+  static constexpr double kWakeReach = 0.01;
+
   // -- gyroscopic rotation (§5.6)
   /// Fixed-point passes of the implicit midpoint rule, their tolerance on
   /// |Δu|²/|u|² (1e-12 relative), and the most sub-steps when it cannot
@@ -165,6 +196,11 @@ struct SolverSettings {
   static constexpr int kGyroscopicMaxSubsteps = 1 << 16;
 
   // -- penalty and barrier responses (§7)
+  /// m: the log barrier is evaluated no closer than this (ρ/φ stays finite).
+  static constexpr double kBarrierFloor = 1e-9;
+  /// Log barrier: the relative mismatch between the end separations a pass
+  /// assumed and where it ended above which the step is halved.
+  static constexpr double kBarrierSettle = 0.01;
   /// m/s: penalty friction is viscous below this slip (regularised Coulomb).
   double stiction_speed = 1e-3;
   /// Log barrier: a step is taken again as two halves when φ would shrink or

@@ -6,6 +6,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "rigid_body_sim/core/ranges.h"
 #include "rigid_body_sim/io/config.h"
@@ -41,16 +43,7 @@ struct NodeSettings {
   /// files set it); relative `urdf` paths in `bodies` resolve from its folder.
   std::string config_file;
 
-  // The ranges. A tick at least every second keeps SIGINT and the services
-  // answered; at most 1e4 a second keeps the loop from spinning.
-  static constexpr double kMinRate = 1.0;                            ///< Hz
-  static constexpr double kMaxRate = 1e4;                            ///< Hz (also the most publish_rate)
-  static constexpr double kMinPublishRate = core::ranges::kMinRate;  ///< Hz
-  static constexpr double kMaxRealtimeFactor = 1e3;                  ///< sim s per wall s
-  /// The slowest slow motion, other than 0 (as fast as possible): a 1 ms
-  /// step each wall second. 1e-300 froze the simulation without a word.
-  static constexpr double kMinRealtimeFactor = 1e-3;
-  static constexpr double kMaxDuration = 1e6;  ///< s (wrench_timeout)
+  // The ranges are in nodeParamKeys(), one per parameter.
 };
 
 struct NodeParams {
@@ -65,14 +58,31 @@ struct NodeParams {
 /// key's name (io::ConfigError).
 NodeParams readParams(const ros::NodeHandle& private_nh);
 
-/// Refuses a ~realtime_factor that is neither 0 nor within
-/// [kMinRealtimeFactor, kMaxRealtimeFactor], naming the parameter.
-void requireRealtimeFactor(double x);
+/// One of the node's own parameters: its name (`~rate`), unit, the one range
+/// it is checked against at start and when ~physics changes it, and its
+/// NodeSettings field (of the same name). Live tuning (cfg/Physics.cfg)
+/// names it the same.
+struct NodeParamKey {
+  enum class Kind { kNumber, kFlag, kText };
+  std::string_view key;  ///< "publish_rate"
+  std::string_view unit;
+  Kind kind = Kind::kNumber;
+  double min = 0.0, max = 0.0;                 ///< kNumber: [min, max]
+  bool zero_too = false;                       ///< kNumber: 0 is accepted besides [min, max] (~realtime_factor)
+  std::string_view zero_means;                 ///< what 0 means, for the message
+  double* (*number)(NodeSettings&) = nullptr;  ///< kNumber
+  bool* (*flag)(NodeSettings&) = nullptr;      ///< kFlag
+};
 
-/// Refuses x outside [lo, hi] (or not finite) with a message naming the
-/// parameter `~key` and the range: the check of every number parameter, at
-/// start and when ~physics changes one.
-void requireParamWithin(double x, const std::string& key, double lo, double hi, const std::string& unit);
+/// Every parameter of the node itself (the others are simulation keys).
+const std::vector<NodeParamKey>& nodeParamKeys();
+
+/// The entry of `key`, or nullptr.
+const NodeParamKey* findNodeParamKey(std::string_view key);
+
+/// Refuses x outside the parameter's range (or not finite) with an
+/// io::ConfigError naming `~key` and the range.
+void checkNodeParam(const NodeParamKey& key, double x);
 
 /// A parameter tree as YAML (structs → maps, arrays → sequences).
 YAML::Node toYaml(const XmlRpc::XmlRpcValue& value);
