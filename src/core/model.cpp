@@ -95,6 +95,19 @@ BodyModel BodyBuilder::buildBody(const BodySpec& b, bool with_solid) const {
   return body;
 }
 
+std::optional<Pose> linkPose(const BodyModel& body, const std::string& link) {
+  Pose X_LK;
+  std::string at = link;
+  for (std::size_t hops = 0; !at.empty() && at != body.link; ++hops) {
+    const auto f = std::find_if(body.fixed_links.begin(), body.fixed_links.end(),
+                                [&](const FixedLink& l) { return l.name == at; });
+    if (f == body.fixed_links.end() || hops > body.fixed_links.size()) return std::nullopt;
+    X_LK = f->X_PK * X_LK;  // climb toward the root
+    at = f->parent;
+  }
+  return X_LK;
+}
+
 Model::Model(const ModelSpec& spec)
     : dt_(spec.dt),
       gravity_W_(spec.gravity_W),

@@ -29,6 +29,13 @@ bool atRest(const Model& model, const BodyState& s) {
   return s.asleep || (s.still_time > 0.0 && s.still_time >= model.sleep().time);
 }
 
+void wakeAll(State& state) {
+  for (BodyState& b : state.bodies) {
+    b.asleep = false;
+    b.still_time = 0.0;
+  }
+}
+
 void removeBody(const Model& model, State& state, int i) {
   const auto wake = [&](int j) {
     state.bodies[j].asleep = false;

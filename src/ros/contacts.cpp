@@ -1,6 +1,6 @@
 // ~contacts and ~contact_markers: what touches what, with the forces
-// (core::contactPairs, docs/physics.md §10.3). The step reports only awake
-// bodies' contacts; a sleeping body keeps those it fell asleep with.
+// (core::contactPairs, docs/physics.md §10.3), sleepers included
+// (core::ContactLedger).
 #include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
@@ -16,63 +16,13 @@ using core::Vec3;
 
 constexpr double kForceScale = 0.01;  ///< m of arrow per N in ~contact_markers
 
-/// A contact that touches: it pushed, or it penetrates.
-bool touching(const core::Contact& c) { return c.normal_impulse > 0.0 || c.separation <= 0.0; }
-
 }  // namespace
-
-void SimNode::keepContacts() {
-  // contacts_ holds the sleeping bodies' contacts, which the step no longer
-  // reports: taken once, from the step in which the body fell asleep. They
-  // change only when a body falls asleep or wakes: a step that changed no
-  // body's sleep leaves them as they are (a resting pile of 1,000 boxes
-  // keeps about 4,000, which a scan per step cost the loop).
-  const std::size_t n = model_.bodyCount();
-  bool changed = was_asleep_.size() != n;
-  was_asleep_.resize(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const char asleep = state_.bodies[i].asleep ? 1 : 0;
-    changed = changed || asleep != was_asleep_[i];
-    was_asleep_[i] = asleep;
-  }
-  if (!changed) return;
-  kept_for_.resize(n, 0);
-  const auto asleep = [&](int b) { return b < 0 || state_.bodies[b].asleep; };
-  contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(),
-                                 [&](const core::Contact& c) { return !asleep(c.body) || !asleep(c.other); }),
-                  contacts_.end());
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!state_.bodies[i].asleep) kept_for_[i] = 0;
-  }
-  for (const core::Contact& c : workspace_.contacts) {
-    if (!kept_for_[c.body] && asleep(c.body) && asleep(c.other) && touching(c)) contacts_.push_back(c);
-  }
-  for (const core::Contact& c : contacts_) kept_for_[c.body] = 1;
-}
-
-void SimNode::forgetContactsOf(int body) {
-  std::vector<core::Contact> kept;
-  for (core::Contact c : contacts_) {
-    if (c.body == body || c.other == body) continue;
-    if (c.body > body) --c.body;
-    if (c.other > body) --c.other;
-    kept.push_back(c);
-  }
-  contacts_ = std::move(kept);
-  if (static_cast<std::size_t>(body) < kept_for_.size()) kept_for_.erase(kept_for_.begin() + body);
-  if (static_cast<std::size_t>(body) < was_asleep_.size()) was_asleep_.erase(was_asleep_.begin() + body);
-}
 
 void SimNode::publishContacts() {
   const bool listed = contacts_pub_.listened(), drawn = contact_markers_pub_.listened();
   if (!ros::ok() || (!listed && !drawn)) return;
-  // The awake bodies' contacts from the step, the sleepers' kept.
-  std::vector<core::Contact> touching_now = contacts_;
-  for (const core::Contact& c : workspace_.contacts) {
-    const bool awake = !state_.bodies[c.body].asleep || (c.other >= 0 && !state_.bodies[c.other].asleep);
-    if (awake && touching(c)) touching_now.push_back(c);
-  }
-  const std::vector<core::ContactPairReport> pairs = core::contactPairs(model_, state_, touching_now);
+  const std::vector<core::ContactPairReport> pairs =
+      core::contactPairs(model_, state_, contacts_.touchingNow(state_, workspace_.contacts));
   Contacts msg;
   msg.header.stamp = stamp();
   msg.header.frame_id = settings_.world_frame;

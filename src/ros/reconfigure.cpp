@@ -62,10 +62,7 @@ void SimNode::onReconfigure(PhysicsConfig& config, uint32_t) {
       // The fixed-point cache and sleep assumed the old settings: a fresh
       // workspace and every body awake.
       freshWorkspace();
-      for (core::BodyState& b : state_.bodies) {
-        b.asleep = false;
-        b.still_time = 0.0;
-      }
+      core::wakeAll(state_);
       ROS_INFO("sim_node: ~physics: gravity (%g, %g, %g) m/s^2, friction %g, restitution %g, damping %g %g 1/s",
                t.gravity_W.x(), t.gravity_W.y(), t.gravity_W.z(), t.friction, t.restitution, t.damping.linear,
                t.damping.angular);

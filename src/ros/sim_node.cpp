@@ -67,25 +67,14 @@ void requireOwnWorldFrame(const std::string& world, const std::string& prefix, c
   }
 }
 
-/// The pose in the root link frame L of `link` (the root link itself when
-/// "", or a link fixed to it, through its chain of fixed joints); another
-/// name is refused naming `key`.link.
+/// The pose in the root link frame L of `link` (core::linkPose); another
+/// name is refused naming `key`.link and the body's links.
 core::Pose mountOf(const core::BodyModel& body, const std::string& link, const std::string& key) {
-  core::Pose X_LK;
-  std::string at = link;
+  if (const std::optional<core::Pose> X_LK = core::linkPose(body, link)) return *X_LK;
   std::string names = "'" + body.link + "'";
   for (const core::FixedLink& f : body.fixed_links) names += ", '" + f.name + "'";
-  for (std::size_t hops = 0; !at.empty() && at != body.link; ++hops) {
-    const auto f = std::find_if(body.fixed_links.begin(), body.fixed_links.end(),
-                                [&](const core::FixedLink& l) { return l.name == at; });
-    if (f == body.fixed_links.end() || hops > body.fixed_links.size()) {
-      throw io::ConfigError("config key '" + key + ".link' = '" + link + "': no such link of body '" + body.name +
-                            "' (its links: " + names + ")");
-    }
-    X_LK = f->X_PK * X_LK;  // climb toward the root
-    at = f->parent;
-  }
-  return X_LK;
+  throw io::ConfigError("config key '" + key + ".link' = '" + link + "': no such link of body '" + body.name +
+                        "' (its links: " + names + ")");
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ bool SimNode::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res) {
   core::removeBody(model_, initial_, i);
   world_.model.removeBody(static_cast<std::size_t>(i));  // in place: the others are not copied
   const std::size_t dropped = schedule_.removeBody(i);
-  forgetContactsOf(i);
+  contacts_.removeBody(i);
   closeLater(std::move(ports_[i]));  // its topics, off the loop
   ports_.erase(ports_.begin() + i);
   for (BodyPorts& p : ports_) {  // wrenches held in its axes go too

@@ -1,7 +1,8 @@
 // Touching pairs (docs/physics.md §10.3) against closed forms: a box at rest
 // on the ground is held up by m g, the contact under the upper box of a
 // stack carries its weight, a sliding box's friction is μ N against its
-// slip, a body in flight touches nothing.
+// slip, a body in flight touches nothing; a sleeping stack still reports
+// its contacts and weights (ContactLedger), and a deleted body's go.
 #include "rigid_body_sim/core/contact_report.h"
 
 #include <gtest/gtest.h>
@@ -96,6 +97,85 @@ TEST(ContactPairs, ABodyInFlightTouchesNothing) {
   link.v_WL = Vec3(0, 0, 5.0);
   core::State s = stateOf(model, link);
   EXPECT_TRUE(pairsAfter(model, s, 0.2).empty());
+}
+
+/// A two-box stack (the upper box the smaller) resting on the ground, its
+/// model and state, with sleep on.
+struct Stack {
+  core::Model model;
+  core::State state;
+};
+
+Stack restingStack() {
+  core::BodySpec bottom = boxBody(kHalf, 3.0), top = boxBody(Vec3(0.1, 0.05, 0.05), 1.5);
+  bottom.name = "bottom";
+  top.name = "top";
+  core::ModelSpec spec = onGround(bottom, impulse(0.0, 0.5));
+  spec.bodies = {bottom, top};
+  Stack st{core::Model(spec), {}};
+  for (int i = 0; i < 2; ++i) {
+    core::LinkState link;
+    link.p_WL = Vec3(0, 0, (2 * i + 1) * kHalf.z());
+    st.state.bodies.push_back(core::bodyStateFromLink(st.model.body(i), link));
+  }
+  return st;
+}
+
+TEST(ContactLedger, ASleepingStackStillReportsWhatHoldsItUp) {
+  Stack st = restingStack();
+  core::Workspace ws;
+  core::ContactLedger ledger;
+  for (int n = 0; n < 2000; ++n) {
+    core::step(st.model, st.state, {}, &ws);
+    ledger.update(st.state, ws.contacts);
+  }
+  ASSERT_TRUE(st.state.bodies[0].asleep && st.state.bodies[1].asleep);
+  // The step reports no contacts for sleepers; the ledger kept theirs.
+  EXPECT_TRUE(core::contactPairs(st.model, st.state, ws.contacts).empty());
+  const auto pairs = core::contactPairs(st.model, st.state, ledger.touchingNow(st.state, ws.contacts));
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_NEAR(pairs[0].normal_force_W.z(), 4.5 * kG, 1e-6 * 4.5 * kG);   // the stack on the ground
+  EXPECT_NEAR(pairs[1].normal_force_W.z(), -1.5 * kG, 1e-6 * 1.5 * kG);  // the top box on the bottom one
+  // Woken, they report the step's contacts again, none kept twice.
+  core::wakeAll(st.state);
+  core::step(st.model, st.state, {}, &ws);
+  ledger.update(st.state, ws.contacts);
+  EXPECT_TRUE(ledger.kept().empty());
+  EXPECT_EQ(core::contactPairs(st.model, st.state, ledger.touchingNow(st.state, ws.contacts)).size(), 2u);
+}
+
+TEST(ContactLedger, ADeletedBodysContactsGoAndTheOthersMoveDown) {
+  // Two boxes asleep on the ground apart, 3 kg and 1.5 kg; the first goes.
+  core::BodySpec a = boxBody(kHalf, 3.0), b = boxBody(kHalf, 1.5);
+  a.name = "a";
+  b.name = "b";
+  core::ModelSpec spec = onGround(a, impulse(0.0, 0.5));
+  spec.bodies = {a, b};
+  const core::Model model(spec);
+  core::State s;
+  for (int i = 0; i < 2; ++i) {
+    core::LinkState link;
+    link.p_WL = Vec3(2.0 * i, 0, kHalf.z());
+    s.bodies.push_back(core::bodyStateFromLink(model.body(i), link));
+  }
+  core::Workspace ws;
+  core::ContactLedger ledger;
+  for (int n = 0; n < 2000; ++n) {
+    core::step(model, s, {}, &ws);
+    ledger.update(s, ws.contacts);
+  }
+  ASSERT_TRUE(s.bodies[0].asleep && s.bodies[1].asleep);
+  const core::Model without = model.withoutBody(0);
+  core::removeBody(model, s, 0);
+  ledger.removeBody(0);
+  ASSERT_FALSE(ledger.kept().empty());
+  for (const core::Contact& c : ledger.kept()) {
+    EXPECT_EQ(c.body, 0);  // b, now the first body
+    EXPECT_EQ(c.other, -1);
+  }
+  const auto pairs = core::contactPairs(without, s, ledger.touchingNow(s, {}));
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_NEAR(pairs[0].normal_force_W.z(), 1.5 * kG, 1e-6 * 1.5 * kG);
 }
 
 }  // namespace

@@ -249,5 +249,25 @@ TEST(ModelTuning, ARefusedTuningNamesTheKeyAndChangesNothing) {
   EXPECT_EQ(model.gravity(), Vec3(0, 0, -9.81));
 }
 
+TEST(LinkPose, AChainOfFixedLinksComposesTheirJointsFromTheRoot) {
+  // root → arm (1 m along x, turned 90° about z) → hand (0.5 m along the
+  // arm's x): the hand sits at (1, 0.5, 0) in the root link frame, turned 90°.
+  core::BodyModel body;
+  body.link = "root";
+  const Quat quarter(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ()));
+  body.fixed_links = {{"hand", "arm", core::Pose{Quat::Identity(), Vec3(0.5, 0, 0)}},
+                      {"arm", "root", core::Pose{quarter, Vec3(1, 0, 0)}}};
+  const std::optional<core::Pose> hand = core::linkPose(body, "hand");
+  ASSERT_TRUE(hand.has_value());
+  EXPECT_LT((hand->translation - Vec3(1, 0.5, 0)).norm(), 1e-15);
+  EXPECT_LT(hand->rotation.angularDistance(quarter), 1e-15);
+  EXPECT_EQ(core::linkPose(body, "root")->translation, Vec3::Zero());
+  EXPECT_EQ(core::linkPose(body, "")->translation, Vec3::Zero());
+  EXPECT_FALSE(core::linkPose(body, "foot").has_value());
+  // A cycle a URDF could not give is refused, not followed for ever.
+  body.fixed_links = {{"a", "b", core::Pose{}}, {"b", "a", core::Pose{}}};
+  EXPECT_FALSE(core::linkPose(body, "a").has_value());
+}
+
 }  // namespace
 }  // namespace rigid_body_sim::test

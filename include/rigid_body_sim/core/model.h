@@ -111,6 +111,11 @@ struct alignas(64) BodyModel {
   Mat3 points_inv_spread = Mat3::Zero();
 };
 
+/// The pose X_LK of `link` in the body's root link frame L: the root link
+/// itself ("" too: the identity), or a link fixed to it, through its chain
+/// of fixed joints (where an IMU is mounted); nullopt for any other name.
+std::optional<Pose> linkPose(const BodyModel& body, const std::string& link);
+
 /// The settings that may change between steps without rebuilding the
 /// bodies (the node's dynamic_reconfigure server, ~physics).
 struct Tuning {

@@ -102,6 +102,10 @@ BodyState bodyStateFromLink(const BodyModel& body, const LinkState& link);
 /// of it, or holding a contact impulse with it): what rested on it falls.
 void removeBody(const Model& model, State& state, int i);
 
+/// Every body awake, its still time from zero: after the settings a body
+/// rests under changed (gravity, friction), none may stay asleep.
+void wakeAll(State& state);
+
 /// A state with every body at rest at the identity pose, time 0.
 State restState(const Model& model);
 

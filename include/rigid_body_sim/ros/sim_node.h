@@ -34,6 +34,7 @@
 #include "rigid_body_sim/SetState.h"
 #include "rigid_body_sim/SpawnBody.h"
 #include "rigid_body_sim/Step.h"
+#include "rigid_body_sim/core/contact_report.h"
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/core/velocity_driver.h"
 #include "rigid_body_sim/core/wrench_schedule.h"
@@ -225,15 +226,9 @@ class SimNode {
   /// Closes `ports` on the spawn thread: closing a topic waits for the master too.
   void closeLater(BodyPorts&& ports);
   void onCmdVel(const std::string& body, const geometry_msgs::Twist::ConstPtr& msg);
-  // Contacts (contacts.cpp): the step reports the awake bodies' contacts;
-  // the loop keeps those a body fell asleep with (per step: a scan, no copy).
-  void keepContacts();
-  /// After body `body` was deleted: its contacts go, the later indices move down.
-  void forgetContactsOf(int body);
-  void publishContacts();                ///< ~contacts and ~contact_markers, while someone subscribes
-  std::vector<core::Contact> contacts_;  ///< the sleeping bodies' contacts
-  std::vector<char> kept_for_;           ///< per body: asleep, its contacts in contacts_
-  std::vector<char> was_asleep_;         ///< per body: asleep after the last step keepContacts saw
+  // Contacts (contacts.cpp).
+  void publishContacts();         ///< ~contacts and ~contact_markers, while someone subscribes
+  core::ContactLedger contacts_;  ///< what touches what, the sleepers' contacts kept
   CountedPublisher contacts_pub_, contact_markers_pub_;
   /// Samples the IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();
