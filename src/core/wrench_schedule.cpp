@@ -15,6 +15,20 @@ bool WrenchSchedule::add(int body, const Wrench& wrench, double start, double en
   return true;
 }
 
+void WrenchSchedule::hold(int body, const Wrench& wrench, double start, double timeout, int axes_body) {
+  const auto at = std::lower_bound(held_.begin(), held_.end(), body, [](const Entry& e, int b) { return e.body < b; });
+  const Entry entry{body, wrench, start, timeout, axes_body};
+  if (at != held_.end() && at->body == body) {
+    *at = entry;
+  } else {
+    held_.insert(at, entry);
+  }
+}
+
+bool WrenchSchedule::holds(int body) const {
+  return std::any_of(held_.begin(), held_.end(), [body](const Entry& e) { return e.body == body; });
+}
+
 std::size_t WrenchSchedule::count(int body) const {
   return body >= 0 && static_cast<std::size_t>(body) < count_.size() ? count_[body] : 0;
 }
@@ -23,6 +37,7 @@ void WrenchSchedule::clear(int body) {
   const auto of = [body](const Entry& e) { return body < 0 || e.body == body; };
   acting_.erase(std::remove_if(acting_.begin(), acting_.end(), of), acting_.end());
   waiting_.erase(std::remove_if(waiting_.begin(), waiting_.end(), of), waiting_.end());
+  held_.erase(std::remove_if(held_.begin(), held_.end(), of), held_.end());
   for (std::size_t i = 0; i < count_.size(); ++i) {
     if (body < 0 || static_cast<int>(i) == body) count_[i] = 0;
   }
@@ -40,6 +55,7 @@ std::size_t WrenchSchedule::removeBody(int body) {
   };
   renumber(acting_);
   renumber(waiting_);
+  renumber(held_);
   count_.assign(count_.size() > static_cast<std::size_t>(body) ? count_.size() - 1 : count_.size(), 0);
   for (const Entry& e : acting_) ++count_[e.body];
   for (const Entry& e : waiting_) ++count_[e.body];
@@ -56,6 +72,8 @@ void WrenchSchedule::dropFinished(double t) {
     if (ended(e)) --count_[e.body];
   }
   acting_.erase(std::remove_if(acting_.begin(), acting_.end(), ended), acting_.end());
+  held_.erase(std::remove_if(held_.begin(), held_.end(), [t](const Entry& e) { return t - e.start > e.end; }),
+              held_.end());
 }
 
 void WrenchSchedule::loadsFor(const Model& model, const State& state, double t, double h, Loads& out) const {
@@ -76,6 +94,16 @@ void WrenchSchedule::loadsFor(const Model& model, const State& state, double t, 
   for (const Entry& e : waiting_) {  // sorted by start: stop at the first that starts after the step
     if (!(e.start < t + h)) break;
     add(e);
+  }
+  for (const Entry& e : held_) {
+    // It acts on [start, start + timeout): the step from t acts if it starts
+    // before the end (half a step of slack for rounding), in full.
+    if (t - e.start > e.end - 0.5 * h) continue;
+    if (out.empty()) out.resize(model.bodyCount());
+    addWrench(model.body(e.body), out[e.body],
+              e.axes_body < 0
+                  ? e.wrench
+                  : inWorldAxes(e.wrench, linkState(model.body(e.axes_body), state.bodies[e.axes_body]).q_WL));
   }
 }
 

@@ -97,10 +97,7 @@ bool SimNode::clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response
     }
     body = *found;
   }
-  schedule_.clear(body);
-  for (std::size_t i = 0; i < ports_.size(); ++i) {
-    if (body < 0 || static_cast<int>(i) == body) ports_[i].held.reset();
-  }
+  schedule_.clear(body);  // held ones too
   res.success = true;
   res.message = "wrenches cleared";
   return true;
@@ -119,7 +116,8 @@ void SimNode::onWrench(const std::string& name, const geometry_msgs::WrenchStamp
     ROS_WARN_THROTTLE(1.0, "sim_node: wrench for '%s' ignored: %s", model_.body(body).name.c_str(), why.c_str());
     return;
   }
-  ports_[body].held = HeldWrench{{force, torque, Vec3::Zero(), axes->frame}, simTime(), *axes};
+  const double timeout = settings_.wrench_timeout > 0.0 ? settings_.wrench_timeout : core::WrenchSchedule::kForever;
+  schedule_.hold(body, {force, torque, Vec3::Zero(), axes->frame}, simTime(), timeout, axes->other);
 }
 
 void SimNode::onCmdVel(const std::string& name, const geometry_msgs::Twist::ConstPtr& msg) {

@@ -20,21 +20,7 @@ constexpr int kMaxStepsPerTick = 1000;  // beyond this the loop gives up catchin
 
 void SimNode::stepOnce() {
   const double t = simTime(), h = model_.dt();
-  schedule_.loadsFor(model_, state_, t, h, loads_);
-  for (std::size_t i = 0; i < ports_.size(); ++i) {
-    std::optional<HeldWrench>& held = ports_[i].held;
-    if (!held) continue;
-    // It acts on [received, received + timeout): the step from t to t + h
-    // acts if it starts before the end (half a step of slack for rounding).
-    if (settings_.wrench_timeout > 0.0 && t - held->received > settings_.wrench_timeout - 0.5 * h) {
-      held.reset();
-    } else {
-      if (loads_.empty()) loads_.resize(model_.bodyCount());
-      const core::Wrench& w = held->wrench;
-      core::addWrench(model_.body(i), loads_[i],
-                      held->axes.other < 0 ? w : core::inWorldAxes(w, orientationOf(held->axes, i)));
-    }
-  }
+  schedule_.loadsFor(model_, state_, t, h, loads_);  // timed wrenches, and those ~wrench holds
   for (std::size_t i = 0; i < ports_.size(); ++i) {  // the velocity drivers' forces
     if (!ports_[i].driver) continue;
     const core::BodyLoad drive = ports_[i].driver->load(model_.body(i), state_.bodies[i], t, h);
@@ -62,7 +48,6 @@ void SimNode::reportStep() {
   for (const core::Divergence& d : workspace_.diverged) {
     // Its loads made it diverge, or will again: they go with it.
     schedule_.clear(d.body);
-    ports_[d.body].held.reset();
     ROS_WARN(
         "sim_node: body '%s': %s stopped being finite at t = %s; it is back at its last finite pose, at rest, "
         "and its wrenches are cleared",

@@ -62,7 +62,6 @@ bool SimNode::reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& re
   state_ = initial_;
   state_.time = simTime();
   schedule_.clear(-1);
-  for (BodyPorts& p : ports_) p.held.reset();
   for (std::size_t i = 0; i < ports_.size(); ++i) restartSensors(static_cast<int>(i));
   for (BodyPorts& p : ports_) {
     if (p.odom_noise) p.odom_noise->restart();  // the drift starts again

@@ -26,18 +26,10 @@ bool SimNode::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res) {
   core::removeBody(model_, state_, i);  // wakes what may touch it
   core::removeBody(model_, initial_, i);
   world_.model.removeBody(static_cast<std::size_t>(i));  // in place: the others are not copied
-  const std::size_t dropped = schedule_.removeBody(i);
+  const std::size_t dropped = schedule_.removeBody(i);   // and those held in its axes
   contacts_.removeBody(i);
   closeLater(std::move(ports_[i]));  // its topics, off the loop
   ports_.erase(ports_.begin() + i);
-  for (BodyPorts& p : ports_) {  // wrenches held in its axes go too
-    if (!p.held || p.held->axes.other < i) continue;
-    if (p.held->axes.other == i) {
-      p.held.reset();
-    } else {
-      --p.held->axes.other;
-    }
-  }
   afterDelete(i, req.name);
   if (settings_.report_timing) {
     delete_times_.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

@@ -1,4 +1,5 @@
-// Timed wrenches deliver exactly force × duration.
+// Timed wrenches deliver exactly force × duration; a held wrench (the
+// node's ~wrench topic) acts in whole steps until replaced, cleared or timed out.
 #include "rigid_body_sim/core/wrench_schedule.h"
 
 #include <gtest/gtest.h>
@@ -116,6 +117,70 @@ TEST(WrenchSchedule, AWrenchInAnotherBodysAxesTurnsWithThatBody) {
   EXPECT_GT(s.bodies[0].v_WB.y(), 0.1);       // it turned: a fixed world force would give none along y
   EXPECT_EQ(s.bodies[0].w_B, Vec3::Zero());   // the force acts at the centre of mass
   EXPECT_EQ(s.bodies[1].v_WB, Vec3::Zero());  // and on body 0 only
+}
+
+TEST(WrenchSchedule, AHeldWrenchActsInWholeStepsUntilItsTimeout) {
+  // 3 N held from t = 0.010 s with a timeout of 0.25 s: 250 whole steps of
+  // 1 ms, Δv = F T / M = 0.75 m/s; then it is gone. A second one replaces
+  // the first, it does not add to it.
+  const double dt = 1e-3;
+  const core::Model model(spec(shippedBox(), dt, Vec3::Zero()));
+  core::WrenchSchedule schedule;
+  core::State s = stateOf(model, core::LinkState{});
+  core::Loads loads;
+  const auto run = [&](int steps) {
+    for (int n = 0; n < steps; ++n) {
+      schedule.loadsFor(model, s, s.time, dt, loads);
+      core::step(model, s, loads);
+      schedule.dropFinished(s.time);
+    }
+  };
+  run(10);
+  schedule.hold(0, {Vec3(1, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, s.time, 0.25);
+  schedule.hold(0, {Vec3(3, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}, s.time, 0.25);
+  EXPECT_TRUE(schedule.holds(0));
+  EXPECT_EQ(schedule.size(), 0u);  // not a timed wrench
+  run(400);
+  EXPECT_NEAR(s.bodies[0].v_WB.x(), 3.0 * 0.25, 1e-12);
+  EXPECT_FALSE(schedule.holds(0));
+  // Until cleared, with no timeout; in the body's own axes, turning with it.
+  schedule.hold(0, {Vec3(0, 2, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kBody}, s.time,
+                core::WrenchSchedule::kForever);
+  run(100);
+  EXPECT_NEAR(s.bodies[0].v_WB.y(), 2.0 * 0.1, 1e-12);
+  schedule.clear(0);
+  EXPECT_FALSE(schedule.holds(0));
+  run(10);
+  EXPECT_NEAR(s.bodies[0].v_WB.y(), 2.0 * 0.1, 1e-12);
+}
+
+TEST(WrenchSchedule, ADeletedBodyTakesTheWrenchesHeldInItsAxes) {
+  // a holds one in b's axes, c one in its own: deleting b drops a's, and
+  // c's acts on index 1.
+  core::BodySpec a = shippedBox(), b = shippedBox(), c = shippedBox();
+  a.name = "a";
+  b.name = "b";
+  c.name = "c";
+  core::ModelSpec three = spec(a, 1e-3, Vec3::Zero());
+  three.bodies = {a, b, c};
+  const core::Model model(three);
+  const auto push = [](double x) {
+    return core::Wrench{Vec3(x, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld};
+  };
+  core::WrenchSchedule schedule;
+  schedule.hold(0, push(1), 0.0, core::WrenchSchedule::kForever, 1);
+  schedule.hold(2, push(3), 0.0, core::WrenchSchedule::kForever);
+  EXPECT_EQ(schedule.removeBody(1), 0u);  // no timed wrench went
+  EXPECT_FALSE(schedule.holds(0));
+  EXPECT_TRUE(schedule.holds(1));
+  const core::Model two = model.withoutBody(1);
+  core::State s = core::restState(model);
+  core::removeBody(model, s, 1);
+  core::Loads loads;
+  schedule.loadsFor(two, s, 1.0, 1e-3, loads);
+  ASSERT_EQ(loads.size(), 2u);
+  EXPECT_EQ(loads[0].force_W, Vec3::Zero());
+  EXPECT_EQ(loads[1].force_W, Vec3(3, 0, 0));
 }
 
 TEST(WrenchSchedule, EachBodyHoldsABoundedNumberAndStepsCostOnlyWhatActs) {

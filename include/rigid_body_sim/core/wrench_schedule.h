@@ -1,4 +1,5 @@
-// Wrenches applied over windows of sim time (the node's apply_wrench).
+// Wrenches applied over windows of sim time (the node's apply_wrench), and
+// wrenches held until replaced or timed out (the node's ~wrench topic).
 #pragma once
 
 #include <limits>
@@ -38,31 +39,43 @@ class WrenchSchedule {
   /// added) when the body already holds kMaxPerBody.
   bool add(int body, const Wrench& wrench, double start, double end, int axes_body = -1);
 
-  /// Removes the wrenches of `body` (every body if body < 0).
+  /// Holds a wrench on `body` from `start` (the node's ~wrench topic): it
+  /// replaces the one `body` held and acts, in whole steps, on every step
+  /// that starts before `start` + `timeout` (less half a step, for
+  /// rounding), until replaced or cleared; `timeout` kForever: until
+  /// cleared. `axes_body` as add()'s. Not counted in kMaxPerBody.
+  void hold(int body, const Wrench& wrench, double start, double timeout, int axes_body = -1);
+  /// Whether `body` holds a wrench (hold()).
+  bool holds(int body) const;
+
+  /// Removes the wrenches of `body` (every body if body < 0), held ones too.
   void clear(int body);
 
   /// Follows Model::withoutBody(body): drops the wrenches on `body` and
-  /// those given in its axes (they have none left), and moves the later
-  /// bodies' indices down by one. Returns how many it dropped.
+  /// those given in its axes (they have none left), held ones too, and
+  /// moves the later bodies' indices down by one. Returns how many of the
+  /// timed ones (add()) it dropped.
   std::size_t removeBody(int body);
 
-  /// Forgets wrenches whose window ended by time t, and counts those that
-  /// started before t as acting.
+  /// Forgets wrenches whose window ended by time t (held ones, whose
+  /// timeout did), and counts those that started before t as acting.
   void dropFinished(double t);
 
   /// The loads of the step [t, t + h) from `state` (at t), one per body of
-  /// `model`; empty if no wrench touches the step.
+  /// `model`; empty if no wrench touches the step. Per body the timed
+  /// wrenches first, in order of start, then the held one.
   void loadsFor(const Model& model, const State& state, double t, double h, Loads& out) const;
 
   /// Wrenches held for `body`, acting or yet to start.
   std::size_t count(int body) const;
-  /// Wrenches held in all.
+  /// Timed wrenches (add()) in all.
   std::size_t size() const { return acting_.size() + waiting_.size(); }
 
  private:
   std::vector<Entry> acting_;       ///< started before the last dropFinished(), in order of start
   std::vector<Entry> waiting_;      ///< yet to start, sorted by start (ties in order of add)
   std::vector<std::size_t> count_;  ///< per body
+  std::vector<Entry> held_;         ///< at most one per body, in order of body; `end` is the timeout (s)
 };
 
 }  // namespace rigid_body_sim::core

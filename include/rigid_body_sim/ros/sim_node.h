@@ -172,24 +172,18 @@ class SimNode {
   core::WrenchSchedule schedule_;
   core::Loads loads_;
 
-  struct HeldWrench {
-    core::Wrench wrench;
-    double received;  ///< sim time
-    Axes axes;        ///< another body's axes are re-expressed at each step
-  };
   /// What the node keeps per body beside the model, in the model's order.
   /// A body's names are fixed when it is created: the one body of a world
   /// that starts with one has the single-body names for life (its frame
   /// the root link, `odom`, `~wrench`); every other body, listed in a world
   /// or spawned, has them under its name ("NAME/").
   struct BodyPorts {
-    std::string prefix;              ///< "" or "NAME/", before its frames and topics
-    ros::NodeHandle nh, pnh;         ///< its topics' handles (the node's, copied: openPorts)
-    std::string frame;               ///< its tf frame: prefix + root link
-    CountedPublisher odom;           ///< PREFIXodom
-    ros::Subscriber wrench;          ///< ~PREFIXwrench
-    std::optional<HeldWrench> held;  ///< from its ~wrench topic
-    bool speed_limited = false;      ///< the speed limits have held it (warned once)
+    std::string prefix;          ///< "" or "NAME/", before its frames and topics
+    ros::NodeHandle nh, pnh;     ///< its topics' handles (the node's, copied: openPorts)
+    std::string frame;           ///< its tf frame: prefix + root link
+    CountedPublisher odom;       ///< PREFIXodom
+    ros::Subscriber wrench;      ///< ~PREFIXwrench
+    bool speed_limited = false;  ///< the speed limits have held it (warned once)
     /// Its IMU (sensors.cpp), sampled whether or not anyone listens. The
     /// devices with a random generator (2.5 KB each) are held apart: in
     /// place they made every body's ports 6 KB, devices or not.
