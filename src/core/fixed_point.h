@@ -32,14 +32,6 @@ bool repeatFixedPoint(const Model& model, State& state, const Loads& loads, doub
 /// next step from it is repeated). `islands_known`: the impulse solve ran.
 void recordFixedPoint(const Model& model, const State& state, const Loads& loads, bool islands_known, Workspace& ws);
 
-/// advance(model, state, loads, h, ws) (a full step, returning whether the
-/// impulse solve ran), or its repetition at a fixed point.
-template <class Advance>
-void advanceOrRepeat(const Model& model, State& state, const Loads& loads, double h, Workspace& ws, Advance&& advance) {
-  if (repeatFixedPoint(model, state, loads, h, ws)) return;
-  recordFixedPoint(model, state, loads, advance(model, state, loads, h, ws), ws);
-}
-
 /// Drops the cache: the next step is computed in full (for steps that leave
 /// other contents in the workspace).
 void forgetFixedPoint(Workspace& ws);

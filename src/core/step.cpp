@@ -52,8 +52,9 @@ void step(const Model& model, State& state, const Loads& loads, Workspace* works
       forgetFixedPoint(ws);
       advanceKeepingBarrier(model, state, loads, h, ws, advance);
       break;
-    default:  // advance(), unless the last step was a fixed point (fixed_point.cpp)
-      advanceOrRepeat(model, state, loads, h, ws, advance);
+    default:  // advance(), unless the last step returned this same input (fixed_point.cpp)
+      if (repeatFixedPoint(model, state, loads, h, ws)) break;
+      recordFixedPoint(model, state, loads, advance(model, state, loads, h, ws), ws);
       break;
   }
   state.time += h;

@@ -35,7 +35,9 @@ struct FixedPointTest : ::testing::Test {
   }
   void repeat(const core::Loads& loads = {}, bool (*advance)(const core::Model&, core::State&, const core::Loads&,
                                                              double, core::Workspace&) = unchanged) {
-    core::advanceOrRepeat(model, state, loads, 1e-3, ws, advance);
+    // As step() does: repeated, or computed and recorded.
+    if (core::repeatFixedPoint(model, state, loads, 1e-3, ws)) return;
+    core::recordFixedPoint(model, state, loads, advance(model, state, loads, 1e-3, ws), ws);
   }
 };
 
