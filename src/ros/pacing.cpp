@@ -12,11 +12,6 @@
 #include "rigid_body_sim/ros/sim_node.h"
 
 namespace rigid_body_sim::node {
-namespace {
-
-constexpr int kMaxStepsPerTick = 1000;  // beyond this the loop gives up catching up
-
-}  // namespace
 
 void SimNode::stepOnce() {
   const double t = simTime(), h = model_.dt();
@@ -66,35 +61,26 @@ void SimNode::reportStep() {
 
 double SimNode::rebaseClock() {
   const int64_t lead = paused_ ? 0 : clock_.anchor(steps_, static_cast<int64_t>(ros::WallTime::now().toNSec()));
-  ref_wall_ = std::chrono::steady_clock::now() + std::chrono::nanoseconds(lead);
-  ref_sim_ = simTime();
+  pacer_.rebase(Pacer::Clock::now() + std::chrono::nanoseconds(lead), simTime());
   return 1e-9 * static_cast<double>(lead);
 }
 
 void SimNode::run() {
-  using Clock = std::chrono::steady_clock;
+  using Clock = Pacer::Clock;
   // Linux lets a sleeping thread wake up to 50 us late by default (timer
   // slack); at 1 kHz that is the step-period jitter. Ask for 1 us.
   prctl(PR_SET_TIMERSLACK, 1000UL, 0UL, 0UL, 0UL);
   const auto tick = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / settings_.rate));
   rebaseClock();
   auto next_tick = Clock::now();
-  auto last_tick = next_tick;
-  if (settings_.report_timing) tick_periods_.reserve(1 << 20);
   while (ros::ok() && !interrupted()) {
     const auto tick_start = Clock::now();
     const double rtf = settings_.realtime_factor;  // ~physics may change it between ticks
-    if (settings_.report_timing) tick_periods_.push_back(std::chrono::duration<double>(tick_start - last_tick).count());
-    last_tick = tick_start;
+    if (settings_.report_timing) pacer_.recordTick(tick_start);
     if (!paused_ && rtf > 0.0) {
       // Step until sim time reaches wall time × realtime factor.
-      const double target = ref_sim_ + std::chrono::duration<double>(tick_start - ref_wall_).count() * rtf;
-      int n = 0;
-      while (simTime() + 0.5 * model_.dt() <= target && n < kMaxStepsPerTick) {
-        stepOnce();
-        ++n;
-      }
-      if (n == kMaxStepsPerTick) {
+      for (int n = pacer_.stepsDue(tick_start, steps_, model_.dt(), rtf); n > 0; --n) stepOnce();
+      if (pacer_.behind()) {
         ROS_WARN_THROTTLE(5.0, "sim_node: cannot keep up with realtime_factor %g; slowing down", rtf);
         rebaseClock();
       }
@@ -114,26 +100,12 @@ void SimNode::run() {
       std::this_thread::sleep_until(next_tick);
     }
   }
-  if (settings_.report_timing && tick_periods_.size() > 10) {
-    std::vector<double> d(tick_periods_.begin() + 1, tick_periods_.end());
-    for (double& x : d) x = std::abs(x - 1.0 / settings_.rate);
-    std::sort(d.begin(), d.end());
-    // Plain stdout: ROS logging is already shut down once ros::ok() is false.
-    std::printf(
-        "sim_node: timing: %zu ticks, |period - %.6g s| p50 %.1f us, p99 %.1f us, max %.1f us; sim time %.3f s\n",
-        d.size(), 1.0 / settings_.rate, 1e6 * d[d.size() / 2], 1e6 * d[d.size() * 99 / 100], 1e6 * d.back(), simTime());
-    std::fflush(stdout);
-  }
-  const auto edits = [](const char* what, std::vector<double> d) {
-    if (d.empty()) return;
-    std::sort(d.begin(), d.end());
-    std::printf("sim_node: timing: %zu %s on the loop, p50 %.3f ms, p90 %.3f ms, max %.3f ms\n", d.size(), what,
-                1e3 * d[d.size() / 2], 1e3 * d[d.size() * 9 / 10], 1e3 * d.back());
-    std::fflush(stdout);
-  };
   if (settings_.report_timing) {
-    edits("spawns", spawn_times_);
-    edits("deletes", delete_times_);
+    // Plain stdout: ROS logging is already shut down once ros::ok() is false.
+    for (const std::string& line : pacer_.report(1.0 / settings_.rate, simTime())) {
+      std::printf("sim_node: timing: %s\n", line.c_str());
+    }
+    std::fflush(stdout);
   }
 }
 

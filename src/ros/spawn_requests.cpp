@@ -155,7 +155,7 @@ void SimNode::insertPendingBodies() {
       res.message = "body '" + spawn->request.name + "' was not added: " + e.what();
     }
     if (settings_.report_timing) {
-      spawn_times_.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      pacer_.recordSpawn(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     spawn->done.set_value(res);
   }

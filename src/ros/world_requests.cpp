@@ -32,7 +32,7 @@ bool SimNode::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res) {
   ports_.erase(ports_.begin() + i);
   afterDelete(i, req.name);
   if (settings_.report_timing) {
-    delete_times_.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    pacer_.recordDelete(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   res.success = true;
   res.message = "body '" + req.name + "' deleted at t = " + now() + " (" + std::to_string(dropped) +

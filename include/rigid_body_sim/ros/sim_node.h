@@ -41,6 +41,7 @@
 #include "rigid_body_sim/io/world.h"
 #include "rigid_body_sim/ros/body_directory.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
+#include "rigid_body_sim/ros/pacer.h"
 #include "rigid_body_sim/ros/params.h"
 #include "rigid_body_sim/ros/sim_clock.h"
 
@@ -240,12 +241,7 @@ class SimNode {
   long long body_states_every_ = 1;
   ros::Time last_published_;
 
-  // Pacing: sim time follows wall time × realtime factor from a reference.
-  std::chrono::steady_clock::time_point ref_wall_;
-  double ref_sim_ = 0.0;
-  std::vector<double> tick_periods_;  ///< s, when ~report_timing
-  /// s the loop spent on each spawn's insertion and each delete, when ~report_timing.
-  std::vector<double> spawn_times_, delete_times_;
+  Pacer pacer_;  ///< sim time against the wall clock × realtime factor; the loop's timing
 
   ros::Publisher clock_pub_, scene_pub_, body_pub_;
   CountedPublisher body_states_pub_;
