@@ -13,6 +13,20 @@
 namespace rigid_body_sim::test {
 namespace {
 
+/// Three shipped boxes, a, b and c, in no gravity.
+core::Model threeBoxes() {
+  core::BodySpec a = shippedBox(), b = shippedBox(), c = shippedBox();
+  a.name = "a";
+  b.name = "b";
+  c.name = "c";
+  core::ModelSpec three = spec(a, 1e-3, Vec3::Zero());
+  three.bodies = {a, b, c};
+  return core::Model(three);
+}
+
+/// x N along the world's x axis.
+core::Wrench push(double x) { return core::Wrench{Vec3(x, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld}; }
+
 TEST(WrenchSchedule, DeliversForceTimesDurationOffTheStepGrid) {
   // 2 N for 0.0123 s from t = 0.0047: windows that cut steps in the middle.
   const double dt = 1e-3;
@@ -52,17 +66,8 @@ TEST(WrenchSchedule, WrenchesAddAndClearPerBody) {
 TEST(WrenchSchedule, ADeletedBodyTakesItsWrenchesAndThoseInItsAxes) {
   // Three boxes; wrenches on each, one on c given in b's axes. Deleting b
   // drops b's and the one in b's axes; c's other wrench now acts on index 1.
-  core::BodySpec a = shippedBox(), b = shippedBox(), c = shippedBox();
-  a.name = "a";
-  b.name = "b";
-  c.name = "c";
-  core::ModelSpec three = spec(a, 1e-3, Vec3::Zero());
-  three.bodies = {a, b, c};
-  const core::Model model(three);
+  const core::Model model = threeBoxes();
   const double forever = core::WrenchSchedule::kForever;
-  const auto push = [](double x) {
-    return core::Wrench{Vec3(x, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld};
-  };
   core::WrenchSchedule schedule;
   schedule.add(0, push(1), 0.0, forever);
   schedule.add(1, push(2), 0.0, forever);
@@ -157,16 +162,7 @@ TEST(WrenchSchedule, AHeldWrenchActsInWholeStepsUntilItsTimeout) {
 TEST(WrenchSchedule, ADeletedBodyTakesTheWrenchesHeldInItsAxes) {
   // a holds one in b's axes, c one in its own: deleting b drops a's, and
   // c's acts on index 1.
-  core::BodySpec a = shippedBox(), b = shippedBox(), c = shippedBox();
-  a.name = "a";
-  b.name = "b";
-  c.name = "c";
-  core::ModelSpec three = spec(a, 1e-3, Vec3::Zero());
-  three.bodies = {a, b, c};
-  const core::Model model(three);
-  const auto push = [](double x) {
-    return core::Wrench{Vec3(x, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld};
-  };
+  const core::Model model = threeBoxes();
   core::WrenchSchedule schedule;
   schedule.hold(0, push(1), 0.0, core::WrenchSchedule::kForever, 1);
   schedule.hold(2, push(3), 0.0, core::WrenchSchedule::kForever);
