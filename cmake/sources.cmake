@@ -30,6 +30,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/sdf_surface.cpp
   ${RBS_SOURCE_ROOT}/src/core/setting_keys.cpp
   ${RBS_SOURCE_ROOT}/src/core/shape_matching.cpp
+  ${RBS_SOURCE_ROOT}/src/core/simulation.cpp
   ${RBS_SOURCE_ROOT}/src/core/sleep.cpp
   ${RBS_SOURCE_ROOT}/src/core/solver_contact.cpp
   ${RBS_SOURCE_ROOT}/src/core/state.cpp

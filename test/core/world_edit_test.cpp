@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "../test_util.h"
+#include "rigid_body_sim/core/simulation.h"
 #include "rigid_body_sim/core/step.h"
 
 namespace rigid_body_sim::test {
@@ -164,6 +165,55 @@ TEST(WorldEdit, EditsInPlaceGiveTheBitsOfEditedCopies) {
   EXPECT_TRUE(bitIdentical(copied, in_place));
   EXPECT_EQ(model.bodyCount(), 2u);
   EXPECT_EQ(model.body(1).name, "c");
+}
+
+// The node deletes through core::Simulation: one call takes the body out of
+// the model, the state, the initial state, the schedule and the contact
+// ledger, and every later index moves down in all of them alike.
+TEST(WorldEdit, ASimulationTakesABodyOutOfEveryTableAtOnce) {
+  // a slides far off; b is a heavy base with c asleep on it; d rests alone.
+  core::Model model(ground({named(boxBody(kHalf), "a"), named(boxBody(Vec3(0.5, 0.5, 0.1), 10.0), "b"),
+                            named(boxBody(kHalf), "c"), named(boxBody(kHalf), "d")}));
+  core::State start;
+  start.bodies = {at(model, 0, Vec3(-5, 0, kHalf.z())), at(model, 1, Vec3(0, 0, 0.1)),
+                  at(model, 2, Vec3(0, 0, 0.2 + kHalf.z())), at(model, 3, Vec3(5, 0, kHalf.z()))};
+  core::Simulation sim(model, start);
+  const double forever = core::WrenchSchedule::kForever;
+  const core::Wrench push{Vec3(0.5, 0, 0), Vec3::Zero(), Vec3::Zero(), core::Frame::kWorld};
+  sim.schedule.add(0, push, 100.0, forever, 1);  // on a, in b's axes: goes with b
+  sim.schedule.add(3, push, 100.0, forever);     // on d: stays, as body 2
+  for (int n = 0; n < 2000; ++n) {
+    core::step(sim.model, sim.state, {}, &sim.workspace);
+    sim.contacts.update(sim.state, sim.workspace.contacts);
+  }
+  ASSERT_TRUE(sim.state.bodies[2].asleep);  // c on b
+  ASSERT_FALSE(sim.contacts.kept().empty());
+  const core::State before = sim.state;
+
+  EXPECT_EQ(sim.removeBody(1), 1u);  // a's wrench in b's axes
+
+  ASSERT_EQ(sim.model.bodyCount(), 3u);
+  EXPECT_EQ(sim.model.body(1).name, "c");
+  EXPECT_EQ(sim.model.body(2).name, "d");
+  ASSERT_EQ(sim.state.bodies.size(), 3u);
+  ASSERT_EQ(sim.initial.bodies.size(), 3u);
+  EXPECT_EQ(sim.initial.bodies[1].p_WB, start.bodies[2].p_WB);  // c's start, now body 1
+  EXPECT_EQ(sim.initial.bodies[2].p_WB, start.bodies[3].p_WB);
+  EXPECT_EQ(sim.state.bodies[2].p_WB, before.bodies[3].p_WB);
+  EXPECT_FALSE(sim.state.bodies[1].asleep);  // c lost its base
+  for (const core::Contact& c : sim.contacts.kept()) {
+    EXPECT_NE(c.body, 1);  // none of c's kept contacts with the deleted base
+    EXPECT_LT(c.other, 3);
+  }
+  EXPECT_EQ(sim.schedule.count(0), 0u);
+  EXPECT_EQ(sim.schedule.count(2), 1u);  // d's, moved down with d
+  // c falls onto the ground, and reset puts every body where it started.
+  for (int n = 0; n < 1000; ++n) core::step(sim.model, sim.state, {}, &sim.workspace);
+  EXPECT_NEAR(sim.state.bodies[1].p_WB.z(), kHalf.z(), 1e-3);
+  sim.reset(7.0);
+  EXPECT_EQ(sim.state.time, 7.0);
+  EXPECT_EQ(sim.state.bodies[1].p_WB, start.bodies[2].p_WB);
+  EXPECT_EQ(sim.schedule.size(), 0u);
 }
 
 // A body the model refuses only beside the others (here the penalty
