@@ -6,37 +6,22 @@ namespace rigid_body_sim::node {
 
 using core::Quat;
 
-BodyDirectory::Entry SimNode::directoryEntry(std::size_t i) const {
-  const BodyPorts& p = ports_[i];
-  BodyDirectory::Entry e{model_.body(i).name, p.frame, {}};
-  for (const core::FixedLink& link : model_.body(i).fixed_links) e.other_frames.push_back(p.prefix + link.name);
-  if (p.imu) e.other_frames.push_back(p.imu_frame);
-  return e;
-}
-
-void SimNode::indexBodies() {
-  std::vector<BodyDirectory::Entry> entries;
-  entries.reserve(ports_.size());
-  for (std::size_t i = 0; i < ports_.size(); ++i) entries.push_back(directoryEntry(i));
-  directory_.assign(std::move(entries));
-}
-
 std::optional<int> SimNode::findBody(const std::string& name, std::string& error) const {
   if (model_.bodyCount() == 0) {
     error = "the world has no bodies (~spawn_body adds one)";
     return std::nullopt;
   }
   if (name.empty() && model_.bodyCount() == 1) return 0;
-  if (const auto found = directory_.byName(name)) return found;
-  error = name.empty() ? "there are several bodies: give body (" + directory_.names() + ")"
-                       : "unknown body '" + name + "' (the bodies: " + directory_.names() + ")";
+  if (const auto found = ports_.directory().byName(name)) return found;
+  error = name.empty() ? "there are several bodies: give body (" + ports_.directory().names() + ")"
+                       : "unknown body '" + name + "' (the bodies: " + ports_.directory().names() + ")";
   return std::nullopt;
 }
 
 std::optional<SimNode::Axes> SimNode::findFrame(const std::string& frame, int body, std::string& error) const {
   if (frame.empty() || frame == settings_.world_frame || frame == "world") return Axes{};
   if (frame == ports_[body].frame || frame == model_.body(body).link) return Axes{core::Frame::kBody, -1};
-  if (const auto other = directory_.byFrame(frame)) return Axes{core::Frame::kWorld, *other};
+  if (const auto other = ports_.directory().byFrame(frame)) return Axes{core::Frame::kWorld, *other};
   error = "unknown frame '" + frame + "' (use '" + settings_.world_frame + "', the body's frame '" +
           ports_[body].frame + "'" + (ports_.size() > 1 ? " or another body's tf frame" : "") + ")";
   return std::nullopt;
@@ -44,12 +29,12 @@ std::optional<SimNode::Axes> SimNode::findFrame(const std::string& frame, int bo
 
 std::optional<core::Pose> SimNode::findPose(const std::string& frame, std::string& error) const {
   if (frame.empty() || frame == settings_.world_frame || frame == "world") return core::Pose{};
-  if (const auto body = directory_.byFrame(frame)) {
+  if (const auto body = ports_.directory().byFrame(frame)) {
     const core::LinkState link = core::linkState(model_.body(*body), state_.bodies[*body]);
     return core::Pose{link.q_WL, link.p_WL};
   }
   error = "frame: unknown frame '" + frame + "' (use '" + settings_.world_frame + "'" +
-          (directory_.size() == 0 ? "" : " or a body's tf frame" + directory_.frames()) + ")";
+          (ports_.directory().size() == 0 ? "" : " or a body's tf frame" + ports_.directory().frames()) + ")";
   return std::nullopt;
 }
 

@@ -22,7 +22,7 @@ void SimNode::publishContacts() {
   const bool listed = contacts_pub_.listened(), drawn = contact_markers_pub_.listened();
   if (!ros::ok() || (!listed && !drawn)) return;
   const std::vector<core::ContactPairReport> pairs =
-      core::contactPairs(model_, state_, contacts_.touchingNow(state_, workspace_.contacts));
+      core::contactPairs(model_, state_, sim_.contacts.touchingNow(state_, workspace_.contacts));
   Contacts msg;
   msg.header.stamp = stamp();
   msg.header.frame_id = settings_.world_frame;

@@ -29,7 +29,7 @@ void SimNode::stepOnce() {
   ++steps_;
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
   sampleSensors();
-  contacts_.update(state_, workspace_.contacts);
+  sim_.contacts.update(state_, workspace_.contacts);
   schedule_.dropFinished(simTime());
   if (steps_ % publish_every_ == 0) {
     publishClock();

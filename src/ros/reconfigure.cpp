@@ -58,11 +58,7 @@ void SimNode::onReconfigure(PhysicsConfig& config, uint32_t) {
                        t.damping.linear != was.damping.linear || t.damping.angular != was.damping.angular;
   if (changed) {
     try {
-      world_.model = model_.retuned(t);
-      // The fixed-point cache and sleep assumed the old settings: a fresh
-      // workspace and every body awake.
-      freshWorkspace();
-      core::wakeAll(state_);
+      sim_.retune(t);  // every body awake: what rested must move under the new settings
       ROS_INFO("sim_node: ~physics: gravity (%g, %g, %g) m/s^2, friction %g, restitution %g, damping %g %g 1/s",
                t.gravity_W.x(), t.gravity_W.y(), t.gravity_W.z(), t.friction, t.restitution, t.damping.linear,
                t.damping.angular);

@@ -38,8 +38,4 @@ void SimNode::sampleSensors() {
   }
 }
 
-void SimNode::restartSensors(int body) {
-  if (ports_[body].imu) ports_[body].imu->restart(state_.bodies[body]);
-}
-
 }  // namespace rigid_body_sim::node

@@ -116,7 +116,7 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
     return true;
   }
   try {
-    pending->ports = std::make_unique<BodyPorts>(openPorts(pending->body.body(), req.name + "/", d));
+    pending->ports = std::make_unique<BodyPorts>(openPorts(port_context_, pending->body.body(), req.name + "/", d));
   } catch (const std::exception& e) {
     res.message = e.what();
     return true;
@@ -172,12 +172,12 @@ SpawnBody::Response SimNode::insertBody(PendingSpawn& spawn) {
   std::vector<std::string> new_frames{prefix + body.link};
   for (const core::FixedLink& link : body.fixed_links) new_frames.push_back(prefix + link.name);
   if (spawn.ports->imu) new_frames.push_back(spawn.ports->imu_frame);  // not one of the body's (openPorts)
-  if (directory_.byName(req.name)) {
+  if (ports_.directory().byName(req.name)) {
     res.message = "name '" + req.name + "' is taken by a body in the world";
     return res;
   }
   for (const std::string& frame : new_frames) {
-    if (const auto owner = directory_.ownerOf(frame)) {
+    if (const auto owner = ports_.directory().ownerOf(frame)) {
       res.message = "name '" + req.name + "': the new body's frame '" + frame + "' is a frame of body '" +
                     model_.body(*owner).name + "'";
       return res;
@@ -204,21 +204,17 @@ SpawnBody::Response SimNode::insertBody(PendingSpawn& spawn) {
   // opened on the spawn thread, refused an IMU on no such link).
   try {
     const core::BodyState start = core::bodyStateFromLink(body, link);
-    world_.model.addBody(spawn.body);  // in place, unchanged if it throws
-    state_.bodies.push_back(start);
-    initial_.bodies.push_back(start);  // reset puts it back where it was spawned
-    BodyPorts& ports = *spawn.ports;
-    startPorts(ports, start);
-    ports.colour = bodies_entered_++;
-    ports_.push_back(std::move(ports));
+    sim_.addBody(spawn.body, start);  // in place, unchanged if it throws; reset puts it back here
+    ports_.add(std::move(*spawn.ports), body, start, simTime());
   } catch (const std::exception& e) {
     res.message = e.what();
     return res;
   }
   afterSpawn();
   res.success = true;
-  res.message = "body '" + req.name + "' added at t = " + now() + ": frame '" + ports_.back().frame + "', topics '" +
-                nh_.resolveName(prefix + "odom") + "' and '" + pnh_.resolveName(prefix + "wrench") + "'";
+  res.message = "body '" + req.name + "' added at t = " + now() + ": frame '" + ports_[ports_.size() - 1].frame +
+                "', topics '" + nh_.resolveName(prefix + "odom") + "' and '" + pnh_.resolveName(prefix + "wrench") +
+                "'";
   ROS_INFO("sim_node: %s", res.message.c_str());
   if (const std::string warning = io::touchesNothing(body); !warning.empty()) {
     ROS_WARN("sim_node: %s", warning.c_str());

@@ -49,8 +49,8 @@ bool SimNode::setState(SetState::Request& req, SetState::Response& res) {
   link.v_WL = q_frame * v;
   link.w_W = q_frame * w;
   state_.bodies[body] = core::bodyStateFromLink(model_.body(body), link);
-  state_.contact_impulses.clear();  // nothing carries over to a new pose
-  restartSensors(body);             // the jump is no acceleration
+  state_.contact_impulses.clear();            // nothing carries over to a new pose
+  ports_.restart(body, state_.bodies[body]);  // the jump is no acceleration
   res.success = true;
   res.message = "state set";
   publish();
@@ -59,13 +59,8 @@ bool SimNode::setState(SetState::Request& req, SetState::Response& res) {
 
 bool SimNode::reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
   // Back to the initial state; sim time keeps increasing (tf listeners never see it go back).
-  state_ = initial_;
-  state_.time = simTime();
-  schedule_.clear(-1);
-  for (std::size_t i = 0; i < ports_.size(); ++i) restartSensors(static_cast<int>(i));
-  for (BodyPorts& p : ports_) {
-    if (p.odom_noise) p.odom_noise->restart();  // the drift starts again
-  }
+  sim_.reset(simTime());
+  ports_.restartAll(state_);  // the IMUs from the initial state, the odometry drift from zero
   rebaseClock();
   publish();
   res.success = true;

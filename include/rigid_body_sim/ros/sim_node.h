@@ -35,11 +35,12 @@
 #include "rigid_body_sim/SpawnBody.h"
 #include "rigid_body_sim/Step.h"
 #include "rigid_body_sim/core/contact_report.h"
+#include "rigid_body_sim/core/simulation.h"
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/core/velocity_driver.h"
 #include "rigid_body_sim/core/wrench_schedule.h"
 #include "rigid_body_sim/io/world.h"
-#include "rigid_body_sim/ros/body_directory.h"
+#include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
 #include "rigid_body_sim/ros/pacer.h"
 #include "rigid_body_sim/ros/params.h"
@@ -97,13 +98,6 @@ class SimNode {
   // answers through the promise.
   bool spawnBody(SpawnBody::Request& req, SpawnBody::Response& res);
   bool deleteBody(DeleteBody::Request& req, DeleteBody::Response& res);
-  /// What a body carries besides its shape (config keys imu, odom_noise, cmd_vel).
-  struct BodyDevices {
-    std::optional<io::ImuEntry> imu;
-    std::optional<core::OdomNoiseSettings> odom_noise;
-    std::optional<core::DriverSettings> cmd_vel;
-  };
-  struct BodyPorts;
   struct PendingSpawn {
     SpawnBody::Request request;
     core::PreparedBody body;
@@ -114,13 +108,10 @@ class SimNode {
   void insertPendingBodies();
   /// The body of `spawn` into the model, state and topics, or why not.
   SpawnBody::Response insertBody(PendingSpawn& spawn);
-  /// After a body was added last: a fresh workspace, its names, markers and fixed frames.
+  /// After a body was added last: its markers and fixed frames.
   void afterSpawn();
-  /// After body `body`, named `name`, was deleted: a fresh workspace, the
-  /// names, markers and fixed frames without it.
-  void afterDelete(int body, const std::string& name);
-  /// A new workspace with the same knobs: its caches assumed the old model.
-  void freshWorkspace();
+  /// After the body named `name` was deleted: the markers and fixed frames without it.
+  void afterDelete(const std::string& name);
 
   // Live tuning (reconfigure.cpp): the dynamic_reconfigure server ~physics.
   void startReconfigure();
@@ -165,73 +156,25 @@ class SimNode {
   ros::NodeHandle nh_, pnh_;
   NodeParams params_;
   const NodeSettings& settings_ = params_.node;  ///< ~physics changes params_.node
-  io::World world_;
-  const core::Model& model_ = world_.model;
-  core::State& state_ = world_.state;
-  core::State initial_;
-  core::Workspace workspace_;
-  core::WrenchSchedule schedule_;
+  /// The model and every table in its bodies' order: a world edit goes through it once.
+  core::Simulation sim_;
+  const core::Model& model_ = sim_.model;
+  core::State& state_ = sim_.state;
+  core::Workspace& workspace_ = sim_.workspace;
+  core::WrenchSchedule& schedule_ = sim_.schedule;
   core::Loads loads_;
 
-  /// What the node keeps per body beside the model, in the model's order.
-  /// A body's names are fixed when it is created: the one body of a world
-  /// that starts with one has the single-body names for life (its frame
-  /// the root link, `odom`, `~wrench`); every other body, listed in a world
-  /// or spawned, has them under its name ("NAME/").
-  struct BodyPorts {
-    std::string prefix;          ///< "" or "NAME/", before its frames and topics
-    ros::NodeHandle nh, pnh;     ///< its topics' handles (the node's, copied: openPorts)
-    std::string frame;           ///< its tf frame: prefix + root link
-    CountedPublisher odom;       ///< PREFIXodom
-    ros::Subscriber wrench;      ///< ~PREFIXwrench
-    bool speed_limited = false;  ///< the speed limits have held it (warned once)
-    /// Its IMU (sensors.cpp), sampled whether or not anyone listens. The
-    /// devices with a random generator (2.5 KB each) are held apart: in
-    /// place they made every body's ports 6 KB, devices or not.
-    std::unique_ptr<core::Imu> imu;
-    CountedPublisher imu_pub;                     ///< PREFIXimu, sensor_msgs/Imu
-    std::string imu_frame;                        ///< prefix + the IMU's frame_id
-    long long imu_every = 1;                      ///< steps per IMU sample
-    std::unique_ptr<core::OdomNoise> odom_noise;  ///< noise on odom; the exact state then goes to ground_truth
-    CountedPublisher ground_truth;                ///< PREFIXground_truth, with odom_noise
-    double last_odom = 0.0;                       ///< s of sim time of its last odom report (for the drift)
-    std::optional<core::VelocityDriver> driver;   ///< drives it toward its cmd_vel
-    ros::Subscriber cmd_vel;                      ///< PREFIXcmd_vel, geometry_msgs/Twist
-    bool clipped = false;                         ///< a command was clipped (warned once)
-    std::size_t colour = 0;                       ///< its markers' colour: the order it entered the world in
-  };
-  std::vector<BodyPorts> ports_;
-  BodyDirectory directory_;  ///< the bodies by name and by frame
-  /// What directory_ holds for body i.
-  BodyDirectory::Entry directoryEntry(std::size_t i) const;
-  /// Indexes the bodies by name and frame again (at start, after a delete).
-  void indexBodies();
-  std::size_t bodies_entered_ = 0;  ///< bodies that have entered the world, the next one's colour
-  /// The ports of `body` under `prefix`: its frames, topics and devices.
-  /// Throws io::ConfigError (an IMU on no such link, or on a taken frame)
-  /// before anything is advertised. Reads only its arguments, so the spawn
-  /// thread opens a spawned body's ports: each topic is a round trip to the
-  /// master, 1-2 ms the loop does not wait for. startPorts() starts them.
-  /// `topics` false: only its devices' topics, none for odometry or wrenches
-  /// (~per_body_topics).
-  BodyPorts openPorts(const core::BodyModel& body, const std::string& prefix, const BodyDevices& devices,
-                      bool topics = true);
-  /// Starts `ports`' sensors at `start`, now (loop thread).
-  void startPorts(BodyPorts& ports, const core::BodyState& start);
-  /// Closes `ports` on the spawn thread: closing a topic waits for the master too.
-  void closeLater(BodyPorts&& ports);
+  /// Every body's frames, topics and devices, and its names: a spawn, a
+  /// delete and a reset go through it (body_ports.h).
+  PortRegistry ports_{spawn_queue_};
+  PortContext port_context_;  ///< what opening a body's ports needs of the node (read only once made)
   void onCmdVel(const std::string& body, const geometry_msgs::Twist::ConstPtr& msg);
   // Contacts (contacts.cpp).
-  void publishContacts();         ///< ~contacts and ~contact_markers, while someone subscribes
-  core::ContactLedger contacts_;  ///< what touches what, the sleepers' contacts kept
+  void publishContacts();  ///< ~contacts and ~contact_markers, while someone subscribes
   CountedPublisher contacts_pub_, contact_markers_pub_;
   /// Samples the IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();
-  /// The IMU of body i starts a new period at its state now (after set_state, reset).
-  void restartSensors(int body);
   const double dt_ = model_.dt();  ///< for the spawn thread (no edit changes it)
-  std::vector<std::string> frames() const;
-  std::vector<std::size_t> colours() const;  ///< each body's BodyPorts::colour, in the model's order
 
   bool paused_ = false;
   bool use_sim_time_ = false;

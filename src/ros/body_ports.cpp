@@ -1,0 +1,130 @@
+#include "rigid_body_sim/ros/body_ports.h"
+
+#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/Imu.h>
+
+#include <algorithm>
+#include <boost/make_shared.hpp>
+#include <cmath>
+#include <utility>
+
+namespace rigid_body_sim::node {
+namespace {
+
+/// The pose in the root link frame L of `link` (core::linkPose); another
+/// name is refused naming `key`.link and the body's links.
+core::Pose mountOf(const core::BodyModel& body, const std::string& link, const std::string& key) {
+  if (const std::optional<core::Pose> X_LK = core::linkPose(body, link)) return *X_LK;
+  std::string names = "'" + body.link + "'";
+  for (const core::FixedLink& f : body.fixed_links) names += ", '" + f.name + "'";
+  throw io::ConfigError("config key '" + key + ".link' = '" + link + "': no such link of body '" + body.name +
+                        "' (its links: " + names + ")");
+}
+
+/// Lets what it holds go when the queue calls it, on the queue's thread.
+class Release : public ros::CallbackInterface {
+ public:
+  explicit Release(std::shared_ptr<void> what) : what_(std::move(what)) {}
+  CallResult call() override {
+    what_.reset();
+    return Success;
+  }
+
+ private:
+  std::shared_ptr<void> what_;
+};
+
+}  // namespace
+
+BodyPorts openPorts(const PortContext& context, const core::BodyModel& body, const std::string& prefix,
+                    const BodyDevices& devices, bool topics) {
+  const auto& [imu, odom_noise, cmd_vel] = devices;
+  BodyPorts ports;
+  ports.prefix = prefix;
+  ports.frame = prefix + body.link;
+  // Checked before anything is advertised: a spawn's IMU on no such link is
+  // refused with nothing changed (it ended the node once).
+  std::optional<core::ImuSettings> imu_settings;
+  if (imu) {
+    ports.imu_frame = prefix + imu->frame_id;
+    bool taken = imu->frame_id == body.link;
+    for (const core::FixedLink& link : body.fixed_links) taken = taken || imu->frame_id == link.name;
+    if (taken || ports.imu_frame == context.world_frame) {
+      throw io::ConfigError(imu->key + ".frame_id '" + imu->frame_id + "' of body '" + body.name +
+                            "': is already a frame (of the body, or the world); name the sensor's own frame");
+    }
+    imu_settings = imu->settings;
+    imu_settings->X_LS = mountOf(body, imu->link, imu->key) * imu->settings.X_LS;
+  }
+  const std::string name = body.name;  // by name: a deletion moves the later bodies' indices
+  ros::NodeHandle& nh = ports.nh.emplace(context.nh);
+  ros::NodeHandle& pnh = ports.pnh.emplace(context.pnh);
+  if (cmd_vel) {
+    ports.driver.emplace(*cmd_vel);
+    const auto& on_cmd_vel = context.on_cmd_vel;
+    ports.cmd_vel = nh.subscribe<geometry_msgs::Twist>(
+        prefix + "cmd_vel", 10, [on_cmd_vel, name](const geometry_msgs::Twist::ConstPtr& m) { on_cmd_vel(name, m); });
+  }
+  if (odom_noise) {
+    ports.odom_noise = std::make_unique<core::OdomNoise>(*odom_noise);
+    ports.ground_truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh, prefix + "ground_truth", 10);
+  }
+  if (imu_settings) {
+    ports.imu = std::make_unique<core::Imu>(*imu_settings, core::BodyState{});  // add() gives it the start
+    ports.imu_every = std::max(1LL, std::llround(1.0 / (imu->settings.rate * context.dt)));
+    ports.imu_pub = CountedPublisher::advertise<sensor_msgs::Imu>(nh, prefix + "imu", 100);
+  }
+  if (!topics && !cmd_vel && !odom_noise && !imu) return ports;
+  ports.odom = CountedPublisher::advertise<nav_msgs::Odometry>(nh, prefix + "odom", 10);
+  const auto& on_wrench = context.on_wrench;
+  ports.wrench = pnh.subscribe<geometry_msgs::WrenchStamped>(
+      prefix + "wrench", 10,
+      [on_wrench, name](const geometry_msgs::WrenchStamped::ConstPtr& m) { on_wrench(name, m); });
+  return ports;
+}
+
+BodyPorts& PortRegistry::add(BodyPorts ports, const core::BodyModel& body, const core::BodyState& start, double t) {
+  if (ports.imu) ports.imu->restart(start);
+  ports.last_odom = t;
+  ports.colour = entered_++;
+  BodyDirectory::Entry entry{body.name, ports.frame, {}};
+  for (const core::FixedLink& link : body.fixed_links) entry.other_frames.push_back(ports.prefix + link.name);
+  if (ports.imu) entry.other_frames.push_back(ports.imu_frame);
+  directory_.add(std::move(entry));
+  ports_.push_back(std::move(ports));
+  return ports_.back();
+}
+
+void PortRegistry::erase(std::size_t i) {
+  directory_.erase(i);
+  auto gone = std::make_shared<BodyPorts>(std::move(ports_.at(i)));
+  ports_.erase(ports_.begin() + static_cast<std::ptrdiff_t>(i));
+  closer_->addCallback(boost::make_shared<Release>(std::move(gone)));
+}
+
+void PortRegistry::restart(std::size_t i, const core::BodyState& now) {
+  if (ports_[i].imu) ports_[i].imu->restart(now);
+}
+
+void PortRegistry::restartAll(const core::State& state) {
+  for (std::size_t i = 0; i < ports_.size(); ++i) {
+    restart(i, state.bodies[i]);
+    if (ports_[i].odom_noise) ports_[i].odom_noise->restart();  // the drift starts again
+  }
+}
+
+std::vector<std::string> PortRegistry::frames() const {
+  std::vector<std::string> frames;
+  frames.reserve(ports_.size());
+  for (const BodyPorts& p : ports_) frames.push_back(p.frame);
+  return frames;
+}
+
+std::vector<std::size_t> PortRegistry::colours() const {
+  std::vector<std::size_t> colours;
+  colours.reserve(ports_.size());
+  for (const BodyPorts& p : ports_) colours.push_back(p.colour);
+  return colours;
+}
+
+}  // namespace rigid_body_sim::node
