@@ -32,11 +32,15 @@ void SimNode::stepOnce() {
   sim_.contacts.update(state_, workspace_.contacts);
   schedule_.dropFinished(simTime());
   if (steps_ % publish_every_ == 0) {
-    publishClock();
+    publisher_->clock(stamp());
     publish();
     publishContacts();
   }
-  if (steps_ % body_states_every_ == 0) publishBodyStates();
+  if (steps_ % body_states_every_ == 0) publisher_->bodyStates(sim_, ports_, stamp());
+}
+
+void SimNode::publish() {
+  if (publisher_->state(sim_, ports_, stamp(), simTime())) resendMarkersIfDue();
 }
 
 void SimNode::reportStep() {

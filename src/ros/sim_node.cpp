@@ -1,9 +1,7 @@
 // The node's set-up: the world (loaded as rbsim loads it), its topics,
 // services and first messages. The loop is in pacing.cpp, the messages in
-// publishers.cpp and markers.cpp, the services in *_requests.cpp.
+// state_publisher.cpp and markers.cpp, the services in *_requests.cpp.
 #include "rigid_body_sim/ros/sim_node.h"
-
-#include <rosgraph_msgs/Clock.h>
 
 #include <algorithm>
 #include <cmath>
@@ -135,8 +133,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   body_markers_ = bodyMarkers(model_, ports_.frames(), ports_.colours());
   scene_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, on_subscriber, {}, {}, true);
   body_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("body_markers", 1, on_subscriber, {}, {}, true);
-  if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-  body_states_pub_ = CountedPublisher::advertise<BodyStates>(pnh_, "body_states", 10);
+  publisher_.emplace(nh_, pnh_, settings_, use_sim_time_);
   contacts_pub_ = CountedPublisher::advertise<Contacts>(pnh_, "contacts", 10);
   contact_markers_pub_ = CountedPublisher::advertise<visualization_msgs::MarkerArray>(pnh_, "contact_markers", 10);
   services_ = {pnh_.advertiseService("apply_wrench", &SimNode::applyWrench, this),
@@ -154,12 +151,11 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   spawn_service_ = spawn_nh.advertiseService("spawn_body", &SimNode::spawnBody, this);
   spawn_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &spawn_queue_);
   spawn_spinner_->start();
-  tf_static_pub_ = nh_.advertise<tf2_msgs::TFMessage>("/tf_static", 100, true);
   startReconfigure();
   scene_pub_.publish(scene_markers_);
   body_pub_.publish(body_markers_);
-  publishFixedFrames();
-  publishClock();
+  publisher_->fixedFrames(model_, ports_, stamp());
+  publisher_->clock(stamp());
   publish();
 }
 

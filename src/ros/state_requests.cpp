@@ -102,13 +102,29 @@ bool SimNode::step(Step::Request& req, Step::Response& res) {
     return true;
   }
   for (int k = 0; k < req.steps; ++k) stepOnce();
-  publishClock();
+  publisher_->clock(stamp());
   publish();
   res.success = true;
   res.message = "stepped " + std::to_string(req.steps) + " steps";
   res.time = stamp();
   for (std::size_t i = 0; i < model_.bodyCount(); ++i) res.states.push_back(bodyState(static_cast<int>(i), Axes{}));
   return true;
+}
+
+BodyState SimNode::bodyState(int body, const Axes& axes) const {
+  const core::BodyModel& b = model_.body(body);
+  const core::LinkState link = core::linkState(b, state_.bodies[body]);
+  BodyState msg;
+  msg.body = b.name;
+  msg.stamp = stamp();
+  msg.pose = toPose(link.p_WL, link.q_WL);
+  msg.twist_frame = axes.other >= 0                    ? ports_[axes.other].frame
+                    : axes.frame == core::Frame::kBody ? ports_[body].frame
+                                                       : settings_.world_frame;
+  const Quat q = orientationOf(axes, body).conjugate();
+  msg.twist.linear = toVector3(q * link.v_WL);
+  msg.twist.angular = toVector3(q * link.w_W);
+  return msg;
 }
 
 }  // namespace rigid_body_sim::node

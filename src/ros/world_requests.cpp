@@ -45,14 +45,14 @@ void SimNode::afterSpawn() {
   const std::size_t last = model_.bodyCount() - 1;
   appendBodyMarkers(model_.body(last), ports_[last].frame, ports_[last].colour, body_markers_);
   body_pub_.publish(body_markers_);  // latched: the whole set, for a subscriber who comes later
-  publishFixedFrames(last);
+  publisher_->fixedFrames(model_, ports_, stamp(), last);
 }
 
 void SimNode::afterDelete(const std::string& name) {
   // rviz forgets every body marker, then draws those left.
   eraseBodyMarkers(name, body_markers_);
   body_pub_.publish(body_markers_);
-  publishFixedFrames();
+  publisher_->fixedFrames(model_, ports_, stamp());
 }
 
 }  // namespace rigid_body_sim::node

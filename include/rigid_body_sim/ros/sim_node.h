@@ -9,8 +9,6 @@
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
-#include <tf2_msgs/TFMessage.h>
-#include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <atomic>
@@ -45,6 +43,7 @@
 #include "rigid_body_sim/ros/pacer.h"
 #include "rigid_body_sim/ros/params.h"
 #include "rigid_body_sim/ros/sim_clock.h"
+#include "rigid_body_sim/ros/state_publisher.h"
 
 namespace rigid_body_sim::node {
 
@@ -72,12 +71,8 @@ class SimNode {
   /// Says what the step reported: bodies the speed limits held (once each),
   /// bodies the guard put back (their wrenches cleared).
   void reportStep();
+  /// tf and odometry now (StatePublisher::state), then the markers if due.
   void publish();
-  void publishClock();
-  void publishBodyStates();  ///< ~body_states, while someone subscribes
-  /// Links fixed to bodies `first` on, added to static_frames_ (0: all of
-  /// them, the set made again), which goes to /tf_static whole.
-  void publishFixedFrames(std::size_t first = 0);
   void resendMarkersIfDue();
 
   // Requests. Each validates first: a refused request changes nothing.
@@ -115,10 +110,8 @@ class SimNode {
 
   // Live tuning (reconfigure.cpp): the dynamic_reconfigure server ~physics.
   void startReconfigure();
-  /// The settings ~physics shows: the model's and the node's as they are now.
-  PhysicsConfig physicsNow() const;
-  /// Applies what it can of `config` between steps; a value the checks
-  /// refuse is put back to the one in force, with a warning naming it.
+  /// Applies what it can of `config` between steps (applyTuning); a value
+  /// the checks refuse is put back to the one in force, with a warning naming it.
   void onReconfigure(PhysicsConfig& config, uint32_t level);
   /// Tells ~physics of a change made elsewhere (the pause services).
   void showPhysics();
@@ -182,20 +175,11 @@ class SimNode {
   SimClock clock_;       ///< what every stamp and every time a user reads or gives is on
   long long publish_every_ = 1;
   long long body_states_every_ = 1;
-  ros::Time last_published_;
 
   Pacer pacer_;  ///< sim time against the wall clock × realtime factor; the loop's timing
 
-  ros::Publisher clock_pub_, scene_pub_, body_pub_;
-  CountedPublisher body_states_pub_;
-  tf2_ros::TransformBroadcaster tf_;
-  std::vector<geometry_msgs::TransformStamped> tf_batch_;  ///< every body's transform, sent as one /tf message
-  /// /tf_static, latched, as tf2_ros's static broadcaster sends it: every
-  /// fixed frame in one message. The node keeps the set itself so that a
-  /// deleted body's frames leave it (the broadcaster keeps all it was given,
-  /// and making a new one cost two round trips to the master per delete).
-  ros::Publisher tf_static_pub_;
-  tf2_msgs::TFMessage static_frames_;
+  std::optional<StatePublisher> publisher_;  ///< tf, odometry, ~body_states, /clock, /tf_static
+  ros::Publisher scene_pub_, body_pub_;
   visualization_msgs::MarkerArray scene_markers_, body_markers_;
   struct MarkersResend {
     ros::WallTime connected;  ///< when a subscriber to the markers connected

@@ -1,0 +1,120 @@
+// The node's state messages (no master): ~body_states gives each twist in
+// the body's own frame or the world's axes, odometry carries the report's
+// covariances or the exact state's, and /tf_static gets each fixed link and
+// IMU frame under the body's prefix.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../test_util.h"
+#include "rigid_body_sim/ros/state_publisher.h"
+
+namespace rigid_body_sim::node {
+namespace {
+
+using test::Quat;
+using test::Vec3;
+
+constexpr double kPi = 3.14159265358979323846;
+
+core::Model oneBox(bool with_fixed_link) {
+  core::BodySpec b = test::boxBody(Vec3(0.1, 0.1, 0.1));
+  b.name = "a";
+  b.link = "base_link";
+  if (with_fixed_link) b.fixed_links = {{"lidar", "base_link", core::Pose{Quat::Identity(), Vec3(0, 0, 0.3)}}};
+  return core::Model(test::spec(b, 1e-3, Vec3(0, 0, -9.81)));
+}
+
+std_msgs::Header header(const std::string& frame) {
+  std_msgs::Header h;
+  h.frame_id = frame;
+  h.stamp.fromSec(2.5);
+  return h;
+}
+
+void expectVector(const geometry_msgs::Vector3& v, const Vec3& expected) {
+  EXPECT_NEAR(v.x, expected.x(), 1e-12);
+  EXPECT_NEAR(v.y, expected.y(), 1e-12);
+  EXPECT_NEAR(v.z, expected.z(), 1e-12);
+}
+
+TEST(StateMessages, BodyStatesGiveTwistsInTheBodysFrameOrTheWorldsAxes) {
+  // Turned a quarter about z, moving along world x and spinning about z:
+  // in its own axes world x is −y.
+  const core::Model model = oneBox(false);
+  core::LinkState link;
+  link.p_WL = Vec3(1, 2, 3);
+  link.q_WL = Quat(Eigen::AngleAxisd(kPi / 2, Vec3::UnitZ()));
+  link.v_WL = Vec3(1, 0, 0);
+  link.w_W = Vec3(0, 0, 2);
+  core::State s;
+  s.bodies = {core::bodyStateFromLink(model.body(0), link)};
+  s.bodies[0].asleep = true;
+  ros::CallbackQueue closer;
+  PortRegistry ports(closer);
+  BodyPorts p;
+  p.frame = "base_link";
+  ports.add(std::move(p), model.body(0), s.bodies[0], 0.0);
+
+  const BodyStates own = bodyStatesMessage(model, s, ports, header("map"), false);
+  ASSERT_EQ(own.names.size(), 1u);
+  EXPECT_EQ(own.names[0], "a");
+  EXPECT_EQ(own.header.frame_id, "map");
+  EXPECT_EQ(own.twist_frames[0], "base_link");
+  expectVector(own.twists[0].linear, Vec3(0, -1, 0));
+  expectVector(own.twists[0].angular, Vec3(0, 0, 2));
+  EXPECT_NEAR(own.poses[0].position.y, 2.0, 1e-12);
+  EXPECT_NEAR(own.poses[0].orientation.z, std::sqrt(0.5), 1e-12);
+  EXPECT_TRUE(own.asleep[0]);
+
+  const BodyStates world = bodyStatesMessage(model, s, ports, header("map"), true);
+  EXPECT_EQ(world.twist_frames[0], "map");
+  expectVector(world.twists[0].linear, Vec3(1, 0, 0));
+}
+
+TEST(StateMessages, OdometryCarriesTheReportsCovariancesOrTheExactOnes) {
+  core::OdomReport r;
+  r.v_L = Vec3(0.5, 0, 0);
+  for (int k = 0; k < 6; ++k) {
+    r.pose_variance[k] = 0.1 * (k + 1);
+    r.twist_variance[k] = 0.01 * (k + 1);
+  }
+  const nav_msgs::Odometry noisy = odometryMessage(r, "a/base_link", header("odom"), std::nullopt);
+  EXPECT_EQ(noisy.child_frame_id, "a/base_link");
+  EXPECT_EQ(noisy.header.frame_id, "odom");
+  EXPECT_EQ(noisy.header.stamp.toSec(), 2.5);
+  EXPECT_EQ(noisy.pose.covariance[0], r.pose_variance[0]);
+  EXPECT_EQ(noisy.pose.covariance[35], r.pose_variance[5]);
+  EXPECT_EQ(noisy.twist.covariance[14], r.twist_variance[2]);
+  EXPECT_EQ(noisy.pose.covariance[1], 0.0);  // off the diagonal: none
+  EXPECT_EQ(noisy.twist.twist.linear.x, 0.5);
+  const nav_msgs::Odometry exact = odometryMessage(r, "a/base_link", header("odom"), 1e-9);
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_EQ(exact.pose.covariance[k * 7], 1e-9);
+    EXPECT_EQ(exact.twist.covariance[k * 7], 1e-9);
+  }
+}
+
+TEST(StateMessages, FixedFramesHangUnderTheBodysPrefix) {
+  const core::Model model = oneBox(true);
+  BodyPorts p;
+  p.prefix = "a/";
+  p.frame = "a/" + model.body(0).link;
+  core::ImuSettings imu;
+  imu.X_LS = core::Pose{Quat::Identity(), Vec3(0.05, 0, 0)};
+  p.imu = std::make_unique<core::Imu>(imu, core::BodyState{});
+  p.imu_frame = "a/imu_link";
+  std::vector<geometry_msgs::TransformStamped> frames;
+  appendFixedFrames(model.body(0), p, ros::Time(4.0), frames);
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[0].header.frame_id, p.frame);
+  EXPECT_EQ(frames[0].child_frame_id, "a/lidar");
+  EXPECT_EQ(frames[0].transform.translation.z, 0.3);
+  EXPECT_EQ(frames[0].header.stamp.toSec(), 4.0);
+  EXPECT_EQ(frames[1].header.frame_id, p.frame);
+  EXPECT_EQ(frames[1].child_frame_id, "a/imu_link");
+  EXPECT_EQ(frames[1].transform.translation.x, 0.05);
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::node
