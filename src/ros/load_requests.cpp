@@ -9,7 +9,7 @@ namespace rigid_body_sim::node {
 
 bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res) {
   res.success = false;
-  const auto target = findTarget(req.body, req.frame, res.message);
+  const auto target = address_.target(req.body, req.frame, res.message);
   if (!target) return true;
   const auto [body, axes] = *target;
   const Vec3 force = fromVector3(req.force), torque = fromVector3(req.torque), point = fromPoint(req.point);
@@ -61,7 +61,7 @@ bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res)
 
 bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& res) {
   res.success = false;
-  const auto target = findTarget(req.body, req.frame, res.message);
+  const auto target = address_.target(req.body, req.frame, res.message);
   if (!target) return true;
   const auto [body, axes] = *target;
   const Vec3 linear = fromVector3(req.linear), angular = fromVector3(req.angular), point = fromPoint(req.point);
@@ -71,7 +71,7 @@ bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& r
   if (!res.message.empty()) return true;
   core::BodyState after = state_.bodies[body];
   core::Impulse impulse{linear, angular, point, axes.frame};
-  if (axes.other >= 0) impulse = core::inWorldAxes(impulse, orientationOf(axes, body));
+  if (axes.other >= 0) impulse = core::inWorldAxes(impulse, address_.orientationOf(axes, body));
   core::applyImpulse(model_.body(body), after, impulse);
   const std::string speed =
       checkSpeed(after.v_WB, model_.limits().max_linear_speed, "resulting velocity", "limits.max_linear_speed", "m/s");
@@ -90,7 +90,7 @@ bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& r
 bool SimNode::clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response& res) {
   int body = -1;
   if (!req.body.empty()) {
-    const auto found = findBody(req.body, res.message);
+    const auto found = address_.body(req.body, res.message);
     if (!found) {
       res.success = false;
       return true;
@@ -105,10 +105,10 @@ bool SimNode::clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response
 
 void SimNode::onWrench(const std::string& name, const geometry_msgs::WrenchStamped::ConstPtr& msg) {
   std::string why;
-  const auto found = findBody(name, why);
+  const auto found = address_.body(name, why);
   if (!found) return;  // deleted, its message already queued
   const int body = *found;
-  const auto axes = findFrame(msg->header.frame_id, body, why);
+  const auto axes = address_.axes(msg->header.frame_id, body, why);
   const Vec3 force = fromVector3(msg->wrench.force), torque = fromVector3(msg->wrench.torque);
   if (why.empty()) why = checkVector(force, kMaxForce, "force", "N");
   if (why.empty()) why = checkVector(torque, kMaxTorque, "torque", "N*m");
@@ -122,7 +122,7 @@ void SimNode::onWrench(const std::string& name, const geometry_msgs::WrenchStamp
 
 void SimNode::onCmdVel(const std::string& name, const geometry_msgs::Twist::ConstPtr& msg) {
   std::string why;
-  const auto found = findBody(name, why);
+  const auto found = address_.body(name, why);
   if (!found) return;  // deleted, its message already queued
   BodyPorts& p = ports_[*found];
   const Vec3 v = fromVector3(msg->linear), w = fromVector3(msg->angular);

@@ -160,7 +160,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
 }
 
 SimNode::~SimNode() {
-  stopping_ = true;
+  spawns_.stop();
   if (spawn_spinner_) spawn_spinner_->stop();
 }
 

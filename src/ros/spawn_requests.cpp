@@ -80,13 +80,13 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
   res.success = false;
   res.message = checkSpawnRequest(req);
   if (!res.message.empty()) return true;
-  auto pending = std::make_shared<PendingSpawn>();
+  SpawnQueue::Spawn spawn;
   try {
     core::BodySpec spec = loadRequestedUrdf(req, nh_, params_.sim.base_dir);
     spec.name = req.name;
     if (req.own_friction) spec.friction = req.friction;
     if (req.own_restitution) spec.restitution = req.restitution;
-    pending->body = builder_.build(spec);
+    spawn.body = builder_.build(spec);
   } catch (const std::exception& e) {
     res.message = e.what();
     return true;
@@ -116,52 +116,28 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
     return true;
   }
   try {
-    pending->ports = std::make_unique<BodyPorts>(openPorts(port_context_, pending->body.body(), req.name + "/", d));
+    spawn.ports = std::make_unique<BodyPorts>(openPorts(port_context_, spawn.body.body(), req.name + "/", d));
   } catch (const std::exception& e) {
     res.message = e.what();
     return true;
   }
-  pending->request = req;
-  std::future<SpawnBody::Response> added = pending->done.get_future();
-  {
-    const std::lock_guard<std::mutex> lock(pending_mutex_);
-    pending_.push_back(pending);
-  }
-  // The loop adds it at its next tick, paused or not.
-  while (added.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
-    if (stopping_ || !ros::ok()) {
-      res.message = "the node is shutting down: body '" + req.name + "' was not added";
-      return true;
-    }
-  }
-  res = added.get();
+  spawn.request = req;
+  res = spawns_.submit(std::move(spawn), [] { return ros::ok(); });  // the loop adds it at its next tick
   return true;
 }
 
 void SimNode::insertPendingBodies() {
-  std::vector<std::shared_ptr<PendingSpawn>> pending;
-  {
-    const std::lock_guard<std::mutex> lock(pending_mutex_);
-    pending.swap(pending_);
-  }
-  for (const auto& spawn : pending) {
-    // No request may end the node: whatever escapes is the request's answer.
-    SpawnBody::Response res;
+  spawns_.drain([this](SpawnQueue::Spawn& spawn) {
     const auto start = std::chrono::steady_clock::now();
-    try {
-      res = insertBody(*spawn);
-    } catch (const std::exception& e) {
-      res.success = false;
-      res.message = "body '" + spawn->request.name + "' was not added: " + e.what();
-    }
+    SpawnBody::Response res = insertBody(spawn);
     if (settings_.report_timing) {
       pacer_.recordSpawn(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
-    spawn->done.set_value(res);
-  }
+    return res;
+  });
 }
 
-SpawnBody::Response SimNode::insertBody(PendingSpawn& spawn) {
+SpawnBody::Response SimNode::insertBody(SpawnQueue::Spawn& spawn) {
   SpawnBody::Response res;
   res.success = false;
   const SpawnBody::Request& req = spawn.request;
@@ -188,7 +164,7 @@ SpawnBody::Response SimNode::insertBody(PendingSpawn& spawn) {
         "name '" + req.name + "': the new body's frames include the world frame '" + settings_.world_frame + "'";
     return res;
   }
-  const auto X_WF = findPose(req.frame, res.message);
+  const auto X_WF = address_.pose(req.frame, res.message);
   if (!X_WF) return res;
   core::LinkState link;
   link.p_WL = *X_WF * fromPoint(req.pose.position);

@@ -14,7 +14,7 @@ using core::Quat;
 
 bool SimNode::getState(GetState::Request& req, GetState::Response& res) {
   res.success = false;
-  const auto target = findTarget(req.body, req.frame, res.message);
+  const auto target = address_.target(req.body, req.frame, res.message);
   if (!target) return true;
   const auto [body, axes] = *target;
   res.state = bodyState(body, axes);
@@ -24,7 +24,7 @@ bool SimNode::getState(GetState::Request& req, GetState::Response& res) {
 
 bool SimNode::setState(SetState::Request& req, SetState::Response& res) {
   res.success = false;
-  const auto target = findTarget(req.body.empty() ? req.state.body : req.body, req.state.twist_frame, res.message);
+  const auto target = address_.target(req.body.empty() ? req.state.body : req.body, req.state.twist_frame, res.message);
   if (!target) return true;
   const auto [body, axes] = *target;
   const Vec3 p = fromPoint(req.state.pose.position);
@@ -45,7 +45,7 @@ bool SimNode::setState(SetState::Request& req, SetState::Response& res) {
   link.p_WL = p;
   link.q_WL = q.normalized();
   // The twist's axes: the new pose's own, or another body's as it is now.
-  const Quat q_frame = axes.frame == core::Frame::kBody ? link.q_WL : orientationOf(axes, body);
+  const Quat q_frame = axes.frame == core::Frame::kBody ? link.q_WL : address_.orientationOf(axes, body);
   link.v_WL = q_frame * v;
   link.w_W = q_frame * w;
   state_.bodies[body] = core::bodyStateFromLink(model_.body(body), link);
@@ -118,10 +118,8 @@ BodyState SimNode::bodyState(int body, const Axes& axes) const {
   msg.body = b.name;
   msg.stamp = stamp();
   msg.pose = toPose(link.p_WL, link.q_WL);
-  msg.twist_frame = axes.other >= 0                    ? ports_[axes.other].frame
-                    : axes.frame == core::Frame::kBody ? ports_[body].frame
-                                                       : settings_.world_frame;
-  const Quat q = orientationOf(axes, body).conjugate();
+  msg.twist_frame = address_.frameOf(axes, body);
+  const Quat q = address_.orientationOf(axes, body).conjugate();
   msg.twist.linear = toVector3(q * link.v_WL);
   msg.twist.angular = toVector3(q * link.w_W);
   return msg;

@@ -16,7 +16,7 @@ bool SimNode::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res) {
     return true;
   }
   std::string why;
-  const auto found = findBody(req.name, why);
+  const auto found = address_.body(req.name, why);
   if (!found) {
     res.message = "name: " + why;
     return true;

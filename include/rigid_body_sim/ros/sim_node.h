@@ -11,11 +11,8 @@
 #include <std_srvs/Trigger.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include <atomic>
 #include <chrono>
-#include <future>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,11 +35,13 @@
 #include "rigid_body_sim/core/velocity_driver.h"
 #include "rigid_body_sim/core/wrench_schedule.h"
 #include "rigid_body_sim/io/world.h"
+#include "rigid_body_sim/ros/addressing.h"
 #include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
 #include "rigid_body_sim/ros/pacer.h"
 #include "rigid_body_sim/ros/params.h"
 #include "rigid_body_sim/ros/sim_clock.h"
+#include "rigid_body_sim/ros/spawn_queue.h"
 #include "rigid_body_sim/ros/state_publisher.h"
 
 namespace rigid_body_sim::node {
@@ -87,22 +86,16 @@ class SimNode {
   bool step(Step::Request& req, Step::Response& res);
   void onWrench(const std::string& body, const geometry_msgs::WrenchStamped::ConstPtr& msg);
 
-  // World editing (world_requests.cpp). ~spawn_body runs on its own thread:
-  // it reads and checks the request and builds the body (the slow part), then
-  // hands it to the loop, which adds it between two steps (insertBody) and
-  // answers through the promise.
+  // World editing (spawn_requests.cpp, world_requests.cpp). ~spawn_body
+  // runs on its own thread: it reads and checks the request and builds the
+  // body (the slow part), then hands it to the loop (SpawnQueue), which adds
+  // it between two steps (insertBody) and answers.
   bool spawnBody(SpawnBody::Request& req, SpawnBody::Response& res);
   bool deleteBody(DeleteBody::Request& req, DeleteBody::Response& res);
-  struct PendingSpawn {
-    SpawnBody::Request request;
-    core::PreparedBody body;
-    std::unique_ptr<BodyPorts> ports;        ///< opened on the spawn thread (openPorts)
-    std::promise<SpawnBody::Response> done;  ///< what the loop answers
-  };
   /// Adds the spawns built since the last tick (loop thread, between steps).
   void insertPendingBodies();
   /// The body of `spawn` into the model, state and topics, or why not.
-  SpawnBody::Response insertBody(PendingSpawn& spawn);
+  SpawnBody::Response insertBody(SpawnQueue::Spawn& spawn);
   /// After a body was added last: its markers and fixed frames.
   void afterSpawn();
   /// After the body named `name` was deleted: the markers and fixed frames without it.
@@ -117,28 +110,6 @@ class SimNode {
   void showPhysics();
   void setPaused(bool paused);
 
-  /// The body named `name` ("" = the only body), or an error message.
-  std::optional<int> findBody(const std::string& name, std::string& error) const;
-  /// The pose of `frame` ("" or the world frame: the identity, else a
-  /// body's tf frame as it is now) in the world, or an error message.
-  std::optional<core::Pose> findPose(const std::string& frame, std::string& error) const;
-  /// The axes a request's vectors are given in, for the body it addresses.
-  struct Axes {
-    core::Frame frame = core::Frame::kWorld;  ///< kBody: the body's own root link, turning with it
-    int other = -1;                           ///< ≥ 0: this other body's root link, turning with it
-  };
-  /// `frame` for `body`: "" or the world frame → world; the body's tf frame
-  /// (or root link name) → its own axes; another body's tf frame → that
-  /// body's axes; anything else is an error.
-  std::optional<Axes> findFrame(const std::string& frame, int body, std::string& error) const;
-  /// The orientation of `axes` now, for `body` (world: the identity).
-  core::Quat orientationOf(const Axes& axes, int body) const;
-  /// What a request addresses: a body by name and the axes of its vectors (both as above).
-  struct Target {
-    int body;
-    Axes axes;
-  };
-  std::optional<Target> findTarget(const std::string& body, const std::string& frame, std::string& error) const;
   /// `body`'s state for a message, its twist in `axes`.
   BodyState bodyState(int body, const Axes& axes) const;
   /// The loop paces sim time against the wall clock from now on, and,
@@ -160,6 +131,7 @@ class SimNode {
   /// Every body's frames, topics and devices, and its names: a spawn, a
   /// delete and a reset go through it (body_ports.h).
   PortRegistry ports_{spawn_queue_};
+  Addressing address_{sim_, ports_, params_.node.world_frame};  ///< what a request names
   PortContext port_context_;  ///< what opening a body's ports needs of the node (read only once made)
   void onCmdVel(const std::string& body, const geometry_msgs::Twist::ConstPtr& msg);
   // Contacts (contacts.cpp).
@@ -193,9 +165,7 @@ class SimNode {
   ros::CallbackQueue spawn_queue_;
   ros::ServiceServer spawn_service_;
   std::unique_ptr<ros::AsyncSpinner> spawn_spinner_;
-  std::mutex pending_mutex_;
-  std::vector<std::shared_ptr<PendingSpawn>> pending_;  ///< built, for the loop to add
-  std::atomic<bool> stopping_{false};                   ///< the loop has ended: spawns are refused
+  SpawnQueue spawns_;  ///< built on the spawn thread, for the loop to add
   boost::recursive_mutex reconfigure_mutex_;
   std::unique_ptr<dynamic_reconfigure::Server<PhysicsConfig>> reconfigure_;
 };
