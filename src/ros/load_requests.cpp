@@ -1,13 +1,13 @@
-// The requests that push bodies: timed wrenches, impulses, the ~wrench
-// topics, clearing them, and the velocity drivers' cmd_vel. Each validates first: a refused request
-// changes nothing.
+#include "rigid_body_sim/ros/load_requests.h"
+
+#include <sstream>
+
 #include "request_checks.h"
 #include "rigid_body_sim/ros/conversions.h"
-#include "rigid_body_sim/ros/sim_node.h"
 
 namespace rigid_body_sim::node {
 
-bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res) {
+bool LoadRequests::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res) {
   res.success = false;
   const auto target = address_.target(req.body, req.frame, res.message);
   if (!target) return true;
@@ -45,21 +45,21 @@ bool SimNode::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res)
     }
   }
   const double end = duration > 0.0 ? start + duration : core::WrenchSchedule::kForever;
-  if (!schedule_.add(body, {force, torque, point, axes.frame}, start, end, axes.other)) {
-    res.message = "body '" + model_.body(body).name + "' already holds " +
+  if (!sim_.schedule.add(body, {force, torque, point, axes.frame}, start, end, axes.other)) {
+    res.message = "body '" + sim_.model.body(body).name + "' already holds " +
                   std::to_string(core::WrenchSchedule::kMaxPerBody) +
                   " wrenches, acting or yet to start (the most per body): wait for some to end, or clear_wrenches";
     return true;
   }
   res.success = true;
   std::ostringstream os;
-  os << "wrench on '" << model_.body(body).name << "' " << when << " "
+  os << "wrench on '" << sim_.model.body(body).name << "' " << when << " "
      << (duration > 0.0 ? "for " + std::to_string(duration) + " s" : std::string("until cleared"));
   res.message = os.str();
   return true;
 }
 
-bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& res) {
+bool LoadRequests::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& res) {
   res.success = false;
   const auto target = address_.target(req.body, req.frame, res.message);
   if (!target) return true;
@@ -69,25 +69,25 @@ bool SimNode::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& r
                               checkVector(angular, kMaxImpulse, "angular", "N*m*s"),
                               checkVector(point, kMaxPosition, "point", "m")});
   if (!res.message.empty()) return true;
-  core::BodyState after = state_.bodies[body];
+  core::BodyState after = sim_.state.bodies[body];
   core::Impulse impulse{linear, angular, point, axes.frame};
   if (axes.other >= 0) impulse = core::inWorldAxes(impulse, address_.orientationOf(axes, body));
-  core::applyImpulse(model_.body(body), after, impulse);
-  const std::string speed =
-      checkSpeed(after.v_WB, model_.limits().max_linear_speed, "resulting velocity", "limits.max_linear_speed", "m/s");
-  const std::string spin = checkSpeed(after.w_B, model_.limits().max_angular_speed, "resulting angular velocity",
+  core::applyImpulse(sim_.model.body(body), after, impulse);
+  const std::string speed = checkSpeed(after.v_WB, sim_.model.limits().max_linear_speed, "resulting velocity",
+                                       "limits.max_linear_speed", "m/s");
+  const std::string spin = checkSpeed(after.w_B, sim_.model.limits().max_angular_speed, "resulting angular velocity",
                                       "limits.max_angular_speed", "rad/s");
   if (!speed.empty() || !spin.empty()) {
     res.message = speed.empty() ? spin : speed;
     return true;
   }
-  state_.bodies[body] = after;
+  sim_.state.bodies[body] = after;
   res.success = true;
-  res.message = "impulse applied to '" + model_.body(body).name + "'";
+  res.message = "impulse applied to '" + sim_.model.body(body).name + "'";
   return true;
 }
 
-bool SimNode::clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response& res) {
+bool LoadRequests::clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response& res) {
   int body = -1;
   if (!req.body.empty()) {
     const auto found = address_.body(req.body, res.message);
@@ -97,13 +97,13 @@ bool SimNode::clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response
     }
     body = *found;
   }
-  schedule_.clear(body);  // held ones too
+  sim_.schedule.clear(body);  // held ones too
   res.success = true;
   res.message = "wrenches cleared";
   return true;
 }
 
-void SimNode::onWrench(const std::string& name, const geometry_msgs::WrenchStamped::ConstPtr& msg) {
+void LoadRequests::onWrench(const std::string& name, const geometry_msgs::WrenchStamped::ConstPtr& msg) {
   std::string why;
   const auto found = address_.body(name, why);
   if (!found) return;  // deleted, its message already queued
@@ -113,14 +113,14 @@ void SimNode::onWrench(const std::string& name, const geometry_msgs::WrenchStamp
   if (why.empty()) why = checkVector(force, kMaxForce, "force", "N");
   if (why.empty()) why = checkVector(torque, kMaxTorque, "torque", "N*m");
   if (!why.empty()) {
-    ROS_WARN_THROTTLE(1.0, "sim_node: wrench for '%s' ignored: %s", model_.body(body).name.c_str(), why.c_str());
+    ROS_WARN_THROTTLE(1.0, "sim_node: wrench for '%s' ignored: %s", sim_.model.body(body).name.c_str(), why.c_str());
     return;
   }
   const double timeout = settings_.wrench_timeout > 0.0 ? settings_.wrench_timeout : core::WrenchSchedule::kForever;
-  schedule_.hold(body, {force, torque, Vec3::Zero(), axes->frame}, simTime(), timeout, axes->other);
+  sim_.schedule.hold(body, {force, torque, Vec3::Zero(), axes->frame}, simTime(), timeout, axes->other);
 }
 
-void SimNode::onCmdVel(const std::string& name, const geometry_msgs::Twist::ConstPtr& msg) {
+void LoadRequests::onCmdVel(const std::string& name, const geometry_msgs::Twist::ConstPtr& msg) {
   std::string why;
   const auto found = address_.body(name, why);
   if (!found) return;  // deleted, its message already queued

@@ -85,8 +85,10 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
       pnh_,
       settings_.world_frame,
       model_.dt(),
-      [this](const std::string& body, const geometry_msgs::WrenchStamped::ConstPtr& m) { onWrench(body, m); },
-      [this](const std::string& body, const geometry_msgs::Twist::ConstPtr& m) { onCmdVel(body, m); }};
+      [this](const std::string& body, const geometry_msgs::WrenchStamped::ConstPtr& m) {
+        load_requests_.onWrench(body, m);
+      },
+      [this](const std::string& body, const geometry_msgs::Twist::ConstPtr& m) { load_requests_.onCmdVel(body, m); }};
   // One body keeps the single-body names; several get theirs under their name.
   const bool several = model_.bodyCount() > 1;
   const bool all_topics = static_cast<double>(model_.bodyCount()) <= settings_.per_body_topics;
@@ -136,9 +138,9 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   publisher_.emplace(nh_, pnh_, settings_, use_sim_time_);
   contacts_pub_ = CountedPublisher::advertise<Contacts>(pnh_, "contacts", 10);
   contact_markers_pub_ = CountedPublisher::advertise<visualization_msgs::MarkerArray>(pnh_, "contact_markers", 10);
-  services_ = {pnh_.advertiseService("apply_wrench", &SimNode::applyWrench, this),
-               pnh_.advertiseService("apply_impulse", &SimNode::applyImpulse, this),
-               pnh_.advertiseService("clear_wrenches", &SimNode::clearWrenches, this),
+  services_ = {pnh_.advertiseService("apply_wrench", &LoadRequests::applyWrench, &load_requests_),
+               pnh_.advertiseService("apply_impulse", &LoadRequests::applyImpulse, &load_requests_),
+               pnh_.advertiseService("clear_wrenches", &LoadRequests::clearWrenches, &load_requests_),
                pnh_.advertiseService("get_state", &SimNode::getState, this),
                pnh_.advertiseService("set_state", &SimNode::setState, this),
                pnh_.advertiseService("reset", &SimNode::reset, this),

@@ -5,47 +5,15 @@
 
 #include <gtest/gtest.h>
 
-#include "../test_util.h"
+#include "node_parts.h"
 
 namespace rigid_body_sim::node {
 namespace {
 
+using test::PartsWorld;
 using test::Quat;
 using test::Vec3;
-
-constexpr double kPi = 3.14159265358979323846;
-
-/// Bodies named `names`, root link "base", body i at x = i turned i quarter turns about z.
-struct World {
-  explicit World(const std::vector<std::string>& names) : sim(model(names), core::State{}), ports(closer) {
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      core::LinkState link;
-      link.p_WL = Vec3(static_cast<double>(i), 0, 0);
-      link.q_WL = Quat(Eigen::AngleAxisd(static_cast<double>(i) * kPi / 2, Vec3::UnitZ()));
-      sim.state.bodies.push_back(core::bodyStateFromLink(sim.model.body(i), link));
-      BodyPorts p;
-      p.prefix = names.size() > 1 ? names[i] + "/" : "";
-      p.frame = p.prefix + "base";
-      ports.add(std::move(p), sim.model.body(i), sim.state.bodies[i], 0.0);
-    }
-  }
-  static core::Model model(const std::vector<std::string>& names) {
-    core::ModelSpec spec = test::spec(test::boxBody(Vec3(0.1, 0.1, 0.1)), 1e-3, Vec3(0, 0, -9.81));
-    spec.bodies.clear();
-    for (const std::string& name : names) {
-      core::BodySpec b = test::boxBody(Vec3(0.1, 0.1, 0.1));
-      b.name = name;
-      b.link = "base";
-      spec.bodies.push_back(b);
-    }
-    return core::Model(spec);
-  }
-  core::Simulation sim;
-  ros::CallbackQueue closer;
-  PortRegistry ports;
-  std::string world_frame = "map";
-  Addressing address{sim, ports, world_frame};
-};
+using World = PartsWorld;
 
 TEST(Addressing, ABodyIsFoundByNameAndAnEmptyNameOnlyWhenItIsTheOnlyOne) {
   World two({"a", "b"});

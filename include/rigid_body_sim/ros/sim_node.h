@@ -38,6 +38,7 @@
 #include "rigid_body_sim/ros/addressing.h"
 #include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
+#include "rigid_body_sim/ros/load_requests.h"
 #include "rigid_body_sim/ros/pacer.h"
 #include "rigid_body_sim/ros/params.h"
 #include "rigid_body_sim/ros/sim_clock.h"
@@ -75,16 +76,12 @@ class SimNode {
   void resendMarkersIfDue();
 
   // Requests. Each validates first: a refused request changes nothing.
-  bool applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res);
-  bool applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& res);
-  bool clearWrenches(ClearWrenches::Request& req, ClearWrenches::Response& res);
   bool getState(GetState::Request& req, GetState::Response& res);
   bool setState(SetState::Request& req, SetState::Response& res);
   bool reset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool pause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool unpause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool step(Step::Request& req, Step::Response& res);
-  void onWrench(const std::string& body, const geometry_msgs::WrenchStamped::ConstPtr& msg);
 
   // World editing (spawn_requests.cpp, world_requests.cpp). ~spawn_body
   // runs on its own thread: it reads and checks the request and builds the
@@ -132,8 +129,9 @@ class SimNode {
   /// delete and a reset go through it (body_ports.h).
   PortRegistry ports_{spawn_queue_};
   Addressing address_{sim_, ports_, params_.node.world_frame};  ///< what a request names
+  /// apply_wrench, apply_impulse, clear_wrenches, ~wrench, cmd_vel.
+  LoadRequests load_requests_{sim_, ports_, address_, params_.node, clock_, steps_};
   PortContext port_context_;  ///< what opening a body's ports needs of the node (read only once made)
-  void onCmdVel(const std::string& body, const geometry_msgs::Twist::ConstPtr& msg);
   // Contacts (contacts.cpp).
   void publishContacts();  ///< ~contacts and ~contact_markers, while someone subscribes
   CountedPublisher contacts_pub_, contact_markers_pub_;
