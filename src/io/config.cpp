@@ -211,6 +211,28 @@ SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir) {
   }
 }
 
+SimConfig parseConfigWithBodies(const YAML::Node& root, std::size_t count,
+                                const std::function<YAML::Node(std::size_t)>& entry, const std::string& base_dir) {
+  if (root["bodies"]) fail("bodies", "given twice: in the tree and apart");
+  BodyList bodies(base_dir);
+  StreamedBodies streamed;
+  for (std::size_t i = 0; i < count && !streamed.refused; ++i) {
+    try {
+      bodies.add(entry(i), i);
+    } catch (...) {  // refused after the keys parseTree checks first, as for the tree
+      streamed.refused = std::current_exception();
+    }
+  }
+  streamed.bodies = bodies.take();
+  YAML::Node tree = YAML::Clone(root);
+  tree["bodies"] = YAML::Node(YAML::NodeType::Sequence);  // the stand-in: the list is streamed
+  try {
+    return parseTree(tree, base_dir, &streamed);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(std::string("config: ") + e.what());
+  }
+}
+
 std::string bodyNameProblem(const std::string& name) {
   if (name.empty()) return "name is empty: give the body a name";
   const bool letters = std::all_of(name.begin(), name.end(),

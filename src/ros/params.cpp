@@ -189,12 +189,30 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
     n.config_file = static_cast<std::string>(all["config_file"]);
   }
   // Everything else is a simulation key: the same parser as rbsim's config.
+  // A `bodies` list goes over an entry at a time, each let go once read: as
+  // one YAML tree it held 7.5 KB a body (bench/HISTORY.md).
   YAML::Node sim(YAML::NodeType::Map);
+  XmlRpc::XmlRpcValue* bodies = nullptr;
   for (auto it = all.begin(); it != all.end(); ++it) {
-    // ~physics: the dynamic_reconfigure server's own
-    if (!findNodeParamKey(it->first) && it->first != "physics") sim[it->first] = toYaml(it->second);
+    if (findNodeParamKey(it->first) || it->first == "physics") continue;  // ~physics: dynamic_reconfigure's own
+    if (it->first == "bodies" && it->second.getType() == XmlRpc::XmlRpcValue::TypeArray) {
+      bodies = &it->second;
+      continue;
+    }
+    sim[it->first] = toYaml(it->second);
   }
-  p.sim = io::parseConfig(sim, std::filesystem::path(n.config_file).parent_path().string());
+  const std::string base_dir = std::filesystem::path(n.config_file).parent_path().string();
+  if (bodies) {
+    const auto entry = [bodies](std::size_t i) {
+      XmlRpc::XmlRpcValue& v = (*bodies)[static_cast<int>(i)];
+      YAML::Node yaml = toYaml(v);
+      v = XmlRpc::XmlRpcValue();  // read: let it go
+      return yaml;
+    };
+    p.sim = io::parseConfigWithBodies(sim, static_cast<std::size_t>(bodies->size()), entry, base_dir);
+  } else {
+    p.sim = io::parseConfig(sim, base_dir);
+  }
   p.sim_yaml = sim;
   return p;
 }

@@ -124,7 +124,10 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
            settings_.body_states_twist_in_world ? "the world's" : "each body's");
   YAML::Emitter sim;
   sim << YAML::Flow << params_.sim_yaml;
-  ROS_INFO("sim_node: simulation keys given: %s (others at config/default.yaml's defaults)", sim.c_str());
+  const std::string listed =
+      params_.sim.bodies_listed ? ", and a bodies list of " + std::to_string(params_.sim.bodies.size()) : "";
+  ROS_INFO("sim_node: simulation keys given: %s%s (others at config/default.yaml's defaults)", sim.c_str(),
+           listed.c_str());
 
   // Latched markers, sent again to late subscribers once they have seen tf
   // for a while (resendMarkersIfDue).

@@ -413,6 +413,52 @@ TEST(Config, BadBodiesAreRefusedByKey) {
                 {"'initial'", "bodies[i].initial"});
 }
 
+// The node hands its bodies list over an entry at a time
+// (parseConfigWithBodies): the same bodies and the same refusals as the
+// list in the tree, each entry asked for once, in order, and none after
+// the first refused.
+TEST(Config, ABodiesListGivenApartIsTheListInTheTree) {
+  const std::vector<std::string> entries = {"{name: a, urdf: /a.urdf, initial: {position: [1, 2, 3]}}",
+                                            "{name: b, urdf: b.urdf, contact: {friction: 0.25}}"};
+  const YAML::Node root = YAML::Load("dt: 0.002");
+  std::vector<std::size_t> asked;
+  const auto entry = [&](std::size_t i) {
+    asked.push_back(i);
+    return YAML::Load(entries[i]);
+  };
+  const io::SimConfig apart = io::parseConfigWithBodies(root, entries.size(), entry, "/base");
+  const io::SimConfig tree =
+      io::parseConfig(YAML::Load("dt: 0.002\nbodies: [" + entries[0] + ", " + entries[1] + "]"), "/base");
+  EXPECT_EQ(asked, (std::vector<std::size_t>{0, 1}));
+  EXPECT_FALSE(root["bodies"]);  // unchanged
+  EXPECT_TRUE(apart.bodies_listed);
+  EXPECT_EQ(apart.model.dt, 0.002);
+  ASSERT_EQ(apart.bodies.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(apart.bodies[i].name, tree.bodies[i].name);
+    EXPECT_EQ(apart.bodies[i].urdf, tree.bodies[i].urdf);
+    EXPECT_EQ(apart.bodies[i].initial.p_WL, tree.bodies[i].initial.p_WL);
+    EXPECT_EQ(apart.bodies[i].friction, tree.bodies[i].friction);
+  }
+  EXPECT_EQ(apart.bodies[0].initial.p_WL, Vec3(1, 2, 3));
+  EXPECT_EQ(apart.bodies[1].urdf, "/base/b.urdf");
+  EXPECT_TRUE(io::parseConfigWithBodies(root, 0, entry, "").bodies_listed);  // bodies: []
+
+  // The first refusal, by key, and nothing asked after it.
+  asked.clear();
+  const auto twice = [&](std::size_t i) {
+    asked.push_back(i);
+    return YAML::Load("{name: a, urdf: x.urdf}");
+  };
+  expectThrowsWith<io::ConfigError>([&] { io::parseConfigWithBodies(root, 5, twice, ""); },
+                                    {"'bodies[1].name'", "already"});
+  EXPECT_EQ(asked, (std::vector<std::size_t>{0, 1}));
+  // A key of the tree is checked first, as in a file.
+  expectThrowsWith<io::ConfigError>(
+      [&] { io::parseConfigWithBodies(YAML::Load("initial: {position: [0, 0, 1]}"), 2, twice, ""); },
+      {"'initial'", "bodies[i].initial"});
+}
+
 TEST(Config, ModelValidationNamesTheField) {
   const io::SimConfig c = parse("dt: -0.001\nscene: []");
   expectThrowsWith<std::invalid_argument>([&] { io::buildModel(c, shippedBox()); },

@@ -5,6 +5,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -76,6 +77,14 @@ std::string bodyNameProblem(const std::string& name);
 inline constexpr std::size_t kMaxBodyNameLength = 64;
 
 SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir = "");
+
+/// parseConfig of `root` with a `bodies` list of `count` entries given apart,
+/// `entry(i)` called once for each in order: the node converts each from
+/// the parameter server's reply and lets it go, never holding the list as
+/// one YAML tree (about 7 KB an entry). `root` itself has no `bodies` key
+/// and is not changed. ConfigError as parseConfig.
+SimConfig parseConfigWithBodies(const YAML::Node& root, std::size_t count,
+                                const std::function<YAML::Node(std::size_t)>& entry, const std::string& base_dir = "");
 
 /// A config from its YAML text, as parseConfig(loadYamlText(yaml, source))
 /// with each of `overrides` (KEY=VALUE, applyOverride) applied, but the

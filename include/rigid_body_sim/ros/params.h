@@ -49,7 +49,7 @@ struct NodeSettings {
 struct NodeParams {
   NodeSettings node;
   io::SimConfig sim;
-  YAML::Node sim_yaml;  ///< the simulation keys as read, for the log
+  YAML::Node sim_yaml;  ///< the simulation keys as read, for the log: all but a bodies list (sim.bodies has it)
 };
 
 /// Reads every private parameter once. Keys of NodeSettings are the node's;
