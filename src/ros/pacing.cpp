@@ -1,5 +1,6 @@
 // The loop: sim time follows the wall clock × ~realtime_factor, in ticks
-// of ~rate, and the node's one clock (SimClock) is anchored to it.
+// of ~rate, and the node's one clock (SimClock) is anchored to it; and the
+// services that run it: pause, unpause and step.
 #include <sys/prctl.h>
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "request_checks.h"
 #include "rigid_body_sim/ros/interrupt.h"
 #include "rigid_body_sim/ros/sim_node.h"
 
@@ -67,6 +69,51 @@ double SimNode::rebaseClock() {
   const int64_t lead = paused_ ? 0 : clock_.anchor(steps_, static_cast<int64_t>(ros::WallTime::now().toNSec()));
   pacer_.rebase(Pacer::Clock::now() + std::chrono::nanoseconds(lead), simTime());
   return 1e-9 * static_cast<double>(lead);
+}
+
+// The services that run the loop: pause, unpause and step.
+bool SimNode::pause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+  setPaused(true);
+  showPhysics();
+  res.success = true;
+  res.message = "paused at t = " + now();
+  return true;
+}
+
+bool SimNode::unpause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+  // Do not make up for the paused time; the wall-anchored clock resumes at
+  // wall time, or, if steps taken while paused put it ahead, waits for it.
+  paused_ = false;
+  const double lead = rebaseClock();
+  showPhysics();
+  res.success = true;
+  res.message = "running from t = " + now();
+  if (lead > 0.0 && settings_.realtime_factor > 0.0) {
+    res.message += " once the wall clock reaches it, in " + std::to_string(lead) +
+                   " s (the steps taken while paused put the clock ahead; /use_sim_time has no such wait)";
+  }
+  return true;
+}
+
+bool SimNode::step(Step::Request& req, Step::Response& res) {
+  res.success = false;
+  if (!paused_) {
+    res.message = "the simulation is running: call pause first (step advances a paused simulation)";
+    return true;
+  }
+  if (req.steps < 1 || req.steps > kMaxSteps) {
+    res.message = "steps = " + std::to_string(req.steps) + ": must be within 1 ... " + std::to_string(kMaxSteps);
+    return true;
+  }
+  for (int k = 0; k < req.steps; ++k) stepOnce();
+  publisher_->clock(stamp());
+  publish();
+  res.success = true;
+  res.message = "stepped " + std::to_string(req.steps) + " steps";
+  res.time = stamp();
+  for (std::size_t i = 0; i < model_.bodyCount(); ++i)
+    res.states.push_back(state_requests_.bodyState(static_cast<int>(i), Axes{}));
+  return true;
 }
 
 void SimNode::run() {

@@ -44,6 +44,7 @@
 #include "rigid_body_sim/ros/sim_clock.h"
 #include "rigid_body_sim/ros/spawn_queue.h"
 #include "rigid_body_sim/ros/state_publisher.h"
+#include "rigid_body_sim/ros/state_requests.h"
 
 namespace rigid_body_sim::node {
 
@@ -75,10 +76,7 @@ class SimNode {
   void publish();
   void resendMarkersIfDue();
 
-  // Requests. Each validates first: a refused request changes nothing.
-  bool getState(GetState::Request& req, GetState::Response& res);
-  bool setState(SetState::Request& req, SetState::Response& res);
-  bool reset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
+  // The services that run the loop (pacing.cpp): pause, unpause, step.
   bool pause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool unpause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool step(Step::Request& req, Step::Response& res);
@@ -107,8 +105,6 @@ class SimNode {
   void showPhysics();
   void setPaused(bool paused);
 
-  /// `body`'s state for a message, its twist in `axes`.
-  BodyState bodyState(int body, const Axes& axes) const;
   /// The loop paces sim time against the wall clock from now on, and,
   /// unless paused, the wall-anchored clock is re-anchored. Returns how long
   /// (s) the loop waits for the wall clock to catch up with the node's clock.
@@ -131,6 +127,9 @@ class SimNode {
   Addressing address_{sim_, ports_, params_.node.world_frame};  ///< what a request names
   /// apply_wrench, apply_impulse, clear_wrenches, ~wrench, cmd_vel.
   LoadRequests load_requests_{sim_, ports_, address_, params_.node, clock_, steps_};
+  /// get_state, set_state, reset: each published at once, a reset re-paced.
+  StateRequests state_requests_{sim_,   ports_, address_,
+                                clock_, steps_, {[this] { publish(); }, [this] { rebaseClock(); }}};
   PortContext port_context_;  ///< what opening a body's ports needs of the node (read only once made)
   // Contacts (contacts.cpp).
   void publishContacts();  ///< ~contacts and ~contact_markers, while someone subscribes
