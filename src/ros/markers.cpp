@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 #include "rigid_body_sim/core/sdf_surface.h"
 #include "rigid_body_sim/ros/conversions.h"
-#include "rigid_body_sim/ros/sim_node.h"
 
 namespace rigid_body_sim::node {
 namespace {
@@ -175,7 +175,28 @@ MarkerArray bodyMarkers(const core::Model& model, const std::vector<std::string>
   return markers;
 }
 
-void SimNode::resendMarkersIfDue() {
+MarkerPublisher::MarkerPublisher(ros::NodeHandle& pnh, MarkerArray scene, MarkerArray bodies)
+    : scene_(std::move(scene)), bodies_(std::move(bodies)) {
+  const auto on_subscriber = [this](const ros::SingleSubscriberPublisher&) {
+    resend_ = Resend{ros::WallTime::now(), 0};
+  };
+  scene_pub_ = pnh.advertise<MarkerArray>("scene_markers", 1, on_subscriber, {}, {}, true);
+  body_pub_ = pnh.advertise<MarkerArray>("body_markers", 1, on_subscriber, {}, {}, true);
+  scene_pub_.publish(scene_);
+  body_pub_.publish(bodies_);
+}
+
+void MarkerPublisher::added(const core::BodyModel& body, const std::string& frame, std::size_t colour) {
+  appendBodyMarkers(body, frame, colour, bodies_);
+  body_pub_.publish(bodies_);  // latched: the whole set, for a subscriber who comes later
+}
+
+void MarkerPublisher::removed(const std::string& name) {
+  eraseBodyMarkers(name, bodies_);
+  body_pub_.publish(bodies_);
+}
+
+void MarkerPublisher::afterTf() {
   // rviz passes each marker through a tf2 MessageFilter. A marker stamped 0
   // that arrives before its frame's first transform is failed for good when
   // that transform is stamped more than the buffer's 10 s after 0 (always
@@ -183,13 +204,10 @@ void SimNode::resendMarkersIfDue() {
   // copy a new subscriber gets on connecting can beat tf. So the markers go
   // again once the subscriber has had tf for a second: by then rviz knows
   // every frame, and a marker for a known frame passes at once.
-  if (!markers_resend_ || ++markers_resend_->publishes < 2 ||
-      (ros::WallTime::now() - markers_resend_->connected).toSec() < 1.0) {
-    return;
-  }
-  markers_resend_.reset();
-  scene_pub_.publish(scene_markers_);
-  body_pub_.publish(body_markers_);
+  if (!resend_ || ++resend_->updates < 2 || (ros::WallTime::now() - resend_->connected).toSec() < 1.0) return;
+  resend_.reset();
+  scene_pub_.publish(scene_);
+  body_pub_.publish(bodies_);
 }
 
 }  // namespace rigid_body_sim::node

@@ -42,7 +42,7 @@ void SimNode::stepOnce() {
 }
 
 void SimNode::publish() {
-  if (publisher_->state(sim_, ports_, stamp(), simTime())) resendMarkersIfDue();
+  if (publisher_->state(sim_, ports_, stamp(), simTime())) markers_->afterTf();
 }
 
 void SimNode::reportStep() {

@@ -129,15 +129,6 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   ROS_INFO("sim_node: simulation keys given: %s%s (others at config/default.yaml's defaults)", sim.c_str(),
            listed.c_str());
 
-  // Latched markers, sent again to late subscribers once they have seen tf
-  // for a while (resendMarkersIfDue).
-  const auto on_subscriber = [this](const ros::SingleSubscriberPublisher&) {
-    markers_resend_ = MarkersResend{ros::WallTime::now(), 0};
-  };
-  scene_markers_ = sceneMarkers(model_.scene(), settings_.world_frame, settings_.scene_size);
-  body_markers_ = bodyMarkers(model_, ports_.frames(), ports_.colours());
-  scene_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, on_subscriber, {}, {}, true);
-  body_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("body_markers", 1, on_subscriber, {}, {}, true);
   publisher_.emplace(nh_, pnh_, settings_, use_sim_time_);
   contacts_pub_ = CountedPublisher::advertise<Contacts>(pnh_, "contacts", 10);
   contact_markers_pub_ = CountedPublisher::advertise<visualization_msgs::MarkerArray>(pnh_, "contact_markers", 10);
@@ -157,8 +148,8 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   spawn_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &spawn_queue_);
   spawn_spinner_->start();
   startReconfigure();
-  scene_pub_.publish(scene_markers_);
-  body_pub_.publish(body_markers_);
+  markers_.emplace(pnh_, sceneMarkers(model_.scene(), settings_.world_frame, settings_.scene_size),
+                   bodyMarkers(model_, ports_.frames(), ports_.colours()));
   publisher_->fixedFrames(model_, ports_, stamp());
   publisher_->clock(stamp());
   publish();

@@ -43,15 +43,12 @@ bool SimNode::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res) {
 // (round trips to the master), and cost the loop 5-6 ms (bench/spawn_memory.sh).
 void SimNode::afterSpawn() {
   const std::size_t last = model_.bodyCount() - 1;
-  appendBodyMarkers(model_.body(last), ports_[last].frame, ports_[last].colour, body_markers_);
-  body_pub_.publish(body_markers_);  // latched: the whole set, for a subscriber who comes later
+  markers_->added(model_.body(last), ports_[last].frame, ports_[last].colour);
   publisher_->fixedFrames(model_, ports_, stamp(), last);
 }
 
 void SimNode::afterDelete(const std::string& name) {
-  // rviz forgets every body marker, then draws those left.
-  eraseBodyMarkers(name, body_markers_);
-  body_pub_.publish(body_markers_);
+  markers_->removed(name);
   publisher_->fixedFrames(model_, ports_, stamp());
 }
 

@@ -1,9 +1,12 @@
 // What rviz draws: the scene and each body's collision shapes as
-// visualization_msgs markers. Built once at start; the node latches them.
+// visualization_msgs markers, built by plain functions; MarkerPublisher
+// keeps the two latched sets and edits them body by body.
 #pragma once
 
+#include <ros/ros.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,5 +33,33 @@ void eraseBodyMarkers(const std::string& body, visualization_msgs::MarkerArray& 
 /// One body's markers, as bodyMarkers() draws body i, after those in `markers`.
 void appendBodyMarkers(const core::BodyModel& body, const std::string& frame, std::size_t colour,
                        visualization_msgs::MarkerArray& markers);
+
+/// ~scene_markers and ~body_markers, latched: each set kept whole (a later
+/// subscriber gets all of it) and sent again once a new subscriber has had
+/// tf for a while (afterTf).
+class MarkerPublisher {
+ public:
+  /// Advertises both topics on `pnh` and sends `scene` and `bodies`.
+  MarkerPublisher(ros::NodeHandle& pnh, visualization_msgs::MarkerArray scene, visualization_msgs::MarkerArray bodies);
+  MarkerPublisher(const MarkerPublisher&) = delete;  // the topics' callbacks hold `this`
+  MarkerPublisher& operator=(const MarkerPublisher&) = delete;
+
+  /// `body`, drawn in `frame` in `colour`, joins the body set, sent whole.
+  void added(const core::BodyModel& body, const std::string& frame, std::size_t colour);
+  /// The body named `name` leaves the set: rviz forgets every body marker
+  /// and draws those left.
+  void removed(const std::string& name);
+  /// Call after each tf update: sends both sets again when due.
+  void afterTf();
+
+ private:
+  ros::Publisher scene_pub_, body_pub_;
+  visualization_msgs::MarkerArray scene_, bodies_;
+  struct Resend {
+    ros::WallTime connected;  ///< when a subscriber connected
+    int updates = 0;          ///< tf updates since
+  };
+  std::optional<Resend> resend_;
+};
 
 }  // namespace rigid_body_sim::node

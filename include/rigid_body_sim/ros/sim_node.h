@@ -39,6 +39,7 @@
 #include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
 #include "rigid_body_sim/ros/load_requests.h"
+#include "rigid_body_sim/ros/markers.h"
 #include "rigid_body_sim/ros/pacer.h"
 #include "rigid_body_sim/ros/params.h"
 #include "rigid_body_sim/ros/sim_clock.h"
@@ -74,7 +75,6 @@ class SimNode {
   void reportStep();
   /// tf and odometry now (StatePublisher::state), then the markers if due.
   void publish();
-  void resendMarkersIfDue();
 
   // The services that run the loop (pacing.cpp): pause, unpause, step.
   bool pause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
@@ -148,13 +148,7 @@ class SimNode {
   Pacer pacer_;  ///< sim time against the wall clock × realtime factor; the loop's timing
 
   std::optional<StatePublisher> publisher_;  ///< tf, odometry, ~body_states, /clock, /tf_static
-  ros::Publisher scene_pub_, body_pub_;
-  visualization_msgs::MarkerArray scene_markers_, body_markers_;
-  struct MarkersResend {
-    ros::WallTime connected;  ///< when a subscriber to the markers connected
-    int publishes = 0;        ///< tf publications since
-  };
-  std::optional<MarkersResend> markers_resend_;
+  std::optional<MarkerPublisher> markers_;   ///< ~scene_markers, ~body_markers
   std::vector<ros::ServiceServer> services_;
 
   // The spawn thread: ~spawn_body on its own queue.
