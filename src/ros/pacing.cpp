@@ -143,7 +143,7 @@ void SimNode::run() {
       } while (Clock::now() < slice_end);
     }
     ros::spinOnce();
-    insertPendingBodies();
+    world_edits_.insertQueued(spawns_);
     if (rtf > 0.0 || paused_) {
       next_tick += tick;
       const auto now = Clock::now();

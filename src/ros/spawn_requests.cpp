@@ -1,8 +1,7 @@
 // ~spawn_body: read, checked and built on the spawn thread (a mesh body's
-// distance grid takes up to seconds, which the loop must not wait for), then
-// added by the loop between two steps (insertPendingBodies). A step never
-// sees the model change: the loop adds the body in place between steps
-// (core::Model::addBody). Deleting is in world_requests.cpp.
+// distance grid takes up to seconds, which the loop must not wait for), its
+// ports opened, then handed to the loop (SpawnQueue), which adds it between
+// two steps (WorldEdits::insert). Deleting is in world_edits.cpp.
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -124,79 +123,6 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
   spawn.request = req;
   res = spawns_.submit(std::move(spawn), [] { return ros::ok(); });  // the loop adds it at its next tick
   return true;
-}
-
-void SimNode::insertPendingBodies() {
-  spawns_.drain([this](SpawnQueue::Spawn& spawn) {
-    const auto start = std::chrono::steady_clock::now();
-    SpawnBody::Response res = insertBody(spawn);
-    if (settings_.report_timing) {
-      pacer_.recordSpawn(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    }
-    return res;
-  });
-}
-
-SpawnBody::Response SimNode::insertBody(SpawnQueue::Spawn& spawn) {
-  SpawnBody::Response res;
-  res.success = false;
-  const SpawnBody::Request& req = spawn.request;
-  const core::BodyModel& body = spawn.body.body();
-  // A spawned body's frames and topics are under its name; none may be taken
-  // (tf would see two parents of one frame).
-  const std::string prefix = req.name + "/";
-  std::vector<std::string> new_frames{prefix + body.link};
-  for (const core::FixedLink& link : body.fixed_links) new_frames.push_back(prefix + link.name);
-  if (spawn.ports->imu) new_frames.push_back(spawn.ports->imu_frame);  // not one of the body's (openPorts)
-  if (ports_.directory().byName(req.name)) {
-    res.message = "name '" + req.name + "' is taken by a body in the world";
-    return res;
-  }
-  for (const std::string& frame : new_frames) {
-    if (const auto owner = ports_.directory().ownerOf(frame)) {
-      res.message = "name '" + req.name + "': the new body's frame '" + frame + "' is a frame of body '" +
-                    model_.body(*owner).name + "'";
-      return res;
-    }
-  }
-  if (std::find(new_frames.begin(), new_frames.end(), settings_.world_frame) != new_frames.end()) {
-    res.message =
-        "name '" + req.name + "': the new body's frames include the world frame '" + settings_.world_frame + "'";
-    return res;
-  }
-  const auto X_WF = address_.pose(req.frame, res.message);
-  if (!X_WF) return res;
-  core::LinkState link;
-  link.p_WL = *X_WF * fromPoint(req.pose.position);
-  link.q_WL = (X_WF->rotation * fromQuaternion(req.pose.orientation).normalized()).normalized();
-  link.v_WL = X_WF->rotation * fromVector3(req.twist.linear);
-  link.w_W = X_WF->rotation * fromVector3(req.twist.angular);
-  res.message = firstProblem(
-      {checkVector(link.p_WL, kMaxPosition, "pose.position (in the world)", "m"),
-       checkSpeed(link.v_WL, model_.limits().max_linear_speed, "twist.linear", "limits.max_linear_speed", "m/s"),
-       checkSpeed(link.w_W, model_.limits().max_angular_speed, "twist.angular", "limits.max_angular_speed", "rad/s")});
-  if (!res.message.empty()) return res;
-  // Everything that may refuse runs before the world changes (the ports,
-  // opened on the spawn thread, refused an IMU on no such link).
-  try {
-    const core::BodyState start = core::bodyStateFromLink(body, link);
-    sim_.addBody(spawn.body, start);  // in place, unchanged if it throws; reset puts it back here
-    ports_.add(std::move(*spawn.ports), body, start, simTime());
-  } catch (const std::exception& e) {
-    res.message = e.what();
-    return res;
-  }
-  afterSpawn();
-  res.success = true;
-  res.message = "body '" + req.name + "' added at t = " + now() + ": frame '" + ports_[ports_.size() - 1].frame +
-                "', topics '" + nh_.resolveName(prefix + "odom") + "' and '" + pnh_.resolveName(prefix + "wrench") +
-                "'";
-  ROS_INFO("sim_node: %s", res.message.c_str());
-  if (const std::string warning = io::touchesNothing(body); !warning.empty()) {
-    ROS_WARN("sim_node: %s", warning.c_str());
-    res.message += "; warning: " + warning;
-  }
-  return res;
 }
 
 }  // namespace rigid_body_sim::node

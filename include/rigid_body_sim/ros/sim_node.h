@@ -46,6 +46,7 @@
 #include "rigid_body_sim/ros/spawn_queue.h"
 #include "rigid_body_sim/ros/state_publisher.h"
 #include "rigid_body_sim/ros/state_requests.h"
+#include "rigid_body_sim/ros/world_edits.h"
 
 namespace rigid_body_sim::node {
 
@@ -81,16 +82,11 @@ class SimNode {
   bool unpause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool step(Step::Request& req, Step::Response& res);
 
-  // World editing (spawn_requests.cpp, world_requests.cpp). ~spawn_body
-  // runs on its own thread: it reads and checks the request and builds the
-  // body (the slow part), then hands it to the loop (SpawnQueue), which adds
-  // it between two steps (insertBody) and answers.
+  // ~spawn_body (spawn_requests.cpp) runs on its own thread: it reads and
+  // checks the request, builds the body (the slow part) and opens its
+  // ports, then hands it to the loop (SpawnQueue), which adds it between
+  // two steps (WorldEdits) and answers.
   bool spawnBody(SpawnBody::Request& req, SpawnBody::Response& res);
-  bool deleteBody(DeleteBody::Request& req, DeleteBody::Response& res);
-  /// Adds the spawns built since the last tick (loop thread, between steps).
-  void insertPendingBodies();
-  /// The body of `spawn` into the model, state and topics, or why not.
-  SpawnBody::Response insertBody(SpawnQueue::Spawn& spawn);
   /// After a body was added last: its markers and fixed frames.
   void afterSpawn();
   /// After the body named `name` was deleted: the markers and fixed frames without it.
@@ -127,6 +123,10 @@ class SimNode {
   Addressing address_{sim_, ports_, params_.node.world_frame};  ///< what a request names
   /// apply_wrench, apply_impulse, clear_wrenches, ~wrench, cmd_vel.
   LoadRequests load_requests_{sim_, ports_, address_, params_.node, clock_, steps_};
+  /// Spawned bodies in, ~delete_body's out, between steps.
+  WorldEdits world_edits_{
+      sim_,   ports_, address_, params_.node,
+      clock_, steps_, pacer_,   {[this] { afterSpawn(); }, [this](const std::string& name) { afterDelete(name); }}};
   /// get_state, set_state, reset: each published at once, a reset re-paced.
   StateRequests state_requests_{sim_,   ports_, address_,
                                 clock_, steps_, {[this] { publish(); }, [this] { rebaseClock(); }}};

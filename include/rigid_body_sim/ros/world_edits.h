@@ -1,0 +1,68 @@
+// The world's edits on the loop's thread, between two steps: a spawned
+// body goes in (built and its ports opened on the spawn thread, handed over
+// by the SpawnQueue), ~delete_body takes one out. Each checks first: a
+// refused edit changes nothing. The simulation and the ports change
+// together (core::Simulation, PortRegistry); what the node shows of the
+// world (markers, fixed frames) follows through two hooks.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "rigid_body_sim/DeleteBody.h"
+#include "rigid_body_sim/SpawnBody.h"
+#include "rigid_body_sim/core/simulation.h"
+#include "rigid_body_sim/ros/addressing.h"
+#include "rigid_body_sim/ros/body_ports.h"
+#include "rigid_body_sim/ros/pacer.h"
+#include "rigid_body_sim/ros/params.h"
+#include "rigid_body_sim/ros/sim_clock.h"
+#include "rigid_body_sim/ros/spawn_queue.h"
+
+namespace rigid_body_sim::node {
+
+class WorldEdits {
+ public:
+  /// What an edit asks of the node once made: `added` after a body joined
+  /// last, `removed` after the body of that name left.
+  struct Hooks {
+    std::function<void()> added;
+    std::function<void(const std::string&)> removed;
+  };
+
+  /// Reads the node's time as `steps` taken on `clock`; records each edit's
+  /// cost in `pacer` under ~report_timing.
+  WorldEdits(core::Simulation& sim, PortRegistry& ports, const Addressing& address, const NodeSettings& settings,
+             const SimClock& clock, const long long& steps, Pacer& pacer, Hooks hooks)
+      : sim_(sim),
+        ports_(ports),
+        address_(address),
+        settings_(settings),
+        clock_(clock),
+        steps_(steps),
+        pacer_(pacer),
+        hooks_(std::move(hooks)) {}
+
+  /// Adds every spawn queued since the last call, answering each.
+  void insertQueued(SpawnQueue& queue);
+  /// The body of `spawn` into the world, its ports with it, or why not
+  /// (a taken name or frame, a pose or twist out of bounds).
+  SpawnBody::Response insert(SpawnQueue::Spawn& spawn);
+  /// ~delete_body: the body and its ports go; what rested on it wakes.
+  bool deleteBody(DeleteBody::Request& req, DeleteBody::Response& res);
+
+ private:
+  double simTime() const { return static_cast<double>(steps_) * sim_.model.dt(); }
+  std::string now() const { return formatStamp(clock_.stampAt(steps_)) + " s"; }
+
+  core::Simulation& sim_;
+  PortRegistry& ports_;
+  const Addressing& address_;
+  const NodeSettings& settings_;
+  const SimClock& clock_;
+  const long long& steps_;
+  Pacer& pacer_;
+  Hooks hooks_;
+};
+
+}  // namespace rigid_body_sim::node

@@ -1,0 +1,119 @@
+#include "rigid_body_sim/ros/world_edits.h"
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+#include "request_checks.h"
+#include "rigid_body_sim/io/world.h"
+#include "rigid_body_sim/ros/conversions.h"
+
+namespace rigid_body_sim::node {
+
+bool WorldEdits::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res) {
+  res.success = false;
+  if (req.name.empty()) {
+    res.message = "name is empty: give the name of the body to delete";
+    return true;
+  }
+  std::string why;
+  const auto found = address_.body(req.name, why);
+  if (!found) {
+    res.message = "name: " + why;
+    return true;
+  }
+  const int i = *found;
+  const auto start = std::chrono::steady_clock::now();
+  // In place, the others not copied; wakes what may touch it; its wrenches
+  // and those in its axes go.
+  const std::size_t dropped = sim_.removeBody(i);
+  ports_.erase(static_cast<std::size_t>(i));  // its topics closed off the loop
+  hooks_.removed(req.name);
+  if (settings_.report_timing) {
+    pacer_.recordDelete(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  res.success = true;
+  res.message = "body '" + req.name + "' deleted at t = " + now() + " (" + std::to_string(dropped) +
+                " timed wrenches went with it); " + std::to_string(sim_.model.bodyCount()) + " bodies left";
+  ROS_INFO("sim_node: %s", res.message.c_str());
+  return true;
+}
+
+void WorldEdits::insertQueued(SpawnQueue& queue) {
+  queue.drain([this](SpawnQueue::Spawn& spawn) {
+    const auto start = std::chrono::steady_clock::now();
+    SpawnBody::Response res = insert(spawn);
+    if (settings_.report_timing) {
+      pacer_.recordSpawn(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    return res;
+  });
+}
+
+SpawnBody::Response WorldEdits::insert(SpawnQueue::Spawn& spawn) {
+  SpawnBody::Response res;
+  res.success = false;
+  const SpawnBody::Request& req = spawn.request;
+  const core::BodyModel& body = spawn.body.body();
+  // A spawned body's frames and topics are under its name; none may be taken
+  // (tf would see two parents of one frame).
+  const std::string prefix = req.name + "/";
+  std::vector<std::string> new_frames{prefix + body.link};
+  for (const core::FixedLink& link : body.fixed_links) new_frames.push_back(prefix + link.name);
+  if (spawn.ports->imu) new_frames.push_back(spawn.ports->imu_frame);  // not one of the body's (openPorts)
+  if (ports_.directory().byName(req.name)) {
+    res.message = "name '" + req.name + "' is taken by a body in the world";
+    return res;
+  }
+  for (const std::string& frame : new_frames) {
+    if (const auto owner = ports_.directory().ownerOf(frame)) {
+      res.message = "name '" + req.name + "': the new body's frame '" + frame + "' is a frame of body '" +
+                    sim_.model.body(*owner).name + "'";
+      return res;
+    }
+  }
+  if (std::find(new_frames.begin(), new_frames.end(), settings_.world_frame) != new_frames.end()) {
+    res.message =
+        "name '" + req.name + "': the new body's frames include the world frame '" + settings_.world_frame + "'";
+    return res;
+  }
+  const auto X_WF = address_.pose(req.frame, res.message);
+  if (!X_WF) return res;
+  core::LinkState link;
+  link.p_WL = *X_WF * fromPoint(req.pose.position);
+  link.q_WL = (X_WF->rotation * fromQuaternion(req.pose.orientation).normalized()).normalized();
+  link.v_WL = X_WF->rotation * fromVector3(req.twist.linear);
+  link.w_W = X_WF->rotation * fromVector3(req.twist.angular);
+  res.message = firstProblem(
+      {checkVector(link.p_WL, kMaxPosition, "pose.position (in the world)", "m"),
+       checkSpeed(link.v_WL, sim_.model.limits().max_linear_speed, "twist.linear", "limits.max_linear_speed", "m/s"),
+       checkSpeed(link.w_W, sim_.model.limits().max_angular_speed, "twist.angular", "limits.max_angular_speed",
+                  "rad/s")});
+  if (!res.message.empty()) return res;
+  // Everything that may refuse runs before the world changes (the ports,
+  // opened on the spawn thread, refused an IMU on no such link).
+  try {
+    const core::BodyState start = core::bodyStateFromLink(body, link);
+    sim_.addBody(spawn.body, start);  // in place, unchanged if it throws; reset puts it back here
+    ports_.add(std::move(*spawn.ports), body, start, simTime());
+  } catch (const std::exception& e) {
+    res.message = e.what();
+    return res;
+  }
+  hooks_.added();
+  res.success = true;
+  const BodyPorts& added = ports_[ports_.size() - 1];
+  const auto resolved = [](const std::optional<ros::NodeHandle>& nh, const std::string& topic) {
+    return nh ? nh->resolveName(topic) : topic;
+  };
+  res.message = "body '" + req.name + "' added at t = " + now() + ": frame '" + added.frame + "', topics '" +
+                resolved(added.nh, prefix + "odom") + "' and '" + resolved(added.pnh, prefix + "wrench") + "'";
+  ROS_INFO("sim_node: %s", res.message.c_str());
+  if (const std::string warning = io::touchesNothing(body); !warning.empty()) {
+    ROS_WARN("sim_node: %s", warning.c_str());
+    res.message += "; warning: " + warning;
+  }
+  return res;
+}
+
+}  // namespace rigid_body_sim::node
