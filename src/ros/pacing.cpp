@@ -36,7 +36,7 @@ void SimNode::stepOnce() {
   if (steps_ % publish_every_ == 0) {
     publisher_->clock(stamp());
     publish();
-    publishContacts();
+    publisher_->contacts(sim_, stamp());
   }
   if (steps_ % body_states_every_ == 0) publisher_->bodyStates(sim_, ports_, stamp());
 }

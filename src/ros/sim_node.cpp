@@ -130,8 +130,6 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
            listed.c_str());
 
   publisher_.emplace(nh_, pnh_, settings_, use_sim_time_);
-  contacts_pub_ = CountedPublisher::advertise<Contacts>(pnh_, "contacts", 10);
-  contact_markers_pub_ = CountedPublisher::advertise<visualization_msgs::MarkerArray>(pnh_, "contact_markers", 10);
   services_ = {pnh_.advertiseService("apply_wrench", &LoadRequests::applyWrench, &load_requests_),
                pnh_.advertiseService("apply_impulse", &LoadRequests::applyImpulse, &load_requests_),
                pnh_.advertiseService("clear_wrenches", &LoadRequests::clearWrenches, &load_requests_),

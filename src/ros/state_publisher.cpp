@@ -69,6 +69,8 @@ StatePublisher::StatePublisher(ros::NodeHandle nh, ros::NodeHandle pnh, const No
     : settings_(settings), use_sim_time_(use_sim_time) {
   if (use_sim_time_) clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
   body_states_pub_ = CountedPublisher::advertise<BodyStates>(pnh, "body_states", 10);
+  contacts_pub_ = CountedPublisher::advertise<Contacts>(pnh, "contacts", 10);
+  contact_markers_pub_ = CountedPublisher::advertise<visualization_msgs::MarkerArray>(pnh, "contact_markers", 10);
   tf_static_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf_static", 100, true);
 }
 

@@ -1,7 +1,8 @@
 // The node's state messages (no master): ~body_states gives each twist in
 // the body's own frame or the world's axes, odometry carries the report's
-// covariances or the exact state's, and /tf_static gets each fixed link and
-// IMU frame under the body's prefix.
+// covariances or the exact state's, /tf_static gets each fixed link and
+// IMU frame under the body's prefix, and ~contacts names both sides of a
+// pair while ~contact_markers draws its forces to scale.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -114,6 +115,37 @@ TEST(StateMessages, FixedFramesHangUnderTheBodysPrefix) {
   EXPECT_EQ(frames[1].header.frame_id, p.frame);
   EXPECT_EQ(frames[1].child_frame_id, "a/imu_link");
   EXPECT_EQ(frames[1].transform.translation.x, 0.05);
+}
+
+TEST(StateMessages, ContactsNameBothSidesAndDrawEachForce) {
+  // Body a on the scene's item 0 (the ground) with 9.81 N up and 2 N of
+  // friction along x, touching at two points.
+  const core::Model model = oneBox(false);
+  core::ContactPairReport p;
+  p.body = 0;
+  p.item = 0;
+  p.points_W = {Vec3(-0.1, 0, 0), Vec3(0.1, 0, 0)};
+  p.depth = 1e-4;
+  p.normal_force_W = Vec3(0, 0, 9.81);
+  p.friction_force_W = Vec3(2, 0, 0);
+  const Contacts msg = contactsMessage(model, {p}, header("map"));
+  ASSERT_EQ(msg.pairs.size(), 1u);
+  EXPECT_EQ(msg.pairs[0].body, "a");
+  EXPECT_EQ(msg.pairs[0].other, "scene[0]");
+  EXPECT_EQ(msg.pairs[0].points.size(), 2u);
+  EXPECT_EQ(msg.pairs[0].normal_force.z, 9.81);
+  EXPECT_EQ(msg.pairs[0].depth, 1e-4);
+
+  const visualization_msgs::MarkerArray drawn = contactMarkers(msg);
+  ASSERT_EQ(drawn.markers.size(), 4u);  // clear, two arrows, the points
+  EXPECT_EQ(drawn.markers[0].action, visualization_msgs::Marker::DELETEALL);
+  const visualization_msgs::Marker& normal = drawn.markers[1];
+  EXPECT_EQ(normal.ns, "a scene[0]");
+  EXPECT_EQ(normal.points[0].x, 0.0);  // from the pair's centre
+  EXPECT_NEAR(normal.points[1].z, kContactForceScale * 9.81, 1e-15);
+  EXPECT_NEAR(drawn.markers[2].points[1].x, kContactForceScale * 2.0, 1e-15);
+  EXPECT_EQ(drawn.markers[3].points.size(), 2u);
+  EXPECT_EQ(drawn.markers[3].header.frame_id, "map");
 }
 
 }  // namespace

@@ -131,9 +131,6 @@ class SimNode {
   StateRequests state_requests_{sim_,   ports_, address_,
                                 clock_, steps_, {[this] { publish(); }, [this] { rebaseClock(); }}};
   PortContext port_context_;  ///< what opening a body's ports needs of the node (read only once made)
-  // Contacts (contacts.cpp).
-  void publishContacts();  ///< ~contacts and ~contact_markers, while someone subscribes
-  CountedPublisher contacts_pub_, contact_markers_pub_;
   /// Samples the IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();
   const double dt_ = model_.dt();  ///< for the spawn thread (no edit changes it)

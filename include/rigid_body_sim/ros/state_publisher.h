@@ -10,6 +10,7 @@
 #include <ros/ros.h>
 #include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <cstddef>
 #include <optional>
@@ -17,6 +18,8 @@
 #include <vector>
 
 #include "rigid_body_sim/BodyStates.h"
+#include "rigid_body_sim/Contacts.h"
+#include "rigid_body_sim/core/contact_report.h"
 #include "rigid_body_sim/core/odom_noise.h"
 #include "rigid_body_sim/core/simulation.h"
 #include "rigid_body_sim/ros/body_ports.h"
@@ -36,6 +39,17 @@ nav_msgs::Odometry odometryMessage(const core::OdomReport& report, const std::st
 BodyStates bodyStatesMessage(const core::Model& model, const core::State& state, const PortRegistry& ports,
                              const std_msgs::Header& header, bool in_world);
 
+/// m of arrow per N in ~contact_markers.
+inline constexpr double kContactForceScale = 0.01;
+
+/// ~contacts: each touching pair (core::contactPairs) by name, the scene's
+/// items as "scene[i]".
+Contacts contactsMessage(const core::Model& model, const std::vector<core::ContactPairReport>& pairs,
+                         const std_msgs::Header& header);
+/// ~contact_markers of `contacts`: every point, and an arrow per force from
+/// each pair's centre, kContactForceScale m per N, after a DELETEALL.
+visualization_msgs::MarkerArray contactMarkers(const Contacts& contacts);
+
 /// Appends the frames fixed to `body` (its fixed links, its IMU), under
 /// its ports' prefix, stamped `stamp`.
 void appendFixedFrames(const core::BodyModel& body, const BodyPorts& ports, const ros::Time& stamp,
@@ -43,7 +57,8 @@ void appendFixedFrames(const core::BodyModel& body, const BodyPorts& ports, cons
 
 class StatePublisher {
  public:
-  /// Advertises ~body_states, /tf_static (latched) and, on sim time, /clock.
+  /// Advertises ~body_states, ~contacts, ~contact_markers, /tf_static
+  /// (latched) and, on sim time, /clock.
   /// `settings` are read at each publish: ~physics changes some.
   StatePublisher(ros::NodeHandle nh, ros::NodeHandle pnh, const NodeSettings& settings, bool use_sim_time);
 
@@ -53,6 +68,8 @@ class StatePublisher {
   /// `t` (s). Never at the same stamp twice (tf2 would warn of repeated
   /// data) or an older one: false, and nothing sent, then.
   bool state(const core::Simulation& sim, PortRegistry& ports, const ros::Time& now, double t);
+  /// ~contacts and ~contact_markers (contacts.cpp), while someone subscribes.
+  void contacts(const core::Simulation& sim, const ros::Time& now);
   /// ~body_states, while someone subscribes.
   void bodyStates(const core::Simulation& sim, const PortRegistry& ports, const ros::Time& now);
   /// The frames fixed to bodies `first` on are added to the set on
@@ -64,7 +81,7 @@ class StatePublisher {
   const NodeSettings& settings_;
   bool use_sim_time_;
   ros::Publisher clock_pub_;
-  CountedPublisher body_states_pub_;
+  CountedPublisher body_states_pub_, contacts_pub_, contact_markers_pub_;
   tf2_ros::TransformBroadcaster tf_;
   std::vector<geometry_msgs::TransformStamped> tf_batch_;  ///< every body's transform, filled in place
   ros::Time last_published_;
