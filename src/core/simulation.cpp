@@ -23,6 +23,13 @@ std::size_t Simulation::removeBody(int i) {
   return schedule.removeBody(i);
 }
 
+void Simulation::place(int i, const BodyState& now) {
+  state.bodies.at(static_cast<std::size_t>(i)) = now;
+  state.bodies[i].asleep = false;
+  state.bodies[i].still_time = 0.0;
+  state.contact_impulses.clear();
+}
+
 void Simulation::retune(const Tuning& tuning) {
   model = model.retuned(tuning);
   workspace = workspace.forEditedModel();  // the fixed-point cache assumed the old settings

@@ -46,9 +46,8 @@ bool StateRequests::setState(SetState::Request& req, SetState::Response& res) {
   const Quat q_frame = axes.frame == core::Frame::kBody ? link.q_WL : address_.orientationOf(axes, body);
   link.v_WL = q_frame * v;
   link.w_W = q_frame * w;
-  sim_.state.bodies[body] = core::bodyStateFromLink(sim_.model.body(body), link);
-  sim_.state.contact_impulses.clear();            // nothing carries over to a new pose
-  ports_.restart(body, sim_.state.bodies[body]);  // the jump is no acceleration
+  sim_.place(body, core::bodyStateFromLink(sim_.model.body(body), link));  // no warm start carries over
+  ports_.restart(body, sim_.state.bodies[body]);                           // the jump is no acceleration
   res.success = true;
   res.message = "state set";
   hooks_.changed();

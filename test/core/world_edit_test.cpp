@@ -216,6 +216,28 @@ TEST(WorldEdit, ASimulationTakesABodyOutOfEveryTableAtOnce) {
   EXPECT_EQ(sim.schedule.size(), 0u);
 }
 
+// set_state in the node: a body put somewhere keeps no warm start (its
+// impulses belonged to contacts at the old pose) and is awake to move on.
+TEST(WorldEdit, ABodyPlacedElsewhereKeepsNoWarmStart) {
+  const core::Model model(ground({named(boxBody(kHalf), "a")}));
+  core::State s;
+  s.bodies = {at(model, 0, Vec3(0, 0, kHalf.z()))};
+  core::Simulation sim(model, s);
+  for (int n = 0; n < 20; ++n) core::step(sim.model, sim.state, {}, &sim.workspace);
+  ASSERT_FALSE(sim.state.contact_impulses.empty());  // resting on the ground, not yet asleep
+  ASSERT_GT(sim.state.bodies[0].still_time, 0.0);
+  core::BodyState there = at(model, 0, Vec3(3, 0, 1));
+  there.still_time = 0.5;  // whatever the caller's copy says: it is to move
+  sim.place(0, there);
+  EXPECT_TRUE(sim.state.contact_impulses.empty());
+  EXPECT_FALSE(sim.state.bodies[0].asleep);
+  EXPECT_EQ(sim.state.bodies[0].still_time, 0.0);
+  EXPECT_EQ(sim.state.bodies[0].p_WB, Vec3(3, 0, 1));
+  for (int n = 0; n < 1000; ++n) core::step(sim.model, sim.state, {}, &sim.workspace);
+  EXPECT_NEAR(sim.state.bodies[0].p_WB.z(), kHalf.z(), 1e-3);  // fell from there
+  EXPECT_THROW(sim.place(1, s.bodies[0]), std::out_of_range);
+}
+
 // A body the model refuses only beside the others (here the penalty
 // spring, which no builder checks: it needs the step) leaves the model as
 // it was, in place too.

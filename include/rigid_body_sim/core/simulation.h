@@ -36,6 +36,11 @@ struct Simulation {
   /// timed wrenches (WrenchSchedule::add) went with it.
   std::size_t removeBody(int i);
 
+  /// Puts body i at `now` (a user's set_state): every contact's warm start
+  /// goes, since nothing carries over to a new pose, and the body is awake
+  /// (its still time from zero) to move from there.
+  void place(int i, const BodyState& now);
+
   /// The model with `tuning`'s settings (Model::retuned, which throws and
   /// changes nothing when a check refuses them), and every body awake: what
   /// rested under the old settings must move under the new.
