@@ -26,14 +26,14 @@ bool LoadRequests::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response&
   }
   // start_time is on the node's clock (the stamps of /odom and tf): 0 or
   // the past means now, the next step; far ahead is another clock's reading.
-  double start = simTime();
-  std::string when = "from now (t = " + now() + ")";
+  double start = time_.simTime();
+  std::string when = "from now (t = " + time_.text() + ")";
   if (!req.start_time.isZero()) {
     const int64_t asked = static_cast<int64_t>(req.start_time.toNSec());
-    const double at = clock_.simTimeAt(asked), lead = at - simTime();
+    const double at = time_.clock.simTimeAt(asked), lead = at - time_.simTime();
     if (lead > kMaxLeadTime) {
       res.message = "start_time " + formatStamp(asked) + " s is " + std::to_string(lead) +
-                    " s ahead of this node's clock (now " + now() +
+                    " s ahead of this node's clock (now " + time_.text() +
                     "): is it on another clock? Stamps of odom and tf are on this one; 0 means now";
       return true;
     }
@@ -41,7 +41,7 @@ bool LoadRequests::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response&
       start = at;
       when = "from t = " + formatStamp(asked) + " s";
     } else if (lead < 0.0) {
-      when = "from now (start_time " + formatStamp(asked) + " s is past; t = " + now() + ")";
+      when = "from now (start_time " + formatStamp(asked) + " s is past; t = " + time_.text() + ")";
     }
   }
   const double end = duration > 0.0 ? start + duration : core::WrenchSchedule::kForever;
@@ -117,7 +117,7 @@ void LoadRequests::onWrench(const std::string& name, const geometry_msgs::Wrench
     return;
   }
   const double timeout = settings_.wrench_timeout > 0.0 ? settings_.wrench_timeout : core::WrenchSchedule::kForever;
-  sim_.schedule.hold(body, {force, torque, Vec3::Zero(), axes->frame}, simTime(), timeout, axes->other);
+  sim_.schedule.hold(body, {force, torque, Vec3::Zero(), axes->frame}, time_.simTime(), timeout, axes->other);
 }
 
 void LoadRequests::onCmdVel(const std::string& name, const geometry_msgs::Twist::ConstPtr& msg) {
@@ -130,7 +130,7 @@ void LoadRequests::onCmdVel(const std::string& name, const geometry_msgs::Twist:
     ROS_WARN_THROTTLE(1.0, "sim_node: cmd_vel for '%s' ignored: not finite", name.c_str());
     return;
   }
-  if (p.driver->command(v, w, simTime()) && !p.clipped) {
+  if (p.driver->command(v, w, time_.simTime()) && !p.clipped) {
     p.clipped = true;
     ROS_WARN(
         "sim_node: cmd_vel for '%s' clipped to cmd_vel.max_linear_speed %g m/s, max_angular_speed %g rad/s "

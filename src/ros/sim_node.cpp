@@ -72,7 +72,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
       params_(readParams(private_nh)),
       sim_(startOf(loadWorld(params_, nh_))),
       use_sim_time_(ros::param::param("/use_sim_time", false)),
-      clock_(model_.dt(), !use_sim_time_) {
+      time_(model_.dt(), !use_sim_time_) {
   // ROS shut down while the world loaded (rosnode kill; SIGINT ends the
   // process then, interrupt.h): nothing may be advertised or published.
   if (!ros::ok()) return;

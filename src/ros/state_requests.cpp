@@ -56,12 +56,12 @@ bool StateRequests::setState(SetState::Request& req, SetState::Response& res) {
 
 bool StateRequests::reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
   // Back to the initial state; sim time keeps increasing (tf listeners never see it go back).
-  sim_.reset(simTime());
+  sim_.reset(time_.simTime());
   ports_.restartAll(sim_.state);  // the IMUs from the initial state, the odometry drift from zero
   hooks_.restarted();
   hooks_.changed();
   res.success = true;
-  res.message = "reset to the initial state at t = " + formatStamp(clock_.stampAt(steps_)) + " s";
+  res.message = "reset to the initial state at t = " + time_.text();
   return true;
 }
 
@@ -70,7 +70,7 @@ BodyState StateRequests::bodyState(int body, const Axes& axes) const {
   const core::LinkState link = core::linkState(b, sim_.state.bodies[body]);
   BodyState msg;
   msg.body = b.name;
-  msg.stamp.fromNSec(clock_.stampAt(steps_));
+  msg.stamp.fromNSec(time_.stampNs());
   msg.pose = toPose(link.p_WL, link.q_WL);
   msg.twist_frame = address_.frameOf(axes, body);
   const Quat q = address_.orientationOf(axes, body).conjugate();

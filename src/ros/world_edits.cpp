@@ -33,7 +33,7 @@ bool WorldEdits::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res)
     pacer_.recordDelete(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   res.success = true;
-  res.message = "body '" + req.name + "' deleted at t = " + now() + " (" + std::to_string(dropped) +
+  res.message = "body '" + req.name + "' deleted at t = " + time_.text() + " (" + std::to_string(dropped) +
                 " timed wrenches went with it); " + std::to_string(sim_.model.bodyCount()) + " bodies left";
   ROS_INFO("sim_node: %s", res.message.c_str());
   return true;
@@ -95,7 +95,7 @@ SpawnBody::Response WorldEdits::insert(SpawnQueue::Spawn& spawn) {
   try {
     const core::BodyState start = core::bodyStateFromLink(body, link);
     sim_.addBody(spawn.body, start);  // in place, unchanged if it throws; reset puts it back here
-    ports_.add(std::move(*spawn.ports), body, start, simTime());
+    ports_.add(std::move(*spawn.ports), body, start, time_.simTime());
   } catch (const std::exception& e) {
     res.message = e.what();
     return res;
@@ -106,7 +106,7 @@ SpawnBody::Response WorldEdits::insert(SpawnQueue::Spawn& spawn) {
   const auto resolved = [](const std::optional<ros::NodeHandle>& nh, const std::string& topic) {
     return nh ? nh->resolveName(topic) : topic;
   };
-  res.message = "body '" + req.name + "' added at t = " + now() + ": frame '" + added.frame + "', topics '" +
+  res.message = "body '" + req.name + "' added at t = " + time_.text() + ": frame '" + added.frame + "', topics '" +
                 resolved(added.nh, prefix + "odom") + "' and '" + resolved(added.pnh, prefix + "wrench") + "'";
   ROS_INFO("sim_node: %s", res.message.c_str());
   if (const std::string warning = io::touchesNothing(body); !warning.empty()) {

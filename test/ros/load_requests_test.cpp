@@ -23,12 +23,11 @@ constexpr int64_t kAnchorNs = 1000'000'000'000;  ///< the clock reads 1000 s at 
 struct Loads : test::PartsWorld {
   Loads() : PartsWorld({"a", "b"}) {
     ros::Time::init();  // the throttled warnings read ros::Time, here the wall clock
-    clock.anchor(0, kAnchorNs);
+    time.clock.anchor(0, kAnchorNs);
   }
   NodeSettings settings;
-  SimClock clock{1e-3, true};
-  long long steps = 0;
-  LoadRequests requests{sim, ports, address, settings, clock, steps};
+  NodeTime time{1e-3, true};
+  LoadRequests requests{sim, ports, address, settings, time};
 };
 
 geometry_msgs::Vector3 vector(double x, double y, double z) {

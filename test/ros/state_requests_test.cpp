@@ -22,18 +22,16 @@ using test::Vec3;
 /// what the requests asked of the node.
 struct States : test::PartsWorld {
   States() : PartsWorld({"a", "b"}) {}
-  SimClock clock{1e-3, false};  // sim time: the stamp is steps × dt
-  long long steps = 0;
+  NodeTime time{1e-3, false};  // sim time: the stamp is steps × dt
   std::vector<std::string> asked;
-  StateRequests requests{sim,     ports,
-                         address, clock,
-                         steps,   {[this] { asked.push_back("changed"); }, [this] { asked.push_back("restarted"); }}};
+  StateRequests requests{
+      sim, ports, address, time, {[this] { asked.push_back("changed"); }, [this] { asked.push_back("restarted"); }}};
 };
 
 TEST(StateRequests, GetStateGivesTheTwistInTheAxesAskedFor) {
   States w;
   w.sim.state.bodies[0].v_WB = Vec3(1, 0, 0);
-  w.steps = 1500;
+  w.time.steps = 1500;
   GetState::Request req;
   GetState::Response res;
   req.body = "a";
@@ -90,7 +88,7 @@ TEST(StateRequests, ResetPutsTheInitialStateBackAtTheCurrentTime) {
   States w;
   w.sim.state.bodies[1].p_WB = Vec3(9, 9, 9);
   w.sim.schedule.add(1, core::Wrench{}, 0.0, 1.0);
-  w.steps = 2500;
+  w.time.steps = 2500;
   std_srvs::Trigger::Request req;
   std_srvs::Trigger::Response res;
   w.requests.reset(req, res);

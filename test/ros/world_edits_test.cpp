@@ -22,15 +22,17 @@ using test::Vec3;
 struct Edits : test::PartsWorld {
   Edits() : PartsWorld({"a", "b"}) {}
   NodeSettings settings;
-  SimClock clock{1e-3, false};
-  long long steps = 0;
+  NodeTime time{1e-3, false};
   Pacer pacer;
   std::vector<std::string> told;
   WorldEdits edits{
-      sim,     ports,
-      address, settings,
-      clock,   steps,
-      pacer,   {[this] { told.push_back("added"); }, [this](const std::string& n) { told.push_back("removed " + n); }}};
+      sim,
+      ports,
+      address,
+      settings,
+      time,
+      pacer,
+      {[this] { told.push_back("added"); }, [this](const std::string& n) { told.push_back("removed " + n); }}};
 
   /// A spawn of a box named `name` at `z` m above the origin of `frame`, as the spawn thread hands it over.
   SpawnQueue::Spawn spawn(const std::string& name, double z, const std::string& frame) {

@@ -23,11 +23,11 @@ namespace rigid_body_sim::node {
 
 class LoadRequests {
  public:
-  /// Reads the node's time as `steps` taken on `clock`; changes `sim`'s
+  /// Reads the node's time from `time`; changes `sim`'s
   /// state and schedule and the ports' drivers.
   LoadRequests(core::Simulation& sim, PortRegistry& ports, const Addressing& address, const NodeSettings& settings,
-               const SimClock& clock, const long long& steps)
-      : sim_(sim), ports_(ports), address_(address), settings_(settings), clock_(clock), steps_(steps) {}
+               const NodeTime& time)
+      : sim_(sim), ports_(ports), address_(address), settings_(settings), time_(time) {}
 
   bool applyWrench(ApplyWrench::Request& req, ApplyWrench::Response& res);
   bool applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Response& res);
@@ -39,15 +39,11 @@ class LoadRequests {
   void onCmdVel(const std::string& body, const geometry_msgs::Twist::ConstPtr& msg);
 
  private:
-  double simTime() const { return static_cast<double>(steps_) * sim_.model.dt(); }
-  std::string now() const { return formatStamp(clock_.stampAt(steps_)) + " s"; }
-
   core::Simulation& sim_;
   PortRegistry& ports_;
   const Addressing& address_;
   const NodeSettings& settings_;
-  const SimClock& clock_;
-  const long long& steps_;
+  const NodeTime& time_;
 };
 
 }  // namespace rigid_body_sim::node

@@ -50,4 +50,19 @@ class SimClock {
 /// A stamp in ns as "S.NNNNNNNNN" (seconds, exact), for messages.
 std::string formatStamp(int64_t stamp_ns);
 
+/// The node's time: the steps taken since start (sim time = steps × Δt,
+/// also across resets) and the one clock they are read on. The node owns
+/// it; the request classes read it.
+struct NodeTime {
+  NodeTime(double dt_in, bool wall_anchored) : clock(dt_in, wall_anchored), dt(dt_in) {}
+
+  SimClock clock;
+  long long steps = 0;
+  double dt;  ///< s per step
+
+  double simTime() const { return static_cast<double>(steps) * dt; }  ///< s
+  int64_t stampNs() const { return clock.stampAt(steps); }            ///< the clock's reading now
+  std::string text() const { return formatStamp(stampNs()) + " s"; }  ///< "S.NNNNNNNNN s", for messages
+};
+
 }  // namespace rigid_body_sim::node

@@ -65,11 +65,11 @@ class SimNode {
 
  private:
   // Stepping and publishing.
-  double simTime() const { return static_cast<double>(steps_) * model_.dt(); }
+  double simTime() const { return time_.simTime(); }
   /// The node's clock now (the stamp of the current state).
-  ros::Time stamp() const { return ros::Time().fromNSec(clock_.stampAt(steps_)); }
+  ros::Time stamp() const { return ros::Time().fromNSec(time_.stampNs()); }
   /// stamp() for messages: "S.NNNNNNNNN s".
-  std::string now() const { return formatStamp(clock_.stampAt(steps_)) + " s"; }
+  std::string now() const { return time_.text(); }
   void stepOnce();
   /// Says what the step reported: bodies the speed limits held (once each),
   /// bodies the guard put back (their wrenches cleared).
@@ -122,14 +122,17 @@ class SimNode {
   PortRegistry ports_{spawn_queue_};
   Addressing address_{sim_, ports_, params_.node.world_frame};  ///< what a request names
   /// apply_wrench, apply_impulse, clear_wrenches, ~wrench, cmd_vel.
-  LoadRequests load_requests_{sim_, ports_, address_, params_.node, clock_, steps_};
+  LoadRequests load_requests_{sim_, ports_, address_, params_.node, time_};
   /// Spawned bodies in, ~delete_body's out, between steps.
-  WorldEdits world_edits_{
-      sim_,   ports_, address_, params_.node,
-      clock_, steps_, pacer_,   {[this] { afterSpawn(); }, [this](const std::string& name) { afterDelete(name); }}};
+  WorldEdits world_edits_{sim_,
+                          ports_,
+                          address_,
+                          params_.node,
+                          time_,
+                          pacer_,
+                          {[this] { afterSpawn(); }, [this](const std::string& name) { afterDelete(name); }}};
   /// get_state, set_state, reset: each published at once, a reset re-paced.
-  StateRequests state_requests_{sim_,   ports_, address_,
-                                clock_, steps_, {[this] { publish(); }, [this] { rebaseClock(); }}};
+  StateRequests state_requests_{sim_, ports_, address_, time_, {[this] { publish(); }, [this] { rebaseClock(); }}};
   PortContext port_context_;  ///< what opening a body's ports needs of the node (read only once made)
   /// Samples the IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();
@@ -137,8 +140,9 @@ class SimNode {
 
   bool paused_ = false;
   bool use_sim_time_ = false;
-  long long steps_ = 0;  ///< steps since start: sim time = steps × dt, also across resets
-  SimClock clock_;       ///< what every stamp and every time a user reads or gives is on
+  NodeTime time_;                   ///< the steps since start and the one clock
+  long long& steps_ = time_.steps;  ///< sim time = steps × dt, also across resets
+  SimClock& clock_ = time_.clock;   ///< what every stamp and every time a user reads or gives is on
   long long publish_every_ = 1;
   long long body_states_every_ = 1;
 

@@ -29,10 +29,10 @@ class StateRequests {
     std::function<void()> restarted;
   };
 
-  /// Reads the node's time as `steps` taken on `clock`.
-  StateRequests(core::Simulation& sim, PortRegistry& ports, const Addressing& address, const SimClock& clock,
-                const long long& steps, Hooks hooks)
-      : sim_(sim), ports_(ports), address_(address), clock_(clock), steps_(steps), hooks_(std::move(hooks)) {}
+  /// Reads the node's time from `time`.
+  StateRequests(core::Simulation& sim, PortRegistry& ports, const Addressing& address, const NodeTime& time,
+                Hooks hooks)
+      : sim_(sim), ports_(ports), address_(address), time_(time), hooks_(std::move(hooks)) {}
 
   bool getState(GetState::Request& req, GetState::Response& res);
   bool setState(SetState::Request& req, SetState::Response& res);
@@ -43,13 +43,10 @@ class StateRequests {
   BodyState bodyState(int body, const Axes& axes) const;
 
  private:
-  double simTime() const { return static_cast<double>(steps_) * sim_.model.dt(); }
-
   core::Simulation& sim_;
   PortRegistry& ports_;
   const Addressing& address_;
-  const SimClock& clock_;
-  const long long& steps_;
+  const NodeTime& time_;
   Hooks hooks_;
 };
 

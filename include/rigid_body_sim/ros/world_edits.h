@@ -30,16 +30,15 @@ class WorldEdits {
     std::function<void(const std::string&)> removed;
   };
 
-  /// Reads the node's time as `steps` taken on `clock`; records each edit's
+  /// Reads the node's time from `time`; records each edit's
   /// cost in `pacer` under ~report_timing.
   WorldEdits(core::Simulation& sim, PortRegistry& ports, const Addressing& address, const NodeSettings& settings,
-             const SimClock& clock, const long long& steps, Pacer& pacer, Hooks hooks)
+             const NodeTime& time, Pacer& pacer, Hooks hooks)
       : sim_(sim),
         ports_(ports),
         address_(address),
         settings_(settings),
-        clock_(clock),
-        steps_(steps),
+        time_(time),
         pacer_(pacer),
         hooks_(std::move(hooks)) {}
 
@@ -52,15 +51,11 @@ class WorldEdits {
   bool deleteBody(DeleteBody::Request& req, DeleteBody::Response& res);
 
  private:
-  double simTime() const { return static_cast<double>(steps_) * sim_.model.dt(); }
-  std::string now() const { return formatStamp(clock_.stampAt(steps_)) + " s"; }
-
   core::Simulation& sim_;
   PortRegistry& ports_;
   const Addressing& address_;
   const NodeSettings& settings_;
-  const SimClock& clock_;
-  const long long& steps_;
+  const NodeTime& time_;
   Pacer& pacer_;
   Hooks hooks_;
 };
