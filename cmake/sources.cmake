@@ -1,6 +1,9 @@
 # The core's and the io layer's sources: one list, for this build and for
 # the fuzzers' own (fuzz/CMakeLists.txt, built with clang).
 set(RBS_CORE_SOURCES
+  ${RBS_SOURCE_ROOT}/src/core/articulation.cpp
+  ${RBS_SOURCE_ROOT}/src/core/articulation_dynamics.cpp
+  ${RBS_SOURCE_ROOT}/src/core/articulation_step.cpp
   ${RBS_SOURCE_ROOT}/src/core/barrier.cpp
   ${RBS_SOURCE_ROOT}/src/core/body_geometry.cpp
   ${RBS_SOURCE_ROOT}/src/core/box_pair.cpp

@@ -19,6 +19,7 @@ RBS_APT_PACKAGES=(
   zlib1g-dev
   nlohmann-json3-dev  # rbsim writes its JSON line through it
   libgtest-dev libbenchmark-dev
+  liborocos-kdl-dev  # the articulation tests' oracle (KDL), tests only
   # ROS 1 (Debian's packages): build and test
   libroscpp-dev ros-message-generation ros-message-runtime
   libgeometry-msgs-dev ros-geometry-msgs libnav-msgs-dev ros-nav-msgs libstd-srvs-dev ros-std-srvs

@@ -1,0 +1,96 @@
+// An articulation's checks and state helpers (docs/physics.md §11.1).
+#include "rigid_body_sim/core/articulation.h"
+
+#include <cmath>
+#include <string>
+
+#include "validate.h"
+
+namespace rigid_body_sim::core {
+
+namespace {
+
+bool finitePose(const Pose& X) { return X.translation.allFinite() && X.rotation.coeffs().allFinite(); }
+
+void checkJoint(const ArticulationModel& model, int i) {
+  const ArticulatedLink& link = model.links[i];
+  const std::string field = "joint '" + link.joint + "'";
+  if (link.parent < 0 || link.parent >= i) {
+    detail::fail(field + " parent", std::to_string(link.parent),
+                 "a joint's parent link must come before its child (a tree with one root)");
+  }
+  if (!finitePose(link.X_PJ) || std::abs(link.X_PJ.rotation.norm() - 1.0) > 1e-9) {
+    detail::fail(field + " origin", detail::str(link.X_PJ.translation), "must be finite with a unit rotation");
+  }
+  if (!link.axis_J.allFinite() || std::abs(link.axis_J.norm() - 1.0) > 1e-9) {
+    detail::fail(field + " axis", detail::str(link.axis_J), "must be a finite unit vector");
+  }
+  const JointLimits& lim = link.limits;
+  if (std::isnan(lim.lower) || std::isnan(lim.upper) || lim.lower > lim.upper) {
+    detail::fail(field + " limit", "[" + detail::str(lim.lower) + ", " + detail::str(lim.upper) + "]",
+                 "lower must not exceed upper");
+  }
+  if (std::isnan(lim.effort) || lim.effort < 0.0)
+    detail::fail(field + " limit effort", detail::str(lim.effort), "must be >= 0");
+  if (std::isnan(lim.velocity) || lim.velocity < 0.0) {
+    detail::fail(field + " limit velocity", detail::str(lim.velocity), "must be >= 0");
+  }
+  detail::requireNonNegative(link.damping, field + " dynamics damping", "N*m*s/rad or N*s/m");
+  detail::requireNonNegative(link.friction, field + " dynamics friction", "N*m or N");
+  const Mimic& mimic = link.mimic;
+  if (mimic.joint >= 0) {
+    if (mimic.joint == 0 || mimic.joint == i || mimic.joint >= static_cast<int>(model.links.size())) {
+      detail::fail(field + " mimic", std::to_string(mimic.joint), "must name another joint");
+    }
+    if (model.links[mimic.joint].mimic.joint >= 0) {
+      detail::fail(field + " mimic", "'" + model.links[mimic.joint].joint + "'",
+                   "follows a joint that is itself a mimic");
+    }
+    if (!std::isfinite(mimic.multiplier) || !std::isfinite(mimic.offset)) {
+      detail::fail(field + " mimic", detail::str(mimic.multiplier) + ", " + detail::str(mimic.offset),
+                   "multiplier and offset must be finite");
+    }
+  }
+}
+
+}  // namespace
+
+void checkArticulation(const ArticulationModel& model) {
+  if (model.links.empty()) detail::fail("articulation links", "0", "an articulation needs a base link");
+  if (model.links[0].parent != -1) detail::fail("link '" + model.links[0].name + "' parent", "", "the base has none");
+  for (int i = 0; i < static_cast<int>(model.links.size()); ++i) {
+    const ArticulatedLink& link = model.links[i];
+    if (i > 0) checkJoint(model, i);
+    const bool moves = i > 0 || !model.fixed_base;
+    const std::string field = "link '" + link.name + "'";
+    if (moves) {
+      detail::requirePositive(link.mass.mass, field + " mass", "kg (a moving link needs mass)");
+      validateInertia(link.mass.I_C_F, field + " inertia");
+    }
+    if (!link.mass.p_FC.allFinite())
+      detail::fail(field + " centre of mass", detail::str(link.mass.p_FC), "must be finite");
+  }
+}
+
+ArticulationState restState(const ArticulationModel& model, const Pose& X_WB) {
+  ArticulationState state;
+  state.X_WB = X_WB;
+  state.q = Eigen::VectorXd::Zero(model.jointCount());
+  state.v = Eigen::VectorXd::Zero(model.jointCount());
+  return state;
+}
+
+Eigen::VectorXd generalizedVelocity(const ArticulationModel& model, const ArticulationState& state) {
+  Eigen::VectorXd u(model.dofCount());
+  const int base = model.fixed_base ? 0 : 6;
+  if (base == 6) u.head<6>() = state.V_B;
+  u.tail(model.jointCount()) = state.v;
+  return u;
+}
+
+void setGeneralizedVelocity(const ArticulationModel& model, const Eigen::VectorXd& u, ArticulationState& state) {
+  if (!model.fixed_base) state.V_B = u.head<6>();
+  state.v = u.tail(model.jointCount());
+}
+
+}  // namespace rigid_body_sim::core
