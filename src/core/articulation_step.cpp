@@ -4,6 +4,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 
+#include "joint_rows.h"
 #include "rigid_body_sim/core/articulation_dynamics.h"
 
 namespace rigid_body_sim::core {
@@ -91,9 +92,22 @@ void stepArticulation(const ArticulationModel& model, ArticulationState& state, 
     u_next = u_new;
     if (change <= 1e-14 * (1.0 + u_next.cwiseAbs().maxCoeff())) break;
   }
+  // The joints' limits, friction and mimics (§11.6): impulses on the joints
+  // only, so the whole articulation's momentum stays as it is.
+  std::vector<detail::JointRow> rows;
+  detail::buildJointRows(model, state, u_next, h, rows);
+  if (!rows.empty()) {
+    Eigen::VectorXd impulse = Eigen::VectorXd::Zero(nv);
+    detail::solveJointRows(llt, rows, u_next, impulse);
+    rhs.tail(nj) += impulse.tail(nj);
+  }
   for (int i = 1; i <= nj; ++i) rhs(model.dofOf(i)) -= h * model.links[i].damping * u_next(model.dofOf(i));
   setGeneralizedVelocity(model, u_next, state);
   state.q += h * state.v;
+  // A joint stays within its limits: what the solve's tolerance leaves, or a
+  // joint set beyond one, is put back (the positions only).
+  for (int i = 1; i <= nj; ++i)
+    state.q(i - 1) = std::clamp(state.q(i - 1), model.links[i].limits.lower, model.links[i].limits.upper);
   if (base) {
     // The centre of mass moves by h P⁺/m exactly, as a free body's does
     // (§3): the base's new place is shifted by what the joints' and the

@@ -266,6 +266,81 @@ TEST(ArticulationStep, CommandedEffortIsClippedToTheLimit) {
   }
 }
 
+// A rod released from horizontal swings down onto a lower limit: it never
+// goes past it, and it stays there (the limit takes no energy back).
+TEST(ArticulationJoints, ALimitHoldsTheJoint) {
+  ArticulationModel model = planarChain({1.0}, {1.0}, {0.5}, {1.0 / 12.0});
+  model.links[1].limits.lower = 0.3;
+  model.links[1].limits.upper = 2.0;
+  ArticulationState state = restState(model);
+  state.q(0) = M_PI / 2.0;
+  double lowest = 10.0;
+  for (int n = 0; n < 3000; ++n) {
+    stepArticulation(model, state, {}, kGravity, 1e-3);
+    lowest = std::min(lowest, state.q(0));
+  }
+  EXPECT_GE(lowest, 0.3);
+  EXPECT_NEAR(state.q(0), 0.3, 1e-12);
+  EXPECT_NEAR(state.v(0), 0.0, 1e-9);
+  // Pushed hard into the upper limit by its effort: it stays at it.
+  ArticulationLoads loads;
+  loads.effort = Eigen::VectorXd::Constant(1, 500.0);
+  double highest = 0.0;
+  for (int n = 0; n < 2000; ++n) {
+    stepArticulation(model, state, loads, kGravity, 1e-3);
+    highest = std::max(highest, state.q(0));
+  }
+  EXPECT_LE(highest, 2.0);
+  EXPECT_NEAR(state.q(0), 2.0, 1e-12);
+}
+
+// Coulomb joint friction F on a joint about the vertical: an effort below F
+// leaves it still, exactly; above, it turns at (τ − F)/I.
+TEST(ArticulationJoints, FrictionHoldsBelowItsTorqueAndSlipsAbove) {
+  ArticulationModel model = planarChain({2.0}, {1.0}, {0.0}, {0.5});
+  model.links[1].axis_J = Vec3::UnitZ();
+  model.links[1].mass.I_C_F = Vec3(0.3, 0.3, 0.5).asDiagonal();
+  model.links[1].friction = 2.0;
+  for (const double effort : {1.5, -1.99, 3.0, -5.0}) {
+    ArticulationState state = restState(model);
+    ArticulationLoads loads;
+    loads.effort = Eigen::VectorXd::Constant(1, effort);
+    for (int n = 0; n < 1000; ++n) stepArticulation(model, state, loads, kGravity, 1e-3);
+    const double slip = std::abs(effort) > 2.0 ? (effort - std::copysign(2.0, effort)) / 0.5 : 0.0;
+    EXPECT_NEAR(state.v(0), slip * 1.0, 1e-9) << "effort " << effort;
+    if (slip == 0.0) {
+      EXPECT_NEAR(state.q(0), 0.0, 1e-15);
+    }
+  }
+  // A pendulum at 0.2 rad held by friction above its gravity torque m g l sin θ.
+  ArticulationModel pendulum = planarChain({1.0}, {1.0}, {0.5}, {1.0 / 12.0});
+  pendulum.links[1].friction = 1.0 * 9.81 * 0.5 * std::sin(0.2) * 1.01;
+  ArticulationState held = restState(pendulum);
+  held.q(0) = 0.2;
+  for (int n = 0; n < 1000; ++n) stepArticulation(pendulum, held, {}, kGravity, 1e-3);
+  EXPECT_NEAR(held.q(0), 0.2, 1e-15);
+  pendulum.links[1].friction *= 0.9;  // now too weak: it slips
+  for (int n = 0; n < 100; ++n) stepArticulation(pendulum, held, {}, kGravity, 1e-3);
+  EXPECT_LT(held.q(0), 0.2);
+}
+
+// A double pendulum whose second joint mimics the first (q₂ = −0.5 q₁ + 0.1):
+// the ratio holds within 1e-6 over a 5 s swing.
+TEST(ArticulationJoints, MimicJointsKeepTheirRatio) {
+  ArticulationModel model = planarChain({1.0, 0.5}, {1.0, 0.6}, {0.5, 0.3}, {1.0 / 12.0, 0.015});
+  model.links[2].mimic = {1, -0.5, 0.1};
+  checkArticulation(model);
+  ArticulationState state = restState(model);
+  state.q << 1.2, -0.5;
+  double worst = 0.0;
+  for (int n = 0; n < 5000; ++n) {
+    stepArticulation(model, state, {}, kGravity, 1e-3);
+    if (n > 0) worst = std::max(worst, std::abs(state.q(1) - (-0.5 * state.q(0) + 0.1)));
+  }
+  EXPECT_LT(worst, 1e-6);
+  EXPECT_GT(std::abs(state.q(0) - 1.2), 0.1);  // it did swing
+}
+
 TEST(ArticulationModel, RefusesWhatCannotBeSimulatedNamingIt) {
   std::mt19937 rng(5);
   const ArticulationModel good = randomTree(rng, 3, false, true);

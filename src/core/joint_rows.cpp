@@ -1,0 +1,96 @@
+// An articulation's joint constraints: docs/physics.md §11.6.
+#include "joint_rows.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rigid_body_sim::core::detail {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double rowVelocity(const JointRow& row, const Eigen::VectorXd& u) {
+  double w = row.sign * u(row.dof);
+  if (row.other >= 0) w += row.coefficient * u(row.other);
+  return w;
+}
+
+JointRow makeRow(int dof, double sign, double target, double lower, double upper) {
+  JointRow row;
+  row.dof = dof;
+  row.sign = sign;
+  row.target = target;
+  row.lower = lower;
+  row.upper = upper;
+  return row;
+}
+
+}  // namespace
+
+void buildJointRows(const ArticulationModel& model, const ArticulationState& state, const Eigen::VectorXd& u_free,
+                    double h, std::vector<JointRow>& rows) {
+  rows.clear();
+  for (int i = 1; i <= model.jointCount(); ++i) {
+    const ArticulatedLink& link = model.links[i];
+    const int d = model.dofOf(i);
+    const double q = state.q(i - 1);
+    // A limit the joint could reach this step (speculative, as contacts
+    // are): its velocity may close the gap, no more. A joint already past
+    // it (set there) may not go further; the positions are put back after.
+    const double reach = h * std::abs(u_free(d));
+    if (std::isfinite(link.limits.upper) && link.limits.upper - q <= reach) {
+      rows.push_back(makeRow(d, -1.0, -std::max(link.limits.upper - q, 0.0) / h, 0.0, kInfinity));
+    }
+    if (std::isfinite(link.limits.lower) && q - link.limits.lower <= reach) {
+      rows.push_back(makeRow(d, 1.0, std::min(link.limits.lower - q, 0.0) / h, 0.0, kInfinity));
+    }
+    // Coulomb friction: holds the joint while it can, at most friction · h.
+    if (link.friction > 0.0) rows.push_back(makeRow(d, 1.0, 0.0, -link.friction * h, link.friction * h));
+    // A mimic joint: q = m q_k + offset, its error of this step taken out
+    // by the velocity over it.
+    if (link.mimic.joint > 0) {
+      const Mimic& mimic = link.mimic;
+      const double error = q - mimic.multiplier * state.q(mimic.joint - 1) - mimic.offset;
+      JointRow row = makeRow(d, 1.0, -error / h, -kInfinity, kInfinity);
+      row.other = model.dofOf(mimic.joint);
+      row.coefficient = -mimic.multiplier;
+      rows.push_back(row);
+    }
+  }
+}
+
+void solveJointRows(const Eigen::LLT<Eigen::MatrixXd>& A, std::vector<JointRow>& rows, Eigen::VectorXd& u,
+                    Eigen::VectorXd& impulse) {
+  const int nv = static_cast<int>(u.size());
+  for (JointRow& row : rows) {
+    Eigen::VectorXd J = Eigen::VectorXd::Zero(nv);
+    J(row.dof) = row.sign;
+    if (row.other >= 0) J(row.other) += row.coefficient;
+    row.response = A.solve(J);
+    row.mass = 1.0 / J.dot(row.response);
+    row.impulse = 0.0;
+  }
+  // Sweeps until no row changes a velocity by more than 1e-12 (rad/s or
+  // m/s, relative to the fastest joint), at most 200.
+  const double tolerance = 1e-12 * std::max(1.0, u.cwiseAbs().maxCoeff());
+  for (int sweep = 0; sweep < 200 && !rows.empty(); ++sweep) {
+    double largest = 0.0;
+    for (JointRow& row : rows) {
+      const double next = std::clamp(row.impulse + row.mass * (row.target - rowVelocity(row, u)), row.lower, row.upper);
+      const double change = next - row.impulse;
+      if (change == 0.0) continue;
+      row.impulse = next;
+      u += change * row.response;
+      largest = std::max(largest, std::abs(change) / row.mass);
+    }
+    if (largest <= tolerance) break;
+  }
+  for (const JointRow& row : rows) {
+    impulse(row.dof) += row.sign * row.impulse;
+    if (row.other >= 0) impulse(row.other) += row.coefficient * row.impulse;
+  }
+}
+
+}  // namespace rigid_body_sim::core::detail
