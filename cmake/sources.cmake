@@ -44,12 +44,14 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/wrench_schedule.cpp
 )
 set(RBS_IO_SOURCES
+  ${RBS_SOURCE_ROOT}/src/io/articulation_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/config.cpp
   ${RBS_SOURCE_ROOT}/src/io/input_bounds.cpp
   ${RBS_SOURCE_ROOT}/src/io/mesh_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/scene_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/device_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_loader.cpp
+  ${RBS_SOURCE_ROOT}/src/io/urdf_lumper.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_parse.cpp
   ${RBS_SOURCE_ROOT}/src/io/world.cpp
   ${RBS_SOURCE_ROOT}/src/io/yaml_fields.cpp

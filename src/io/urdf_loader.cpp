@@ -13,205 +13,21 @@
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/orientation.h"
+#include "urdf_lumper.h"
 #include "urdf_parse.h"
 
 namespace rigid_body_sim::io {
-namespace {
 
-using core::Mat3;
-using core::Quat;
-using core::Vec3;
-
-using core::Pose;
-
-Pose toPose(const urdf::Pose& u) {
-  return {quaternionFromXyzw(u.rotation.x, u.rotation.y, u.rotation.z, u.rotation.w).normalized(),
-          Vec3(u.position.x, u.position.y, u.position.z)};
-}
-
-const char* jointTypeName(int type) {
-  switch (type) {
-    case urdf::Joint::REVOLUTE:
-      return "revolute";
-    case urdf::Joint::CONTINUOUS:
-      return "continuous";
-    case urdf::Joint::PRISMATIC:
-      return "prismatic";
-    case urdf::Joint::FLOATING:
-      return "floating";
-    case urdf::Joint::PLANAR:
-      return "planar";
-    case urdf::Joint::FIXED:
-      return "fixed";
-    default:
-      return "unknown";
-  }
-}
-
-class Lumper {
- public:
-  Lumper(std::string source, std::string base_dir) : source_(std::move(source)), base_dir_(std::move(base_dir)) {}
-
-  /// Which collisions are capsules (read as cylinders by urdfdom).
-  void setCapsules(detail::CapsuleSet capsules) { capsules_ = std::move(capsules); }
-
-  [[noreturn]] void fail(const std::string& what) const { throw UrdfError(source_ + ": " + what); }
-
-  /// Mass properties of `link` in L, given the pose of the link in L.
-  core::MassProperties part(const urdf::Link& link, const Pose& X_LK) const {
-    const std::string where = "link '" + link.name + "'";
-    if (!link.inertial) {
-      fail(where +
-           " has no <inertial>: every link of the body needs a mass and an inertia "
-           "(a massless frame can say <mass value=\"0\"/> with zero inertia)");
-    }
-    const urdf::Inertial& in = *link.inertial;
-    if (!std::isfinite(in.mass) || in.mass < 0.0) {
-      std::ostringstream value;
-      value << in.mass;
-      fail(where + ": <mass value> = " + value.str() + ": must be finite and >= 0 kg");
-    }
-    Mat3 I;
-    I << in.ixx, in.ixy, in.ixz,  //
-        in.ixy, in.iyy, in.iyz,   //
-        in.ixz, in.iyz, in.izz;
-    try {
-      core::validateInertia(I, "<inertia>", /*allow_zero=*/true);
-    } catch (const std::invalid_argument& e) {
-      fail(where + ": " + e.what());
-    }
-    if (in.mass == 0.0 && !I.isZero(0.0)) fail(where + ": mass is 0 kg but <inertia> is not zero");
-    // <inertial><origin> places the centre of mass and the inertia axes.
-    const Pose X_LI = X_LK * toPose(in.origin);
-    const Mat3 R = X_LI.rotation.toRotationMatrix();
-    return {in.mass, X_LI.translation, R * I * R.transpose()};
-  }
-
-  /// The link's <collision> elements as shapes posed in L.
-  void collisions(const urdf::Link& link, const Pose& X_LK, std::vector<core::CollisionShape>& out) const {
-    for (std::size_t i = 0; i < link.collision_array.size(); ++i) {
-      const urdf::Collision& col = *link.collision_array[i];
-      const std::string where = "link '" + link.name + "' <collision> " + std::to_string(i);
-      if (!col.geometry) fail(where + " has no <geometry>");
-      core::CollisionShape shape;
-      shape.X_LS = X_LK * toPose(col.origin);
-      shape.name = where;
-      auto positive = [&](double x, const std::string& field) {
-        if (!std::isfinite(x) || !(x > 0.0)) {
-          std::ostringstream value;
-          value << x;
-          fail(where + ": " + field + " = " + value.str() + ": must be finite and > 0 m");
-        }
-      };
-      switch (col.geometry->type) {
-        case urdf::Geometry::BOX: {
-          const auto& box = static_cast<const urdf::Box&>(*col.geometry);
-          shape.kind = core::CollisionShape::Kind::kBox;
-          shape.size = Vec3(box.dim.x, box.dim.y, box.dim.z);
-          positive(box.dim.x, "box size x");
-          positive(box.dim.y, "box size y");
-          positive(box.dim.z, "box size z");
-          break;
-        }
-        case urdf::Geometry::SPHERE: {
-          const auto& sphere = static_cast<const urdf::Sphere&>(*col.geometry);
-          shape.kind = core::CollisionShape::Kind::kSphere;
-          shape.radius = sphere.radius;
-          positive(sphere.radius, "sphere radius");
-          break;
-        }
-        case urdf::Geometry::CYLINDER: {
-          const auto& cyl = static_cast<const urdf::Cylinder&>(*col.geometry);
-          const bool capsule = capsules_.count({link.name, i}) > 0;
-          shape.kind = capsule ? core::CollisionShape::Kind::kCapsule : core::CollisionShape::Kind::kCylinder;
-          shape.radius = cyl.radius;
-          shape.length = cyl.length;
-          positive(cyl.radius, capsule ? "capsule radius" : "cylinder radius");
-          positive(cyl.length, capsule ? "capsule length" : "cylinder length");
-          break;
-        }
-        case urdf::Geometry::MESH: {
-          const auto& mesh = static_cast<const urdf::Mesh&>(*col.geometry);
-          shape.kind = core::CollisionShape::Kind::kPoints;
-          const Vec3 scale(mesh.scale.x, mesh.scale.y, mesh.scale.z);
-          if (!scale.allFinite() || (scale.array() == 0.0).any())
-            fail(where + ": mesh scale must be finite and non-zero");
-          try {
-            shape.mesh = loadMesh(resolveMeshUri(mesh.filename, base_dir_), scale);
-          } catch (const MeshError& e) {
-            fail(where + ": " + e.what());
-          }
-          shape.name += " (" + mesh.filename + ")";
-          break;
-        }
-        default:
-          fail(where + ": unsupported geometry type");
-      }
-      out.push_back(std::move(shape));
-    }
-  }
-
-  /// Adds `link` and, through fixed joints, everything below it (its
-  /// frames to `frames`), depth first in URDF order: with a stack of its
-  /// own, so a long chain of links cannot overflow the call stack.
-  void collect(const urdf::Link& root, std::vector<core::MassProperties>& parts,
-               std::vector<core::CollisionShape>& shapes, std::vector<core::FixedLink>& frames) const {
-    std::vector<std::pair<const urdf::Link*, Pose>> todo{{&root, Pose{}}};
-    while (!todo.empty()) {
-      const auto [link, X_LK] = todo.back();
-      todo.pop_back();
-      parts.push_back(part(*link, X_LK));
-      collisions(*link, X_LK, shapes);
-      const std::size_t first_child = todo.size();
-      for (const auto& joint : link->child_joints) {
-        if (joint->type != urdf::Joint::FIXED) {
-          fail(std::string("joint '") + joint->name + "' is " + jointTypeName(joint->type) +
-               ": only fixed joints are supported (articulated bodies are out of scope)");
-        }
-        const auto child = std::find_if(link->child_links.begin(), link->child_links.end(),
-                                        [&](const auto& l) { return l->name == joint->child_link_name; });
-        if (child == link->child_links.end()) fail("joint '" + joint->name + "' has no child link");
-        const Pose X_KC = toPose(joint->parent_to_joint_origin_transform);
-        todo.push_back({child->get(), X_LK * X_KC});
-        frames.push_back({(*child)->name, link->name, X_KC});
-      }
-      // Children come off the stack in URDF order.
-      std::reverse(todo.begin() + static_cast<std::ptrdiff_t>(first_child), todo.end());
-    }
-  }
-
- private:
-  std::string source_;
-  std::string base_dir_;
-  detail::CapsuleSet capsules_;
-};
-
-}  // namespace
+using detail::Lumper;
 
 core::BodySpec loadUrdfString(const std::string& xml, const std::string& source, const std::string& base_dir) {
   Lumper lumper(source, base_dir);
-  if (xml.size() > InputCaps::kUrdfBytes) {
-    lumper.fail("the URDF text is " + std::to_string(xml.size()) + " bytes, more than the " +
-                std::to_string(InputCaps::kUrdfBytes) + " a URDF may have");
-  }
-  const std::string problem = xmlProblem(xml);
-  if (!problem.empty()) lumper.fail("refused before parsing: " + problem);
-  detail::ParsedUrdf parsed;
-  try {
-    parsed = detail::parseUrdf(xml);
-  } catch (const std::invalid_argument& e) {
-    lumper.fail(e.what());
-  }
-  const urdf::ModelInterfaceSharedPtr model = std::move(parsed.model);
-  lumper.setCapsules(std::move(parsed.capsules));
+  const urdf::ModelInterfaceSharedPtr model = lumper.parse(xml);
   const urdf::LinkConstSharedPtr root = model->getRoot();
-  if (!root) lumper.fail("no root link");
 
-  std::vector<core::MassProperties> parts;
-  std::vector<core::CollisionShape> shapes;
-  std::vector<core::FixedLink> frames;
-  lumper.collect(*root, parts, shapes, frames);
-  const core::MassProperties total = core::combine(parts);
+  detail::LinkGroup group;
+  lumper.collect(*root, group, /*allow_moving=*/false);
+  const core::MassProperties total = core::combine(group.parts);
   if (!(total.mass > 0.0)) {
     lumper.fail("the body rooted at link '" + root->name + "' has a total mass of 0 kg");
   }
@@ -221,8 +37,8 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
   spec.mass = total.mass;
   spec.p_LC = total.p_FC;
   spec.I_C_L = total.I_C_F;
-  spec.collision = std::move(shapes);
-  spec.fixed_links = std::move(frames);
+  spec.collision = std::move(group.shapes);
+  spec.fixed_links = std::move(group.frames);
   return spec;
 }
 

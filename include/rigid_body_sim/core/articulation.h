@@ -9,8 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "rigid_body_sim/core/collision.h"
 #include "rigid_body_sim/core/geometry.h"
 #include "rigid_body_sim/core/inertia.h"
+#include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/spatial.h"
 
 namespace rigid_body_sim::core {
@@ -47,12 +49,15 @@ struct ArticulatedLink {
   double friction = 0.0;  ///< Coulomb, N·m or N
   Mimic mimic;
   // The link itself:
-  MassProperties mass;  ///< in the link frame
+  MassProperties mass;                    ///< in the link frame
+  std::vector<CollisionShape> collision;  ///< its <collision> elements, posed in its frame
+  std::vector<FixedLink> fixed_links;     ///< the URDF links lumped into it, in URDF order
 };
 
 /// The links in an order where every parent comes before its children; the
 /// base is link 0. Joint i is the joint of link i (i ≥ 1).
 struct ArticulationModel {
+  std::string name;         ///< the robot's name (the URDF's <robot name>)
   bool fixed_base = false;  ///< true: the base stays where the state puts it (URDF root `world`)
   std::vector<ArticulatedLink> links;
 

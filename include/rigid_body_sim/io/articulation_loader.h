@@ -1,0 +1,34 @@
+// Loads a robot (a URDF with moving joints) as an articulation through
+// urdfdom (docs/physics.md §11). Shared by rbsim and the ROS node. ROS-free.
+#pragma once
+
+#include <string>
+
+#include "rigid_body_sim/core/articulation.h"
+#include "rigid_body_sim/io/urdf_loader.h"
+
+namespace rigid_body_sim::io {
+
+/// The articulation a URDF describes.
+///
+/// Links joined by fixed joints are one link (lumped as a body's are); the
+/// revolute, continuous and prismatic joints join them, with their
+/// <origin>, <axis> (made unit length), <limit lower upper effort velocity>
+/// (a continuous joint has no position limits; a joint without <limit> no
+/// effort or velocity limit), <dynamics damping friction> and <mimic joint
+/// multiplier offset>. A root link named `world` is the world, fixed (it
+/// needs no <inertial>), as Gazebo reads it; otherwise the base floats.
+/// Links are numbered parents first, breadth first in URDF order.
+///
+/// Refused with UrdfError naming the joint or link: whatever loadUrdfString
+/// refuses about a link, a floating or planar joint, an axis of zero
+/// length, lower > upper, a mimic of an unknown joint or of another mimic,
+/// a moving link (or floating base) without mass, an inertia no body can
+/// have.
+core::ArticulationModel loadArticulationString(const std::string& xml, const std::string& source,
+                                               const std::string& base_dir = "");
+
+/// Reads and loads a URDF file as an articulation.
+core::ArticulationModel loadArticulationFile(const std::string& path);
+
+}  // namespace rigid_body_sim::io

@@ -1,0 +1,185 @@
+// Gathering a URDF's links into rigid groups: urdf_lumper.h.
+#include "urdf_lumper.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "rigid_body_sim/io/input_bounds.h"
+#include "rigid_body_sim/io/mesh_loader.h"
+#include "rigid_body_sim/io/orientation.h"
+#include "rigid_body_sim/io/urdf_loader.h"
+
+namespace rigid_body_sim::io::detail {
+
+using core::Mat3;
+using core::Pose;
+using core::Vec3;
+
+core::Pose toPose(const urdf::Pose& u) {
+  return {quaternionFromXyzw(u.rotation.x, u.rotation.y, u.rotation.z, u.rotation.w).normalized(),
+          Vec3(u.position.x, u.position.y, u.position.z)};
+}
+
+const char* jointTypeName(int type) {
+  switch (type) {
+    case urdf::Joint::REVOLUTE:
+      return "revolute";
+    case urdf::Joint::CONTINUOUS:
+      return "continuous";
+    case urdf::Joint::PRISMATIC:
+      return "prismatic";
+    case urdf::Joint::FLOATING:
+      return "floating";
+    case urdf::Joint::PLANAR:
+      return "planar";
+    case urdf::Joint::FIXED:
+      return "fixed";
+    default:
+      return "unknown";
+  }
+}
+
+void Lumper::fail(const std::string& what) const { throw UrdfError(source_ + ": " + what); }
+
+urdf::ModelInterfaceSharedPtr Lumper::parse(const std::string& xml) {
+  if (xml.size() > InputCaps::kUrdfBytes) {
+    fail("the URDF text is " + std::to_string(xml.size()) + " bytes, more than the " +
+         std::to_string(InputCaps::kUrdfBytes) + " a URDF may have");
+  }
+  const std::string problem = xmlProblem(xml);
+  if (!problem.empty()) fail("refused before parsing: " + problem);
+  ParsedUrdf parsed;
+  try {
+    parsed = parseUrdf(xml);
+  } catch (const std::invalid_argument& e) {
+    fail(e.what());
+  }
+  capsules_ = std::move(parsed.capsules);
+  if (!parsed.model->getRoot()) fail("no root link");
+  return std::move(parsed.model);
+}
+
+core::MassProperties Lumper::part(const urdf::Link& link, const Pose& X_LK) const {
+  const std::string where = "link '" + link.name + "'";
+  if (!link.inertial) {
+    fail(where +
+         " has no <inertial>: every link of the body needs a mass and an inertia "
+         "(a massless frame can say <mass value=\"0\"/> with zero inertia)");
+  }
+  const urdf::Inertial& in = *link.inertial;
+  if (!std::isfinite(in.mass) || in.mass < 0.0) {
+    std::ostringstream value;
+    value << in.mass;
+    fail(where + ": <mass value> = " + value.str() + ": must be finite and >= 0 kg");
+  }
+  Mat3 I;
+  I << in.ixx, in.ixy, in.ixz,  //
+      in.ixy, in.iyy, in.iyz,   //
+      in.ixz, in.iyz, in.izz;
+  try {
+    core::validateInertia(I, "<inertia>", /*allow_zero=*/true);
+  } catch (const std::invalid_argument& e) {
+    fail(where + ": " + e.what());
+  }
+  if (in.mass == 0.0 && !I.isZero(0.0)) fail(where + ": mass is 0 kg but <inertia> is not zero");
+  // <inertial><origin> places the centre of mass and the inertia axes.
+  const Pose X_LI = X_LK * toPose(in.origin);
+  const Mat3 R = X_LI.rotation.toRotationMatrix();
+  return {in.mass, X_LI.translation, R * I * R.transpose()};
+}
+
+void Lumper::collisions(const urdf::Link& link, const Pose& X_LK, std::vector<core::CollisionShape>& out) const {
+  for (std::size_t i = 0; i < link.collision_array.size(); ++i) {
+    const urdf::Collision& col = *link.collision_array[i];
+    const std::string where = "link '" + link.name + "' <collision> " + std::to_string(i);
+    if (!col.geometry) fail(where + " has no <geometry>");
+    core::CollisionShape shape;
+    shape.X_LS = X_LK * toPose(col.origin);
+    shape.name = where;
+    auto positive = [&](double x, const std::string& field) {
+      if (!std::isfinite(x) || !(x > 0.0)) {
+        std::ostringstream value;
+        value << x;
+        fail(where + ": " + field + " = " + value.str() + ": must be finite and > 0 m");
+      }
+    };
+    switch (col.geometry->type) {
+      case urdf::Geometry::BOX: {
+        const auto& box = static_cast<const urdf::Box&>(*col.geometry);
+        shape.kind = core::CollisionShape::Kind::kBox;
+        shape.size = Vec3(box.dim.x, box.dim.y, box.dim.z);
+        positive(box.dim.x, "box size x");
+        positive(box.dim.y, "box size y");
+        positive(box.dim.z, "box size z");
+        break;
+      }
+      case urdf::Geometry::SPHERE: {
+        const auto& sphere = static_cast<const urdf::Sphere&>(*col.geometry);
+        shape.kind = core::CollisionShape::Kind::kSphere;
+        shape.radius = sphere.radius;
+        positive(sphere.radius, "sphere radius");
+        break;
+      }
+      case urdf::Geometry::CYLINDER: {
+        const auto& cyl = static_cast<const urdf::Cylinder&>(*col.geometry);
+        const bool capsule = capsules_.count({link.name, i}) > 0;
+        shape.kind = capsule ? core::CollisionShape::Kind::kCapsule : core::CollisionShape::Kind::kCylinder;
+        shape.radius = cyl.radius;
+        shape.length = cyl.length;
+        positive(cyl.radius, capsule ? "capsule radius" : "cylinder radius");
+        positive(cyl.length, capsule ? "capsule length" : "cylinder length");
+        break;
+      }
+      case urdf::Geometry::MESH: {
+        const auto& mesh = static_cast<const urdf::Mesh&>(*col.geometry);
+        shape.kind = core::CollisionShape::Kind::kPoints;
+        const Vec3 scale(mesh.scale.x, mesh.scale.y, mesh.scale.z);
+        if (!scale.allFinite() || (scale.array() == 0.0).any())
+          fail(where + ": mesh scale must be finite and non-zero");
+        try {
+          shape.mesh = loadMesh(resolveMeshUri(mesh.filename, base_dir_), scale);
+        } catch (const MeshError& e) {
+          fail(where + ": " + e.what());
+        }
+        shape.name += " (" + mesh.filename + ")";
+        break;
+      }
+      default:
+        fail(where + ": unsupported geometry type");
+    }
+    out.push_back(std::move(shape));
+  }
+}
+
+void Lumper::collect(const urdf::Link& root, LinkGroup& group, bool allow_moving, bool massless_root) const {
+  std::vector<std::pair<const urdf::Link*, Pose>> todo{{&root, Pose{}}};
+  while (!todo.empty()) {
+    const auto [link, X_LK] = todo.back();
+    todo.pop_back();
+    if (!(massless_root && link == &root)) group.parts.push_back(part(*link, X_LK));
+    collisions(*link, X_LK, group.shapes);
+    const std::size_t first_child = todo.size();
+    for (const auto& joint : link->child_joints) {
+      const auto child = std::find_if(link->child_links.begin(), link->child_links.end(),
+                                      [&](const auto& l) { return l->name == joint->child_link_name; });
+      if (child == link->child_links.end()) fail("joint '" + joint->name + "' has no child link");
+      const Pose X_KC = toPose(joint->parent_to_joint_origin_transform);
+      if (joint->type != urdf::Joint::FIXED) {
+        if (!allow_moving) {
+          fail(std::string("joint '") + joint->name + "' is " + jointTypeName(joint->type) +
+               ": only fixed joints are supported in a body (robots with moving joints are not yet simulated by "
+               "rbsim or the node)");
+        }
+        group.moving.push_back({joint.get(), child->get(), X_LK * X_KC});
+        continue;
+      }
+      todo.push_back({child->get(), X_LK * X_KC});
+      group.frames.push_back({(*child)->name, link->name, X_KC});
+    }
+    // Children come off the stack in URDF order.
+    std::reverse(todo.begin() + static_cast<std::ptrdiff_t>(first_child), todo.end());
+  }
+}
+
+}  // namespace rigid_body_sim::io::detail
