@@ -30,16 +30,6 @@ Vec6 motionAxis(const ArticulatedLink& link) {
   return S;
 }
 
-/// The base's spatial acceleration in its axes: its own (floating) minus
-/// gravity, so that gravity acts on every link through the recursion.
-Vec6 baseAcceleration(const ArticulationModel& model, const ArticulationKinematics& kin, const Eigen::VectorXd& udot,
-                      const Vec3& g_W) {
-  Vec6 a = Vec6::Zero();
-  if (!model.fixed_base) a = udot.head<6>();
-  a.tail<3>() -= kin.X_WL[0].R_PC.transpose() * g_W;
-  return a;
-}
-
 }  // namespace
 
 ArticulationKinematics kinematics(const ArticulationModel& model, const ArticulationState& state) {
@@ -49,6 +39,8 @@ ArticulationKinematics kinematics(const ArticulationModel& model, const Articula
   kin.X_WL.resize(n);
   kin.V_L.resize(n);
   kin.S_L.resize(n);
+  kin.I_L.resize(n);
+  for (int i = 0; i < n; ++i) kin.I_L[i] = SpatialInertia::of(model.links[i].mass);
   kin.X_PL[0] = Placement::of(state.X_WB);
   kin.X_WL[0] = kin.X_PL[0];
   kin.V_L[0] = model.fixed_base ? Vec6::Zero() : state.V_B;
@@ -74,7 +66,7 @@ void setTwists(const ArticulationModel& model, const Eigen::VectorXd& u, Articul
 Eigen::VectorXd kineticEnergyGradient(const ArticulationModel& model, const ArticulationKinematics& kin) {
   const int n = static_cast<int>(model.links.size());
   std::vector<Vec6> H(n);
-  for (int i = 0; i < n; ++i) H[i] = SpatialInertia::of(model.links[i].mass) * kin.V_L[i];
+  for (int i = 0; i < n; ++i) H[i] = kin.I_L[i] * kin.V_L[i];
   Eigen::VectorXd gradient = Eigen::VectorXd::Zero(model.dofCount());
   for (int i = n - 1; i > 0; --i) {
     gradient(model.dofOf(i)) = -kin.S_L[i].dot(crossForce(kin.V_L[i], H[i]));
@@ -85,15 +77,11 @@ Eigen::VectorXd kineticEnergyGradient(const ArticulationModel& model, const Arti
 
 Eigen::MatrixXd massMatrix(const ArticulationModel& model, const ArticulationKinematics& kin) {
   const int n = static_cast<int>(model.links.size());
-  std::vector<Mat6> Ic(n);
-  for (int i = 0; i < n; ++i) Ic[i] = SpatialInertia::of(model.links[i].mass).matrix();
+  std::vector<SpatialInertia> Ic(kin.I_L);
   // Composite inertias, leaves first: I^c_p += Xᵀ I^c_i X (X: parent to child).
-  for (int i = n - 1; i > 0; --i) {
-    const Mat6 X = kin.X_PL[i].motionToChildMatrix();
-    Ic[model.links[i].parent].noalias() += X.transpose() * Ic[i] * X;
-  }
+  for (int i = n - 1; i > 0; --i) Ic[model.links[i].parent] += Ic[i].toParent(kin.X_PL[i]);
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(model.dofCount(), model.dofCount());
-  if (!model.fixed_base) M.topLeftCorner<6, 6>() = Ic[0];
+  if (!model.fixed_base) M.topLeftCorner<6, 6>() = Ic[0].matrix();
   for (int i = 1; i < n; ++i) {
     // The force that accelerates joint i's subtree at unit rate, carried
     // towards the root: its projection on each ancestor's axis is M's entry.
@@ -115,23 +103,33 @@ Eigen::MatrixXd massMatrix(const ArticulationModel& model, const ArticulationKin
   return M;
 }
 
-Eigen::VectorXd inverseDynamics(const ArticulationModel& model, const ArticulationKinematics& kin,
-                                const ArticulationState& state, const Eigen::VectorXd& udot, const Vec3& g_W,
-                                const std::vector<Vec6>& wrench_L) {
+namespace {
+
+/// Recursive Newton-Euler over the tree (§11.4): the generalized forces for
+/// the accelerations `udot` (none: zero), at the twists of `kin` or, when
+/// `moving` is false, at rest.
+Eigen::VectorXd newtonEuler(const ArticulationModel& model, const ArticulationKinematics& kin,
+                            const Eigen::VectorXd* udot, const Vec3& g_W, const std::vector<Vec6>& wrench_L,
+                            bool moving) {
   const int n = static_cast<int>(model.links.size());
   std::vector<Vec6> a(n);
   std::vector<Vec6> f(n);
+  a[0] = Vec6::Zero();
+  if (!model.fixed_base && udot != nullptr) a[0] = udot->head<6>();
+  a[0].tail<3>() -= kin.X_WL[0].R_PC.transpose() * g_W;
   for (int i = 0; i < n; ++i) {
-    if (i == 0) {
-      a[0] = baseAcceleration(model, kin, udot, g_W);
-    } else {
-      const ArticulatedLink& link = model.links[i];
-      const int d = model.dofOf(i);
-      a[i] = kin.X_PL[i].motionToChild(a[link.parent]) + kin.S_L[i] * udot(d) +
-             crossMotion(kin.V_L[i], kin.S_L[i] * state.v(i - 1));
+    const SpatialInertia& I = kin.I_L[i];
+    if (i > 0) {
+      const Placement& X = kin.X_PL[i];
+      const int parent = model.links[i].parent;
+      a[i] = X.motionToChild(a[parent]);
+      if (udot != nullptr) a[i] += kin.S_L[i] * (*udot)(model.dofOf(i));
+      // The joint's own motion seen from the moving link: Vᵢ ×ₘ Sᵢ vᵢ, with
+      // Sᵢ vᵢ = Vᵢ − X Vₚ.
+      if (moving) a[i] += crossMotion(kin.V_L[i], kin.V_L[i] - X.motionToChild(kin.V_L[parent]));
     }
-    const SpatialInertia I = SpatialInertia::of(model.links[i].mass);
-    f[i] = I * a[i] + crossForce(kin.V_L[i], I * kin.V_L[i]);
+    f[i] = I * a[i];
+    if (moving) f[i] += crossForce(kin.V_L[i], I * kin.V_L[i]);
     if (!wrench_L.empty()) f[i] -= wrench_L[i];
   }
   Eigen::VectorXd tau(model.dofCount());
@@ -143,21 +141,33 @@ Eigen::VectorXd inverseDynamics(const ArticulationModel& model, const Articulati
   return tau;
 }
 
-Eigen::VectorXd biasForces(const ArticulationModel& model, const ArticulationKinematics& kin,
-                           const ArticulationState& state, const Vec3& g_W, const std::vector<Vec6>& wrench_L) {
-  return inverseDynamics(model, kin, state, Eigen::VectorXd::Zero(model.dofCount()), g_W, wrench_L);
+}  // namespace
+
+Eigen::VectorXd inverseDynamics(const ArticulationModel& model, const ArticulationKinematics& kin,
+                                const Eigen::VectorXd& udot, const Vec3& g_W, const std::vector<Vec6>& wrench_L) {
+  return newtonEuler(model, kin, &udot, g_W, wrench_L, true);
+}
+
+Eigen::VectorXd biasForces(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
+                           const std::vector<Vec6>& wrench_L) {
+  return newtonEuler(model, kin, nullptr, g_W, wrench_L, true);
+}
+
+Eigen::VectorXd restForces(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
+                           const std::vector<Vec6>& wrench_L) {
+  return newtonEuler(model, kin, nullptr, g_W, wrench_L, false);
 }
 
 Eigen::VectorXd forwardDynamics(const ArticulationModel& model, const ArticulationState& state,
                                 const Eigen::VectorXd& tau, const Vec3& g_W) {
   const ArticulationKinematics kin = kinematics(model, state);
-  return massMatrix(model, kin).llt().solve(tau - biasForces(model, kin, state, g_W));
+  return massMatrix(model, kin).llt().solve(tau - biasForces(model, kin, g_W));
 }
 
 double kineticEnergy(const ArticulationModel& model, const ArticulationKinematics& kin) {
   double energy = 0.0;
   for (std::size_t i = 0; i < model.links.size(); ++i) {
-    energy += 0.5 * kin.V_L[i].dot(SpatialInertia::of(model.links[i].mass) * kin.V_L[i]);
+    energy += 0.5 * kin.V_L[i].dot(kin.I_L[i] * kin.V_L[i]);
   }
   return energy;
 }
@@ -190,7 +200,7 @@ Vec3 centreOfMass(const ArticulationModel& model, const ArticulationKinematics& 
 Vec6 momentum_W(const ArticulationModel& model, const ArticulationKinematics& kin) {
   Vec6 total = Vec6::Zero();
   for (std::size_t i = 0; i < model.links.size(); ++i) {
-    total += kin.X_WL[i].forceToParent(SpatialInertia::of(model.links[i].mass) * kin.V_L[i]);
+    total += kin.X_WL[i].forceToParent(kin.I_L[i] * kin.V_L[i]);
   }
   return total;
 }

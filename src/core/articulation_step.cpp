@@ -3,6 +3,7 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <limits>
 
 #include "joint_rows.h"
 #include "rigid_body_sim/core/articulation_dynamics.h"
@@ -10,6 +11,20 @@
 namespace rigid_body_sim::core {
 
 namespace {
+
+/// The symplectic corrector's fixed-point passes (§11.5): at most this
+/// many, each at least halving the change of the last, to this tolerance
+/// relative to the fastest coordinate; else the prediction stands.
+/// Where the passes stall at the solve's rounding, a change below the
+/// looser tolerance counts as converged.
+constexpr int kCorrectorPasses = 8;
+constexpr double kCorrectorContraction = 0.5;
+constexpr double kCorrectorTolerance = 1e-12;
+constexpr double kCorrectorRounding = 1e-9;
+/// After a step whose passes did not contract, this many steps go straight
+/// to the prediction (a long, light chain rarely contracts: the passes
+/// would double its step's cost for nothing).
+constexpr int kPredictOnlySteps = 3;
 
 bool samePose(const Pose& a, const Pose& b) {
   return a.translation == b.translation && a.rotation.coeffs() == b.rotation.coeffs();
@@ -22,14 +37,11 @@ bool carriedStillHolds(const ArticulationState& state) {
          samePose(c.X_WB, state.X_WB);
 }
 
-/// The generalized forces at zero velocity: gravity, the wrenches on the
-/// links and the clipped efforts.
-Eigen::VectorXd appliedForces(const ArticulationModel& model, const ArticulationState& state,
+/// The generalized forces at rest: gravity, the wrenches on the links and
+/// the efforts, each clipped to its joint's limit.
+Eigen::VectorXd appliedForces(const ArticulationModel& model, const ArticulationKinematics& kin,
                               const ArticulationLoads& loads, const Vec3& g_W) {
-  ArticulationState still = state;
-  still.v.setZero();
-  still.V_B.setZero();
-  Eigen::VectorXd force = -biasForces(model, kinematics(model, still), still, g_W, loads.wrench_L);
+  Eigen::VectorXd force = -restForces(model, kin, g_W, loads.wrench_L);
   if (loads.effort.size() > 0) {
     for (int i = 1; i <= model.jointCount(); ++i) {
       const double limit = model.links[i].limits.effort;
@@ -53,23 +65,28 @@ Pose advanceBase(const Pose& X_WB, const Vec6& V_B, double h) {
 void stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
                       const Vec3& g_W, double h) {
   ArticulationKinematics kin = kinematics(model, state);
-  Eigen::MatrixXd M = massMatrix(model, kin);
   const int nv = model.dofCount();
   const int base = model.fixed_base ? 0 : 6;
   const int nj = model.jointCount();
+  // A = M + h D: joint damping taken at the new velocity.
+  Eigen::MatrixXd A = massMatrix(model, kin);
+  const Eigen::VectorXd u = generalizedVelocity(model, state);
   // The momenta at the start: carried from the last step, or from the velocities.
   Eigen::VectorXd p_joints;
   Vec6 H_W = Vec6::Zero();
-  Eigen::VectorXd u = generalizedVelocity(model, state);
+  int predict_only = 0;
   if (carriedStillHolds(state)) {
     p_joints = state.carried.p;
     H_W = state.carried.H_W;
+    predict_only = state.carried.predict_only;
   } else {
-    const Eigen::VectorXd p = M * u;
+    const Eigen::VectorXd p = A * u;
     p_joints = p.tail(nj);
     if (base) H_W = kin.X_WL[0].forceToParent(p.head<6>());
   }
-  const Eigen::VectorXd force = appliedForces(model, state, loads, g_W);
+  for (int i = 1; i <= nj; ++i) A(model.dofOf(i), model.dofOf(i)) += h * model.links[i].damping;
+  const Eigen::LLT<Eigen::MatrixXd> llt(A);
+  const Eigen::VectorXd force = appliedForces(model, kin, loads, g_W);
   // The base: the whole articulation's momentum changes by the impulse of the
   // loads on it, exactly; its rows of M u⁺ are that, in the base's axes now.
   Eigen::VectorXd rhs(nv);
@@ -77,20 +94,46 @@ void stepArticulation(const ArticulationModel& model, ArticulationState& state, 
     H_W += h * kin.X_WL[0].forceToParent(force.head<6>());
     rhs.head<6>() = kin.X_WL[0].forceToChild(H_W);
   }
-  // Joint damping at the new velocity: (M + h D) u⁺ = p + h (τ + ∂T/∂q), so
-  // p⁺ = M u⁺ has lost h D u⁺.
-  for (int i = 1; i <= nj; ++i) M(model.dofOf(i), model.dofOf(i)) += h * model.links[i].damping;
-  const Eigen::LLT<Eigen::MatrixXd> llt(M);
   // The joints: symplectic Euler, p⁺ = p + h (τ + ∂T/∂q(q, u⁺)), implicit in
-  // u⁺ through ∂T/∂q, solved by fixed-point iteration from the last u.
-  Eigen::VectorXd u_next = u;
-  for (int pass = 0; pass < 50; ++pass) {
+  // u⁺ through ∂T/∂q. Predicted by the semi-implicit step in velocities
+  // (O(h²) from it), then corrected by fixed-point passes; where they do
+  // not contract (a fast or long, light chain), the prediction stands.
+  Eigen::VectorXd damped = force - biasForces(model, kin, Vec3::Zero());
+  for (int i = 1; i <= nj; ++i) damped(model.dofOf(i)) -= model.links[i].damping * u(model.dofOf(i));
+  const Eigen::VectorXd predicted = u + llt.solve(h * damped);
+  Eigen::VectorXd u_next = predicted;
+  double last_change = std::numeric_limits<double>::infinity();
+  bool converged = false;
+  const int passes = predict_only > 0 ? 0 : kCorrectorPasses;
+  for (int pass = 0; pass < passes && !converged; ++pass) {
     setTwists(model, u_next, kin);
     rhs.tail(nj) = p_joints + h * (force.tail(nj) + kineticEnergyGradient(model, kin).tail(nj));
-    const Eigen::VectorXd u_new = llt.solve(rhs);
-    const double change = (u_new - u_next).cwiseAbs().maxCoeff();
-    u_next = u_new;
-    if (change <= 1e-14 * (1.0 + u_next.cwiseAbs().maxCoeff())) break;
+    const Eigen::VectorXd corrected = llt.solve(rhs);
+    const double change = (corrected - u_next).cwiseAbs().maxCoeff();
+    const double scale = 1.0 + corrected.cwiseAbs().maxCoeff();
+    if (!(change <= kCorrectorContraction * last_change)) {
+      converged = last_change <= kCorrectorRounding * scale;
+      break;
+    }
+    u_next = corrected;
+    last_change = change;
+    converged = change <= kCorrectorTolerance * scale;
+  }
+  if (predict_only > 0) {
+    --predict_only;
+  } else if (!converged) {
+    predict_only = kPredictOnlySteps;
+  }
+  if (!converged) {
+    // The prediction, its base twist put right so that the base's rows
+    // still hold the whole momentum exactly (a 6 × 6 solve).
+    u_next = predicted;
+    if (base) {
+      const Eigen::VectorXd joints_part = A.bottomLeftCorner(nj, 6).transpose() * predicted.tail(nj);
+      u_next.head<6>() = A.topLeftCorner<6, 6>().llt().solve(rhs.head<6>() - joints_part);
+    }
+    const Eigen::VectorXd momentum = A * u_next;
+    rhs.tail(nj) = momentum.tail(nj);
   }
   // The joints' limits, friction and mimics (§11.6): impulses on the joints
   // only, so the whole articulation's momentum stays as it is.
@@ -106,8 +149,9 @@ void stepArticulation(const ArticulationModel& model, ArticulationState& state, 
   state.q += h * state.v;
   // A joint stays within its limits: what the solve's tolerance leaves, or a
   // joint set beyond one, is put back (the positions only).
-  for (int i = 1; i <= nj; ++i)
+  for (int i = 1; i <= nj; ++i) {
     state.q(i - 1) = std::clamp(state.q(i - 1), model.links[i].limits.lower, model.links[i].limits.upper);
+  }
   if (base) {
     // The centre of mass moves by h P⁺/m exactly, as a free body's does
     // (§3): the base's new place is shifted by what the joints' and the
@@ -124,6 +168,7 @@ void stepArticulation(const ArticulationModel& model, ArticulationState& state, 
   c.v = state.v;
   c.V_B = state.V_B;
   c.X_WB = state.X_WB;
+  c.predict_only = predict_only;
 }
 
 }  // namespace rigid_body_sim::core

@@ -94,6 +94,7 @@ struct ArticulationState {
     Eigen::VectorXd q, v;
     Pose X_WB;
     Vec6 V_B = Vec6::Zero();
+    int predict_only = 0;  ///< steps left that skip the corrector, after one where it did not contract
   } carried;
 };
 

@@ -13,10 +13,11 @@ namespace rigid_body_sim::core {
 
 /// Where every link is and how it moves, for one state (§11.2).
 struct ArticulationKinematics {
-  std::vector<Placement> X_PL;  ///< each link in its parent's frame (the base: in W)
-  std::vector<Placement> X_WL;  ///< each link in W
-  std::vector<Vec6> V_L;        ///< each link's twist in W, expressed in its own axes
-  std::vector<Vec6> S_L;        ///< each joint's motion axis in its link's axes (the base's unused)
+  std::vector<Placement> X_PL;      ///< each link in its parent's frame (the base: in W)
+  std::vector<Placement> X_WL;      ///< each link in W
+  std::vector<Vec6> V_L;            ///< each link's twist in W, expressed in its own axes
+  std::vector<Vec6> S_L;            ///< each joint's motion axis in its link's axes (the base's unused)
+  std::vector<SpatialInertia> I_L;  ///< each link's inertia about its origin, its axes
 };
 
 /// Placements, twists and joint axes for a state.
@@ -38,13 +39,17 @@ Eigen::MatrixXd massMatrix(const ArticulationModel& model, const ArticulationKin
 /// with external wrenches `wrench_L` on the links (each in its link's axes,
 /// moment about its origin; empty for none): τ = M u̇ + c(q, u) − Jᵀ F.
 Eigen::VectorXd inverseDynamics(const ArticulationModel& model, const ArticulationKinematics& kin,
-                                const ArticulationState& state, const Eigen::VectorXd& udot, const Vec3& g_W,
-                                const std::vector<Vec6>& wrench_L = {});
+                                const Eigen::VectorXd& udot, const Vec3& g_W, const std::vector<Vec6>& wrench_L = {});
 
 /// The bias forces c(q, u): Coriolis, centrifugal and gravity terms (and
 /// the external wrenches', with the opposite sign): inverse dynamics at u̇ = 0.
-Eigen::VectorXd biasForces(const ArticulationModel& model, const ArticulationKinematics& kin,
-                           const ArticulationState& state, const Vec3& g_W, const std::vector<Vec6>& wrench_L = {});
+Eigen::VectorXd biasForces(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
+                           const std::vector<Vec6>& wrench_L = {});
+
+/// The bias at rest (the twists of `kin` taken as zero): gravity's and the
+/// wrenches' generalized forces, with the sign of c.
+Eigen::VectorXd restForces(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
+                           const std::vector<Vec6>& wrench_L = {});
 
 /// Forward dynamics: u̇ = M⁻¹ (τ − c).
 Eigen::VectorXd forwardDynamics(const ArticulationModel& model, const ArticulationState& state,
