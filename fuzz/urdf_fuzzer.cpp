@@ -1,12 +1,14 @@
-// libFuzzer: any bytes as a URDF document, then the model of the body; and
-// the same bytes as a robot (the articulation loader: refused or a model
-// checkArticulation accepts; stepping it joins once the guard covers
-// articulations).
+// libFuzzer: any bytes as a URDF document, then the model of the body and
+// a few steps; and the same bytes as a robot (the articulation loader:
+// refused, or a model that a few steps leave finite, the guard undoing any
+// step that would not).
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 
 #include "fuzz_model.h"
+#include "rigid_body_sim/core/articulation_step.h"
 #include "rigid_body_sim/io/articulation_loader.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 
@@ -14,7 +16,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string xml(reinterpret_cast<const char*>(data), size);
   try {
     const rigid_body_sim::core::ArticulationModel robot = rigid_body_sim::io::loadArticulationString(xml, "fuzz.urdf");
-    if (robot.links.empty()) std::abort();  // a model always has its base
+    rigid_body_sim::core::ArticulationState state = rigid_body_sim::core::restState(robot);
+    for (int n = 0; n < 5; ++n) {
+      rigid_body_sim::core::stepArticulation(robot, state, {}, rigid_body_sim::core::Vec3(0, 0, -9.81), 1e-3);
+    }
+    if (!state.q.allFinite() || !state.v.allFinite() || !state.V_B.allFinite() || !state.X_WB.translation.allFinite()) {
+      std::abort();  // the guard must never let this through
+    }
   } catch (const rigid_body_sim::io::UrdfError&) {
   }
   rigid_body_sim::core::ModelSpec spec;

@@ -4,6 +4,8 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "joint_rows.h"
 #include "rigid_body_sim/core/articulation_dynamics.h"
@@ -62,8 +64,37 @@ Pose advanceBase(const Pose& X_WB, const Vec6& V_B, double h) {
   return X;
 }
 
-void stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
-                      const Vec3& g_W, double h) {
+namespace {
+
+bool finite(const ArticulationState& s) {
+  return s.q.allFinite() && s.v.allFinite() && s.V_B.allFinite() && s.X_WB.translation.allFinite() &&
+         s.X_WB.rotation.coeffs().allFinite();
+}
+
+/// The step itself; stepArticulation checks its inputs and guards its result.
+/// Slows what is faster than the limits; returns whether anything was.
+bool limitSpeeds(const ArticulationModel& model, const SpeedLimits& limits, Eigen::VectorXd& u) {
+  bool limited = false;
+  const auto cap = [&limited](auto&& v, double most) {
+    const double speed = v.stableNorm();  // |3e305| squared would overflow
+    if (speed > most) {
+      v *= most / speed;
+      limited = true;
+    }
+  };
+  if (!model.fixed_base) {
+    cap(u.segment<3>(0), limits.max_angular_speed);
+    cap(u.segment<3>(3), limits.max_linear_speed);
+  }
+  for (int i = 1; i <= model.jointCount(); ++i) {
+    const bool slides = model.links[i].type == JointType::Prismatic;
+    cap(u.segment<1>(model.dofOf(i)), slides ? limits.max_linear_speed : limits.max_angular_speed);
+  }
+  return limited;
+}
+
+void advance(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads, const Vec3& g_W,
+             double h, const SpeedLimits& limits) {
   ArticulationKinematics kin = kinematics(model, state);
   const int nv = model.dofCount();
   const int base = model.fixed_base ? 0 : 6;
@@ -145,6 +176,9 @@ void stepArticulation(const ArticulationModel& model, ArticulationState& state, 
     rhs.tail(nj) += impulse.tail(nj);
   }
   for (int i = 1; i <= nj; ++i) rhs(model.dofOf(i)) -= h * model.links[i].damping * u_next(model.dofOf(i));
+  // Slowed to the limits, the velocities no longer carry the momenta: the
+  // next step takes them from the velocities.
+  const bool limited = limitSpeeds(model, limits, u_next);
   setGeneralizedVelocity(model, u_next, state);
   state.q += h * state.v;
   // A joint stays within its limits: what the solve's tolerance leaves, or a
@@ -161,7 +195,7 @@ void stepArticulation(const ArticulationModel& model, ArticulationState& state, 
     state.X_WB.translation += c_next - centreOfMass(model, kinematics(model, state));
   }
   ArticulationState::Carried& c = state.carried;
-  c.valid = true;
+  c.valid = !limited;
   c.p = rhs.tail(nj);
   c.H_W = H_W;
   c.q = state.q;
@@ -169,6 +203,31 @@ void stepArticulation(const ArticulationModel& model, ArticulationState& state, 
   c.V_B = state.V_B;
   c.X_WB = state.X_WB;
   c.predict_only = predict_only;
+}
+
+}  // namespace
+
+bool stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
+                      const Vec3& g_W, double h, const SpeedLimits& limits) {
+  const auto sized = [](long size, long wanted, const char* what) {
+    if (size != 0 && size != wanted) {
+      throw std::invalid_argument(std::string("articulation loads: ") + what + " has " + std::to_string(size) +
+                                  " entries, the model " + std::to_string(wanted));
+    }
+  };
+  sized(loads.effort.size(), model.jointCount(), "effort");
+  sized(static_cast<long>(loads.wrench_L.size()), static_cast<long>(model.links.size()), "wrench_L");
+  const ArticulationState start = state;
+  advance(model, state, loads, g_W, h, limits);
+  if (finite(state)) return true;
+  // Undone: where the step began, at rest, nothing carried (§11.7).
+  state = start.q.allFinite() && start.X_WB.translation.allFinite() && start.X_WB.rotation.coeffs().allFinite()
+              ? start
+              : restState(model);
+  state.v.setZero();
+  state.V_B.setZero();
+  state.carried = {};
+  return false;
 }
 
 }  // namespace rigid_body_sim::core

@@ -7,6 +7,7 @@
 
 #include <Eigen/Cholesky>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <tuple>
 
@@ -237,7 +238,7 @@ TEST(ArticulationStep, FloatingTreeKeepsItsMomentumAndItsCentreOfMassLine) {
     const double h = 1e-3;
     for (int n = 1; n <= 10000; ++n) {
       const ArticulationState before = state;
-      stepArticulation(model, state, {}, Vec3::Zero(), h);
+      stepArticulation(model, state, {}, Vec3::Zero(), h, SpeedLimits{1e4, 1e4});  // never slowed
       ArticulationState acting = before;
       acting.v = state.v;
       acting.V_B = state.V_B;
@@ -360,6 +361,44 @@ TEST(ArticulationJoints, MimicJointsKeepTheirRatio) {
   }
   EXPECT_LT(worst, 1e-6);
   EXPECT_GT(std::abs(state.q(0) - 1.2), 0.1);  // it did swing
+}
+
+// The guard: a NaN or infinite effort (no effort limit in the URDF) leaves
+// the state where the step began, at rest; a finite but absurd one is slowed
+// to the speed limit; loads of the wrong size are refused.
+TEST(ArticulationStep, TheGuardKeepsEveryStateFinite) {
+  ArticulationModel pendulum = planarChain({1.0}, {1.0}, {0.5}, {1.0 / 12.0});
+  {
+    ArticulationState state = restState(pendulum);
+    ArticulationLoads loads;
+    loads.effort = Eigen::VectorXd::Constant(1, 1e308);
+    SpeedLimits limits;
+    limits.max_angular_speed = 50.0;
+    EXPECT_TRUE(stepArticulation(pendulum, state, loads, kGravity, 1e-3, limits));
+    EXPECT_EQ(state.v(0), 50.0);
+    EXPECT_FALSE(state.carried.valid);
+  }
+  for (const double effort : {std::nan(""), std::numeric_limits<double>::infinity()}) {
+    ArticulationState state = restState(pendulum);
+    state.q(0) = 0.4;
+    state.v(0) = 1.0;
+    ArticulationLoads loads;
+    loads.effort = Eigen::VectorXd::Constant(1, effort);
+    EXPECT_FALSE(stepArticulation(pendulum, state, loads, kGravity, 1e-3)) << effort;
+    EXPECT_EQ(state.q(0), 0.4);
+    EXPECT_EQ(state.v(0), 0.0);
+    EXPECT_FALSE(state.carried.valid);
+    loads.effort(0) = 0.0;
+    EXPECT_TRUE(stepArticulation(pendulum, state, loads, kGravity, 1e-3));
+    EXPECT_TRUE(state.q.allFinite() && state.v.allFinite());
+  }
+  ArticulationState state = restState(pendulum);
+  ArticulationLoads loads;
+  loads.effort = Eigen::VectorXd::Zero(2);
+  EXPECT_THROW(stepArticulation(pendulum, state, loads, kGravity, 1e-3), std::invalid_argument);
+  loads.effort.resize(0);
+  loads.wrench_L.resize(1);
+  EXPECT_THROW(stepArticulation(pendulum, state, loads, kGravity, 1e-3), std::invalid_argument);
 }
 
 TEST(ArticulationModel, RefusesWhatCannotBeSimulatedNamingIt) {

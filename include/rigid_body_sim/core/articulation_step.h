@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rigid_body_sim/core/articulation.h"
+#include "rigid_body_sim/core/settings.h"
 
 namespace rigid_body_sim::core {
 
@@ -16,11 +17,20 @@ struct ArticulationLoads {
   std::vector<Vec6> wrench_L;  ///< per link, in its axes, moment about its origin; empty for none
 };
 
-/// Advances `state` by h seconds under gravity g_W (m/s²):
-///   (M + h D) u⁺ = M u + h (τ − c(q, u)),  then q⁺ = q + h v⁺ and the base
-/// moved by its new twist. D is the joints' damping, so any damping is stable.
-void stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
-                      const Vec3& g_W, double h);
+/// Advances `state` by h seconds under gravity g_W (m/s²): symplectic Euler
+/// on the joints' momenta with damping implicit, the joints' limits,
+/// friction and mimics solved as rows, then q⁺ = q + h v⁺ and the base moved
+/// by its new twist (§11.5, §11.6).
+///
+/// The speed limits (§5.9, §11.7): a joint faster than limits'
+/// max_angular_speed (revolute, continuous) or max_linear_speed (prismatic),
+/// or a base whose ω or v is, is slowed to it. The guard: a step that leaves
+/// anything non-finite (a NaN or infinite effort) is undone: the state goes
+/// back to where the step began, at rest, and false is returned.
+/// Throws std::invalid_argument when `loads` has a size other than the
+/// model's (efforts: one per joint; wrenches: one per link).
+bool stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
+                      const Vec3& g_W, double h, const SpeedLimits& limits = {});
 
 /// The base pose after h seconds at twist V_B (in the base's axes): the
 /// origin moved by h R v, the rotation by exp(h ω) on the body side.
