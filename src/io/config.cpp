@@ -92,8 +92,27 @@ void parseSection(const YAML::Node& root, const std::string& section, core::Mode
   }
 }
 
-void parseInitial(const YAML::Node& node, core::LinkState& s, const std::string& path = "initial") {
-  requireKnownKeys(node, path, {"position", "rpy", "quaternion", "linear_velocity", "angular_velocity"});
+/// A map from joint name to a number, in the file's order; names unique.
+void jointValues(const YAML::Node& node, const std::string& key, std::vector<std::pair<std::string, double>>& out) {
+  if (!node.IsMap()) fail(key, "expected a map from joint name to a number, got " + show(node));
+  for (const auto& item : node) {
+    const std::string name = item.first.IsScalar() ? item.first.Scalar() : "";
+    if (name.empty()) fail(key, "a joint name must be a non-empty string, got " + show(item.first));
+    const std::string at = join(key, name);
+    for (const auto& [seen, unused] : out) {
+      if (seen == name) fail(at, "joint '" + name + "' is given twice");
+    }
+    out.emplace_back(name, number(item.second, at));
+  }
+}
+
+void parseInitial(const YAML::Node& node, core::LinkState& s, InitialJoints& joints,
+                  const std::string& path = "initial") {
+  requireKnownKeys(
+      node, path,
+      {"position", "rpy", "quaternion", "linear_velocity", "angular_velocity", "joint_positions", "joint_velocities"});
+  if (node["joint_positions"]) jointValues(node["joint_positions"], path + ".joint_positions", joints.positions);
+  if (node["joint_velocities"]) jointValues(node["joint_velocities"], path + ".joint_velocities", joints.velocities);
   if (node["position"]) s.p_WL = vec3(node["position"], path + ".position");
   s.q_WL = orientation(node, path);
   if (node["linear_velocity"]) s.v_WL = vec3(node["linear_velocity"], path + ".linear_velocity");
@@ -122,7 +141,7 @@ class BodyList {
     const bool relative =
         b.urdf.front() != '/' && b.urdf.rfind("package://", 0) != 0 && b.urdf.rfind("file://", 0) != 0;
     if (relative && !base_dir_.empty()) b.urdf = base_dir_ + "/" + b.urdf;
-    if (entry["initial"]) parseInitial(entry["initial"], b.initial, path + ".initial");
+    if (entry["initial"]) parseInitial(entry["initial"], b.initial, b.initial_joints, path + ".initial");
     if (entry["contact"]) {  // the body's own surface
       const YAML::Node surface = entry["contact"];
       requireKnownKeys(surface, path + ".contact", {"friction", "restitution"});
@@ -172,7 +191,7 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
                     "limits", "bodies", "imu", "odom_noise", "cmd_vel"});
   parseSection(root, "", c.model);  // dt, gravity, gyroscopic
   parseSection(root, "damping", c.model);
-  if (root["initial"]) parseInitial(root["initial"], c.initial);
+  if (root["initial"]) parseInitial(root["initial"], c.initial, c.initial_joints);
   if (root["scene"]) c.model.scene = parseScene(root["scene"], base_dir);
   for (const char* section : {"contact", "sleep", "solver", "limits"}) parseSection(root, section, c.model);
   if (root["bodies"]) {

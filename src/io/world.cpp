@@ -39,6 +39,13 @@ core::BodyState startState(const core::Model& model, std::size_t i, const core::
   return core::bodyStateFromLink(model.body(i), link);
 }
 
+/// Joint values for a world of bodies: none has a moving joint.
+[[noreturn]] void refuseJoints(const std::string& key) {
+  throw ConfigError("config key '" + key +
+                    ".joint_positions' / '.joint_velocities': a body has no moving joints (rbsim and the node do "
+                    "not take robots yet)");
+}
+
 }  // namespace
 
 core::Model buildModel(const SimConfig& config, const core::BodySpec& body) {
@@ -53,6 +60,9 @@ World buildWorld(const SimConfig& config, const BodyLoader& load) {
   spec.bodies.reserve(config.bodies.size());
   // Each file is read and parsed once: a world of 10,000 boxes names one URDF 10,000 times.
   std::map<std::string, core::BodySpec> files;
+  for (std::size_t i = 0; i < config.bodies.size(); ++i) {
+    if (!config.bodies[i].initial_joints.empty()) refuseJoints("bodies[" + std::to_string(i) + "].initial");
+  }
   for (const BodyEntry& entry : config.bodies) {
     core::BodySpec body;
     if (load) {
@@ -81,6 +91,7 @@ World buildWorld(const SimConfig& config, const BodyLoader& load) {
 World loadWorld(const SimConfig& config, const std::function<core::BodySpec()>& single_body, const BodyLoader& load) {
   if (config.bodies_listed) return buildWorld(config, load);
   if (!single_body) throw ConfigError("bodies: the config lists no bodies, and no single body was given");
+  if (!config.initial_joints.empty()) refuseJoints("initial");
   World world{buildModel(config, single_body()), {}};
   world.state.bodies = {startState(world.model, 0, config.initial, "initial")};
   return world;

@@ -124,7 +124,8 @@ TEST(ArticulationLoader, AFloatingRobotLumpsFixedLinksAndReadsEveryJointType) {
   EXPECT_TRUE(base.mass.p_FC.isApprox(Vec3(0.2, 0, 0.1) / 11.0));
   ASSERT_EQ(base.fixed_links.size(), 1u);
   EXPECT_EQ(base.fixed_links[0].name, "sensor");
-  // Breadth first, URDF order: axle, lift, then the fingers on the slider.
+  // Breadth first, siblings by joint name (urdfdom's order): axle, lift, then
+  // the fingers on the slider.
   EXPECT_EQ(model.links[1].joint, "axle");
   EXPECT_EQ(model.links[1].type, JointType::Continuous);
   EXPECT_TRUE(std::isinf(model.links[1].limits.lower));

@@ -18,7 +18,8 @@ namespace rigid_body_sim::io {
 /// effort or velocity limit), <dynamics damping friction> and <mimic joint
 /// multiplier offset>. A root link named `world` is the world, fixed (it
 /// needs no <inertial>), as Gazebo reads it; otherwise the base floats.
-/// Links are numbered parents first, breadth first in URDF order.
+/// Links are numbered parents first, breadth first; siblings in urdfdom's
+/// order of their joints (by name).
 ///
 /// Refused with UrdfError naming the joint or link: whatever loadUrdfString
 /// refuses about a link, a floating or planar joint, an axis of zero

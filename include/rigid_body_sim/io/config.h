@@ -33,12 +33,21 @@ struct ImuEntry {
   std::string key = "imu";            ///< its config key, for messages ("bodies[2].imu")
 };
 
+/// A robot's joints at the start (`initial.joint_positions` and
+/// `initial.joint_velocities`: maps from joint name to rad or m, rad/s or
+/// m/s), in the file's order. Applied by io::startJoints (joint_start.h).
+struct InitialJoints {
+  std::vector<std::pair<std::string, double>> positions, velocities;
+  bool empty() const { return positions.empty() && velocities.empty(); }
+};
+
 /// One entry of the `bodies` list: a body of the world.
 struct BodyEntry {
   std::string name;  ///< unique in the world
   std::string urdf;  ///< a URDF file (relative to the config's folder, or package://), or for
                      ///< the node the name of a parameter holding the URDF
   core::LinkState initial;
+  InitialJoints initial_joints;  ///< bodies[i].initial.joint_positions, .joint_velocities
   /// Its surface (bodies[i].contact); unset: the scene's, contact.friction and contact.restitution.
   std::optional<double> friction, restitution;
   std::optional<ImuEntry> imu;                        ///< bodies[i].imu
@@ -51,6 +60,7 @@ struct SimConfig {
   core::ModelSpec model;
   /// Initial pose and twist of the root link frame, world frame (one body).
   core::LinkState initial;
+  InitialJoints initial_joints;  ///< initial.joint_positions, .joint_velocities (one robot)
   /// The world's bodies, when the config lists them (`bodies`); empty for
   /// one body given separately (rbsim --urdf, the node's robot_description).
   std::vector<BodyEntry> bodies;
