@@ -78,8 +78,9 @@ Engine ours(const ChainSpec& c) {
   checkArticulation(*model);
   auto state = std::make_shared<ArticulationState>(restState(*model));
   state->q.setConstant(c.q0);
+  auto ws = std::make_shared<ArticulationWorkspace>();
   const Vec3 g(0, 0, -kG);
-  return {[model, state, g] { stepArticulation(*model, *state, {}, g, kDt); },
+  return {[model, state, ws, g] { stepArticulation(*model, *state, {}, g, kDt, {}, ws.get()); },
           [model, state, g] {
             const ArticulationKinematics kin = kinematics(*model, *state);
             return kineticEnergy(*model, kin) + potentialEnergy(*model, kin, g);

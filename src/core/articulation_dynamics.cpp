@@ -33,8 +33,13 @@ Vec6 motionAxis(const ArticulatedLink& link) {
 }  // namespace
 
 ArticulationKinematics kinematics(const ArticulationModel& model, const ArticulationState& state) {
-  const int n = static_cast<int>(model.links.size());
   ArticulationKinematics kin;
+  kinematics(model, state, kin);
+  return kin;
+}
+
+void kinematics(const ArticulationModel& model, const ArticulationState& state, ArticulationKinematics& kin) {
+  const int n = static_cast<int>(model.links.size());
   kin.X_PL.resize(n);
   kin.X_WL.resize(n);
   kin.V_L.resize(n);
@@ -52,7 +57,6 @@ ArticulationKinematics kinematics(const ArticulationModel& model, const Articula
     kin.S_L[i] = motionAxis(link);
     kin.V_L[i] = kin.X_PL[i].motionToChild(kin.V_L[link.parent]) + kin.S_L[i] * state.v(i - 1);
   }
-  return kin;
 }
 
 void setTwists(const ArticulationModel& model, const Eigen::VectorXd& u, ArticulationKinematics& kin) {
@@ -64,23 +68,40 @@ void setTwists(const ArticulationModel& model, const Eigen::VectorXd& u, Articul
 }
 
 Eigen::VectorXd kineticEnergyGradient(const ArticulationModel& model, const ArticulationKinematics& kin) {
+  DynamicsScratch scratch;
+  Eigen::VectorXd gradient;
+  kineticEnergyGradient(model, kin, scratch, gradient);
+  return gradient;
+}
+
+void kineticEnergyGradient(const ArticulationModel& model, const ArticulationKinematics& kin, DynamicsScratch& scratch,
+                           Eigen::VectorXd& gradient) {
   const int n = static_cast<int>(model.links.size());
-  std::vector<Vec6> H(n);
+  std::vector<Vec6>& H = scratch.f;
+  H.resize(n);
   for (int i = 0; i < n; ++i) H[i] = kin.I_L[i] * kin.V_L[i];
-  Eigen::VectorXd gradient = Eigen::VectorXd::Zero(model.dofCount());
+  gradient.setZero(model.dofCount());
   for (int i = n - 1; i > 0; --i) {
     gradient(model.dofOf(i)) = -kin.S_L[i].dot(crossForce(kin.V_L[i], H[i]));
     H[model.links[i].parent] += kin.X_PL[i].forceToParent(H[i]);
   }
-  return gradient;
 }
 
 Eigen::MatrixXd massMatrix(const ArticulationModel& model, const ArticulationKinematics& kin) {
+  DynamicsScratch scratch;
+  Eigen::MatrixXd M;
+  massMatrix(model, kin, scratch, M);
+  return M;
+}
+
+void massMatrix(const ArticulationModel& model, const ArticulationKinematics& kin, DynamicsScratch& scratch,
+                Eigen::MatrixXd& M) {
   const int n = static_cast<int>(model.links.size());
-  std::vector<SpatialInertia> Ic(kin.I_L);
+  std::vector<SpatialInertia>& Ic = scratch.composite;
+  Ic.assign(kin.I_L.begin(), kin.I_L.end());
   // Composite inertias, leaves first: I^c_p += Xᵀ I^c_i X (X: parent to child).
   for (int i = n - 1; i > 0; --i) Ic[model.links[i].parent] += Ic[i].toParent(kin.X_PL[i]);
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(model.dofCount(), model.dofCount());
+  M.setZero(model.dofCount(), model.dofCount());
   if (!model.fixed_base) M.topLeftCorner<6, 6>() = Ic[0].matrix();
   for (int i = 1; i < n; ++i) {
     // The force that accelerates joint i's subtree at unit rate, carried
@@ -100,7 +121,6 @@ Eigen::MatrixXd massMatrix(const ArticulationModel& model, const ArticulationKin
       M.block<1, 6>(di, 0) = F.transpose();
     }
   }
-  return M;
 }
 
 namespace {
@@ -108,12 +128,14 @@ namespace {
 /// Recursive Newton-Euler over the tree (§11.4): the generalized forces for
 /// the accelerations `udot` (none: zero), at the twists of `kin` or, when
 /// `moving` is false, at rest.
-Eigen::VectorXd newtonEuler(const ArticulationModel& model, const ArticulationKinematics& kin,
-                            const Eigen::VectorXd* udot, const Vec3& g_W, const std::vector<Vec6>& wrench_L,
-                            bool moving) {
+void newtonEuler(const ArticulationModel& model, const ArticulationKinematics& kin, const Eigen::VectorXd* udot,
+                 const Vec3& g_W, const std::vector<Vec6>& wrench_L, bool moving, DynamicsScratch& scratch,
+                 Eigen::VectorXd& tau) {
   const int n = static_cast<int>(model.links.size());
-  std::vector<Vec6> a(n);
-  std::vector<Vec6> f(n);
+  std::vector<Vec6>& a = scratch.a;
+  std::vector<Vec6>& f = scratch.f;
+  a.resize(n);
+  f.resize(n);
   a[0] = Vec6::Zero();
   if (!model.fixed_base && udot != nullptr) a[0] = udot->head<6>();
   a[0].tail<3>() -= kin.X_WL[0].R_PC.transpose() * g_W;
@@ -132,12 +154,20 @@ Eigen::VectorXd newtonEuler(const ArticulationModel& model, const ArticulationKi
     if (moving) f[i] += crossForce(kin.V_L[i], I * kin.V_L[i]);
     if (!wrench_L.empty()) f[i] -= wrench_L[i];
   }
-  Eigen::VectorXd tau(model.dofCount());
+  tau.resize(model.dofCount());
   for (int i = n - 1; i > 0; --i) {
     tau(model.dofOf(i)) = kin.S_L[i].dot(f[i]);
     f[model.links[i].parent] += kin.X_PL[i].forceToParent(f[i]);
   }
   if (!model.fixed_base) tau.head<6>() = f[0];
+}
+
+Eigen::VectorXd newtonEuler(const ArticulationModel& model, const ArticulationKinematics& kin,
+                            const Eigen::VectorXd* udot, const Vec3& g_W, const std::vector<Vec6>& wrench_L,
+                            bool moving) {
+  DynamicsScratch scratch;
+  Eigen::VectorXd tau;
+  newtonEuler(model, kin, udot, g_W, wrench_L, moving, scratch, tau);
   return tau;
 }
 
@@ -156,6 +186,11 @@ Eigen::VectorXd biasForces(const ArticulationModel& model, const ArticulationKin
 Eigen::VectorXd restForces(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
                            const std::vector<Vec6>& wrench_L) {
   return newtonEuler(model, kin, nullptr, g_W, wrench_L, false);
+}
+
+void biasForces(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
+                const std::vector<Vec6>& wrench_L, bool moving, DynamicsScratch& scratch, Eigen::VectorXd& out) {
+  newtonEuler(model, kin, nullptr, g_W, wrench_L, moving, scratch, out);
 }
 
 Eigen::VectorXd forwardDynamics(const ArticulationModel& model, const ArticulationState& state,

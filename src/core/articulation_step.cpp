@@ -39,20 +39,6 @@ bool carriedStillHolds(const ArticulationState& state) {
          samePose(c.X_WB, state.X_WB);
 }
 
-/// The generalized forces at rest: gravity, the wrenches on the links and
-/// the efforts, each clipped to its joint's limit.
-Eigen::VectorXd appliedForces(const ArticulationModel& model, const ArticulationKinematics& kin,
-                              const ArticulationLoads& loads, const Vec3& g_W) {
-  Eigen::VectorXd force = -restForces(model, kin, g_W, loads.wrench_L);
-  if (loads.effort.size() > 0) {
-    for (int i = 1; i <= model.jointCount(); ++i) {
-      const double limit = model.links[i].limits.effort;
-      force(model.dofOf(i)) += std::clamp(loads.effort(i - 1), -limit, limit);
-    }
-  }
-  return force;
-}
-
 }  // namespace
 
 Pose advanceBase(const Pose& X_WB, const Vec6& V_B, double h) {
@@ -94,16 +80,18 @@ bool limitSpeeds(const ArticulationModel& model, const SpeedLimits& limits, Eige
 }
 
 void advance(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads, const Vec3& g_W,
-             double h, const SpeedLimits& limits) {
-  ArticulationKinematics kin = kinematics(model, state);
-  const int nv = model.dofCount();
+             double h, const SpeedLimits& limits, ArticulationWorkspace& ws) {
+  ArticulationKinematics& kin = ws.kin;
+  kinematics(model, state, kin);
   const int base = model.fixed_base ? 0 : 6;
   const int nj = model.jointCount();
   // A = M + h D: joint damping taken at the new velocity.
-  Eigen::MatrixXd A = massMatrix(model, kin);
-  const Eigen::VectorXd u = generalizedVelocity(model, state);
+  Eigen::MatrixXd& A = ws.A;
+  massMatrix(model, kin, ws.dynamics, A);
+  Eigen::VectorXd& u = ws.u;
+  u = generalizedVelocity(model, state);
   // The momenta at the start: carried from the last step, or from the velocities.
-  Eigen::VectorXd p_joints;
+  Eigen::VectorXd& p_joints = ws.p;
   Vec6 H_W = Vec6::Zero();
   int predict_only = 0;
   if (carriedStillHolds(state)) {
@@ -111,16 +99,28 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
     H_W = state.carried.H_W;
     predict_only = state.carried.predict_only;
   } else {
-    const Eigen::VectorXd p = A * u;
-    p_joints = p.tail(nj);
-    if (base) H_W = kin.X_WL[0].forceToParent(p.head<6>());
+    ws.rhs.noalias() = A * u;
+    p_joints = ws.rhs.tail(nj);
+    if (base) H_W = kin.X_WL[0].forceToParent(ws.rhs.head<6>());
   }
   for (int i = 1; i <= nj; ++i) A(model.dofOf(i), model.dofOf(i)) += h * model.links[i].damping;
-  const Eigen::LLT<Eigen::MatrixXd> llt(A);
-  const Eigen::VectorXd force = appliedForces(model, kin, loads, g_W);
+  ws.llt.compute(A);
+  const Eigen::LLT<Eigen::MatrixXd>& llt = ws.llt;
+  // The generalized forces at rest: gravity, the wrenches on the links and
+  // the efforts, each clipped to its joint's limit.
+  Eigen::VectorXd& force = ws.force;
+  biasForces(model, kin, g_W, loads.wrench_L, false, ws.dynamics, force);
+  force = -force;
+  if (loads.effort.size() > 0) {
+    for (int i = 1; i <= nj; ++i) {
+      const double limit = model.links[i].limits.effort;
+      force(model.dofOf(i)) += std::clamp(loads.effort(i - 1), -limit, limit);
+    }
+  }
   // The base: the whole articulation's momentum changes by the impulse of the
   // loads on it, exactly; its rows of M u⁺ are that, in the base's axes now.
-  Eigen::VectorXd rhs(nv);
+  Eigen::VectorXd& rhs = ws.rhs;
+  rhs.resize(model.dofCount());
   if (base) {
     H_W += h * kin.X_WL[0].forceToParent(force.head<6>());
     rhs.head<6>() = kin.X_WL[0].forceToChild(H_W);
@@ -129,24 +129,31 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
   // u⁺ through ∂T/∂q. Predicted by the semi-implicit step in velocities
   // (O(h²) from it), then corrected by fixed-point passes; where they do
   // not contract (a fast or long, light chain), the prediction stands.
-  Eigen::VectorXd damped = force - biasForces(model, kin, Vec3::Zero());
-  for (int i = 1; i <= nj; ++i) damped(model.dofOf(i)) -= model.links[i].damping * u(model.dofOf(i));
-  const Eigen::VectorXd predicted = u + llt.solve(h * damped);
-  Eigen::VectorXd u_next = predicted;
+  Eigen::VectorXd& predicted = ws.predicted;
+  biasForces(model, kin, Vec3::Zero(), {}, true, ws.dynamics, ws.bias);
+  predicted = h * (force - ws.bias);
+  for (int i = 1; i <= nj; ++i) predicted(model.dofOf(i)) -= h * model.links[i].damping * u(model.dofOf(i));
+  llt.solveInPlace(predicted);
+  predicted += u;
+  Eigen::VectorXd& u_next = ws.next;
+  u_next = predicted;
+  Eigen::VectorXd& corrected = ws.corrected;
   double last_change = std::numeric_limits<double>::infinity();
   bool converged = false;
   const int passes = predict_only > 0 ? 0 : kCorrectorPasses;
   for (int pass = 0; pass < passes && !converged; ++pass) {
     setTwists(model, u_next, kin);
-    rhs.tail(nj) = p_joints + h * (force.tail(nj) + kineticEnergyGradient(model, kin).tail(nj));
-    const Eigen::VectorXd corrected = llt.solve(rhs);
+    kineticEnergyGradient(model, kin, ws.dynamics, ws.gradient);
+    rhs.tail(nj) = p_joints + h * (force.tail(nj) + ws.gradient.tail(nj));
+    corrected = rhs;
+    llt.solveInPlace(corrected);
     const double change = (corrected - u_next).cwiseAbs().maxCoeff();
     const double scale = 1.0 + corrected.cwiseAbs().maxCoeff();
     if (!(change <= kCorrectorContraction * last_change)) {
       converged = last_change <= kCorrectorRounding * scale;
       break;
     }
-    u_next = corrected;
+    u_next.swap(corrected);
     last_change = change;
     converged = change <= kCorrectorTolerance * scale;
   }
@@ -160,18 +167,17 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
     // still hold the whole momentum exactly (a 6 × 6 solve).
     u_next = predicted;
     if (base) {
-      const Eigen::VectorXd joints_part = A.bottomLeftCorner(nj, 6).transpose() * predicted.tail(nj);
+      const Vec6 joints_part = A.bottomLeftCorner(nj, 6).transpose() * predicted.tail(nj);
       u_next.head<6>() = A.topLeftCorner<6, 6>().llt().solve(rhs.head<6>() - joints_part);
     }
-    const Eigen::VectorXd momentum = A * u_next;
-    rhs.tail(nj) = momentum.tail(nj);
+    rhs.tail(nj).noalias() = A.bottomRows(nj) * u_next;
   }
   // The joints' limits, friction and mimics (§11.6): impulses on the joints
   // only, so the whole articulation's momentum stays as it is.
   std::vector<detail::JointRow> rows;
   detail::buildJointRows(model, state, u_next, h, rows);
   if (!rows.empty()) {
-    Eigen::VectorXd impulse = Eigen::VectorXd::Zero(nv);
+    Eigen::VectorXd impulse = Eigen::VectorXd::Zero(model.dofCount());
     detail::solveJointRows(llt, rows, u_next, impulse);
     rhs.tail(nj) += impulse.tail(nj);
   }
@@ -192,7 +198,8 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
     // base's first-order moves miss, O(h²).
     const Vec3 c_next = centreOfMass(model, kin) + h * H_W.tail<3>() / totalMass(model);
     state.X_WB = advanceBase(state.X_WB, state.V_B, h);
-    state.X_WB.translation += c_next - centreOfMass(model, kinematics(model, state));
+    kinematics(model, state, kin);
+    state.X_WB.translation += c_next - centreOfMass(model, kin);
   }
   ArticulationState::Carried& c = state.carried;
   c.valid = !limited;
@@ -208,7 +215,7 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
 }  // namespace
 
 bool stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
-                      const Vec3& g_W, double h, const SpeedLimits& limits) {
+                      const Vec3& g_W, double h, const SpeedLimits& limits, ArticulationWorkspace* workspace) {
   const auto sized = [](long size, long wanted, const char* what) {
     if (size != 0 && size != wanted) {
       throw std::invalid_argument(std::string("articulation loads: ") + what + " has " + std::to_string(size) +
@@ -217,13 +224,20 @@ bool stepArticulation(const ArticulationModel& model, ArticulationState& state, 
   };
   sized(loads.effort.size(), model.jointCount(), "effort");
   sized(static_cast<long>(loads.wrench_L.size()), static_cast<long>(model.links.size()), "wrench_L");
-  const ArticulationState start = state;
-  advance(model, state, loads, g_W, h, limits);
+  ArticulationWorkspace local;
+  ArticulationWorkspace& ws = workspace != nullptr ? *workspace : local;
+  const ArticulationState& start = ws.start;
+  ws.start.X_WB = state.X_WB;
+  ws.start.q = state.q;  // the positions only: the guard puts back no velocity
+  advance(model, state, loads, g_W, h, limits, ws);
   if (finite(state)) return true;
   // Undone: where the step began, at rest, nothing carried (§11.7).
-  state = start.q.allFinite() && start.X_WB.translation.allFinite() && start.X_WB.rotation.coeffs().allFinite()
-              ? start
-              : restState(model);
+  if (start.q.allFinite() && start.X_WB.translation.allFinite() && start.X_WB.rotation.coeffs().allFinite()) {
+    state.q = start.q;
+    state.X_WB = start.X_WB;
+  } else {
+    state = restState(model);
+  }
   state.v.setZero();
   state.V_B.setZero();
   state.carried = {};

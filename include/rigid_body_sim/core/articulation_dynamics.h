@@ -22,6 +22,14 @@ struct ArticulationKinematics {
 
 /// Placements, twists and joint axes for a state.
 ArticulationKinematics kinematics(const ArticulationModel& model, const ArticulationState& state);
+/// The same into `kin`, reusing its memory.
+void kinematics(const ArticulationModel& model, const ArticulationState& state, ArticulationKinematics& kin);
+
+/// Memory the in-place forms below reuse (results never depend on it).
+struct DynamicsScratch {
+  std::vector<SpatialInertia> composite;
+  std::vector<Vec6> a, f;
+};
 
 /// Sets the twists of `kin` for the generalized velocity u (its placements kept).
 void setTwists(const ArticulationModel& model, const Eigen::VectorXd& u, ArticulationKinematics& kin);
@@ -29,10 +37,14 @@ void setTwists(const ArticulationModel& model, const Eigen::VectorXd& u, Articul
 /// ∂T/∂q at the twists of `kin` (velocities held), per joint (§11.5):
 /// −Sₖ·(Vₖ ×* Hₖ), Hₖ the momentum of link k's subtree. Zero for the base's rows.
 Eigen::VectorXd kineticEnergyGradient(const ArticulationModel& model, const ArticulationKinematics& kin);
+void kineticEnergyGradient(const ArticulationModel& model, const ArticulationKinematics& kin, DynamicsScratch& scratch,
+                           Eigen::VectorXd& gradient);
 
 /// The joint-space mass matrix M(q), dofCount() square, by the
 /// composite-rigid-body algorithm (§11.3).
 Eigen::MatrixXd massMatrix(const ArticulationModel& model, const ArticulationKinematics& kin);
+void massMatrix(const ArticulationModel& model, const ArticulationKinematics& kin, DynamicsScratch& scratch,
+                Eigen::MatrixXd& M);
 
 /// Recursive Newton-Euler (§11.4): the generalized forces that give the
 /// generalized accelerations `udot` at this state under gravity g_W (m/s²),
@@ -50,6 +62,9 @@ Eigen::VectorXd biasForces(const ArticulationModel& model, const ArticulationKin
 /// wrenches' generalized forces, with the sign of c.
 Eigen::VectorXd restForces(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
                            const std::vector<Vec6>& wrench_L = {});
+/// biasForces (moving) or restForces (not) into `out`.
+void biasForces(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
+                const std::vector<Vec6>& wrench_L, bool moving, DynamicsScratch& scratch, Eigen::VectorXd& out);
 
 /// Forward dynamics: u̇ = M⁻¹ (τ − c).
 Eigen::VectorXd forwardDynamics(const ArticulationModel& model, const ArticulationState& state,

@@ -3,10 +3,12 @@
 // coordinates with joint damping implicit, then positions. Eigen only.
 #pragma once
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <vector>
 
 #include "rigid_body_sim/core/articulation.h"
+#include "rigid_body_sim/core/articulation_dynamics.h"
 #include "rigid_body_sim/core/settings.h"
 
 namespace rigid_body_sim::core {
@@ -15,6 +17,18 @@ namespace rigid_body_sim::core {
 struct ArticulationLoads {
   Eigen::VectorXd effort;      ///< per joint (N·m or N), clipped to |effort| ≤ the limit; empty for none
   std::vector<Vec6> wrench_L;  ///< per link, in its axes, moment about its origin; empty for none
+};
+
+/// The memory a step reuses from one step to the next, so that once sized
+/// a step allocates nothing for its dynamics (MuJoCo keeps it in mjData).
+/// Results never depend on it.
+struct ArticulationWorkspace {
+  ArticulationKinematics kin;
+  DynamicsScratch dynamics;
+  Eigen::MatrixXd A;
+  Eigen::LLT<Eigen::MatrixXd> llt;
+  Eigen::VectorXd u, p, force, bias, predicted, next, corrected, rhs, gradient;
+  ArticulationState start;
 };
 
 /// Advances `state` by h seconds under gravity g_W (m/s²): symplectic Euler
@@ -30,7 +44,8 @@ struct ArticulationLoads {
 /// Throws std::invalid_argument when `loads` has a size other than the
 /// model's (efforts: one per joint; wrenches: one per link).
 bool stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
-                      const Vec3& g_W, double h, const SpeedLimits& limits = {});
+                      const Vec3& g_W, double h, const SpeedLimits& limits = {},
+                      ArticulationWorkspace* workspace = nullptr);
 
 /// The base pose after h seconds at twist V_B (in the base's axes): the
 /// origin moved by h R v, the rotation by exp(h ω) on the body side.
