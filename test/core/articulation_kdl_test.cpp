@@ -2,8 +2,8 @@
 // wrote): random serial chains of 2–10 joints of all three types, skew axes,
 // offset centres of mass and full inertia tensors, fixed base. The mass
 // matrix (ChainDynParam::JntToMass), Coriolis and gravity terms
-// (JntToCoriolis, JntToGravity) and inverse dynamics (ChainIdSolver_RNE)
-// within 1e-10.
+// (JntToCoriolis, JntToGravity) and inverse dynamics (ChainIdSolver_RNE),
+// with and without external wrenches on the links, within 1e-10.
 #include <gtest/gtest.h>
 
 #include <kdl/chain.hpp>
@@ -95,6 +95,18 @@ TEST(ArticulationAgainstKdl, MassMatrixCoriolisGravityAndInverseDynamics) {
     EXPECT_LT(relativeError(tau, torques.data), 1e-10) << "trial " << trial;
     // Forward dynamics gives back the accelerations KDL's torques were for.
     EXPECT_LT(relativeError(forwardDynamics(model, state, torques.data, g_W), qdd), 1e-10) << "trial " << trial;
+    // External wrenches on the links (each in its link's axes, moment about
+    // its origin: KDL's f_ext on a segment's tip frame), as contacts and
+    // applied wrenches will load a robot.
+    KDL::Wrenches wrenches(chain.getNrOfSegments());
+    std::vector<Vec6> wrench_L(model.links.size(), Vec6::Zero());
+    for (int i = 1; i <= n; ++i) {
+      const Vec3 force = test::randomVec(rng, 5.0), moment = test::randomVec(rng, 2.0);
+      wrenches[i - 1] = KDL::Wrench(kdl(force), kdl(moment));
+      wrench_L[i] << moment, force;
+    }
+    ASSERT_EQ(rne.CartToJnt(kdl(state.q), kdl(state.v), kdl(qdd), wrenches, torques), 0);
+    EXPECT_LT(relativeError(inverseDynamics(model, kin, qdd, g_W, wrench_L), torques.data), 1e-10) << "trial " << trial;
   }
   for (const int seen : types_seen) EXPECT_GT(seen, 20);
 }
