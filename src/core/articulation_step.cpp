@@ -224,6 +224,7 @@ bool stepArticulation(const ArticulationModel& model, ArticulationState& state, 
   };
   sized(loads.effort.size(), model.jointCount(), "effort");
   sized(static_cast<long>(loads.wrench_L.size()), static_cast<long>(model.links.size()), "wrench_L");
+  if (model.dofCount() == 0) return true;  // a base on the world and no joint: nothing moves
   ArticulationWorkspace local;
   ArticulationWorkspace& ws = workspace != nullptr ? *workspace : local;
   const ArticulationState& start = ws.start;

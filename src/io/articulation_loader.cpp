@@ -108,6 +108,9 @@ core::ArticulationModel loadArticulationString(const std::string& xml, const std
     if (next.joint.joint->mimic) mimics[link.joint] = next.joint.joint->mimic->joint_name;
     add(std::move(link), group);
   }
+  if (model.links.size() == 1) {
+    lumper.fail("robot '" + model.name + "' has no revolute, continuous or prismatic joint: it is one body");
+  }
   for (ArticulatedLink& link : model.links) {
     const auto mimic = mimics.find(link.joint);
     if (link.parent < 0 || mimic == mimics.end()) continue;

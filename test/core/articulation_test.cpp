@@ -392,6 +392,14 @@ TEST(ArticulationStep, TheGuardKeepsEveryStateFinite) {
     EXPECT_TRUE(stepArticulation(pendulum, state, loads, kGravity, 1e-3));
     EXPECT_TRUE(state.q.allFinite() && state.v.allFinite());
   }
+  // A base on the world with no joint has nothing to move (the fuzzer found
+  // its empty vectors read).
+  ArticulationModel still;
+  still.fixed_base = true;
+  still.links.resize(1);
+  ArticulationState nothing = restState(still, {Quat::Identity(), Vec3(1, 2, 3)});
+  EXPECT_TRUE(stepArticulation(still, nothing, {}, kGravity, 1e-3));
+  EXPECT_EQ(nothing.X_WB.translation, Vec3(1, 2, 3));
   ArticulationState state = restState(pendulum);
   ArticulationLoads loads;
   loads.effort = Eigen::VectorXd::Zero(2);

@@ -173,6 +173,9 @@ TEST(ArticulationLoader, RefusesWhatCannotBeSimulatedNamingTheJointOrLink) {
                            link("rod", inertial(1.0, "0 0 0", "ixx='1' iyy='1' izz='3' ixy='0' ixz='0' iyz='0'")) +
                            "</robot>";
   expectRefused(flat, {"link 'rod'", "triangle inequality"});
+  // Nothing moving: a body, not a robot (the fuzzer's find: a lone `world`).
+  expectRefused("<robot name='arm'><link name='world'/></robot>", {"robot 'arm' has no revolute"});
+  expectRefused("<robot name='box'>" + link("box", inertial(1.0)) + "</robot>", {"robot 'box'", "it is one body"});
   // A cycle of joints is refused before urdfdom reads it (urdf_parse).
   const std::string cycle = "<robot name='r'>" + link("a", inertial(1.0)) + link("b", inertial(1.0)) +
                             joint("ab", "continuous", "a", "b", "0 0 1", "<axis xyz='0 1 0'/>") +

@@ -21,7 +21,8 @@ namespace rigid_body_sim::io {
 /// Links are numbered parents first, breadth first; siblings in urdfdom's
 /// order of their joints (by name).
 ///
-/// Refused with UrdfError naming the joint or link: whatever loadUrdfString
+/// Refused with UrdfError naming the joint or link: a URDF without a moving
+/// joint (it is one body: loadUrdfString), whatever loadUrdfString
 /// refuses about a link, a floating or planar joint, an axis of zero
 /// length, lower > upper, a mimic of an unknown joint or of another mimic,
 /// a moving link (or floating base) without mass, an inertia no body can
