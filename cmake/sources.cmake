@@ -2,6 +2,7 @@
 # the fuzzers' own (fuzz/CMakeLists.txt, built with clang).
 set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/articulation.cpp
+  ${RBS_SOURCE_ROOT}/src/core/articulation_contacts.cpp
   ${RBS_SOURCE_ROOT}/src/core/articulation_dynamics.cpp
   ${RBS_SOURCE_ROOT}/src/core/articulation_step.cpp
   ${RBS_SOURCE_ROOT}/src/core/barrier.cpp

@@ -80,7 +80,7 @@ bool limitSpeeds(const ArticulationModel& model, const SpeedLimits& limits, Eige
 }
 
 void advance(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads, const Vec3& g_W,
-             double h, const SpeedLimits& limits, ArticulationWorkspace& ws) {
+             double h, const SpeedLimits& limits, const ArticulationColliders* colliders, ArticulationWorkspace& ws) {
   ArticulationKinematics& kin = ws.kin;
   kinematics(model, state, kin);
   const int base = model.fixed_base ? 0 : 6;
@@ -172,14 +172,24 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
     }
     rhs.tail(nj).noalias() = A.bottomRows(nj) * u_next;
   }
-  // The joints' limits, friction and mimics (§11.6): impulses on the joints
-  // only, so the whole articulation's momentum stays as it is.
+  // The joints' limits, friction and mimics (§11.6), and the links'
+  // contacts with the scene (§11.8), at the twists the step would give them:
+  // one impulse solve. The joints' impulses act on the joints only, so the
+  // whole articulation's momentum changes by the contacts' alone.
   std::vector<detail::JointRow> rows;
   detail::buildJointRows(model, state, u_next, h, rows);
-  if (!rows.empty()) {
+  std::vector<detail::ContactRows> contacts;
+  if (colliders != nullptr) {
+    setTwists(model, u_next, kin);
+    detail::findContactRows(model, *colliders, kin, h, ws.links, ws.detection, contacts);
+  }
+  if (!rows.empty() || !contacts.empty()) {
     Eigen::VectorXd impulse = Eigen::VectorXd::Zero(model.dofCount());
-    detail::solveJointRows(llt, rows, u_next, impulse);
+    detail::solveRows(colliders != nullptr ? colliders->bodies.solver() : SolverSettings(), llt, rows, contacts, u_next,
+                      impulse);
     rhs.tail(nj) += impulse.tail(nj);
+    if (base) H_W += kin.X_WL[0].forceToParent(impulse.head<6>());
+    detail::reportContactImpulses(contacts, ws.detection);
   }
   for (int i = 1; i <= nj; ++i) rhs(model.dofOf(i)) -= h * model.links[i].damping * u_next(model.dofOf(i));
   // Slowed to the limits, the velocities no longer carry the momenta: the
@@ -201,6 +211,9 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
     kinematics(model, state, kin);
     state.X_WB.translation += c_next - centreOfMass(model, kin);
   }
+  if (!contacts.empty()) {
+    detail::correctContactPositions(model, contacts, u_next, h, colliders->bodies.contact().position_slop, state);
+  }
   ArticulationState::Carried& c = state.carried;
   c.valid = !limited;
   c.p = rhs.tail(nj);
@@ -215,7 +228,8 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
 }  // namespace
 
 bool stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
-                      const Vec3& g_W, double h, const SpeedLimits& limits, ArticulationWorkspace* workspace) {
+                      const Vec3& g_W, double h, const SpeedLimits& limits, ArticulationWorkspace* workspace,
+                      const ArticulationColliders* colliders) {
   const auto sized = [](long size, long wanted, const char* what) {
     if (size != 0 && size != wanted) {
       throw std::invalid_argument(std::string("articulation loads: ") + what + " has " + std::to_string(size) +
@@ -230,7 +244,7 @@ bool stepArticulation(const ArticulationModel& model, ArticulationState& state, 
   const ArticulationState& start = ws.start;
   ws.start.X_WB = state.X_WB;
   ws.start.q = state.q;  // the positions only: the guard puts back no velocity
-  advance(model, state, loads, g_W, h, limits, ws);
+  advance(model, state, loads, g_W, h, limits, colliders, ws);
   if (finite(state)) return true;
   // Undone: where the step began, at rest, nothing carried (§11.7).
   if (start.q.allFinite() && start.X_WB.translation.allFinite() && start.X_WB.rotation.coeffs().allFinite()) {

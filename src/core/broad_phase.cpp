@@ -97,10 +97,16 @@ void broadPhase(const Model& model, const State& state, int parts, Workspace& ws
     pairs.clear();
     const Range range = partRange(n, part, parts);
     const int begin = static_cast<int>(range.begin), end = static_cast<int>(range.end);
+    const bool grouped = model.hasCollisionGroups();
+    const auto apart = [&](int a, int b) {  // one collision group: never touch (an articulation's links)
+      const int group = model.body(a).collision_group;
+      return group >= 0 && group == model.body(b).collision_group;
+    };
     const auto overlap = [&](int k, int m, bool k_asleep) {
       const double *a = box + kStride * k, *b = box + kStride * m;
       if ((b[2] <= a[3]) & (a[2] <= b[3]) & (b[4] <= a[5]) & (a[4] <= b[5]) &
-          !(k_asleep && state.bodies[order[m]].asleep)) {
+              !(k_asleep && state.bodies[order[m]].asleep) &&
+          !(grouped && apart(order[k], order[m]))) {
         pairs.emplace_back(order[k], order[m]);  // both ways: each body's points against the other's solid
         pairs.emplace_back(order[m], order[k]);
       }

@@ -79,62 +79,6 @@ void matchLastImpulses(const State& state, std::vector<Contact>& contacts) {
   }
 }
 
-/// Coulomb friction on one contact by maximal dissipation: of the impulses
-/// |λ| ≤ limit, the one that leaves the least slip energy ½ vᵀK⁻¹v, i.e. the
-/// point of the disk nearest to the sticking impulse `stick` in K's metric
-/// (K = TᵀKT, the 2×2 tangent block). Inside the disk it is `stick`;
-/// outside, λ = (K + νI)⁻¹ K stick with ν > 0 such that |λ| = limit, and the
-/// slip left after it is −νλ: the friction opposes the slip it leaves, as
-/// Coulomb's law says, whatever K's rotational coupling. Being a projection
-/// onto a convex set, it lets Gauss-Seidel converge (taking the direction
-/// from the slip before the update instead can cycle). ν solves the secular
-/// equation 1/|λ(ν)| = 1/limit by Newton's method in K's eigenbasis (Moré
-/// and Sorensen's trust-region step). 1/|λ(ν)| is concave and increasing,
-/// so from any ν ≤ ν* Newton climbs to ν* without overshooting, and from
-/// ν > ν* its first step lands below ν*: `nu` (in: a guess, such as the
-/// contact's ν of the last sweep; out: the ν found, 0 inside the disk)
-/// saves most of the iterations of a converging Gauss-Seidel.
-Eigen::Vector2d frictionOnDisk(const SolverSettings& settings, const Eigen::Matrix2d& K,
-                               SolverContact::TangentEigen& eigen, const Eigen::Vector2d& stick, double limit,
-                               double& nu) {
-  if (stick.squaredNorm() <= limit * limit) {
-    nu = 0.0;
-    return stick;
-  }
-  if (limit <= 0.0) return Eigen::Vector2d::Zero();
-  if (!eigen.ready) {  // K = Q diag(k) Qᵀ, closed form for a symmetric 2×2; once per contact and step
-    const double mean = 0.5 * (K(0, 0) + K(1, 1)), half_gap = 0.5 * (K(0, 0) - K(1, 1));
-    const double radius = std::sqrt(half_gap * half_gap + K(0, 1) * K(0, 1));
-    eigen.isotropic = radius <= settings.isotropy_tolerance * mean;
-    eigen.k = Eigen::Vector2d(mean + radius, mean - radius);
-    eigen.q1 =
-        half_gap >= 0.0 ? Eigen::Vector2d(half_gap + radius, K(0, 1)) : Eigen::Vector2d(K(0, 1), radius - half_gap);
-    if (!eigen.isotropic) eigen.q1.normalize();
-    eigen.ready = true;
-  }
-  if (eigen.isotropic) return stick * (limit / stick.norm());  // the plain projection
-  const Eigen::Vector2d& k = eigen.k;
-  const Eigen::Vector2d& q1 = eigen.q1;
-  const Eigen::Vector2d q2(-q1.y(), q1.x());
-  const Eigen::Vector2d c(q1.dot(stick), q2.dot(stick));
-  const Eigen::Vector2d kc = k.cwiseProduct(c);
-  const double inv_limit = 1.0 / limit;
-  nu = std::max(nu, 0.0);
-  Eigen::Vector2d l = c;  // λ in the eigenbasis
-  double size = 0.0;      // |l|
-  for (int i = 0; i < settings.friction_newton_iterations; ++i) {
-    const Eigen::Vector2d d(1.0 / (k.x() + nu), 1.0 / (k.y() + nu));
-    l = kc.cwiseProduct(d);
-    const double size2 = l.squaredNorm();
-    size = std::sqrt(size2);
-    if (std::abs(size - limit) <= settings.friction_newton_tolerance * limit) break;
-    // ν += φ/(−φ') for φ = 1/|λ| − 1/limit, with d|λ|/dν = −Σ λᵢ² dᵢ / |λ|.
-    nu = std::max(nu + (size2 * inv_limit - size) * size / (l.x() * l.x() * d.x() + l.y() * l.y() * d.y()), 0.0);
-  }
-  l *= limit / size;  // exactly on the cone (size is l.norm(), computed the same way)
-  return l.x() * q1 + l.y() * q2;
-}
-
 /// One Gauss-Seidel update of one contact, on the accumulated impulses given:
 /// friction first (it matters less than not sinking), then the normal to
 /// reach `target` (m/s). Returns the velocity change it made (m/s). The
@@ -149,8 +93,8 @@ double sweepContact(const SolverSettings& settings, SolverContact& c, double& no
   }
   // Friction: stop the sliding if the cone |λ_T| ≤ μ λ_N allows; otherwise
   // slide with maximal dissipation (frictionOnDisk).
-  const Eigen::Vector2d lt = frictionOnDisk(settings, c.tangent_k, c.tangent_eigen,
-                                            tangent - c.tangent_mass * u.tail<2>(), friction * normal, c.friction_nu);
+  const Eigen::Vector2d lt = detail::frictionOnDisk(
+      settings, c.tangent_k, c.tangent_eigen, tangent - c.tangent_mass * u.tail<2>(), friction * normal, c.friction_nu);
   const Eigen::Vector2d dlt = lt - tangent;
   tangent = lt;
   // Normal: reach the target velocity, never pull (λ_N ≥ 0).

@@ -61,8 +61,8 @@ void buildJointRows(const ArticulationModel& model, const ArticulationState& sta
   }
 }
 
-void solveJointRows(const Eigen::LLT<Eigen::MatrixXd>& A, std::vector<JointRow>& rows, Eigen::VectorXd& u,
-                    Eigen::VectorXd& impulse) {
+void solveRows(const SolverSettings& settings, const Eigen::LLT<Eigen::MatrixXd>& A, std::vector<JointRow>& rows,
+               std::vector<ContactRows>& contacts, Eigen::VectorXd& u, Eigen::VectorXd& impulse) {
   const int nv = static_cast<int>(u.size());
   for (JointRow& row : rows) {
     Eigen::VectorXd J = Eigen::VectorXd::Zero(nv);
@@ -72,10 +72,20 @@ void solveJointRows(const Eigen::LLT<Eigen::MatrixXd>& A, std::vector<JointRow>&
     row.mass = 1.0 / J.dot(row.response);
     row.impulse = 0.0;
   }
+  for (ContactRows& c : contacts) {
+    c.response = A.solve(c.J);
+    c.K.noalias() = c.J.transpose() * c.response;
+    c.impulse.setZero();
+    const Eigen::Matrix2d tangent_k = c.K.bottomRightCorner<2, 2>();
+    c.block = tangent_k.determinant() > 1e-9 * tangent_k.trace() * tangent_k.trace();
+    if (c.block) c.tangent_mass = tangent_k.inverse();
+    c.eigen.ready = false;
+    c.nu = 0.0;
+  }
   // Sweeps until no row changes a velocity by more than 1e-12 (rad/s or
   // m/s, relative to the fastest joint), at most 200.
   const double tolerance = 1e-12 * std::max(1.0, u.cwiseAbs().maxCoeff());
-  for (int sweep = 0; sweep < 200 && !rows.empty(); ++sweep) {
+  for (int sweep = 0; sweep < 200 && !(rows.empty() && contacts.empty()); ++sweep) {
     double largest = 0.0;
     for (JointRow& row : rows) {
       const double next = std::clamp(row.impulse + row.mass * (row.target - rowVelocity(row, u)), row.lower, row.upper);
@@ -85,12 +95,14 @@ void solveJointRows(const Eigen::LLT<Eigen::MatrixXd>& A, std::vector<JointRow>&
       u += change * row.response;
       largest = std::max(largest, std::abs(change) / row.mass);
     }
+    for (ContactRows& c : contacts) largest = std::max(largest, sweepContactRows(settings, c, u));
     if (largest <= tolerance) break;
   }
   for (const JointRow& row : rows) {
     impulse(row.dof) += row.sign * row.impulse;
     if (row.other >= 0) impulse(row.other) += row.coefficient * row.impulse;
   }
+  for (const ContactRows& c : contacts) impulse.noalias() += c.J * c.impulse;
 }
 
 }  // namespace rigid_body_sim::core::detail

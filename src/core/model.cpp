@@ -49,6 +49,7 @@ BodyModel validatedBody(const BodySpec& spec) {
   b.link = spec.link.empty() ? spec.name : spec.link;
   b.collision = spec.collision;
   b.fixed_links = spec.fixed_links;
+  b.collision_group = spec.collision_group;
   b.mass = spec.mass;
   b.inv_mass = 1.0 / spec.mass;
   b.p_LB = spec.p_LC;
@@ -155,7 +156,9 @@ void Model::deriveSettings() {
   linear_decay_ = std::exp(-damping_.linear * dt_);
   angular_decay_ = std::exp(-damping_.angular * dt_);
   max_restitution_ = contact_.restitution;
+  grouped_ = false;
   for (BodyModel& b : bodies_) {
+    grouped_ = grouped_ || b.collision_group >= 0;
     if (!b.own_friction) b.friction = contact_.friction;
     if (!b.own_restitution) b.restitution = contact_.restitution;
     max_restitution_ = std::max(max_restitution_, b.restitution);

@@ -102,4 +102,45 @@ void prepareContact(const Model& model, const State& state, const StepScratch& s
   c.tangent_eigen.ready = false;
 }
 
+Eigen::Vector2d frictionOnDisk(const SolverSettings& settings, const Eigen::Matrix2d& K,
+                               SolverContact::TangentEigen& eigen, const Eigen::Vector2d& stick, double limit,
+                               double& nu) {
+  if (stick.squaredNorm() <= limit * limit) {
+    nu = 0.0;
+    return stick;
+  }
+  if (limit <= 0.0) return Eigen::Vector2d::Zero();
+  if (!eigen.ready) {  // K = Q diag(k) Qᵀ, closed form for a symmetric 2×2; once per contact and step
+    const double mean = 0.5 * (K(0, 0) + K(1, 1)), half_gap = 0.5 * (K(0, 0) - K(1, 1));
+    const double radius = std::sqrt(half_gap * half_gap + K(0, 1) * K(0, 1));
+    eigen.isotropic = radius <= settings.isotropy_tolerance * mean;
+    eigen.k = Eigen::Vector2d(mean + radius, mean - radius);
+    eigen.q1 =
+        half_gap >= 0.0 ? Eigen::Vector2d(half_gap + radius, K(0, 1)) : Eigen::Vector2d(K(0, 1), radius - half_gap);
+    if (!eigen.isotropic) eigen.q1.normalize();
+    eigen.ready = true;
+  }
+  if (eigen.isotropic) return stick * (limit / stick.norm());  // the plain projection
+  const Eigen::Vector2d& k = eigen.k;
+  const Eigen::Vector2d& q1 = eigen.q1;
+  const Eigen::Vector2d q2(-q1.y(), q1.x());
+  const Eigen::Vector2d c(q1.dot(stick), q2.dot(stick));
+  const Eigen::Vector2d kc = k.cwiseProduct(c);
+  const double inv_limit = 1.0 / limit;
+  nu = std::max(nu, 0.0);
+  Eigen::Vector2d l = c;  // λ in the eigenbasis
+  double size = 0.0;      // |l|
+  for (int i = 0; i < settings.friction_newton_iterations; ++i) {
+    const Eigen::Vector2d d(1.0 / (k.x() + nu), 1.0 / (k.y() + nu));
+    l = kc.cwiseProduct(d);
+    const double size2 = l.squaredNorm();
+    size = std::sqrt(size2);
+    if (std::abs(size - limit) <= settings.friction_newton_tolerance * limit) break;
+    // ν += φ/(−φ') for φ = 1/|λ| − 1/limit, with d|λ|/dν = −Σ λᵢ² dᵢ / |λ|.
+    nu = std::max(nu + (size2 * inv_limit - size) * size / (l.x() * l.x() * d.x() + l.y() * l.y() * d.y()), 0.0);
+  }
+  l *= limit / size;  // exactly on the cone (size is l.norm(), computed the same way)
+  return l.x() * q1 + l.y() * q2;
+}
+
 }  // namespace rigid_body_sim::core::detail

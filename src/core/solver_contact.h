@@ -88,6 +88,25 @@ void findPressedPairs(const State& state, std::vector<std::array<int, 3>>& pairs
 void prepareContact(const Model& model, const State& state, const StepScratch& sc, double h, const Contact& contact,
                     const SolverContact* previous, SolverContact& c);
 
+/// Coulomb friction on one contact by maximal dissipation: of the impulses
+/// |λ| ≤ limit, the one that leaves the least slip energy ½ vᵀK⁻¹v, i.e. the
+/// point of the disk nearest to the sticking impulse `stick` in K's metric
+/// (K = TᵀKT, the 2×2 tangent block). Inside the disk it is `stick`;
+/// outside, λ = (K + νI)⁻¹ K stick with ν > 0 such that |λ| = limit, and the
+/// slip left after it is −νλ: the friction opposes the slip it leaves, as
+/// Coulomb's law says, whatever K's rotational coupling. Being a projection
+/// onto a convex set, it lets Gauss-Seidel converge (taking the direction
+/// from the slip before the update instead can cycle). ν solves the secular
+/// equation 1/|λ(ν)| = 1/limit by Newton's method in K's eigenbasis (Moré
+/// and Sorensen's trust-region step). 1/|λ(ν)| is concave and increasing,
+/// so from any ν ≤ ν* Newton climbs to ν* without overshooting, and from
+/// ν > ν* its first step lands below ν*: `nu` (in: a guess, such as the
+/// contact's ν of the last sweep; out: the ν found, 0 inside the disk)
+/// saves most of the iterations of a converging Gauss-Seidel.
+Eigen::Vector2d frictionOnDisk(const SolverSettings& settings, const Eigen::Matrix2d& K,
+                               SolverContact::TangentEigen& eigen, const Eigen::Vector2d& stick, double limit,
+                               double& nu);
+
 #pragma GCC visibility pop
 
 }  // namespace rigid_body_sim::core::detail

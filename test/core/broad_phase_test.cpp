@@ -1,5 +1,6 @@
 // The broad phase (src/core/broad_phase.cpp): sweep and prune in strips gives
-// exactly the pairs a brute-force test of every pair's boxes gives.
+// exactly the pairs a brute-force test of every pair's boxes gives, none
+// within a collision group.
 #include "broad_phase.h"
 
 #include <gtest/gtest.h>
@@ -21,6 +22,7 @@ TEST(BroadPhase, FindsExactlyThePairsWhoseGrownBoxesOverlap) {
   for (int i = 0; i < n; ++i) {
     core::BodySpec b = boxBody(i % 3 == 0 ? Vec3(0.3, 0.1, 0.1) : Vec3(0.1, 0.1, 0.1));
     b.name = "box" + std::to_string(i);
+    b.collision_group = i % 4 == 1 ? 0 : i % 4 == 2 ? 1 : -1;  // two robots' links among free bodies
     ms.bodies.push_back(b);
   }
   const core::Model model(ms);
@@ -41,6 +43,8 @@ TEST(BroadPhase, FindsExactlyThePairsWhoseGrownBoxesOverlap) {
     for (int a = 0; a < n; ++a) {
       for (int o = 0; o < n; ++o) {
         if (a == o || (s.bodies[a].asleep && s.bodies[o].asleep)) continue;  // two sleepers make no pair
+        const int group = model.body(a).collision_group;
+        if (group >= 0 && group == model.body(o).collision_group) continue;  // nor one group's bodies
         const double reach = model.body(a).bound_radius + model.body(o).bound_radius + 0.02;
         if (((s.bodies[a].p_WB - s.bodies[o].p_WB).cwiseAbs().array() <= reach).all()) expected.emplace_back(a, o);
       }

@@ -8,8 +8,11 @@
 #include <vector>
 
 #include "rigid_body_sim/core/articulation.h"
+#include "rigid_body_sim/core/articulation_contacts.h"
 #include "rigid_body_sim/core/articulation_dynamics.h"
 #include "rigid_body_sim/core/settings.h"
+#include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/core/workspace.h"
 
 namespace rigid_body_sim::core {
 
@@ -29,12 +32,18 @@ struct ArticulationWorkspace {
   Eigen::LLT<Eigen::MatrixXd> llt;
   Eigen::VectorXd u, p, force, bias, predicted, next, corrected, rhs, gradient;
   ArticulationState start;
+  /// The links as bodies, and the detection's workspace: after a step with
+  /// colliders, `detection.contacts` holds its contacts with their impulses.
+  State links;
+  Workspace detection;
 };
 
 /// Advances `state` by h seconds under gravity g_W (m/s²): symplectic Euler
 /// on the joints' momenta with damping implicit, the joints' limits,
 /// friction and mimics solved as rows, then q⁺ = q + h v⁺ and the base moved
-/// by its new twist (§11.5, §11.6).
+/// by its new twist (§11.5, §11.6). With `colliders`, the links' contacts
+/// with the scene are rows of the same solve as the joints' (§11.8), and
+/// what still penetrates deeper than the slop is lifted out.
 ///
 /// The speed limits (§5.9, §11.7): a joint faster than limits'
 /// max_angular_speed (revolute, continuous) or max_linear_speed (prismatic),
@@ -45,7 +54,7 @@ struct ArticulationWorkspace {
 /// model's (efforts: one per joint; wrenches: one per link).
 bool stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
                       const Vec3& g_W, double h, const SpeedLimits& limits = {},
-                      ArticulationWorkspace* workspace = nullptr);
+                      ArticulationWorkspace* workspace = nullptr, const ArticulationColliders* colliders = nullptr);
 
 /// The base pose after h seconds at twist V_B (in the base's axes): the
 /// origin moved by h R v, the rotation by exp(h ω) on the body side.

@@ -38,6 +38,9 @@ struct BodySpec {
   /// Its surface (config bodies[i].contact); unset: the scene's,
   /// contact.friction and contact.restitution.
   std::optional<double> friction, restitution;
+  /// Bodies of one group (≥ 0) never touch each other: the links of one
+  /// articulation, whose self-collision is off (docs/physics.md §11.8). −1: none.
+  int collision_group = -1;
 };
 
 /// Creation settings of the whole model.
@@ -105,6 +108,7 @@ struct alignas(64) BodyModel {
   Mat3 I_C_L = Mat3::Identity();          ///< inertia about the centre of mass in L axes, as given
   std::vector<CollisionShape> collision;  ///< the collision shapes in L, as given (for drawing)
   std::vector<FixedLink> fixed_links;     ///< frames fixed to the body (for tf)
+  int collision_group = -1;               ///< BodySpec::collision_group
   /// Shape matching: the mean of the contact points (B) and (Σ r̄ r̄ᵀ)⁻¹ of
   /// the points about it; empty when the points do not span three dimensions.
   Vec3 points_centroid_B = Vec3::Zero();
@@ -224,6 +228,8 @@ class Model {
   /// max(restitution_threshold, 2 |g| Δt), m/s.
   double restitutionThreshold() const { return restitution_threshold_; }
   /// Per-step decay factors α = e^(−k Δt) of the damping rates.
+  /// Whether some bodies share a collision group (the broad phase then looks).
+  bool hasCollisionGroups() const { return grouped_; }
   double linearDecay() const { return linear_decay_; }
   double angularDecay() const { return angular_decay_; }
 
@@ -239,11 +245,13 @@ class Model {
   SolverSettings solver_;
   SpeedLimits limits_;
   /// What follows from the settings: the restitution threshold, the decay
-  /// factors, every body's surface that is the scene's, whether anything bounces.
+  /// factors, every body's surface that is the scene's, whether anything bounces,
+  /// whether any body has a collision group.
   void deriveSettings();
 
   double restitution_threshold_;
   double max_restitution_ = 0.0;
+  bool grouped_ = false;
   double linear_decay_;
   double angular_decay_;
 };

@@ -1,0 +1,29 @@
+// An articulation's links against the scene: the links as the contact
+// detection sees them, and the contacts as rows of the articulation's
+// joint-space impulse solve (docs/physics.md §11.8). Eigen only.
+#pragma once
+
+#include <vector>
+
+#include "rigid_body_sim/core/articulation.h"
+#include "rigid_body_sim/core/model.h"
+
+namespace rigid_body_sim::core {
+
+/// The moving links that have collision shapes, each a body of `bodies`
+/// (built as any body is: its contact points and solid from its shapes, its
+/// mass and inertia), all in one collision group: a robot's links never
+/// touch each other (self-collision off, Gazebo's default). `bodies` also
+/// holds the scene, the contact settings (surface, slop, sampling) and the
+/// solver's tolerances the step uses for them.
+struct ArticulationColliders {
+  Model bodies;
+  std::vector<int> link;  ///< body i is link link[i]
+};
+
+/// The colliders of `model` with the scene and settings of `settings` (its
+/// bodies are ignored). A link a body could not be (a mass or inertia
+/// outside the model's ranges) throws std::invalid_argument naming it.
+ArticulationColliders articulationColliders(const ArticulationModel& model, const ModelSpec& settings);
+
+}  // namespace rigid_body_sim::core

@@ -1,0 +1,224 @@
+// An articulation's links against the scene (docs/physics.md §11.8): a
+// pendulum comes to rest on the floor, a two-link arm lying on it does not
+// creep, a four-wheeled base rolls at the speed ω r its wheels set.
+#include "rigid_body_sim/core/articulation_contacts.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rigid_body_sim/core/articulation_step.h"
+#include "rigid_body_sim/core/contact.h"
+
+namespace rigid_body_sim::core {
+namespace {
+
+constexpr double kG = 9.81;
+constexpr double kH = 1e-3;
+
+ModelSpec groundSettings(double friction) {
+  ModelSpec spec;
+  spec.dt = kH;
+  spec.scene = {Sdf::plane(Vec3::UnitZ())};
+  spec.contact.friction = friction;
+  return spec;
+}
+
+CollisionShape box(const Vec3& size, const Vec3& centre) {
+  CollisionShape s;
+  s.kind = CollisionShape::Kind::kBox;
+  s.size = size;
+  s.X_LS.translation = centre;
+  return s;
+}
+
+MassProperties boxMass(double m, const Vec3& size, const Vec3& centre) {
+  MassProperties p;
+  p.mass = m;
+  p.p_FC = centre;
+  const Vec3 s2 = size.cwiseProduct(size);
+  p.I_C_F = (m / 12.0 * Vec3(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y())).asDiagonal();
+  return p;
+}
+
+struct Robot {
+  const ArticulationModel& model;
+  ArticulationColliders colliders;
+  ArticulationState state;
+  ArticulationWorkspace ws;
+  ArticulationLoads loads;
+
+  Robot(const ArticulationModel& m, const ModelSpec& settings, const ArticulationState& start)
+      : model(m), colliders(articulationColliders(m, settings)), state(start) {}
+  void steps(int n) {
+    for (int i = 0; i < n; ++i) {
+      ASSERT_TRUE(stepArticulation(model, state, loads, Vec3(0, 0, -kG), kH, {}, &ws, &colliders));
+    }
+  }
+  /// The deepest any link's contact is into the floor (m, ≥ 0).
+  double deepest() const {
+    double d = 0.0;
+    for (const Contact& c : ws.detection.contacts) d = std::max(d, -c.separation);
+    return d;
+  }
+};
+
+// A rod on a fixed pivot 0.5 m up, a ball of radius 0.05 at its tip 0.6 m
+// out, released horizontal: it swings down and stops with the ball on the
+// floor, sin θ = (0.5 − 0.05)/0.6. One joint: each contact's K has rank 1.
+TEST(ArticulationContacts, PendulumComesToRestOnTheFloor) {
+  ArticulationModel model;
+  model.fixed_base = true;
+  model.links.resize(2);
+  model.links[0].name = "world";
+  ArticulatedLink& rod = model.links[1];
+  rod.name = "rod";
+  rod.joint = "pivot";
+  rod.parent = 0;
+  rod.type = JointType::Continuous;
+  rod.X_PJ.translation = Vec3(0.0, 0.0, 0.5);
+  rod.axis_J = Vec3::UnitY();
+  rod.damping = 0.05;
+  rod.mass = boxMass(1.0, Vec3(0.6, 0.02, 0.02), Vec3(0.3, 0.0, 0.0));
+  CollisionShape ball;
+  ball.kind = CollisionShape::Kind::kSphere;
+  ball.radius = 0.05;
+  ball.X_LS.translation = Vec3(0.6, 0.0, 0.0);
+  rod.collision = {ball};
+  checkArticulation(model);
+  Robot run(model, groundSettings(0.5), restState(model));
+  double deepest = 0.0;
+  for (int i = 0; i < 4000; ++i) {
+    run.steps(1);
+    deepest = std::max(deepest, run.deepest());
+  }
+  // About +y, a positive angle turns x toward −z: the tip goes down.
+  const double rest = std::asin(0.45 / 0.6);
+  EXPECT_NEAR(run.state.q(0), rest, 2e-4);  // within the slop's share of the angle (1e-4 / 0.6 cos θ)
+  EXPECT_NEAR(run.state.v(0), 0.0, 1e-9);
+  EXPECT_LT(deepest, 0.05);  // the first touch, at 2.9 m/s, is caught speculatively
+  EXPECT_LT(run.deepest(), 1e-4 + 1e-9);
+}
+
+/// Two 0.4 m bars joined end to end by a hinge about z, lying flat on the
+/// floor, the base floating.
+ArticulationModel lyingArm() {
+  ArticulationModel model;
+  model.fixed_base = false;
+  model.links.resize(2);
+  const Vec3 size(0.4, 0.1, 0.1);
+  model.links[0].name = "upper";
+  model.links[0].mass = boxMass(1.0, size, Vec3::Zero());
+  model.links[0].collision = {box(size, Vec3::Zero())};
+  ArticulatedLink& fore = model.links[1];
+  fore.name = "fore";
+  fore.joint = "elbow";
+  fore.parent = 0;
+  fore.type = JointType::Revolute;
+  fore.limits.lower = -2.0;
+  fore.limits.upper = 2.0;
+  fore.X_PJ.translation = Vec3(0.2, 0.0, 0.0);
+  fore.axis_J = Vec3::UnitZ();
+  fore.mass = boxMass(1.0, size, Vec3(0.2, 0.0, 0.0));
+  fore.collision = {box(size, Vec3(0.2, 0.0, 0.0))};
+  checkArticulation(model);
+  return model;
+}
+
+TEST(ArticulationContacts, ArmLyingOnTheFloorRestsWithoutCreep) {
+  const ArticulationModel model = lyingArm();
+  ArticulationState start = restState(model);
+  start.X_WB.translation = Vec3(0.0, 0.0, 0.05);
+  start.q(0) = 0.7;  // bent at the elbow
+  Robot run(model, groundSettings(0.5), start);
+  run.steps(500);
+  const Vec3 settled = run.state.X_WB.translation;
+  const double elbow = run.state.q(0);
+  run.steps(4500);
+  EXPECT_LT((run.state.X_WB.translation - settled).norm(), 1e-9);
+  EXPECT_NEAR(run.state.q(0), elbow, 1e-9);
+  EXPECT_NEAR(run.state.X_WB.translation.z(), 0.05, 1e-4);  // on the floor, within the slop
+  EXPECT_LT(run.state.V_B.norm(), 1e-9);
+  // The floor carries the arm's weight: Σ λ_N = m g h.
+  double lifted = 0.0;
+  for (const Contact& c : run.ws.detection.contacts) lifted += c.normal_impulse;
+  EXPECT_NEAR(lifted, 2.0 * kG * kH, 1e-9);
+}
+
+// Bent and pushed sideways at 0.5 m/s, it slides to rest: friction takes
+// μ m g, so it stops within v²/(2 μ g) of where it began (less: the elbow's
+// turn takes some of the energy too).
+TEST(ArticulationContacts, ArmSlidingOnTheFloorStops) {
+  const ArticulationModel model = lyingArm();
+  ArticulationState start = restState(model);
+  start.X_WB.translation = Vec3(0.0, 0.0, 0.05);
+  start.V_B.tail<3>() = Vec3(0.0, 0.5, 0.0);
+  start.v(0) = 0.0;
+  Robot run(model, groundSettings(0.5), start);
+  // While it slides, the floor's friction is the whole cone: Σ |λ_T| = μ Σ λ_N
+  // (row-by-row friction, clipped to the disk, gave 84 % of it here).
+  run.steps(5);
+  double normal = 0.0, friction = 0.0;
+  Vec3 tangent = Vec3::Zero();
+  for (const Contact& c : run.ws.detection.contacts) {
+    normal += c.normal_impulse;
+    friction += c.tangent_impulse_W.norm();
+    tangent += c.tangent_impulse_W;
+  }
+  EXPECT_NEAR(normal, 2.0 * kG * kH, 1e-9);
+  EXPECT_NEAR(friction, 0.5 * normal, 1e-9 * normal);
+  EXPECT_GT(-tangent.y(), 0.999 * friction);  // against the slide
+  run.steps(995);
+  EXPECT_LT(run.state.V_B.norm(), 1e-6);
+  const double y = run.state.X_WB.translation.y();
+  EXPECT_GT(y, 0.0);
+  EXPECT_LE(y, 0.25 / (2.0 * 0.5 * kG) + 1e-3);
+}
+
+// A 5 kg chassis on four wheels of radius 0.1 m (cylinders about y, on
+// continuous joints), driven by equal efforts: it rolls, the base's speed
+// ω r.
+TEST(ArticulationContacts, WheeledBaseRollsAtOmegaR) {
+  const double r = 0.1;
+  ArticulationModel model;
+  model.fixed_base = false;
+  model.links.resize(5);
+  model.links[0].name = "chassis";
+  model.links[0].mass = boxMass(5.0, Vec3(0.6, 0.4, 0.1), Vec3::Zero());
+  const double xs[4] = {0.2, 0.2, -0.2, -0.2}, ys[4] = {0.25, -0.25, 0.25, -0.25};
+  for (int i = 1; i <= 4; ++i) {
+    ArticulatedLink& w = model.links[i];
+    w.name = "wheel" + std::to_string(i);
+    w.joint = "axle" + std::to_string(i);
+    w.parent = 0;
+    w.type = JointType::Continuous;
+    w.X_PJ.translation = Vec3(xs[i - 1], ys[i - 1], 0.0);
+    w.axis_J = Vec3::UnitY();
+    w.mass.mass = 0.5;
+    w.mass.I_C_F =
+        Vec3(0.5 * (3 * r * r + 0.05 * 0.05) / 12.0, 0.5 * r * r / 2.0, 0.5 * (3 * r * r + 0.05 * 0.05) / 12.0)
+            .asDiagonal();
+    CollisionShape c;
+    c.kind = CollisionShape::Kind::kCylinder;
+    c.radius = r;
+    c.length = 0.05;
+    c.X_LS.rotation = Quat(Eigen::AngleAxisd(M_PI / 2.0, Vec3::UnitX()));  // its z along y
+    w.collision = {c};
+  }
+  checkArticulation(model);
+  ArticulationState start = restState(model);
+  start.X_WB.translation = Vec3(0.0, 0.0, r);
+  Robot run(model, groundSettings(0.8), start);
+  run.loads.effort = Eigen::VectorXd::Constant(4, 0.2);
+  run.steps(1000);
+  const double omega = run.state.v.mean();
+  const double speed = run.state.V_B(3);
+  // 8 N on 7 kg, less the wheels' share of the work: well short of slipping.
+  EXPECT_GT(speed, 0.5);
+  EXPECT_NEAR(speed, omega * r, 1e-3 * speed);
+  EXPECT_NEAR(run.state.X_WB.translation.z(), r, 1e-4);
+  EXPECT_LT(std::abs(run.state.X_WB.translation.y()), 1e-6);
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::core
