@@ -195,6 +195,7 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
   // Slowed to the limits, the velocities no longer carry the momenta: the
   // next step takes them from the velocities.
   const bool limited = limitSpeeds(model, limits, u_next);
+  ws.speed_limited = limited;
   setGeneralizedVelocity(model, u_next, state);
   state.q += h * state.v;
   // A joint stays within its limits: what the solve's tolerance leaves, or a

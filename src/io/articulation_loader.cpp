@@ -3,6 +3,7 @@
 
 #include <urdf_model/model.h>
 
+#include <algorithm>
 #include <deque>
 #include <filesystem>
 #include <map>
@@ -127,6 +128,13 @@ core::ArticulationModel loadArticulationString(const std::string& xml, const std
     lumper.fail(e.what());
   }
   return model;
+}
+
+bool describesRobot(const std::string& xml, const std::string& source) {
+  detail::Lumper lumper(source, "");
+  const urdf::ModelInterfaceSharedPtr urdf = lumper.parse(xml);
+  return std::any_of(urdf->joints_.begin(), urdf->joints_.end(),
+                     [](const auto& joint) { return joint.second->type != urdf::Joint::FIXED; });
 }
 
 core::ArticulationModel loadArticulationFile(const std::string& path) {

@@ -24,6 +24,15 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
   Lumper lumper(source, base_dir);
   const urdf::ModelInterfaceSharedPtr model = lumper.parse(xml);
   const urdf::LinkConstSharedPtr root = model->getRoot();
+  // A robot is not a body: said first, whatever else its links lack (a
+  // `world` root has no <inertial>).
+  for (const auto& [name, joint] : model->joints_) {
+    if (joint->type != urdf::Joint::FIXED) {
+      lumper.fail("joint '" + name + "' is " + detail::jointTypeName(joint->type) +
+                  ": only fixed joints are supported in a body; a URDF with moving joints is a robot, which rbsim "
+                  "runs alone (rbsim --urdf ROBOT.urdf) and a world of bodies and the node do not take yet");
+    }
+  }
 
   detail::LinkGroup group;
   lumper.collect(*root, group, /*allow_moving=*/false);

@@ -168,8 +168,7 @@ void Lumper::collect(const urdf::Link& root, LinkGroup& group, bool allow_moving
       if (joint->type != urdf::Joint::FIXED) {
         if (!allow_moving) {
           fail(std::string("joint '") + joint->name + "' is " + jointTypeName(joint->type) +
-               ": only fixed joints are supported in a body (robots with moving joints are not yet simulated by "
-               "rbsim or the node)");
+               ": only fixed joints are supported in a body");
         }
         group.moving.push_back({joint.get(), child->get(), X_LK * X_KC});
         continue;

@@ -17,33 +17,15 @@ constexpr double kMaxStartDistance = 1e6;
 /// `key` (initial, or bodies[i].initial) as a ConfigError names it.
 core::BodyState startState(const core::Model& model, std::size_t i, const core::LinkState& link,
                            const std::string& key) {
-  const auto refuse = [&key](const std::string& field, double value, const std::string& unit, const std::string& above,
-                             double limit) {
-    std::ostringstream os;
-    os << "config key '" << key << "." << field << "': magnitude " << value << " " << unit << " is above " << above
-       << " = " << limit << " " << unit;
-    throw ConfigError(os.str());
-  };
-  // stableNorm: |x|² of a finite 1e300 overflows.
-  if (link.p_WL.stableNorm() > kMaxStartDistance) {
-    refuse("position", link.p_WL.stableNorm(), "m", "the farthest a body may start", kMaxStartDistance);
-  }
-  if (link.v_WL.stableNorm() > model.limits().max_linear_speed) {
-    refuse("linear_velocity", link.v_WL.stableNorm(), "m/s", "limits.max_linear_speed",
-           model.limits().max_linear_speed);
-  }
-  if (link.w_W.stableNorm() > model.limits().max_angular_speed) {
-    refuse("angular_velocity", link.w_W.stableNorm(), "rad/s", "limits.max_angular_speed",
-           model.limits().max_angular_speed);
-  }
+  checkStart(link, model.limits(), key);
   return core::bodyStateFromLink(model.body(i), link);
 }
 
 /// Joint values for a world of bodies: none has a moving joint.
 [[noreturn]] void refuseJoints(const std::string& key) {
   throw ConfigError("config key '" + key +
-                    ".joint_positions' / '.joint_velocities': a body has no moving joints (rbsim and the node do "
-                    "not take robots yet)");
+                    ".joint_positions' / '.joint_velocities': a body has no moving joints (a robot is simulated "
+                    "alone for now: rbsim --urdf ROBOT.urdf)");
 }
 
 }  // namespace
@@ -95,6 +77,26 @@ World loadWorld(const SimConfig& config, const std::function<core::BodySpec()>& 
   World world{buildModel(config, single_body()), {}};
   world.state.bodies = {startState(world.model, 0, config.initial, "initial")};
   return world;
+}
+
+void checkStart(const core::LinkState& link, const core::SpeedLimits& limits, const std::string& key) {
+  const auto refuse = [&key](const std::string& field, double value, const std::string& unit, const std::string& above,
+                             double limit) {
+    std::ostringstream os;
+    os << "config key '" << key << "." << field << "': magnitude " << value << " " << unit << " is above " << above
+       << " = " << limit << " " << unit;
+    throw ConfigError(os.str());
+  };
+  // stableNorm: |x|² of a finite 1e300 overflows.
+  if (link.p_WL.stableNorm() > kMaxStartDistance) {
+    refuse("position", link.p_WL.stableNorm(), "m", "the farthest a body may start", kMaxStartDistance);
+  }
+  if (link.v_WL.stableNorm() > limits.max_linear_speed) {
+    refuse("linear_velocity", link.v_WL.stableNorm(), "m/s", "limits.max_linear_speed", limits.max_linear_speed);
+  }
+  if (link.w_W.stableNorm() > limits.max_angular_speed) {
+    refuse("angular_velocity", link.w_W.stableNorm(), "rad/s", "limits.max_angular_speed", limits.max_angular_speed);
+  }
 }
 
 std::string touchesNothing(const core::BodyModel& body) {

@@ -23,10 +23,13 @@
 #include <vector>
 
 #include "rbsim_output.h"
+#include "rbsim_robot.h"
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/diagnostics.h"
 #include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/io/articulation_loader.h"
 #include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/orientation.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/io/world.h"
@@ -44,34 +47,32 @@ constexpr const char* kUsage =
     "       rbsim --config WORLD.yaml [--set KEY=VALUE ...] --duration S [...]\n"
     "\n"
     "Simulates the rigid body of a URDF (its root link and every link fixed to it),\n"
-    "or the bodies listed under `bodies` in the config, and prints one JSON line of\n"
-    "results on stdout.\n"
+    "a robot (a URDF with revolute, continuous or prismatic joints; a root link\n"
+    "`world` fixes it to the world), or the bodies listed under `bodies` in the\n"
+    "config, and prints one JSON line of results on stdout.\n"
     "\n"
-    "  --urdf FILE        the body (URDF with <inertial> on every link)\n"
+    "  --urdf FILE        the body or robot (URDF with <inertial> on every link)\n"
     "  --config FILE      YAML settings; keys and defaults in config/default.yaml\n"
     "  --set KEY=VALUE    override one config key with a YAML value, repeatable:\n"
     "                     --set gravity=[0,0,0] --set initial.angular_velocity=[0.01,3,0]\n"
     "  --duration S       simulated time, seconds\n"
     "  --dt S             time step, seconds (overrides the config's dt)\n"
     "  --csv OUT.csv      trajectory: t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz (world frame;\n"
-    "                     with several bodies a body column follows t)\n"
+    "                     with several bodies a body column follows t; a robot's base\n"
+    "                     link, then JOINT.position,JOINT.velocity per joint)\n"
     "  --every N          one CSV row every N steps (default 1), plus the final state\n"
     "  --quiet            no summary on stderr\n";
 
-/// The most steps one run takes (1e12: eleven days at 1 µs a step).
-constexpr double kMaxSteps = 1e12;
-
 using rigid_body_sim::tools::CsvWriter;
+using rigid_body_sim::tools::Diverged;
+using rigid_body_sim::tools::finalJson;
 using rigid_body_sim::tools::Json;
 using rigid_body_sim::tools::JsonLine;
+using rigid_body_sim::tools::num;
 using rigid_body_sim::tools::ProgressBar;
+using rigid_body_sim::tools::text;
 using rigid_body_sim::tools::UsageError;
-
-/// A body's state stopped being finite (the step's guard put it back): the
-/// run's figures would mean nothing, so it ends with exit code 3.
-struct Diverged : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using rigid_body_sim::tools::vec;
 
 struct Args {
   std::string urdf, config, csv;
@@ -133,18 +134,6 @@ Args parseArgs(int argc, char** argv) {
 
 // ---------------------------------------------------------------- output
 
-/// A number for the JSON line: non-finite values become null (JSON has no NaN).
-Json num(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
-Json vec(const Vec3& v) { return Json::array({num(v.x()), num(v.y()), num(v.z())}); }
-Json quat(const Quat& q) { return Json::array({num(q.x()), num(q.y()), num(q.z()), num(q.w())}); }
-
-/// A number for messages: as precise as the double.
-std::string text(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-
 // ---------------------------------------------------------------- run
 
 /// Angular momentum of the world: one body's about its centre of mass; with
@@ -157,13 +146,6 @@ Vec3 angularMomentum(const core::Model& model, const core::State& state) {
     total += core::angularMomentumWorld(model.body(i), s) + model.body(i).mass * s.p_WB.cross(s.v_WB);
   }
   return total;
-}
-
-Json finalJson(const core::LinkState& link) {
-  return {{"position", vec(link.p_WL)},
-          {"quaternion", quat(link.q_WL)},
-          {"linear_velocity", vec(link.v_WL)},
-          {"angular_velocity", vec(link.w_W)}};
 }
 
 /// What a step reports beyond the state: a body held back by the speed
@@ -222,6 +204,14 @@ io::World loadWorld(const Args& args, bool* world_config) {
 }
 
 int run(const Args& args) {
+  if (!args.urdf.empty()) {  // a URDF with moving joints is a robot: rbsim_robot.cpp
+    const std::string xml = io::readInput<io::UrdfError>(args.urdf, io::InputCaps::kUrdfBytes, "URDF");
+    if (io::describesRobot(xml, args.urdf)) {
+      const std::string dir = std::filesystem::path(args.urdf).parent_path().string();
+      return rigid_body_sim::tools::runRobot(readConfig(args), io::loadArticulationString(xml, args.urdf, dir),
+                                             {args.duration, args.csv, args.every, args.quiet});
+    }
+  }
   bool world_config = false;
   io::World world = loadWorld(args, &world_config);
   const core::Model& model = world.model;
@@ -235,15 +225,7 @@ int run(const Args& args) {
   }
 
   const double dt = model.dt();
-  const double step_count = args.duration / dt;
-  if (!(step_count < kMaxSteps)) {  // also keeps llround below from overflowing
-    throw UsageError("--duration " + text(args.duration) + " is " + text(step_count) + " steps of " + text(dt) +
-                     " s: at most " + text(kMaxSteps) + " steps per run");
-  }
-  const long long steps = std::llround(step_count);
-  if (steps < 1) {
-    throw UsageError("--duration " + text(args.duration) + " is shorter than one step of " + text(dt) + " s");
-  }
+  const long long steps = rigid_body_sim::tools::stepCount(args.duration, dt);
   const double energy_start = core::totalEnergy(model, state);
   const Vec3 momentum_start = angularMomentum(model, state);
 

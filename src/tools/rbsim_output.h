@@ -1,14 +1,18 @@
-// rbsim's outputs: the JSON line, the CSV trajectory and the progress bar;
-// and the error a bad command line or output raises (exit 2).
+// rbsim's outputs: the JSON line and its numbers, the CSV trajectory and the
+// progress bar; the error a bad command line or output raises (exit 2) and
+// the one a run that diverged ends with (exit 3).
 #pragma once
 
+#include <Eigen/Core>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "rigid_body_sim/core/state.h"
 
@@ -21,7 +25,47 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A state stopped being finite (the step's guard put it back): the run's
+/// figures would mean nothing, so it ends with exit code 3.
+struct Diverged : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 using Json = nlohmann::ordered_json;  // keys in the order written
+
+/// A number for the JSON line: non-finite values become null (JSON has no NaN).
+inline Json num(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+inline Json vec(const core::Vec3& v) { return Json::array({num(v.x()), num(v.y()), num(v.z())}); }
+inline Json quat(const core::Quat& q) { return Json::array({num(q.x()), num(q.y()), num(q.z()), num(q.w())}); }
+
+/// A number for messages: as precise as the double.
+inline std::string text(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+/// A link's final pose and twist, as the JSON line gives it.
+inline Json finalJson(const core::LinkState& link) {
+  return {{"position", vec(link.p_WL)},
+          {"quaternion", quat(link.q_WL)},
+          {"linear_velocity", vec(link.v_WL)},
+          {"angular_velocity", vec(link.w_W)}};
+}
+
+/// The steps of a run of `duration` seconds at `dt`: at least one, at most
+/// 1e12 (eleven days at 1 µs a step); else a UsageError.
+inline long long stepCount(double duration, double dt) {
+  constexpr double kMaxSteps = 1e12;
+  const double count = duration / dt;
+  if (!(count < kMaxSteps)) {  // also keeps llround below from overflowing
+    throw UsageError("--duration " + text(duration) + " is " + text(count) + " steps of " + text(dt) + " s: at most " +
+                     text(kMaxSteps) + " steps per run");
+  }
+  const long long steps = std::llround(count);
+  if (steps < 1) throw UsageError("--duration " + text(duration) + " is shorter than one step of " + text(dt) + " s");
+  return steps;
+}
 
 /// One JSON object on one line of stdout whose last member, an array, is
 /// written an element at a time: a world's bodies as one nlohmann tree and
@@ -59,12 +103,18 @@ class JsonLine {
 
 class CsvWriter {
  public:
-  /// With `with_body`, a body column after t (a world of several bodies).
-  CsvWriter(const std::string& path, bool with_body)
+  /// With `with_body`, a body column after t (a world of several bodies);
+  /// with `joints` (a robot), two columns per joint after the base's,
+  /// JOINT.position and JOINT.velocity.
+  CsvWriter(const std::string& path, bool with_body, const std::vector<std::string>& joints = {})
       : file_(std::fopen(path.c_str(), "w"), &std::fclose), path_(path), with_body_(with_body) {
     if (!file_) throw UsageError("--csv: cannot write '" + path + "': " + std::strerror(errno));
-    std::fputs(with_body_ ? "t,body,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz\n" : "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz\n",
+    std::fputs(with_body_ ? "t,body,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz" : "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz",
                file_.get());
+    for (const std::string& joint : joints) {
+      std::fprintf(file_.get(), ",%s,%s", field(joint + ".position").c_str(), field(joint + ".velocity").c_str());
+    }
+    std::fputc('\n', file_.get());
   }
   /// Flushes and closes the file; a failed write (a full disk) is an error.
   void finish() {
@@ -74,14 +124,32 @@ class CsvWriter {
     if (failed || closed != 0) throw UsageError("--csv: writing '" + path_ + "' failed: " + std::strerror(errno));
   }
   void row(double t, const std::string& body, const core::LinkState& s) {
-    std::fprintf(file_.get(), "%.9g,", t);
-    if (with_body_) std::fprintf(file_.get(), "%s,", body.c_str());
-    std::fprintf(file_.get(), "%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g\n",
-                 s.p_WL.x(), s.p_WL.y(), s.p_WL.z(), s.q_WL.x(), s.q_WL.y(), s.q_WL.z(), s.q_WL.w(), s.v_WL.x(),
-                 s.v_WL.y(), s.v_WL.z(), s.w_W.x(), s.w_W.y(), s.w_W.z());
+    start(t, body, s);
+    std::fputc('\n', file_.get());
+  }
+  /// A robot's row: its base, then each joint's position and velocity.
+  void row(double t, const core::LinkState& base, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+    start(t, "", base);
+    for (Eigen::Index i = 0; i < q.size(); ++i) std::fprintf(file_.get(), ",%.12g,%.12g", q(i), v(i));
+    std::fputc('\n', file_.get());
   }
 
  private:
+  void start(double t, const std::string& body, const core::LinkState& s) {
+    std::fprintf(file_.get(), "%.9g,", t);
+    if (with_body_) std::fprintf(file_.get(), "%s,", body.c_str());
+    std::fprintf(file_.get(), "%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g",
+                 s.p_WL.x(), s.p_WL.y(), s.p_WL.z(), s.q_WL.x(), s.q_WL.y(), s.q_WL.z(), s.q_WL.w(), s.v_WL.x(),
+                 s.v_WL.y(), s.v_WL.z(), s.w_W.x(), s.w_W.y(), s.w_W.z());
+  }
+  /// A header field: quoted (RFC 4180) when a URDF's name holds a comma, a quote or a line break.
+  static std::string field(const std::string& name) {
+    if (name.find_first_of(",\"\r\n") == std::string::npos) return name;
+    std::string out = "\"";
+    for (const char c : name) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+  }
+
   std::unique_ptr<FILE, int (*)(FILE*)> file_;
   std::string path_;
   bool with_body_;

@@ -115,6 +115,10 @@ TEST(UrdfLoader, RefusesAMovableJoint) {
             "<joint name='shoulder' type='revolute'><parent link='base'/><child link='arm'/>"
             "<axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='10' velocity='1'/></joint>");
   expectRefused(revolute, {"joint 'shoulder' is revolute"});
+  // Rooted at `world` (no <inertial>), it is still named a robot first.
+  const std::string on_world =
+      robot(link("world", "") + link("arm", inertial(1.0)) + joint("shoulder", "continuous", "world", "arm", "0 0 1"));
+  expectRefused(on_world, {"joint 'shoulder' is continuous", "a URDF with moving joints is a robot"});
 }
 
 TEST(UrdfLoader, RefusesALinkWithoutInertial) {

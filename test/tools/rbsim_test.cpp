@@ -286,5 +286,57 @@ TEST(Rbsim, ABodyHeldByTheSpeedLimitsIsNamedOnce) {
   EXPECT_NE(slow.out.find("\"speed_limited\":[]"), std::string::npos) << slow.out;
 }
 
+// A robot: the shipped rod pendulum released from horizontal comes back
+// after its closed-form period, 4 √(I/(m g l)) K(sin(θ₀/2)); the JSON gives
+// final.joints.pivot, the CSV the joint's columns.
+TEST(Rbsim, RunsARobotAndReportsItsJoints) {
+  const double I = 1.0 / 12.0, m = 1.0, l = 0.25, g = 9.81;
+  const double period = 4.0 * std::sqrt(I / (m * g * l)) * std::comp_ellint_1(std::sin(M_PI / 4.0));
+  const double duration = std::round(period * 1e3) / 1e3;  // whole steps: off by ≤ 0.5 ms at the turning point
+  const std::string csv = tempPath("robot.csv");
+  const Result r = rbsim("--urdf " + std::string(RBS_SOURCE_DIR) +
+                         "/urdf/pendulum.urdf --set 'initial.joint_positions={pivot: 1.5707963267948966}' --duration " +
+                         std::to_string(duration) + " --every 100 --csv " + csv + " --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const YAML::Node j = YAML::Load(r.out);
+  const YAML::Node pivot = j["final"]["joints"]["pivot"];
+  // ½ θ̈ δt² with θ̈ = m g l / I = 29.4 rad/s² and δt ≤ 0.5 ms: 4e-6 rad, and the step's own phase error.
+  EXPECT_NEAR(pivot["position"].as<double>(), M_PI / 2.0, 2e-3);
+  EXPECT_NEAR(pivot["velocity"].as<double>(), 0.0, 0.03);  // θ̈ δt
+  EXPECT_EQ(j["bodies"][0]["name"].as<std::string>(), "pendulum");
+  EXPECT_NEAR(j["energy"]["end"].as<double>(), j["energy"]["start"].as<double>(), 1e-3 * m * g * l);
+  const std::string rows = slurp(csv);
+  EXPECT_EQ(rows.substr(0, rows.find('\n')), "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz,pivot.position,pivot.velocity");
+  EXPECT_NE(rows.find("\n0,0,0,0,0,0,0,1,0,0,0,0,0,0,1.57079632679,0\n"), std::string::npos) << rows;
+}
+
+// The shipped four-wheeled base, its wheels spun at 10 rad/s on the ground:
+// they slip until it rolls, then it rolls at ω r.
+TEST(Rbsim, AFourWheeledBaseRollsAtOmegaR) {
+  const Result r = rbsim("--urdf " + std::string(RBS_SOURCE_DIR) +
+                         "/urdf/four_wheeler.urdf --set initial.position=[0,0,0.1] --set "
+                         "'initial.joint_velocities={front_left_axle: 10, front_right_axle: 10, rear_left_axle: 10, "
+                         "rear_right_axle: 10}' --duration 2 --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const YAML::Node j = YAML::Load(r.out);
+  const double speed = seq(j["final"]["linear_velocity"])[0];
+  EXPECT_GT(speed, 0.1);
+  for (const char* wheel : {"front_left_axle", "front_right_axle", "rear_left_axle", "rear_right_axle"}) {
+    EXPECT_NEAR(speed, 0.1 * j["final"]["joints"][wheel]["velocity"].as<double>(), 1e-3 * speed) << wheel;
+  }
+  EXPECT_NEAR(seq(j["final"]["position"])[2], 0.1, 1e-4);
+  EXPECT_LT(j["max_penetration"].as<double>(), 1e-4);
+}
+
+TEST(Rbsim, RefusesARobotsBadStart) {
+  const std::string pendulum = " --urdf " + std::string(RBS_SOURCE_DIR) + "/urdf/pendulum.urdf --duration 1";
+  expectUsageError(pendulum + " --set initial.linear_velocity=[1,0,0]",
+                   "'initial.linear_velocity' / 'initial.angular_velocity': robot 'pendulum' is fixed to the world");
+  expectUsageError(pendulum + " --set 'initial.joint_positions={elbow: 1}'", "elbow");
+  const std::string world = tempPath("robot_world.yaml");
+  std::ofstream(world) << "bodies:\n  - {name: swing, urdf: " << RBS_SOURCE_DIR << "/urdf/pendulum.urdf}\n";
+  expectUsageError("--config " + world + " --duration 1", "joint 'pivot' is continuous");
+}
+
 }  // namespace
 }  // namespace rigid_body_sim::test

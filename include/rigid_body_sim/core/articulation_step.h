@@ -36,6 +36,7 @@ struct ArticulationWorkspace {
   /// colliders, `detection.contacts` holds its contacts with their impulses.
   State links;
   Workspace detection;
+  bool speed_limited = false;  ///< the last step slowed something to the speed limits
 };
 
 /// Advances `state` by h seconds under gravity g_W (m/s²): symplectic Euler

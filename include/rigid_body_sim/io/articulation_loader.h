@@ -30,6 +30,11 @@ namespace rigid_body_sim::io {
 core::ArticulationModel loadArticulationString(const std::string& xml, const std::string& source,
                                                const std::string& base_dir = "");
 
+/// Whether a URDF has a joint that is not fixed: a robot
+/// (loadArticulationString), not one body (loadUrdfString). A text urdfdom
+/// cannot read is refused with UrdfError, as both loaders refuse it.
+bool describesRobot(const std::string& xml, const std::string& source);
+
 /// Reads and loads a URDF file as an articulation.
 core::ArticulationModel loadArticulationFile(const std::string& path);
 

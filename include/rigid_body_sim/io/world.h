@@ -22,6 +22,11 @@ struct World {
 /// project), or "" when it has collision geometry.
 std::string touchesNothing(const core::BodyModel& body);
 
+/// Refuses (ConfigError naming `key`.position, .linear_velocity or
+/// .angular_velocity) a start farther than 1e6 m from the origin or faster
+/// than `limits`: the one check of a body's and a robot's start.
+void checkStart(const core::LinkState& link, const core::SpeedLimits& limits, const std::string& key);
+
 /// Turns a `bodies` entry's `urdf` into a body (the name is set afterwards).
 using BodyLoader = std::function<core::BodySpec(const BodyEntry&)>;
 

@@ -1,0 +1,32 @@
+// A robot from a config: robot.h.
+#include "rigid_body_sim/io/robot.h"
+
+#include <utility>
+
+#include "rigid_body_sim/io/joint_start.h"
+#include "rigid_body_sim/io/world.h"
+
+namespace rigid_body_sim::io {
+
+Robot buildRobot(const SimConfig& config, core::ArticulationModel model) {
+  if (config.bodies_listed) {
+    throw ConfigError("config key 'bodies': robot '" + model.name +
+                      "' is a URDF with moving joints; a world of bodies does not take robots yet (give the robot "
+                      "alone, with --urdf)");
+  }
+  const core::LinkState& initial = config.initial;
+  checkStart(initial, config.model.limits, "initial");
+  if (model.fixed_base && (initial.v_WL != core::Vec3::Zero() || initial.w_W != core::Vec3::Zero())) {
+    throw ConfigError("config key 'initial.linear_velocity' / 'initial.angular_velocity': robot '" + model.name +
+                      "' is fixed to the world (its root link is 'world'): it may be placed, not set moving");
+  }
+  core::ArticulationColliders colliders = core::articulationColliders(model, config.model);
+  core::ArticulationState state = core::restState(model, core::Pose{initial.q_WL.normalized(), initial.p_WL});
+  const core::Mat3 R_BW = state.X_WB.rotation.toRotationMatrix().transpose();
+  state.V_B.head<3>() = R_BW * initial.w_W;  // the base twist, in its own axes
+  state.V_B.tail<3>() = R_BW * initial.v_WL;
+  startJoints(model, config.initial_joints, config.model.limits, "initial", state);
+  return {std::move(model), std::move(colliders), std::move(state)};
+}
+
+}  // namespace rigid_body_sim::io
