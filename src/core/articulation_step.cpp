@@ -226,6 +226,36 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
   c.predict_only = predict_only;
 }
 
+/// Whether any effort or wrench acts (a sleeper wakes for it).
+bool loaded(const ArticulationLoads& loads) {
+  const bool effort = loads.effort.size() > 0 && (loads.effort.array() != 0.0).any();
+  return effort || std::any_of(loads.wrench_L.begin(), loads.wrench_L.end(),
+                               [](const Vec6& w) { return (w.array() != 0.0).any(); });
+}
+
+/// Sleep (§11.8), as a body's (§6): touching something, every joint and
+/// the base slower than the sleep speeds for `sleep.time`, the articulation
+/// stops where it is.
+void sleepIfStill(const ArticulationModel& model, const SleepSettings& sleep, bool touching, double h,
+                  ArticulationState& state) {
+  bool still = sleep.enabled && touching && state.V_B.head<3>().norm() < sleep.angular_velocity &&
+               state.V_B.tail<3>().norm() < sleep.linear_velocity;
+  for (int i = 1; i <= model.jointCount() && still; ++i) {
+    const bool slides = model.links[i].type == JointType::Prismatic;
+    still = std::abs(state.v(i - 1)) < (slides ? sleep.linear_velocity : sleep.angular_velocity);
+  }
+  if (!still) {
+    state.still_time = 0.0;
+    return;
+  }
+  state.still_time += h;
+  if (state.still_time < sleep.time) return;
+  state.asleep = true;
+  state.v.setZero();
+  state.V_B.setZero();
+  state.carried = {};
+}
+
 }  // namespace
 
 bool stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
@@ -240,13 +270,21 @@ bool stepArticulation(const ArticulationModel& model, ArticulationState& state, 
   sized(loads.effort.size(), model.jointCount(), "effort");
   sized(static_cast<long>(loads.wrench_L.size()), static_cast<long>(model.links.size()), "wrench_L");
   if (model.dofCount() == 0) return true;  // a base on the world and no joint: nothing moves
+  if (state.asleep) {
+    if (!loaded(loads)) return true;  // it stays exactly where it is
+    state.asleep = false;
+    state.still_time = 0.0;
+  }
   ArticulationWorkspace local;
   ArticulationWorkspace& ws = workspace != nullptr ? *workspace : local;
   const ArticulationState& start = ws.start;
   ws.start.X_WB = state.X_WB;
   ws.start.q = state.q;  // the positions only: the guard puts back no velocity
   advance(model, state, loads, g_W, h, limits, colliders, ws);
-  if (finite(state)) return true;
+  if (finite(state)) {
+    if (colliders != nullptr) sleepIfStill(model, colliders->bodies.sleep(), !ws.detection.contacts.empty(), h, state);
+    return true;
+  }
   // Undone: where the step began, at rest, nothing carried (§11.7).
   if (start.q.allFinite() && start.X_WB.translation.allFinite() && start.X_WB.rotation.coeffs().allFinite()) {
     state.q = start.q;

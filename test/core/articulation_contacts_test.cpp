@@ -130,7 +130,9 @@ TEST(ArticulationContacts, ArmLyingOnTheFloorRestsWithoutCreep) {
   ArticulationState start = restState(model);
   start.X_WB.translation = Vec3(0.0, 0.0, 0.05);
   start.q(0) = 0.7;  // bent at the elbow
-  Robot run(model, groundSettings(0.5), start);
+  ModelSpec settings = groundSettings(0.5);
+  settings.sleep.enabled = false;  // the solve alone holds it
+  Robot run(model, settings, start);
   run.steps(500);
   const Vec3 settled = run.state.X_WB.translation;
   const double elbow = run.state.q(0);
@@ -143,6 +145,28 @@ TEST(ArticulationContacts, ArmLyingOnTheFloorRestsWithoutCreep) {
   double lifted = 0.0;
   for (const Contact& c : run.ws.detection.contacts) lifted += c.normal_impulse;
   EXPECT_NEAR(lifted, 2.0 * kG * kH, 1e-9);
+}
+
+// At rest on the floor for sleep.time it sleeps, exactly where it is; an
+// effort wakes it.
+TEST(ArticulationContacts, ArmAtRestSleepsAndAnEffortWakesIt) {
+  const ArticulationModel model = lyingArm();
+  ArticulationState start = restState(model);
+  start.X_WB.translation = Vec3(0.0, 0.0, 0.05);
+  start.q(0) = 0.7;
+  Robot run(model, groundSettings(0.5), start);
+  run.steps(400);
+  EXPECT_FALSE(run.state.asleep);
+  run.steps(1000);  // still since the first steps, for more than sleep.time = 0.5 s
+  ASSERT_TRUE(run.state.asleep);
+  const ArticulationState slept = run.state;
+  run.steps(1000);
+  EXPECT_EQ(run.state.X_WB.translation, slept.X_WB.translation);
+  EXPECT_EQ(run.state.q, slept.q);
+  run.loads.effort = Eigen::VectorXd::Constant(1, 5.0);
+  run.steps(100);
+  EXPECT_FALSE(run.state.asleep);
+  EXPECT_GT(run.state.q(0), slept.q(0) + 0.01);
 }
 
 // Bent and pushed sideways at 0.5 m/s, it slides to rest: friction takes
@@ -175,10 +199,10 @@ TEST(ArticulationContacts, ArmSlidingOnTheFloorStops) {
   EXPECT_LE(y, 0.25 / (2.0 * 0.5 * kG) + 1e-3);
 }
 
-// A 5 kg chassis on four wheels of radius 0.1 m (cylinders about y, on
-// continuous joints), driven by equal efforts: it rolls, the base's speed
-// ω r.
-TEST(ArticulationContacts, WheeledBaseRollsAtOmegaR) {
+// The wheeled base driven by equal efforts: it rolls, the base's speed ω r.
+/// A 5 kg chassis on four wheels of radius r = 0.1 m (cylinders about y,
+/// on continuous joints).
+ArticulationModel wheeledBase() {
   const double r = 0.1;
   ArticulationModel model;
   model.fixed_base = false;
@@ -206,6 +230,12 @@ TEST(ArticulationContacts, WheeledBaseRollsAtOmegaR) {
     w.collision = {c};
   }
   checkArticulation(model);
+  return model;
+}
+
+TEST(ArticulationContacts, WheeledBaseRollsAtOmegaR) {
+  const double r = 0.1;
+  const ArticulationModel model = wheeledBase();
   ArticulationState start = restState(model);
   start.X_WB.translation = Vec3(0.0, 0.0, r);
   Robot run(model, groundSettings(0.8), start);
@@ -218,6 +248,30 @@ TEST(ArticulationContacts, WheeledBaseRollsAtOmegaR) {
   EXPECT_NEAR(speed, omega * r, 1e-3 * speed);
   EXPECT_NEAR(run.state.X_WB.translation.z(), r, 1e-4);
   EXPECT_LT(std::abs(run.state.X_WB.translation.y()), 1e-6);
+}
+
+// The detection splits its work over the threads it is given; the
+// trajectory is the same to the bit at one thread and two.
+TEST(ArticulationContacts, BitIdenticalAtOneThreadAndTwo) {
+  const ArticulationModel model = wheeledBase();
+  ArticulationState start = restState(model);
+  start.X_WB.translation = Vec3(0.0, 0.0, 0.1);
+  start.X_WB.rotation = Quat(Eigen::AngleAxisd(0.3, Vec3::UnitZ()));
+  start.v = Eigen::Vector4d(12.0, 9.0, 11.0, 8.0);  // unequal: it turns as it goes
+  std::vector<ArticulationState> ends;
+  for (const int threads : {1, 2}) {
+    Robot run(model, groundSettings(0.8), start);
+    run.ws.detection.threads = threads;
+    run.ws.detection.min_parallel_work = 0;
+    run.steps(1500);
+    ends.push_back(run.state);
+  }
+  EXPECT_EQ(ends[0].q, ends[1].q);
+  EXPECT_EQ(ends[0].v, ends[1].v);
+  EXPECT_EQ(ends[0].V_B, ends[1].V_B);
+  EXPECT_EQ(ends[0].X_WB.translation, ends[1].X_WB.translation);
+  EXPECT_EQ(ends[0].X_WB.rotation.coeffs(), ends[1].X_WB.rotation.coeffs());
+  EXPECT_GT(ends[0].X_WB.translation.norm(), 0.1);  // it went somewhere
 }
 
 }  // namespace

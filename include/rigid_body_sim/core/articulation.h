@@ -82,6 +82,10 @@ struct ArticulationState {
   Vec6 V_B = Vec6::Zero();  ///< the base twist (zero for a fixed base)
   Eigen::VectorXd q;        ///< joint positions, joint i at i − 1 (rad or m)
   Eigen::VectorXd v;        ///< joint velocities (rad/s or m/s)
+  /// Asleep (§11.8): at rest on its contacts, not stepped until a load
+  /// wakes it or the caller clears the flag (after editing the state).
+  bool asleep = false;
+  double still_time = 0.0;  ///< s spent touching and slower than the sleep speeds
 
   /// The momenta the step carries from one step to the next (§11.5), and the
   /// state it left them with: they are used only while q, v and the base are
