@@ -109,7 +109,16 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
   // The generalized forces at rest: gravity, the wrenches on the links and
   // the efforts, each clipped to its joint's limit.
   Eigen::VectorXd& force = ws.force;
-  biasForces(model, kin, g_W, loads.wrench_L, false, ws.dynamics, force);
+  const std::vector<Vec6>* wrench_L = &loads.wrench_L;
+  if (!loads.impulse_L.empty()) {  // an impulse acts as impulse / h over the step
+    ws.wrench_L.assign(model.links.size(), Vec6::Zero());
+    for (std::size_t i = 0; i < model.links.size(); ++i) {
+      ws.wrench_L[i] = loads.impulse_L[i] / h;
+      if (!loads.wrench_L.empty()) ws.wrench_L[i] += loads.wrench_L[i];
+    }
+    wrench_L = &ws.wrench_L;
+  }
+  biasForces(model, kin, g_W, *wrench_L, false, ws.dynamics, force);
   force = -force;
   if (loads.effort.size() > 0) {
     for (int i = 1; i <= nj; ++i) {
@@ -226,11 +235,13 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
   c.predict_only = predict_only;
 }
 
-/// Whether any effort or wrench acts (a sleeper wakes for it).
+/// Whether any effort, wrench or impulse acts (a sleeper wakes for it).
 bool loaded(const ArticulationLoads& loads) {
   const bool effort = loads.effort.size() > 0 && (loads.effort.array() != 0.0).any();
-  return effort || std::any_of(loads.wrench_L.begin(), loads.wrench_L.end(),
-                               [](const Vec6& w) { return (w.array() != 0.0).any(); });
+  const auto any = [](const std::vector<Vec6>& ws) {
+    return std::any_of(ws.begin(), ws.end(), [](const Vec6& w) { return (w.array() != 0.0).any(); });
+  };
+  return effort || any(loads.wrench_L) || any(loads.impulse_L);
 }
 
 /// Sleep (§11.8), as a body's (§6): touching something, every joint and
@@ -269,6 +280,7 @@ bool stepArticulation(const ArticulationModel& model, ArticulationState& state, 
   };
   sized(loads.effort.size(), model.jointCount(), "effort");
   sized(static_cast<long>(loads.wrench_L.size()), static_cast<long>(model.links.size()), "wrench_L");
+  sized(static_cast<long>(loads.impulse_L.size()), static_cast<long>(model.links.size()), "impulse_L");
   if (model.dofCount() == 0) return true;  // a base on the world and no joint: nothing moves
   if (state.asleep) {
     if (!loaded(loads)) return true;  // it stays exactly where it is

@@ -257,6 +257,34 @@ TEST(ArticulationStep, FloatingTreeKeepsItsMomentumAndItsCentreOfMassLine) {
   }
 }
 
+// An impulse on any link of a floating tree changes its momentum by exactly
+// itself (world axes, about W's origin); a rod pendulum struck across at d
+// below its pivot turns at ω = P d / I.
+TEST(ArticulationStep, AnImpulseOnALinkChangesTheMomentumByItself) {
+  std::mt19937 rng(11);
+  const ArticulationModel model = randomTree(rng, 6, false, false);
+  ArticulationState state = randomState(rng, model);
+  const ArticulationKinematics before = kinematics(model, state);
+  const Vec6 H0 = momentum_W(model, before);
+  ArticulationLoads loads;
+  loads.impulse_L.assign(model.links.size(), Vec6::Zero());
+  loads.impulse_L[4] << 0.3, -0.2, 0.5, 1.5, 2.0, -1.0;
+  ASSERT_TRUE(stepArticulation(model, state, loads, Vec3::Zero(), 1e-3, SpeedLimits{1e4, 1e4}));
+  const Vec6 expected = H0 + before.X_WL[4].forceToParent(loads.impulse_L[4]);
+  EXPECT_LT((state.carried.H_W - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.norm());
+
+  const ArticulationModel rod = planarChain({2.0}, {1.0}, {0.5}, {2.0 / 12.0});
+  ArticulationState hanging = restState(rod);
+  ArticulationLoads strike;
+  strike.impulse_L = {Vec6::Zero(), Vec6::Zero()};
+  // 0.6 N·s along x at 0.8 m below the pivot, given at the link's origin
+  // (the pivot): the force, and its moment r × P = (0, −0.48, 0).
+  strike.impulse_L[1] << 0.0, -0.48, 0.0, 0.6, 0.0, 0.0;
+  ASSERT_TRUE(stepArticulation(rod, hanging, strike, Vec3::Zero(), 1e-3));
+  const double I = 2.0 / 12.0 + 2.0 * 0.25;     // about the pivot
+  EXPECT_NEAR(hanging.v(0), -0.48 / I, 1e-12);  // the bottom swings toward +x: about −y
+}
+
 // Under gravity alone the centre of mass falls exactly as a free body's
 // does (v += h g, then x += h v), whatever the joints do.
 TEST(ArticulationStep, CentreOfMassFallsAsAFreeBody) {

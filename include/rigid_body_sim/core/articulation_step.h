@@ -20,6 +20,10 @@ namespace rigid_body_sim::core {
 struct ArticulationLoads {
   Eigen::VectorXd effort;      ///< per joint (N·m or N), clipped to |effort| ≤ the limit; empty for none
   std::vector<Vec6> wrench_L;  ///< per link, in its axes, moment about its origin; empty for none
+  /// Per link, as wrench_L, an impulse (N·m·s; N·s) given at the step's
+  /// start: the momenta change by exactly it (it acts as impulse / h over
+  /// the step); empty for none.
+  std::vector<Vec6> impulse_L;
 };
 
 /// The memory a step reuses from one step to the next, so that once sized
@@ -31,6 +35,7 @@ struct ArticulationWorkspace {
   Eigen::MatrixXd A;
   Eigen::LLT<Eigen::MatrixXd> llt;
   Eigen::VectorXd u, p, force, bias, predicted, next, corrected, rhs, gradient;
+  std::vector<Vec6> wrench_L;  ///< the loads' wrenches and impulses / h together
   ArticulationState start;
   /// The links as bodies, and the detection's workspace: after a step with
   /// colliders, `detection.contacts` holds its contacts with their impulses.
@@ -52,7 +57,7 @@ struct ArticulationWorkspace {
 /// anything non-finite (a NaN or infinite effort) is undone: the state goes
 /// back to where the step began, at rest, and false is returned.
 /// Throws std::invalid_argument when `loads` has a size other than the
-/// model's (efforts: one per joint; wrenches: one per link).
+/// model's (efforts: one per joint; wrenches and impulses: one per link).
 bool stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
                       const Vec3& g_W, double h, const SpeedLimits& limits = {},
                       ArticulationWorkspace* workspace = nullptr, const ArticulationColliders* colliders = nullptr);
