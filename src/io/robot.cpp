@@ -14,6 +14,20 @@ Robot buildRobot(const SimConfig& config, core::ArticulationModel model) {
                       "' is a URDF with moving joints; a world of bodies does not take robots yet (give the robot "
                       "alone, with --urdf)");
   }
+  // What a robot does not read is refused, not ignored: a robot's damping
+  // is its joints' <dynamics damping>, its contacts are impulses and plastic,
+  // and its dynamics always hold the gyroscopic terms.
+  const core::ModelSpec& m = config.model;
+  const auto unread = [&model](const std::string& key, const std::string& why) {
+    throw ConfigError("config key '" + key + "': robot '" + model.name + "' " + why);
+  };
+  const core::Damping& d = m.damping;
+  if (d.linear != 0.0 || d.angular != 0.0 || d.linear_drag != 0.0 || d.angular_drag != 0.0) {
+    unread("damping", "is damped by its joints' <dynamics damping> only: set damping to 0");
+  }
+  if (m.contact.method != core::ContactMethod::kImpulse) unread("contact.method", "takes impulse contacts only");
+  if (m.contact.restitution != 0.0) unread("contact.restitution", "has plastic contacts for now: set it to 0");
+  if (!m.gyroscopic) unread("gyroscopic", "always integrates its links' gyroscopic terms");
   const core::LinkState& initial = config.initial;
   checkStart(initial, config.model.limits, "initial");
   if (model.fixed_base && (initial.v_WL != core::Vec3::Zero() || initial.w_W != core::Vec3::Zero())) {

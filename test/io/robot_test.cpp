@@ -56,7 +56,7 @@ initial:
   EXPECT_GE(robot.colliders.bodies.body(0).collision_group, 0);
 }
 
-TEST(Robot, RefusesAMovingStartForAFixedBaseAndAWorldOfBodies) {
+TEST(Robot, RefusesAMovingStartForAFixedBaseAWorldOfBodiesAndKeysItWouldNotRead) {
   const auto refused = [](const std::string& yaml, bool on_world, const std::string& what) {
     try {
       io::buildRobot(config(yaml), cart(on_world));
@@ -71,6 +71,11 @@ TEST(Robot, RefusesAMovingStartForAFixedBaseAndAWorldOfBodies) {
   refused("initial: {linear_velocity: [1e9, 0, 0]}", false, "initial.linear_velocity");
   refused("initial: {joint_positions: {wheel: 1}}", false, "wheel");
   refused("bodies: [{name: a, urdf: box.urdf}]", false, "a world of bodies does not take robots yet");
+  // Keys a robot would not read are refused, not ignored.
+  refused("damping: {linear: 0.1}", false, "'damping': robot 'cart' is damped by its joints");
+  refused("contact: {method: penalty_quadratic}", false, "'contact.method'");
+  refused("contact: {restitution: 0.5}", false, "'contact.restitution'");
+  refused("gyroscopic: false", false, "'gyroscopic'");
 }
 
 }  // namespace
