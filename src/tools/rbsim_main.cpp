@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -22,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "rbsim_loop.h"
 #include "rbsim_output.h"
 #include "rbsim_robot.h"
 #include "rigid_body_sim/core/contact.h"
@@ -69,7 +69,6 @@ using rigid_body_sim::tools::finalJson;
 using rigid_body_sim::tools::Json;
 using rigid_body_sim::tools::JsonLine;
 using rigid_body_sim::tools::num;
-using rigid_body_sim::tools::ProgressBar;
 using rigid_body_sim::tools::text;
 using rigid_body_sim::tools::UsageError;
 using rigid_body_sim::tools::vec;
@@ -231,43 +230,27 @@ int run(const Args& args) {
 
   std::unique_ptr<CsvWriter> csv;
   if (!args.csv.empty()) csv = std::make_unique<CsvWriter>(args.csv, world_config);
-  const auto write_rows = [&](double t) {
+  const auto write_rows = [&](long long done) {
     for (std::size_t i = 0; i < n; ++i)
-      csv->row(t, model.body(i).name, core::linkState(model.body(i), state.bodies[i]));
+      csv->row(done * dt, model.body(i).name, core::linkState(model.body(i), state.bodies[i]));
   };
-  // Progress bar only for runs that take a while (about a second or more).
-  ProgressBar progress(steps, isatty(STDERR_FILENO) && steps * static_cast<long long>(n) >= 2'000'000);
-  const long long progress_every = std::max(1LL, steps / 100);
-
-  // Steps run in blocks between outputs; only the blocks are timed, so
-  // ns_per_step excludes writing.
-  using Clock = std::chrono::steady_clock;
-  const auto wall_start = Clock::now();
-  Clock::duration stepping{0};
-  if (csv) write_rows(0.0);
   core::Workspace workspace;
   std::vector<char> limited(n, 0);  // bodies the speed limits have held back, warned once each
   double max_penetration = 0.0;     // m, over the states at the start of every step
-  long long done = 0;
-  while (done < steps) {
-    long long block = steps - done;
-    if (csv) block = std::min(block, args.every - done % args.every);
-    block = std::min(block, progress_every - done % progress_every);
-    const auto t0 = Clock::now();
-    for (long long k = 0; k < block; ++k) {
-      core::step(model, state, {}, &workspace);
-      max_penetration = std::max(max_penetration, workspace.deepest_penetration);
-      if (!workspace.speed_limited.empty() || !workspace.diverged.empty()) {
-        checkStep(model, workspace, (done + k + 1) * dt, limited);
-      }
-    }
-    stepping += Clock::now() - t0;
-    done += block;
-    if (csv && (done % args.every == 0 || done == steps)) write_rows(done * dt);
-    if (done % progress_every == 0 || done == steps) progress.show(done);
-  }
-  const double wall_s = std::chrono::duration<double>(Clock::now() - wall_start).count();
-  const double ns_per_step = std::chrono::duration<double, std::nano>(stepping).count() / static_cast<double>(steps);
+  // Progress bar only for runs that take a while (about a second or more).
+  const bool progress = isatty(STDERR_FILENO) && steps * static_cast<long long>(n) >= 2'000'000;
+  const rigid_body_sim::tools::LoopTimes times = rigid_body_sim::tools::runLoop(
+      steps, csv != nullptr, args.every, progress,
+      [&](long long k) {
+        core::step(model, state, {}, &workspace);
+        max_penetration = std::max(max_penetration, workspace.deepest_penetration);
+        if (!workspace.speed_limited.empty() || !workspace.diverged.empty()) {
+          checkStep(model, workspace, k * dt, limited);
+        }
+      },
+      write_rows);
+  const double wall_s = times.wall_s;
+  const double ns_per_step = times.ns_per_step;
 
   // Reported as steps × Δt: state.time accumulates Δt and carries its rounding.
   const double sim_time = static_cast<double>(steps) * dt;

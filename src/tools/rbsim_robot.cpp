@@ -4,12 +4,12 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <utility>
 #include <vector>
 
+#include "rbsim_loop.h"
 #include "rbsim_output.h"
 #include "rigid_body_sim/core/articulation_dynamics.h"
 #include "rigid_body_sim/core/articulation_step.h"
@@ -68,46 +68,31 @@ int runRobot(const io::SimConfig& config, core::ArticulationModel articulation, 
 
   std::unique_ptr<CsvWriter> csv;
   if (!options.csv.empty()) csv = std::make_unique<CsvWriter>(options.csv, false, joints);
-  const auto write_row = [&](double t) { csv->row(t, baseState(state), state.q, state.v); };
-  ProgressBar progress(steps, isatty(STDERR_FILENO) && steps >= 200'000);
-  const long long progress_every = std::max(1LL, steps / 100);
-  using Clock = std::chrono::steady_clock;
-  const auto wall_start = Clock::now();
-  Clock::duration stepping{0};
-  if (csv) write_row(0.0);
+  const auto write_row = [&](long long done) { csv->row(done * dt, baseState(state), state.q, state.v); };
   core::ArticulationWorkspace ws;
   const core::ArticulationLoads loads;
   bool limited = false;
   double max_penetration = 0.0;  // m, over the states at the start of every step
-  long long done = 0;
-  while (done < steps) {
-    long long block = steps - done;
-    if (csv) block = std::min(block, options.every - done % options.every);
-    block = std::min(block, progress_every - done % progress_every);
-    const auto t0 = Clock::now();
-    for (long long k = 0; k < block; ++k) {
-      if (!core::stepArticulation(model, state, loads, g, dt, settings.limits(), &ws, &robot.colliders)) {
-        throw Diverged("robot '" + model.name + "': its state stopped being finite at t = " +
-                       text((done + k + 1) * dt) + " s (the step's guard put it back at rest; the run stops here)");
-      }
-      max_penetration = std::max(max_penetration, ws.detection.deepest_penetration);
-      if (ws.speed_limited && !limited) {
-        limited = true;
-        std::fprintf(stderr,
-                     "rbsim: warning: robot '%s' reached the speed limits at t = %s s (limits.max_linear_speed %s "
-                     "m/s, limits.max_angular_speed %s rad/s): its velocities are held to them\n",
-                     model.name.c_str(), text((done + k + 1) * dt).c_str(),
-                     text(settings.limits().max_linear_speed).c_str(),
-                     text(settings.limits().max_angular_speed).c_str());
-      }
-    }
-    stepping += Clock::now() - t0;
-    done += block;
-    if (csv && (done % options.every == 0 || done == steps)) write_row(done * dt);
-    if (done % progress_every == 0 || done == steps) progress.show(done);
-  }
-  const double wall_s = std::chrono::duration<double>(Clock::now() - wall_start).count();
-  const double ns_per_step = std::chrono::duration<double, std::nano>(stepping).count() / static_cast<double>(steps);
+  const LoopTimes times = runLoop(
+      steps, csv != nullptr, options.every, isatty(STDERR_FILENO) && steps >= 200'000,
+      [&](long long k) {
+        if (!core::stepArticulation(model, state, loads, g, dt, settings.limits(), &ws, &robot.colliders)) {
+          throw Diverged("robot '" + model.name + "': its state stopped being finite at t = " + text(k * dt) +
+                         " s (the step's guard put it back at rest; the run stops here)");
+        }
+        max_penetration = std::max(max_penetration, ws.detection.deepest_penetration);
+        if (ws.speed_limited && !limited) {
+          limited = true;
+          std::fprintf(stderr,
+                       "rbsim: warning: robot '%s' reached the speed limits at t = %s s (limits.max_linear_speed %s "
+                       "m/s, limits.max_angular_speed %s rad/s): its velocities are held to them\n",
+                       model.name.c_str(), text(k * dt).c_str(), text(settings.limits().max_linear_speed).c_str(),
+                       text(settings.limits().max_angular_speed).c_str());
+        }
+      },
+      write_row);
+  const double wall_s = times.wall_s;
+  const double ns_per_step = times.ns_per_step;
 
   const double sim_time = static_cast<double>(steps) * dt;
   const double energy_end = energy(model, state, g);
