@@ -8,6 +8,11 @@
 // runs its Euler integrator (velocities, then positions with them), Bullet
 // its multibody defaults less damping and velocity clamps. A peer is built
 // only where its package is (libmujoco-dev, libbullet-dev).
+// Then contacts: the shipped four-wheeled base (urdf/four_wheeler.urdf) on
+// the ground, its wheels spun at 10 rad/s from rest, friction 0.5: ns per
+// step over `steps` steps (its wheels slip, then it rolls), and at 2 s its
+// speed against ω r (1 = rolling); against MuJoCo on the same model (its
+// default soft contacts, condim 3).
 // Usage: articulation_bench [rounds] [steps]   (default 7 rounds of 20000)
 #include <algorithm>
 #include <chrono>
@@ -16,11 +21,14 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rigid_body_sim/core/articulation_dynamics.h"
 #include "rigid_body_sim/core/articulation_step.h"
+#include "rigid_body_sim/io/articulation_loader.h"
 
 #ifdef RBS_WITH_MUJOCO
 #include <mujoco/mujoco.h>
@@ -173,6 +181,67 @@ Engine bullet(const ChainSpec& c) {
 }
 #endif
 
+/// A wheeled base as an engine runs it: a step, and (base speed, ω r).
+struct Roller {
+  std::function<void()> step;
+  std::function<std::pair<double, double>()> speeds;  // m/s
+};
+
+constexpr double kWheelRadius = 0.1, kWheelSpin = 10.0, kFriction = 0.5;
+
+Roller oursRolling() {
+  auto model = std::make_shared<ArticulationModel>(
+      rigid_body_sim::io::loadArticulationFile(std::string(RBS_SOURCE_DIR) + "/urdf/four_wheeler.urdf"));
+  ModelSpec ground;
+  ground.scene = {Sdf::plane(Vec3::UnitZ())};
+  ground.contact.friction = kFriction;
+  ground.sleep.enabled = false;
+  auto colliders = std::make_shared<ArticulationColliders>(articulationColliders(*model, ground));
+  auto state = std::make_shared<ArticulationState>(restState(*model, Pose{Quat::Identity(), Vec3(0, 0, kWheelRadius)}));
+  state->v.setConstant(kWheelSpin);
+  auto ws = std::make_shared<ArticulationWorkspace>();
+  const Vec3 g(0, 0, -kG);
+  return {[=] { stepArticulation(*model, *state, {}, g, kDt, {}, ws.get(), colliders.get()); },
+          [=] { return std::make_pair(state->V_B(3), kWheelRadius * state->v.mean()); }};
+}
+
+#ifdef RBS_WITH_MUJOCO
+Roller mujocoRolling() {
+  std::string xml =
+      "<mujoco><option timestep='0.001' integrator='Euler'/><worldbody>"
+      "<geom type='plane' size='0 0 1' friction='0.5 0.005 0.0001'/>"
+      "<body pos='0 0 0.1'><freejoint/>"
+      "<inertial pos='0 0 0' mass='5' diaginertia='0.07083333333333333 0.15416666666666667 0.21666666666666667'/>";
+  const double xs[4] = {0.2, 0.2, -0.2, -0.2}, ys[4] = {0.25, -0.25, 0.25, -0.25};
+  char buf[512];
+  for (int i = 0; i < 4; ++i) {
+    std::snprintf(buf, sizeof buf,
+                  "<body pos='%g %g 0'><joint type='hinge' axis='0 1 0'/>"
+                  "<inertial pos='0 0 0' mass='0.5' diaginertia='0.0013541666666666667 0.0025 0.0013541666666666667'/>"
+                  "<geom type='cylinder' size='0.1 0.025' euler='90 0 0' friction='0.5 0.005 0.0001'/></body>",
+                  xs[i], ys[i]);
+    xml += buf;
+  }
+  xml += "</body></worldbody></mujoco>";
+  const std::string path = "/tmp/rbs_articulation_bench_wheels.xml";
+  std::ofstream(path) << xml;
+  char error[1000] = "";
+  mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
+  if (m == nullptr) {
+    std::fprintf(stderr, "MuJoCo: %s\n", error);
+    std::exit(1);
+  }
+  mjData* d = mj_makeData(m);
+  for (int i = 0; i < 4; ++i) d->qvel[6 + i] = kWheelSpin;  // after the free joint's 6
+  mj_forward(m, d);
+  return {[m, d] { mj_step(m, d); },
+          [m, d] {
+            const double spin = (d->qvel[6] + d->qvel[7] + d->qvel[8] + d->qvel[9]) / 4.0;
+            return std::make_pair(d->qvel[0], kWheelRadius * spin);  // the free joint's linear velocity, world x
+          }};
+}
+#endif
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
@@ -217,6 +286,28 @@ int main(int argc, char** argv) {
       }
       std::printf("%-8s %-24s %12.0f %14.4g %14.4g\n", c.name, engines[e].first, median(times[e]), last, worst);
     }
+  }
+  // Contacts: the wheeled base.
+  std::vector<std::pair<const char*, std::function<Roller()>>> rollers = {{"rigid_body_sim", oursRolling}};
+#ifdef RBS_WITH_MUJOCO
+  rollers.push_back({"MuJoCo 2.2.2", mujocoRolling});
+#endif
+  std::printf("\n%-8s %-24s %12s %14s %14s\n", "model", "engine", "ns/step", "v at 2 s", "v / (ω r)");
+  std::vector<std::vector<double>> times(rollers.size());
+  for (int r = 0; r < rounds; ++r) {
+    for (std::size_t e = 0; e < rollers.size(); ++e) {  // interleaved
+      Roller roller = rollers[e].second();
+      const auto t0 = std::chrono::steady_clock::now();
+      for (int k = 0; k < steps; ++k) roller.step();
+      times[e].push_back(std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() /
+                         steps);
+    }
+  }
+  for (std::size_t e = 0; e < rollers.size(); ++e) {
+    Roller roller = rollers[e].second();
+    for (int k = 0; k < static_cast<int>(2.0 / kDt); ++k) roller.step();
+    const auto [v, omega_r] = roller.speeds();
+    std::printf("%-8s %-24s %12.0f %14.4g %14.6f\n", "wheels4", rollers[e].first, median(times[e]), v, v / omega_r);
   }
   return 0;
 }
