@@ -90,7 +90,7 @@ double sweepContactRows(const SolverSettings& settings, ContactRows& c, Eigen::V
 }
 
 void findContactRows(const ArticulationModel& model, const ArticulationColliders& colliders,
-                     const ArticulationKinematics& kin, double h, State& links, Workspace& ws,
+                     const ArticulationKinematics& kin, const Eigen::VectorXd& u, double h, State& links, Workspace& ws,
                      std::vector<ContactRows>& contacts) {
   contacts.clear();
   const Model& bodies = colliders.bodies;
@@ -145,6 +145,14 @@ void findContactRows(const ArticulationModel& model, const ArticulationColliders
     c.friction = bodies.friction(contact.body, -1);
     c.separation = contact.separation;
     c.target = contact.separation > 0.0 ? -contact.separation / h : 0.0;
+    // Restitution (§11.8): a contact arriving faster than the threshold
+    // this step leaves at e times the speed it comes with.
+    const double restitution = bodies.restitution(contact.body, -1);
+    const double approach = c.J.col(0).dot(u);
+    const bool arrives = contact.separation <= 0.0 || approach * h < -contact.separation;
+    if (restitution > 0.0 && arrives && approach < -bodies.restitutionThreshold()) {
+      c.target = -restitution * approach;
+    }
     c.contact = static_cast<int>(k);
   }
 }

@@ -190,7 +190,7 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
   std::vector<detail::ContactRows> contacts;
   if (colliders != nullptr) {
     setTwists(model, u_next, kin);
-    detail::findContactRows(model, *colliders, kin, h, ws.links, ws.detection, contacts);
+    detail::findContactRows(model, *colliders, kin, u_next, h, ws.links, ws.detection, contacts);
   }
   if (!rows.empty() || !contacts.empty()) {
     Eigen::VectorXd impulse = Eigen::VectorXd::Zero(model.dofCount());

@@ -42,8 +42,8 @@ struct ContactRows {
   Eigen::Matrix3d K = Eigen::Matrix3d::Zero();        ///< Jᵀ A⁻¹ J (1/kg)
   double friction = 0.0;                              ///< μ of the pair
   double separation = 0.0;                            ///< m, as detected
-  double target = 0.0;                                ///< normal velocity aimed at (m/s): −separation/h if apart
-  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();  ///< λ_N, λ₁, λ₂ (N·s)
+  double target = 0.0;  ///< normal velocity aimed at (m/s): −separation/h if apart, e × the approach speed in an impact
+  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();            ///< λ_N, λ₁, λ₂ (N·s)
   Vec3 tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();  ///< t₁, t₂ (n is the contact's)
   int contact = 0;                                              ///< index in the detection's Workspace::contacts
   /// Friction as one 2 × 2 block by maximal dissipation (frictionOnDisk),
@@ -74,12 +74,14 @@ void solveRows(const SolverSettings& settings, const Eigen::LLT<Eigen::MatrixXd>
 /// largest velocity change it made along a row (m/s).
 double sweepContactRows(const SolverSettings& settings, ContactRows& c, Eigen::VectorXd& u);
 
-/// The links' contacts with the scene at the positions of `kin` (its twists
-/// give the speculative margins), detected as a world's bodies' are, into
-/// `ws.contacts`, each made three rows (J only: solveRows adds the rest);
-/// `links` holds the links' body states.
+/// The links' contacts with the scene at the positions of `kin` (its twists,
+/// those of u, give the speculative margins), detected as a world's bodies'
+/// are, into `ws.contacts`, each made three rows (J only: solveRows adds the
+/// rest), with its target: a contact arriving faster than the restitution
+/// threshold at u leaves at e times that speed. `links` holds the links'
+/// body states.
 void findContactRows(const ArticulationModel& model, const ArticulationColliders& colliders,
-                     const ArticulationKinematics& kin, double h, State& links, Workspace& ws,
+                     const ArticulationKinematics& kin, const Eigen::VectorXd& u, double h, State& links, Workspace& ws,
                      std::vector<ContactRows>& contacts);
 
 /// After the solve: each contact's impulses into `ws.contacts`.

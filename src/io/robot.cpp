@@ -15,8 +15,8 @@ Robot buildRobot(const SimConfig& config, core::ArticulationModel model) {
                       "alone, with --urdf)");
   }
   // What a robot does not read is refused, not ignored: a robot's damping
-  // is its joints' <dynamics damping>, its contacts are impulses and plastic,
-  // and its dynamics always hold the gyroscopic terms.
+  // is its joints' <dynamics damping>, its contacts are impulses, and its
+  // dynamics always hold the gyroscopic terms.
   const core::ModelSpec& m = config.model;
   const auto unread = [&model](const std::string& key, const std::string& why) {
     throw ConfigError("config key '" + key + "': robot '" + model.name + "' " + why);
@@ -26,7 +26,6 @@ Robot buildRobot(const SimConfig& config, core::ArticulationModel model) {
     unread("damping", "is damped by its joints' <dynamics damping> only: set damping to 0");
   }
   if (m.contact.method != core::ContactMethod::kImpulse) unread("contact.method", "takes impulse contacts only");
-  if (m.contact.restitution != 0.0) unread("contact.restitution", "has plastic contacts for now: set it to 0");
   if (!m.gyroscopic) unread("gyroscopic", "always integrates its links' gyroscopic terms");
   const core::LinkState& initial = config.initial;
   checkStart(initial, config.model.limits, "initial");

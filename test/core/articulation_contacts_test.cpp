@@ -169,6 +169,32 @@ TEST(ArticulationContacts, ArmAtRestSleepsAndAnEffortWakesIt) {
   EXPECT_GT(run.state.q(0), slept.q(0) + 0.01);
 }
 
+// Dropped flat from 0.4 m onto a floor of restitution 0.5, it leaves at half
+// the speed it arrives with (all eight corners at once: a uniform bounce).
+TEST(ArticulationContacts, ArmDroppedFlatBouncesAtRestitution) {
+  const ArticulationModel model = lyingArm();
+  ArticulationState start = restState(model);
+  start.X_WB.translation = Vec3(0.0, 0.0, 0.45);
+  ModelSpec settings = groundSettings(0.5);
+  settings.contact.restitution = 0.5;
+  Robot run(model, settings, start);
+  double fastest_down = 0.0, fastest_up = 0.0;
+  int bounce = -1;
+  for (int i = 0; i < 600; ++i) {
+    const double before = run.state.V_B(5);
+    run.steps(1);
+    if (bounce < 0 && run.state.V_B(5) > 0.0) {
+      bounce = i;
+      fastest_down = -(before - kG * kH);  // what it arrived with in the bounce's step
+      fastest_up = run.state.V_B(5);
+    }
+  }
+  ASSERT_GE(bounce, 0);
+  EXPECT_NEAR(fastest_down, std::sqrt(2.0 * kG * 0.4), 0.02);
+  EXPECT_NEAR(fastest_up, 0.5 * fastest_down, 1e-9);
+  EXPECT_LT(run.state.V_B.head<3>().norm(), 1e-9);  // flat: no turn
+}
+
 // Bent and pushed sideways at 0.5 m/s, it slides to rest: friction takes
 // μ m g, so it stops within v²/(2 μ g) of where it began (less: the elbow's
 // turn takes some of the energy too).

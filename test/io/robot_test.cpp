@@ -74,7 +74,6 @@ TEST(Robot, RefusesAMovingStartForAFixedBaseAWorldOfBodiesAndKeysItWouldNotRead)
   // Keys a robot would not read are refused, not ignored.
   refused("damping: {linear: 0.1}", false, "'damping': robot 'cart' is damped by its joints");
   refused("contact: {method: penalty_quadratic}", false, "'contact.method'");
-  refused("contact: {restitution: 0.5}", false, "'contact.restitution'");
   refused("gyroscopic: false", false, "'gyroscopic'");
 }
 

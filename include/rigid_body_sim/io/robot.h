@@ -24,8 +24,7 @@ struct Robot {
 /// A config with a `bodies` list is refused (a robot among bodies is not
 /// yet simulated), as are a start farther or faster than a body's may be,
 /// and keys a robot would not read: `damping` (a robot's is its joints'),
-/// a `contact.method` other than impulse, a `contact.restitution` (its
-/// contacts are plastic for now), `gyroscopic: false`. ConfigError names
+/// a `contact.method` other than impulse, `gyroscopic: false`. ConfigError names
 /// the key, and the model's std::invalid_argument the link.
 Robot buildRobot(const SimConfig& config, core::ArticulationModel model);
 
