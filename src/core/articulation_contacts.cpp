@@ -11,6 +11,7 @@
 namespace rigid_body_sim::core {
 
 ArticulationColliders articulationColliders(const ArticulationModel& model, const ModelSpec& settings) {
+  const bool self_collision = settings.contact.self_collision;
   ModelSpec spec = settings;
   spec.bodies.clear();
   std::vector<int> link;
@@ -24,11 +25,11 @@ ArticulationColliders articulationColliders(const ArticulationModel& model, cons
     b.p_LC = l.mass.p_FC;
     b.I_C_L = l.mass.I_C_F;
     b.collision = l.collision;
-    b.collision_group = 0;
+    b.collision_group = self_collision ? -1 : 0;
     spec.bodies.push_back(b);
     link.push_back(i);
   }
-  return {Model(spec), link};
+  return {Model(spec), link, self_collision};
 }
 
 namespace detail {
@@ -94,7 +95,7 @@ void findContactRows(const ArticulationModel& model, const ArticulationColliders
                      std::vector<ContactRows>& contacts) {
   contacts.clear();
   const Model& bodies = colliders.bodies;
-  if (bodies.bodyCount() == 0 || bodies.scene().empty()) {
+  if (bodies.bodyCount() == 0 || (bodies.scene().empty() && !colliders.self_collision)) {
     ws.contacts.clear();
     return;
   }
@@ -114,6 +115,13 @@ void findContactRows(const ArticulationModel& model, const ArticulationColliders
     s.w_B = b.q_LB.conjugate() * V.head<3>();
   }
   detectContacts(bodies, links, h, ws);
+  // Links joined by a joint never touch each other (they meet at it).
+  const auto adjacent = [&](const Contact& c) {
+    if (c.other < 0) return false;
+    const int a = colliders.link[c.body], o = colliders.link[c.other];
+    return model.links[a].parent == o || model.links[o].parent == a;
+  };
+  ws.contacts.erase(std::remove_if(ws.contacts.begin(), ws.contacts.end(), adjacent), ws.contacts.end());
   const int nv = model.dofCount();
   contacts.resize(ws.contacts.size());
   for (std::size_t k = 0; k < ws.contacts.size(); ++k) {
@@ -126,28 +134,33 @@ void findContactRows(const ArticulationModel& model, const ArticulationColliders
     directions << n.transpose(), c.tangent1_W.transpose(), c.tangent2_W.transpose();
     const Vec3 x_W = links.bodies[contact.body].p_WB + contact.r_W;
     // J's row for a dof is the point's velocity a unit speed of it gives,
-    // along n, t₁ and t₂: every joint from the link up to the base moves it.
+    // along n, t₁ and t₂: every joint from the link up to the base moves
+    // it; against another link of the robot, less that link's point's.
     c.J.setZero(nv, 3);
-    for (int l = colliders.link[contact.body]; l >= 0; l = model.links[l].parent) {
-      const Placement& X = kin.X_WL[l];
-      const Vec3 arm = x_W - X.p_PC;
-      if (l > 0) {
-        const Vec3 w = X.R_PC * kin.S_L[l].head<3>();
-        const Vec3 v = X.R_PC * kin.S_L[l].tail<3>() + w.cross(arm);
-        c.J.row(model.dofOf(l)) = (directions * v).transpose();
-      } else if (!model.fixed_base) {  // the base's twist, in its axes: ω, then its origin's v
-        for (int j = 0; j < 3; ++j) {
-          c.J.row(j) = (directions * X.R_PC.col(j).cross(arm)).transpose();
-          c.J.row(3 + j) = (directions * X.R_PC.col(j)).transpose();
+    const auto addPoint = [&](int link, double sign) {
+      for (int l = link; l >= 0; l = model.links[l].parent) {
+        const Placement& X = kin.X_WL[l];
+        const Vec3 arm = x_W - X.p_PC;
+        if (l > 0) {
+          const Vec3 w = X.R_PC * kin.S_L[l].head<3>();
+          const Vec3 v = X.R_PC * kin.S_L[l].tail<3>() + w.cross(arm);
+          c.J.row(model.dofOf(l)) += sign * (directions * v).transpose();
+        } else if (!model.fixed_base) {  // the base's twist, in its axes: ω, then its origin's v
+          for (int j = 0; j < 3; ++j) {
+            c.J.row(j) += sign * (directions * X.R_PC.col(j).cross(arm)).transpose();
+            c.J.row(3 + j) += sign * (directions * X.R_PC.col(j)).transpose();
+          }
         }
       }
-    }
-    c.friction = bodies.friction(contact.body, -1);
+    };
+    addPoint(colliders.link[contact.body], 1.0);
+    if (contact.other >= 0) addPoint(colliders.link[contact.other], -1.0);
+    c.friction = bodies.friction(contact.body, contact.other);
     c.separation = contact.separation;
     c.target = contact.separation > 0.0 ? -contact.separation / h : 0.0;
     // Restitution (§11.8): a contact arriving faster than the threshold
     // this step leaves at e times the speed it comes with.
-    const double restitution = bodies.restitution(contact.body, -1);
+    const double restitution = bodies.restitution(contact.body, contact.other);
     const double approach = c.J.col(0).dot(u);
     const bool arrives = contact.separation <= 0.0 || approach * h < -contact.separation;
     if (restitution > 0.0 && arrives && approach < -bodies.restitutionThreshold()) {

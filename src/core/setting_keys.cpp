@@ -90,6 +90,7 @@ std::vector<SettingKey> makeKeys() {
              [](ModelSpec& m) { return &m.contact.barrier_strength; }, true),
       number("contact.barrier_buffer", "m", 0, kMaxBuffer, [](ModelSpec& m) { return &m.contact.barrier_buffer; },
              true),
+      flag("contact.self_collision", [](ModelSpec& m) { return &m.contact.self_collision; }),
       flag("sleep.enabled", [](ModelSpec& m) { return &m.sleep.enabled; }),
       number("sleep.linear_velocity", "m/s", 0, kMaxThresholdSpeed,
              [](ModelSpec& m) { return &m.sleep.linear_velocity; }),

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "rigid_body_sim/core/articulation_step.h"
 #include "rigid_body_sim/core/contact.h"
@@ -298,6 +299,80 @@ TEST(ArticulationContacts, BitIdenticalAtOneThreadAndTwo) {
   EXPECT_EQ(ends[0].X_WB.translation, ends[1].X_WB.translation);
   EXPECT_EQ(ends[0].X_WB.rotation.coeffs(), ends[1].X_WB.rotation.coeffs());
   EXPECT_GT(ends[0].X_WB.translation.norm(), 0.1);  // it went somewhere
+}
+
+/// Three bars hinged about z, floating in zero gravity: a 1 m base, a
+/// 0.3 m link at its end, a 0.8 m link at that one's end, folded so the
+/// last swings down across the base.
+ArticulationModel scissors() {
+  ArticulationModel model;
+  model.fixed_base = false;
+  model.links.resize(3);
+  const double lengths[3] = {1.0, 0.3, 0.8};
+  for (int i = 0; i < 3; ++i) {
+    ArticulatedLink& l = model.links[i];
+    l.name = "bar" + std::to_string(i);
+    const Vec3 size(lengths[i], 0.1, 0.1);
+    const Vec3 centre = i == 0 ? Vec3::Zero() : Vec3(lengths[i] / 2.0, 0.0, 0.0);
+    l.mass = boxMass(1.0, size, centre);
+    l.collision = {box(size, centre)};
+    if (i == 0) continue;
+    l.joint = "hinge" + std::to_string(i);
+    l.parent = i - 1;
+    l.type = JointType::Continuous;
+    l.X_PJ.translation = Vec3(i == 1 ? 0.5 : 0.3, 0.0, 0.0);
+    l.axis_J = Vec3::UnitZ();
+  }
+  checkArticulation(model);
+  return model;
+}
+
+/// The deepest the last bar's sides go into the base bar (m, < 0 inside;
+/// the base's box, half sizes 0.5, 0.05, 0.05, as a distance), sampled
+/// every centimetre along them.
+double lastBarIntoBase(const ArticulationModel& model, const ArticulationState& state) {
+  const ArticulationKinematics kin = kinematics(model, state);
+  const Mat3 R_BW = kin.X_WL[0].R_PC.transpose();
+  double deepest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k <= 80; ++k) {
+    for (const double y : {-0.05, 0.05}) {  // in the bars' common mid-plane
+      const Vec3 p_W = kin.X_WL[2].p_PC + kin.X_WL[2].R_PC * Vec3(0.01 * k, y, 0.0);
+      const Vec3 p_B = R_BW * (p_W - kin.X_WL[0].p_PC);
+      deepest = std::min(deepest, (p_B.cwiseAbs() - Vec3(0.5, 0.05, 0.05)).maxCoeff());
+    }
+  }
+  return deepest;
+}
+
+// Self-collision is a setting (contact.self_collision), off by default
+// (Gazebo's): off, the last bar
+// swings through the base; on, it stops on it, no deeper than the slop
+// (links joined by a joint still never touch: the bars meet at the hinges).
+TEST(ArticulationContacts, SelfCollisionIsASettingOffByDefault) {
+  const ArticulationModel model = scissors();
+  ArticulationState start = restState(model);
+  start.q = Eigen::Vector2d(M_PI / 2.0, M_PI / 2.0);  // the last bar back along the base, 0.3 m beside it
+  start.v = Eigen::Vector2d(0.0, 3.0);                // swinging down across it
+  ModelSpec settings;
+  settings.scene.clear();
+  settings.sleep.enabled = false;
+  for (const bool self : {false, true}) {
+    settings.contact.self_collision = self;
+    ArticulationColliders colliders = articulationColliders(model, settings);
+    ArticulationState state = start;
+    ArticulationWorkspace ws;
+    double deepest = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 1000; ++i) {
+      ASSERT_TRUE(stepArticulation(model, state, {}, Vec3::Zero(), kH, {}, &ws, &colliders));
+      deepest = std::min(deepest, lastBarIntoBase(model, state));
+    }
+    std::printf("self-collision %s: the last bar's deepest into the base %.3g m\n", self ? "on" : "off", deepest);
+    if (self) {
+      EXPECT_GT(deepest, -2e-4) << "the bar went into the base";
+    } else {
+      EXPECT_LT(deepest, -0.04) << "the bar should pass through the base";
+    }
+  }
 }
 
 }  // namespace

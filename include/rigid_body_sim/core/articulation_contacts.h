@@ -12,13 +12,15 @@ namespace rigid_body_sim::core {
 
 /// The moving links that have collision shapes, each a body of `bodies`
 /// (built as any body is: its contact points and solid from its shapes, its
-/// mass and inertia), all in one collision group: a robot's links never
-/// touch each other (self-collision off, Gazebo's default). `bodies` also
-/// holds the scene, the contact settings (surface, slop, sampling) and the
-/// solver's tolerances the step uses for them.
+/// mass and inertia). Links joined by a joint never touch each other; with
+/// `contact.self_collision` off (Gazebo's default) no two links do: they
+/// share one collision group. `bodies` also holds the scene, the contact
+/// settings (surface, slop, sampling) and the solver's tolerances the step
+/// uses.
 struct ArticulationColliders {
   Model bodies;
-  std::vector<int> link;  ///< body i is link link[i]
+  std::vector<int> link;        ///< body i is link link[i]
+  bool self_collision = false;  ///< `contact.self_collision`
 };
 
 /// The colliders of `model` with the scene and settings of `settings` (its

@@ -81,6 +81,9 @@ struct ContactSettings {
   double penalty_buffer = 0.005;   ///< ε, m
   double barrier_strength = 0.01;  ///< ρ, N·m per contact point
   double barrier_buffer = 0.005;   ///< ε, m
+  /// A robot's links touch each other (those joined by a joint never do);
+  /// off, as Gazebo's default (docs/physics.md §11.8).
+  bool self_collision = false;
 };
 
 /// A body whose speed stays below these for `time` while in contact falls
