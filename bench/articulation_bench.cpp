@@ -96,6 +96,19 @@ Engine ours(const ChainSpec& c) {
 }
 
 #ifdef RBS_WITH_MUJOCO
+/// MuJoCo's model of an MJCF text (written to /tmp: MuJoCo 2.2 reads files).
+mjModel* loadMjcf(const std::string& xml, const std::string& name) {
+  const std::string path = "/tmp/rbs_articulation_bench_" + name + ".xml";
+  std::ofstream(path) << xml;
+  char error[1000] = "";
+  mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
+  if (m == nullptr) {
+    std::fprintf(stderr, "MuJoCo: %s\n", error);
+    std::exit(1);
+  }
+  return m;
+}
+
 Engine mujoco(const ChainSpec& c) {
   std::string xml =
       "<mujoco><option timestep='0.001' integrator='Euler'><flag contact='disable' energy='enable'/>"
@@ -112,14 +125,7 @@ Engine mujoco(const ChainSpec& c) {
     close += "</body>";
   }
   xml += close + "</worldbody></mujoco>";
-  const std::string path = "/tmp/rbs_articulation_bench_" + std::string(c.name) + ".xml";
-  std::ofstream(path) << xml;
-  char error[1000] = "";
-  mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
-  if (m == nullptr) {
-    std::fprintf(stderr, "MuJoCo: %s\n", error);
-    std::exit(1);
-  }
+  mjModel* m = loadMjcf(xml, c.name);
   mjData* d = mj_makeData(m);
   for (int i = 0; i < c.links; ++i) d->qpos[i] = c.q0;
   mj_forward(m, d);
@@ -223,14 +229,7 @@ Roller mujocoRolling() {
     xml += buf;
   }
   xml += "</body></worldbody></mujoco>";
-  const std::string path = "/tmp/rbs_articulation_bench_wheels.xml";
-  std::ofstream(path) << xml;
-  char error[1000] = "";
-  mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
-  if (m == nullptr) {
-    std::fprintf(stderr, "MuJoCo: %s\n", error);
-    std::exit(1);
-  }
+  mjModel* m = loadMjcf(xml, "wheels");
   mjData* d = mj_makeData(m);
   for (int i = 0; i < 4; ++i) d->qvel[6 + i] = kWheelSpin;  // after the free joint's 6
   mj_forward(m, d);
