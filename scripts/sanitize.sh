@@ -29,7 +29,7 @@ if [ "$which" = all ] || [ "$which" = asan ]; then
   unset ASAN_OPTIONS UBSAN_OPTIONS
 fi
 if [ "$which" = all ] || [ "$which" = tsan ]; then
-  suites=(core_bodies_test core_broad_phase_test core_workspace_test core_parallel_test core_articulation_contacts_test)
+  suites=(core_bodies_test core_broad_phase_test core_workspace_test core_parallel_test core_articulation_contacts_test core_scene_test)
   RBS_CMAKE_ARGS=(-DRBS_LTO=OFF "-DCMAKE_CXX_FLAGS=-O1 -g1 -fsanitize=thread")
   RBS_WS=$root_ws/tsan RBS_BUILD_TYPE=Sanitize RBS_WERROR=OFF rbs_build "${suites[@]}"
   echo "sanitize: the threaded core suites under TSan" >&2

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "articulation_phases.h"
 #include "joint_rows.h"
 #include "rigid_body_sim/core/articulation_dynamics.h"
 
@@ -57,7 +58,6 @@ bool finite(const ArticulationState& s) {
          s.X_WB.rotation.coeffs().allFinite();
 }
 
-/// The step itself; stepArticulation checks its inputs and guards its result.
 /// Slows what is faster than the limits; returns whether anything was.
 bool limitSpeeds(const ArticulationModel& model, const SpeedLimits& limits, Eigen::VectorXd& u) {
   bool limited = false;
@@ -79,8 +79,12 @@ bool limitSpeeds(const ArticulationModel& model, const SpeedLimits& limits, Eige
   return limited;
 }
 
-void advance(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads, const Vec3& g_W,
-             double h, const SpeedLimits& limits, const ArticulationColliders* colliders, ArticulationWorkspace& ws) {
+}  // namespace
+
+namespace detail {
+
+void predictArticulation(const ArticulationModel& model, const ArticulationState& state, const ArticulationLoads& loads,
+                         const Vec3& g_W, double h, ArticulationWorkspace& ws) {
   ArticulationKinematics& kin = ws.kin;
   kinematics(model, state, kin);
   const int base = model.fixed_base ? 0 : 6;
@@ -92,8 +96,10 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
   u = generalizedVelocity(model, state);
   // The momenta at the start: carried from the last step, or from the velocities.
   Eigen::VectorXd& p_joints = ws.p;
-  Vec6 H_W = Vec6::Zero();
-  int predict_only = 0;
+  Vec6& H_W = ws.H_W;
+  H_W.setZero();
+  int& predict_only = ws.predict_only;
+  predict_only = 0;
   if (carriedStillHolds(state)) {
     p_joints = state.carried.p;
     H_W = state.carried.H_W;
@@ -181,24 +187,22 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
     }
     rhs.tail(nj).noalias() = A.bottomRows(nj) * u_next;
   }
-  // The joints' limits, friction and mimics (§11.6), and the links'
-  // contacts with the scene (§11.8), at the twists the step would give them:
-  // one impulse solve. The joints' impulses act on the joints only, so the
-  // whole articulation's momentum changes by the contacts' alone.
-  std::vector<detail::JointRow> rows;
-  detail::buildJointRows(model, state, u_next, h, rows);
-  std::vector<detail::ContactRows> contacts;
-  if (colliders != nullptr) {
-    setTwists(model, u_next, kin);
-    detail::findContactRows(model, *colliders, kin, u_next, h, ws.links, ws.detection, contacts);
-  }
-  if (!rows.empty() || !contacts.empty()) {
-    Eigen::VectorXd impulse = Eigen::VectorXd::Zero(model.dofCount());
-    detail::solveRows(colliders != nullptr ? colliders->bodies.solver() : SolverSettings(), llt, rows, contacts, u_next,
-                      impulse);
-    rhs.tail(nj) += impulse.tail(nj);
-    if (base) H_W += kin.X_WL[0].forceToParent(impulse.head<6>());
-    detail::reportContactImpulses(contacts, ws.detection);
+}
+
+void finishArticulation(const ArticulationModel& model, const SpeedLimits& limits, double h,
+                        const Eigen::VectorXd* impulse, const Eigen::VectorXd* pseudo, ArticulationState& state,
+                        ArticulationWorkspace& ws) {
+  const int base = model.fixed_base ? 0 : 6;
+  const int nj = model.jointCount();
+  ArticulationKinematics& kin = ws.kin;
+  Eigen::VectorXd& u_next = ws.next;
+  Eigen::VectorXd& rhs = ws.rhs;
+  Vec6& H_W = ws.H_W;
+  // The rows' impulses: the joints' act on the joints only, so the whole
+  // articulation's momentum changes by the contacts' alone.
+  if (impulse != nullptr) {
+    rhs.tail(nj) += impulse->tail(nj);
+    if (base) H_W += kin.X_WL[0].forceToParent(impulse->head<6>());
   }
   for (int i = 1; i <= nj; ++i) rhs(model.dofOf(i)) -= h * model.links[i].damping * u_next(model.dofOf(i));
   // Slowed to the limits, the velocities no longer carry the momenta: the
@@ -221,9 +225,7 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
     kinematics(model, state, kin);
     state.X_WB.translation += c_next - centreOfMass(model, kin);
   }
-  if (!contacts.empty()) {
-    detail::correctContactPositions(model, contacts, u_next, h, colliders->bodies.contact().position_slop, state);
-  }
+  if (pseudo != nullptr) moveRobot(model, *pseudo, h, state);
   ArticulationState::Carried& c = state.carried;
   c.valid = !limited;
   c.p = rhs.tail(nj);
@@ -232,7 +234,41 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
   c.v = state.v;
   c.V_B = state.V_B;
   c.X_WB = state.X_WB;
-  c.predict_only = predict_only;
+  c.predict_only = ws.predict_only;
+}
+
+}  // namespace detail
+
+namespace {
+
+/// The step itself; stepArticulation checks its inputs and guards its result.
+/// The joints' limits, friction and mimics (§11.6), and the links' contacts
+/// with the scene (§11.8), at the twists the step would give them: one
+/// impulse solve between the prediction and the positions.
+void advance(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads, const Vec3& g_W,
+             double h, const SpeedLimits& limits, const ArticulationColliders* colliders, ArticulationWorkspace& ws) {
+  detail::predictArticulation(model, state, loads, g_W, h, ws);
+  Eigen::VectorXd& u_next = ws.next;
+  std::vector<detail::JointRow> rows;
+  detail::buildJointRows(model, state, u_next, h, 0, rows);
+  std::vector<detail::ContactRows> contacts;
+  if (colliders != nullptr) {
+    setTwists(model, u_next, ws.kin);
+    detail::findContactRows(model, *colliders, ws.kin, u_next, h, ws.links, ws.detection, contacts);
+  }
+  if (rows.empty() && contacts.empty()) {
+    detail::finishArticulation(model, limits, h, nullptr, nullptr, state, ws);
+    return;
+  }
+  const std::vector<detail::CoordinateBlock> blocks{{0, model.dofCount(), &ws.llt}};
+  Eigen::VectorXd impulse = Eigen::VectorXd::Zero(model.dofCount());
+  detail::solveRows(colliders != nullptr ? colliders->bodies.solver() : SolverSettings(), blocks, rows, contacts,
+                    u_next, impulse);
+  detail::reportContactImpulses(contacts, ws.detection.contacts);
+  Eigen::VectorXd pseudo;
+  const bool lift = !contacts.empty() &&
+                    detail::liftOutOfContacts(contacts, u_next, h, colliders->bodies.contact().position_slop, pseudo);
+  detail::finishArticulation(model, limits, h, &impulse, lift ? &pseudo : nullptr, state, ws);
 }
 
 /// Whether any effort, wrench or impulse acts (a sleeper wakes for it).
@@ -269,9 +305,9 @@ void sleepIfStill(const ArticulationModel& model, const SleepSettings& sleep, bo
 
 }  // namespace
 
-bool stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
-                      const Vec3& g_W, double h, const SpeedLimits& limits, ArticulationWorkspace* workspace,
-                      const ArticulationColliders* colliders) {
+namespace detail {
+
+void checkLoads(const ArticulationModel& model, const ArticulationLoads& loads) {
   const auto sized = [](long size, long wanted, const char* what) {
     if (size != 0 && size != wanted) {
       throw std::invalid_argument(std::string("articulation loads: ") + what + " has " + std::to_string(size) +
@@ -281,22 +317,10 @@ bool stepArticulation(const ArticulationModel& model, ArticulationState& state, 
   sized(loads.effort.size(), model.jointCount(), "effort");
   sized(static_cast<long>(loads.wrench_L.size()), static_cast<long>(model.links.size()), "wrench_L");
   sized(static_cast<long>(loads.impulse_L.size()), static_cast<long>(model.links.size()), "impulse_L");
-  if (model.dofCount() == 0) return true;  // a base on the world and no joint: nothing moves
-  if (state.asleep) {
-    if (!loaded(loads)) return true;  // it stays exactly where it is
-    state.asleep = false;
-    state.still_time = 0.0;
-  }
-  ArticulationWorkspace local;
-  ArticulationWorkspace& ws = workspace != nullptr ? *workspace : local;
-  const ArticulationState& start = ws.start;
-  ws.start.X_WB = state.X_WB;
-  ws.start.q = state.q;  // the positions only: the guard puts back no velocity
-  advance(model, state, loads, g_W, h, limits, colliders, ws);
-  if (finite(state)) {
-    if (colliders != nullptr) sleepIfStill(model, colliders->bodies.sleep(), !ws.detection.contacts.empty(), h, state);
-    return true;
-  }
+}
+
+bool guardArticulation(const ArticulationModel& model, const ArticulationState& start, ArticulationState& state) {
+  if (finite(state)) return true;
   // Undone: where the step began, at rest, nothing carried (§11.7).
   if (start.q.allFinite() && start.X_WB.translation.allFinite() && start.X_WB.rotation.coeffs().allFinite()) {
     state.q = start.q;
@@ -308,6 +332,28 @@ bool stepArticulation(const ArticulationModel& model, ArticulationState& state, 
   state.V_B.setZero();
   state.carried = {};
   return false;
+}
+
+}  // namespace detail
+
+bool stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
+                      const Vec3& g_W, double h, const SpeedLimits& limits, ArticulationWorkspace* workspace,
+                      const ArticulationColliders* colliders) {
+  detail::checkLoads(model, loads);
+  if (model.dofCount() == 0) return true;  // a base on the world and no joint: nothing moves
+  if (state.asleep) {
+    if (!loaded(loads)) return true;  // it stays exactly where it is
+    state.asleep = false;
+    state.still_time = 0.0;
+  }
+  ArticulationWorkspace local;
+  ArticulationWorkspace& ws = workspace != nullptr ? *workspace : local;
+  ws.start.X_WB = state.X_WB;
+  ws.start.q = state.q;  // the positions only: the guard puts back no velocity
+  advance(model, state, loads, g_W, h, limits, colliders, ws);
+  if (!detail::guardArticulation(model, ws.start, state)) return false;
+  if (colliders != nullptr) sleepIfStill(model, colliders->bodies.sleep(), !ws.detection.contacts.empty(), h, state);
+  return true;
 }
 
 }  // namespace rigid_body_sim::core

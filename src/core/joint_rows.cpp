@@ -12,13 +12,14 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 double rowVelocity(const JointRow& row, const Eigen::VectorXd& u) {
-  double w = row.sign * u(row.dof);
-  if (row.other >= 0) w += row.coefficient * u(row.other);
+  double w = row.sign * u(row.offset + row.dof);
+  if (row.other >= 0) w += row.coefficient * u(row.offset + row.other);
   return w;
 }
 
-JointRow makeRow(int dof, double sign, double target, double lower, double upper) {
+JointRow makeRow(int offset, int dof, double sign, double target, double lower, double upper) {
   JointRow row;
+  row.offset = offset;
   row.dof = dof;
   row.sign = sign;
   row.target = target;
@@ -30,8 +31,7 @@ JointRow makeRow(int dof, double sign, double target, double lower, double upper
 }  // namespace
 
 void buildJointRows(const ArticulationModel& model, const ArticulationState& state, const Eigen::VectorXd& u_free,
-                    double h, std::vector<JointRow>& rows) {
-  rows.clear();
+                    double h, int offset, std::vector<JointRow>& rows) {
   for (int i = 1; i <= model.jointCount(); ++i) {
     const ArticulatedLink& link = model.links[i];
     const int d = model.dofOf(i);
@@ -41,19 +41,19 @@ void buildJointRows(const ArticulationModel& model, const ArticulationState& sta
     // it (set there) may not go further; the positions are put back after.
     const double reach = h * std::abs(u_free(d));
     if (std::isfinite(link.limits.upper) && link.limits.upper - q <= reach) {
-      rows.push_back(makeRow(d, -1.0, -std::max(link.limits.upper - q, 0.0) / h, 0.0, kInfinity));
+      rows.push_back(makeRow(offset, d, -1.0, -std::max(link.limits.upper - q, 0.0) / h, 0.0, kInfinity));
     }
     if (std::isfinite(link.limits.lower) && q - link.limits.lower <= reach) {
-      rows.push_back(makeRow(d, 1.0, std::min(link.limits.lower - q, 0.0) / h, 0.0, kInfinity));
+      rows.push_back(makeRow(offset, d, 1.0, std::min(link.limits.lower - q, 0.0) / h, 0.0, kInfinity));
     }
     // Coulomb friction: holds the joint while it can, at most friction · h.
-    if (link.friction > 0.0) rows.push_back(makeRow(d, 1.0, 0.0, -link.friction * h, link.friction * h));
+    if (link.friction > 0.0) rows.push_back(makeRow(offset, d, 1.0, 0.0, -link.friction * h, link.friction * h));
     // A mimic joint: q = m q_k + offset, its error of this step taken out
     // by the velocity over it.
     if (link.mimic.joint > 0) {
       const Mimic& mimic = link.mimic;
       const double error = q - mimic.multiplier * state.q(mimic.joint - 1) - mimic.offset;
-      JointRow row = makeRow(d, 1.0, -error / h, -kInfinity, kInfinity);
+      JointRow row = makeRow(offset, d, 1.0, -error / h, -kInfinity, kInfinity);
       row.other = model.dofOf(mimic.joint);
       row.coefficient = -mimic.multiplier;
       rows.push_back(row);
@@ -61,20 +61,45 @@ void buildJointRows(const ArticulationModel& model, const ArticulationState& sta
   }
 }
 
-void solveRows(const SolverSettings& settings, const Eigen::LLT<Eigen::MatrixXd>& A, std::vector<JointRow>& rows,
+void respond(const CoordinateBlock& block, const Columns& J, Columns& response) {
+  if (block.llt != nullptr) {
+    response = block.llt->solve(J);
+    return;
+  }
+  response.resize(6, 3);
+  response.topRows<3>() = block.inv_mass * J.topRows<3>();
+  response.bottomRows<3>() = block.inv_inertia_W * J.bottomRows<3>();
+}
+
+namespace {
+
+/// The block that starts at `offset` (blocks are in u's order).
+const CoordinateBlock& blockAt(const std::vector<CoordinateBlock>& blocks, int offset) {
+  const auto it = std::lower_bound(blocks.begin(), blocks.end(), offset,
+                                   [](const CoordinateBlock& b, int at) { return b.offset < at; });
+  return *it;
+}
+
+}  // namespace
+
+void solveRows(const SolverSettings& settings, const std::vector<CoordinateBlock>& blocks, std::vector<JointRow>& rows,
                std::vector<ContactRows>& contacts, Eigen::VectorXd& u, Eigen::VectorXd& impulse) {
-  const int nv = static_cast<int>(u.size());
   for (JointRow& row : rows) {
-    Eigen::VectorXd J = Eigen::VectorXd::Zero(nv);
+    const CoordinateBlock& block = blockAt(blocks, row.offset);
+    Eigen::VectorXd J = Eigen::VectorXd::Zero(block.size);
     J(row.dof) = row.sign;
     if (row.other >= 0) J(row.other) += row.coefficient;
-    row.response = A.solve(J);
+    row.response = block.llt->solve(J);
     row.mass = 1.0 / J.dot(row.response);
     row.impulse = 0.0;
   }
   for (ContactRows& c : contacts) {
-    c.response = A.solve(c.J);
-    c.K.noalias() = c.J.transpose() * c.response;
+    c.K.setZero();
+    for (int s = 0; s < c.sides; ++s) {
+      RowSide& side = c.side[s];
+      respond(blockAt(blocks, side.offset), side.J, side.response);
+      c.K.noalias() += side.J.transpose() * side.response;
+    }
     c.impulse.setZero();
     const Eigen::Matrix2d tangent_k = c.K.bottomRightCorner<2, 2>();
     c.block = tangent_k.determinant() > 1e-9 * tangent_k.trace() * tangent_k.trace();
@@ -92,17 +117,21 @@ void solveRows(const SolverSettings& settings, const Eigen::LLT<Eigen::MatrixXd>
       const double change = next - row.impulse;
       if (change == 0.0) continue;
       row.impulse = next;
-      u += change * row.response;
+      u.segment(row.offset, row.response.size()) += change * row.response;
       largest = std::max(largest, std::abs(change) / row.mass);
     }
     for (ContactRows& c : contacts) largest = std::max(largest, sweepContactRows(settings, c, u));
     if (largest <= tolerance) break;
   }
   for (const JointRow& row : rows) {
-    impulse(row.dof) += row.sign * row.impulse;
-    if (row.other >= 0) impulse(row.other) += row.coefficient * row.impulse;
+    impulse(row.offset + row.dof) += row.sign * row.impulse;
+    if (row.other >= 0) impulse(row.offset + row.other) += row.coefficient * row.impulse;
   }
-  for (const ContactRows& c : contacts) impulse.noalias() += c.J * c.impulse;
+  for (const ContactRows& c : contacts) {
+    for (int s = 0; s < c.sides; ++s) {
+      impulse.segment(c.side[s].offset, c.side[s].J.rows()).noalias() += c.side[s].J * c.impulse;
+    }
+  }
 }
 
 }  // namespace rigid_body_sim::core::detail

@@ -23,6 +23,15 @@ struct ArticulationColliders {
   bool self_collision = false;  ///< `contact.self_collision`
 };
 
+/// The moving links of `model` that have collision shapes, as bodies
+/// (their mass, inertia and shapes; in `collision_group`, −1 for none):
+/// body i is link link[i].
+struct LinkBodies {
+  std::vector<BodySpec> bodies;
+  std::vector<int> link;
+};
+LinkBodies linkBodies(const ArticulationModel& model, int collision_group);
+
 /// The colliders of `model` with the scene and settings of `settings` (its
 /// bodies are ignored). A link a body could not be (a mass or inertia
 /// outside the model's ranges) throws std::invalid_argument naming it.

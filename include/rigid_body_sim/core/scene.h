@@ -1,0 +1,98 @@
+// A world of free bodies and robots that touch each other: the robots'
+// links are bodies of one Model (the detection sees them as any body), and
+// every contact a robot is part of is a row of one impulse solve with the
+// robots' joints and the free bodies it holds (docs/physics.md §11.9).
+// Eigen only.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/core/articulation.h"
+#include "rigid_body_sim/core/articulation_step.h"
+#include "rigid_body_sim/core/loads.h"
+#include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/core/workspace.h"
+
+namespace rigid_body_sim::core {
+
+/// A robot of a scene: its articulation, and its links among the scene's
+/// bodies.
+struct SceneRobot {
+  std::string name;
+  ArticulationModel model;
+  int first_body = 0;     ///< body first_body + i of the scene's model is link link[i]
+  std::vector<int> link;  ///< the moving links with collision shapes
+};
+
+/// The free bodies, the robots, the settings: fixed while it steps.
+class Scene {
+ public:
+  /// One named articulation.
+  struct RobotSpec {
+    std::string name;
+    ArticulationModel model;
+  };
+
+  /// `spec` gives the free bodies and every setting (scene, contact,
+  /// sleep, solver, limits); each robot's links with collision shapes
+  /// become bodies after them. With `contact.self_collision` off a robot's
+  /// links share a collision group of their own. Throws
+  /// std::invalid_argument as Model does, naming the link.
+  Scene(const ModelSpec& spec, std::vector<RobotSpec> robots);
+
+  /// The free bodies (0 .. freeBodyCount() − 1), then the robots' links.
+  const Model& model() const { return model_; }
+  std::size_t freeBodyCount() const { return free_bodies_; }
+  const std::vector<SceneRobot>& robots() const { return robots_; }
+  /// The robot body i is a link of, or −1 for a free body.
+  int robotOf(std::size_t body) const { return robot_of_[body]; }
+
+ private:
+  std::vector<SceneRobot> robots_;  // before model_: its constructor fills them
+  Model model_;
+  std::size_t free_bodies_ = 0;
+  std::vector<int> robot_of_;
+};
+
+/// A scene's state: its bodies' (the links' are set from the robots' after
+/// every step, for the detection and for whoever reads them) and its robots'.
+/// `bodies.time` is the scene's time.
+struct SceneState {
+  State bodies;
+  std::vector<ArticulationState> robots;
+};
+
+/// The free bodies at `bodies` (one per free body), the robots at
+/// `robots` (one per robot), the links where their robots put them.
+SceneState sceneState(const Scene& scene, const State& bodies, const std::vector<ArticulationState>& robots);
+
+/// What acts over one step: per free body (empty for none), per robot
+/// (empty for none).
+struct SceneLoads {
+  Loads bodies;
+  std::vector<ArticulationLoads> robots;
+};
+
+/// The memory a scene's step reuses; `bodies.contacts` holds the step's
+/// contacts with their impulses (links by their body index), sorted by key.
+struct SceneWorkspace {
+  Workspace bodies;
+  std::vector<ArticulationWorkspace> robots;
+  std::vector<Contact> robot_contacts;  ///< the contacts a robot's solve takes, during a step
+  /// Per robot: whether the guard put it back in the last step (§11.7).
+  std::vector<char> robot_diverged;
+};
+
+/// Advances the scene by one step of the model's dt (§11.9): the robots'
+/// predictions; detection over every body; the contacts of islands without a
+/// robot solved as free bodies' are (§5.5); every robot's joint rows and the
+/// contacts of the islands that hold a robot, with the free bodies in them,
+/// in one joint-space solve; then positions. The guard, the speed limits and
+/// sleep act as on their own: a robot in a scene does not sleep, nor do the
+/// free bodies it touches. Throws std::invalid_argument for loads of the
+/// wrong size.
+void stepScene(const Scene& scene, SceneState& state, const SceneLoads& loads, SceneWorkspace& ws);
+
+}  // namespace rigid_body_sim::core

@@ -1,0 +1,69 @@
+// A scene of free bodies and robots: docs/physics.md §11.9.
+#include "rigid_body_sim/core/scene.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "joint_rows.h"
+#include "rigid_body_sim/core/articulation_contacts.h"
+#include "rigid_body_sim/core/articulation_dynamics.h"
+
+namespace rigid_body_sim::core {
+
+namespace {
+
+/// `spec` with every robot's links appended as bodies; `robots` gets where.
+ModelSpec withLinks(const ModelSpec& spec, std::vector<Scene::RobotSpec>& specs, std::vector<SceneRobot>& robots) {
+  ModelSpec all = spec;
+  // A robot's links are a collision group of their own unless self-collision
+  // is on; the groups come after any the free bodies have.
+  int group = 0;
+  for (const BodySpec& b : spec.bodies) group = std::max(group, b.collision_group + 1);
+  for (Scene::RobotSpec& r : specs) {
+    LinkBodies links = linkBodies(r.model, spec.contact.self_collision ? -1 : group++);
+    SceneRobot robot;
+    robot.name = std::move(r.name);
+    robot.model = std::move(r.model);
+    robot.first_body = static_cast<int>(all.bodies.size());
+    robot.link = std::move(links.link);
+    all.bodies.insert(all.bodies.end(), links.bodies.begin(), links.bodies.end());
+    robots.push_back(std::move(robot));
+  }
+  return all;
+}
+
+void placeLinks(const Scene& scene, std::size_t r, const ArticulationKinematics& kin, State& state) {
+  const SceneRobot& robot = scene.robots()[r];
+  detail::setLinkStates(scene.model(), robot.link, kin, static_cast<std::size_t>(robot.first_body), state.bodies);
+}
+
+}  // namespace
+
+Scene::Scene(const ModelSpec& spec, std::vector<RobotSpec> robots)
+    : model_(withLinks(spec, robots, robots_)), free_bodies_(spec.bodies.size()) {
+  if (!robots_.empty() && model_.contact().method != ContactMethod::kImpulse) {
+    throw std::invalid_argument(
+        "contact.method: a scene with robots takes the impulse method (robots' contacts are rows of its solve)");
+  }
+  robot_of_.assign(model_.bodyCount(), -1);
+  for (std::size_t r = 0; r < robots_.size(); ++r) {
+    const SceneRobot& robot = robots_[r];
+    std::fill_n(robot_of_.begin() + robot.first_body, robot.link.size(), static_cast<int>(r));
+  }
+}
+
+SceneState sceneState(const Scene& scene, const State& bodies, const std::vector<ArticulationState>& robots) {
+  SceneState s;
+  s.bodies = bodies;
+  s.bodies.bodies.resize(scene.model().bodyCount());
+  s.robots = robots;
+  ArticulationKinematics kin;
+  for (std::size_t r = 0; r < robots.size(); ++r) {
+    kinematics(scene.robots()[r].model, robots[r], kin);
+    placeLinks(scene, r, kin, s.bodies);
+  }
+  return s;
+}
+
+}  // namespace rigid_body_sim::core

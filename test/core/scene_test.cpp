@@ -1,0 +1,313 @@
+// Robots and free bodies in one scene (docs/physics.md §11.9): a pusher on
+// a prismatic joint shoves a box across the floor, a lift raises a box, a
+// floating robot and a box collide in zero gravity; each against its closed
+// form or conservation law, in one solve.
+#include "rigid_body_sim/core/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "../test_util.h"
+#include "rigid_body_sim/core/articulation_dynamics.h"
+#include "rigid_body_sim/core/contact.h"
+#include "rigid_body_sim/core/step.h"
+
+namespace rigid_body_sim::core {
+namespace {
+
+constexpr double kG = 9.81;
+constexpr double kH = 1e-3;
+
+CollisionShape boxShape(const Vec3& size) {
+  CollisionShape s;
+  s.kind = CollisionShape::Kind::kBox;
+  s.size = size;
+  return s;
+}
+
+MassProperties boxMass(double m, const Vec3& size) {
+  MassProperties p;
+  p.mass = m;
+  const Vec3 s2 = size.cwiseProduct(size);
+  p.I_C_F = (m / 12.0 * Vec3(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y())).asDiagonal();
+  return p;
+}
+
+/// A world-fixed robot: one box link of `size` and `mass` on a prismatic
+/// joint along `axis`, its origin at `origin` when q = 0.
+ArticulationModel slider(const Vec3& axis, const Vec3& origin, const Vec3& size, double mass) {
+  ArticulationModel model;
+  model.fixed_base = true;
+  model.links.resize(2);
+  model.links[0].name = "world";
+  ArticulatedLink& link = model.links[1];
+  link.name = "slider";
+  link.joint = "slide";
+  link.parent = 0;
+  link.type = JointType::Prismatic;
+  link.X_PJ.translation = origin;
+  link.axis_J = axis;
+  link.limits.effort = 1000.0;
+  link.mass = boxMass(mass, size);
+  link.collision = {boxShape(size)};
+  checkArticulation(model);
+  return model;
+}
+
+ModelSpec settings(const std::vector<BodySpec>& bodies, double friction, bool ground) {
+  ModelSpec spec;
+  spec.dt = kH;
+  spec.bodies = bodies;
+  if (ground) spec.scene = {Sdf::plane(Vec3::UnitZ())};
+  spec.contact.friction = friction;
+  return spec;
+}
+
+struct SceneRun {
+  Scene scene;
+  SceneState state;
+  SceneLoads loads;
+  SceneWorkspace ws;
+
+  SceneRun(const ModelSpec& spec, std::vector<Scene::RobotSpec> robots, const std::vector<LinkState>& bodies,
+           const std::vector<ArticulationState>& starts)
+      : scene(spec, std::move(robots)) {
+    State free = restState(Model(spec));
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      free.bodies[i] = bodyStateFromLink(scene.model().body(i), bodies[i]);
+    state = sceneState(scene, free, starts);
+  }
+  void steps(int n) {
+    for (int i = 0; i < n; ++i) stepScene(scene, state, loads, ws);
+  }
+  const BodyState& body(int i) const { return state.bodies.bodies[i]; }
+};
+
+LinkState at(const Vec3& p) {
+  LinkState X;
+  X.p_WL = p;
+  return X;
+}
+
+Pose placed(const Vec3& p) {
+  Pose X;
+  X.translation = p;
+  return X;
+}
+
+// A 2 kg pusher on a horizontal prismatic joint, its face against a 1 kg
+// box on a frictionless floor, pushed with 20 N: pusher and box move as
+// one, a = F / (M + m), the contact carrying m a. (With friction on the
+// floor and on the face, how the box's weight splits between the floor and
+// the face's friction is not determined by rigid contacts, so neither is
+// the floor's friction: the platform below has friction's closed form.)
+TEST(Scene, PusherShovesABox) {
+  const double M = 2.0, m = 1.0, F = 20.0;
+  const ArticulationModel pusher = slider(Vec3::UnitX(), Vec3(0.0, 0.0, 0.1), Vec3(0.1, 0.3, 0.1), M);
+  const BodySpec box = test::boxBody(Vec3(0.1, 0.1, 0.1), m);
+  SceneRun run(settings({box}, 0.0, true), {{"pusher", pusher}}, {at(Vec3(0.15, 0.0, 0.1))}, {restState(pusher)});
+  run.loads.robots.resize(1);
+  run.loads.robots[0].effort = Eigen::VectorXd::Constant(1, F);
+  const int n = 500;
+  run.steps(n);
+  const double a = F / (M + m);
+  EXPECT_NEAR(run.body(0).v_WB.x(), a * n * kH, 1e-9);
+  EXPECT_NEAR(run.state.robots[0].v(0), run.body(0).v_WB.x(), 1e-9);
+  // Symplectic Euler: x_n = a h² n (n + 1) / 2; the box stays face to face.
+  EXPECT_NEAR(run.state.robots[0].q(0), a * kH * kH * n * (n + 1) / 2.0, 1e-9);
+  EXPECT_NEAR(run.body(0).p_WB.x() - 0.15, run.state.robots[0].q(0), 1e-9);
+  EXPECT_NEAR(run.body(0).p_WB.z(), 0.1, 1e-6);
+  EXPECT_LT(run.body(0).w_B.norm(), 1e-9);
+  double push = 0.0;  // N·s, between pusher and box this step (found both ways: each's points in the other)
+  for (const Contact& c : run.ws.bodies.contacts) {
+    if (c.other >= 0) push += c.normal_impulse;
+  }
+  EXPECT_NEAR(push / kH, m * a, 1e-6);
+}
+
+// A 1 kg box on a 2 kg platform that slides along x (μ = 0.5 between them),
+// driven by an effort: below μ g (M + m) the box rides along, a = F/(M + m);
+// above, it slips, its acceleration μ g, the platform's (F − μ m g)/M.
+TEST(Scene, PlatformCarriesOrLosesABox) {
+  const double M = 2.0, m = 1.0, mu = 0.5;
+  const ArticulationModel platform = slider(Vec3::UnitX(), Vec3(0.0, 0.0, 0.5), Vec3(1.0, 0.4, 0.1), M);
+  const BodySpec box = test::boxBody(Vec3(0.1, 0.1, 0.1), m);
+  for (const double F : {10.0, 30.0}) {
+    SceneRun run(settings({box}, mu, false), {{"platform", platform}}, {at(Vec3(0.0, 0.0, 0.65))},
+                 {restState(platform)});
+    run.loads.robots.resize(1);
+    run.loads.robots[0].effort = Eigen::VectorXd::Constant(1, F);
+    const int n = 300;
+    run.steps(n);
+    const double t = n * kH;
+    const bool slips = F > mu * kG * (M + m);
+    const double a_box = slips ? mu * kG : F / (M + m);
+    const double a_platform = slips ? (F - mu * m * kG) / M : a_box;
+    EXPECT_NEAR(run.body(0).v_WB.x(), a_box * t, 1e-9) << F;
+    EXPECT_NEAR(run.state.robots[0].v(0), a_platform * t, 1e-9) << F;
+    EXPECT_NEAR(run.body(0).v_WB.z(), 0.0, 1e-9) << F;
+    EXPECT_NEAR(run.body(0).p_WB.z(), 0.65, 1e-6) << F;
+  }
+}
+
+// A 2 kg platform on a vertical prismatic joint lifts a 1 kg box resting
+// on it with 40 N: a = F / (M + m) − g, the box never leaving it.
+TEST(Scene, LiftRaisesABox) {
+  const double M = 2.0, m = 1.0, F = 40.0;
+  const ArticulationModel lift = slider(Vec3::UnitZ(), Vec3(0.0, 0.0, 0.5), Vec3(0.4, 0.4, 0.1), M);
+  const BodySpec box = test::boxBody(Vec3(0.1, 0.1, 0.1), m);
+  SceneRun run(settings({box}, 0.5, false), {{"lift", lift}}, {at(Vec3(0.0, 0.0, 0.65))}, {restState(lift)});
+  run.loads.robots.resize(1);
+  run.loads.robots[0].effort = Eigen::VectorXd::Constant(1, F);
+  const int n = 500;
+  run.steps(n);
+  const double a = F / (M + m) - kG;
+  EXPECT_NEAR(run.state.robots[0].v(0), a * n * kH, 1e-9);
+  EXPECT_NEAR(run.body(0).v_WB.z(), run.state.robots[0].v(0), 1e-9);
+  EXPECT_NEAR(run.body(0).p_WB.z() - 0.65, run.state.robots[0].q(0), 1e-6);
+  EXPECT_LT(run.body(0).v_WB.head<2>().norm(), 1e-12);
+}
+
+/// A floating two-link robot: two 0.4 × 0.1 × 0.1 bars joined by a hinge
+/// about z at x = 0.2.
+ArticulationModel floatingArm() {
+  ArticulationModel model;
+  model.fixed_base = false;
+  model.links.resize(2);
+  const Vec3 size(0.4, 0.1, 0.1);
+  model.links[0].name = "upper";
+  model.links[0].mass = boxMass(1.0, size);
+  model.links[0].collision = {boxShape(size)};
+  ArticulatedLink& fore = model.links[1];
+  fore.name = "fore";
+  fore.joint = "elbow";
+  fore.parent = 0;
+  fore.type = JointType::Continuous;
+  fore.X_PJ.translation = Vec3(0.2, 0.0, 0.0);
+  fore.axis_J = Vec3::UnitZ();
+  fore.mass = boxMass(1.0, size);
+  fore.mass.p_FC = Vec3(0.2, 0.0, 0.0);
+  CollisionShape shape = boxShape(size);
+  shape.X_LS.translation = Vec3(0.2, 0.0, 0.0);
+  fore.collision = {shape};
+  checkArticulation(model);
+  return model;
+}
+
+/// [angular about W's origin; linear] of the robot and the free bodies:
+/// the robot's as its step carries it (its velocities give it from where
+/// they act, the step's start: §11.5).
+Vec6 totalMomentum(const SceneRun& run) {
+  const SceneRobot& robot = run.scene.robots()[0];
+  const ArticulationState& a = run.state.robots[0];
+  Vec6 H = a.carried.valid ? a.carried.H_W : momentum_W(robot.model, kinematics(robot.model, a));
+  for (std::size_t i = 0; i < run.scene.freeBodyCount(); ++i) {
+    const BodyModel& b = run.scene.model().body(i);
+    const BodyState& s = run.body(static_cast<int>(i));
+    const Vec3 p = b.mass * s.v_WB;
+    const Mat3 R = s.q_WB.toRotationMatrix();
+    const Vec3 w_W = R * s.w_B;
+    const Vec3 L = R * b.inv_inertia_B.cwiseInverse().asDiagonal() * R.transpose() * w_W;
+    H.head<3>() += L + s.p_WB.cross(p);
+    H.tail<3>() += p;
+  }
+  return H;
+}
+
+// In zero gravity the robot, bent and spinning its elbow, flies into a box
+// at rest off its axis: the contact's impulse acts on both in one solve, so
+// the total linear and angular momentum stay what they were.
+TEST(Scene, CollisionKeepsTheMomentum) {
+  const ArticulationModel arm = floatingArm();
+  ModelSpec spec = settings({test::boxBody(Vec3(0.1, 0.1, 0.1), 1.5)}, 0.5, false);
+  spec.gravity_W = Vec3::Zero();
+  ArticulationState start = restState(arm, placed(Vec3(-0.6, 0.05, 0.0)));
+  start.q(0) = 0.3;
+  start.v(0) = 2.0;
+  start.V_B.tail<3>() = Vec3(1.0, 0.0, 0.0);
+  SceneRun run(spec, {{"arm", arm}}, {at(Vec3(0.25, 0.0, 0.02))}, {start});
+  const Vec6 before = totalMomentum(run);
+  bool touched = false;
+  for (int i = 0; i < 1500; ++i) {
+    run.steps(1);
+    touched = touched || !run.ws.bodies.contacts.empty();
+  }
+  ASSERT_TRUE(touched);
+  EXPECT_GT(run.body(0).v_WB.x(), 0.1);  // the box was struck
+  const Vec6 after = totalMomentum(run);
+  EXPECT_LT((after - before).norm(), 1e-9) << (after - before).transpose();
+}
+
+// A free box falling onto the floor far from a robot steps exactly as it
+// does in a world of its own: islands without a robot are the free bodies'.
+TEST(Scene, FreeIslandsStepAsOnTheirOwn) {
+  const ArticulationModel pusher = slider(Vec3::UnitX(), Vec3(5.0, 0.0, 0.1), Vec3(0.1, 0.3, 0.1), 2.0);
+  const BodySpec box = test::boxBody(Vec3(0.1, 0.1, 0.1), 1.0);
+  const ModelSpec spec = settings({box}, 0.5, true);
+  LinkState X = at(Vec3(0.0, 0.0, 0.3));
+  X.q_WL = Quat(Eigen::AngleAxisd(0.3, Vec3(1.0, 1.0, 0.0).normalized()));
+  SceneRun run(spec, {{"pusher", pusher}}, {X}, {restState(pusher)});
+  const Model alone(spec);
+  State state = restState(alone);
+  state.bodies[0] = bodyStateFromLink(alone.body(0), X);
+  Workspace ws;
+  ws.skip_fixed_points = false;
+  for (int i = 0; i < 800; ++i) {
+    run.steps(1);
+    step(alone, state, {}, &ws);
+    const BodyState& a = run.body(0);
+    const BodyState& b = state.bodies[0];
+    ASSERT_TRUE(a.p_WB == b.p_WB && a.v_WB == b.v_WB && a.q_WB.coeffs() == b.q_WB.coeffs() && a.w_B == b.w_B)
+        << "step " << i;
+  }
+  EXPECT_TRUE(state.bodies[0].asleep);  // it came to rest and slept, in both
+  EXPECT_TRUE(run.body(0).asleep);
+}
+
+/// The pusher shoving a row of three boxes, and 40 boxes falling elsewhere.
+SceneRun crowd(int threads) {
+  const ArticulationModel pusher = slider(Vec3::UnitX(), Vec3(0.0, 0.0, 0.1), Vec3(0.1, 0.3, 0.1), 2.0);
+  std::vector<BodySpec> boxes;
+  std::vector<LinkState> poses;
+  for (int i = 0; i < 3; ++i) {
+    boxes.push_back(test::boxBody(Vec3(0.1, 0.1, 0.1), 1.0));
+    boxes.back().name = "row" + std::to_string(i);
+    poses.push_back(at(Vec3(0.16 + 0.21 * i, 0.01 * i, 0.1)));
+  }
+  for (int i = 0; i < 40; ++i) {
+    boxes.push_back(test::boxBody(Vec3(0.05, 0.05, 0.05), 0.5));
+    boxes.back().name = "falling" + std::to_string(i);
+    LinkState X = at(Vec3(3.0 + 0.3 * (i % 8), 0.3 * (i / 8), 0.2 + 0.01 * i));
+    X.q_WL = Quat(Eigen::AngleAxisd(0.1 * i, Vec3(1.0, 0.5, 0.2).normalized()));
+    poses.push_back(X);
+  }
+  SceneRun run(settings(boxes, 0.5, true), {{"pusher", pusher}}, poses, {restState(pusher)});
+  run.ws.bodies.threads = threads;
+  run.ws.bodies.min_parallel_work = 1;
+  run.loads.robots.resize(1);
+  run.loads.robots[0].effort = Eigen::VectorXd::Constant(1, 30.0);
+  return run;
+}
+
+TEST(Scene, SameAtOneThreadAndTwo) {
+  SceneRun one = crowd(1), two = crowd(2);
+  for (int i = 0; i < 600; ++i) {
+    one.steps(1);
+    two.steps(1);
+    ASSERT_TRUE(one.state.robots[0].q == two.state.robots[0].q && one.state.robots[0].v == two.state.robots[0].v)
+        << "step " << i;
+    for (std::size_t b = 0; b < one.scene.freeBodyCount(); ++b) {
+      const BodyState& x = one.body(static_cast<int>(b));
+      const BodyState& y = two.body(static_cast<int>(b));
+      ASSERT_TRUE(x.p_WB == y.p_WB && x.v_WB == y.v_WB && x.q_WB.coeffs() == y.q_WB.coeffs() && x.w_B == y.w_B)
+          << "step " << i << " body " << b;
+    }
+  }
+  EXPECT_GT(one.body(2).v_WB.x(), 0.5);  // the row is moving
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::core
