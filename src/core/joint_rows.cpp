@@ -100,7 +100,8 @@ void solveRows(const SolverSettings& settings, const std::vector<CoordinateBlock
       respond(blockAt(blocks, side.offset), side.J, side.response);
       c.K.noalias() += side.J.transpose() * side.response;
     }
-    c.impulse.setZero();
+    c.impulse = c.warm_start;
+    if (!c.warm_start.isZero(0.0)) c.apply(c.warm_start, u);
     const Eigen::Matrix2d tangent_k = c.K.bottomRightCorner<2, 2>();
     c.block = tangent_k.determinant() > 1e-9 * tangent_k.trace() * tangent_k.trace();
     if (c.block) c.tangent_mass = tangent_k.inverse();
@@ -108,8 +109,13 @@ void solveRows(const SolverSettings& settings, const std::vector<CoordinateBlock
     c.nu = 0.0;
   }
   // Sweeps until no row changes a velocity by more than 1e-12 (rad/s or
-  // m/s, relative to the fastest joint), at most 200.
+  // m/s, relative to the fastest joint), at most 200; or until they stall
+  // below the free bodies' tolerance: friction whose limit moves with the
+  // normal impulse can cycle there instead of converging (the free bodies'
+  // stall rule, §5.5: a sweep that takes off more than stall_ratio of what
+  // the sweep four before took).
   const double tolerance = 1e-12 * std::max(1.0, u.cwiseAbs().maxCoeff());
+  double recent[4] = {kInfinity, kInfinity, kInfinity, kInfinity};
   for (int sweep = 0; sweep < 200 && !(rows.empty() && contacts.empty()); ++sweep) {
     double largest = 0.0;
     for (JointRow& row : rows) {
@@ -122,6 +128,10 @@ void solveRows(const SolverSettings& settings, const std::vector<CoordinateBlock
     }
     for (ContactRows& c : contacts) largest = std::max(largest, sweepContactRows(settings, c, u));
     if (largest <= tolerance) break;
+    const bool stalled = sweep >= settings.stall_min_sweeps && largest < settings.velocity_tolerance &&
+                         largest > settings.stall_ratio * recent[sweep % 4];
+    if (stalled) break;
+    recent[sweep % 4] = largest;
   }
   for (const JointRow& row : rows) {
     impulse(row.offset + row.dof) += row.sign * row.impulse;

@@ -75,6 +75,7 @@ struct ContactRows {
   double separation = 0.0;                      ///< m, as detected
   double target = 0.0;  ///< normal velocity aimed at (m/s): −separation/h if apart, e × the approach speed in an impact
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();            ///< λ_N, λ₁, λ₂ (N·s)
+  Eigen::Vector3d warm_start = Eigen::Vector3d::Zero();         ///< where λ starts (the last step's), in the cone
   Vec3 tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();  ///< t₁, t₂ (n is the contact's)
   int contact = 0;                                              ///< index in the detection's Workspace::contacts
   /// Friction as one 2 × 2 block by maximal dissipation (frictionOnDisk),

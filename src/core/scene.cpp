@@ -22,6 +22,10 @@ ModelSpec withLinks(const ModelSpec& spec, std::vector<Scene::RobotSpec>& specs,
   for (const BodySpec& b : spec.bodies) group = std::max(group, b.collision_group + 1);
   for (Scene::RobotSpec& r : specs) {
     LinkBodies links = linkBodies(r.model, spec.contact.self_collision ? -1 : group++);
+    for (BodySpec& b : links.bodies) {
+      b.friction = r.friction;
+      b.restitution = r.restitution;
+    }
     SceneRobot robot;
     robot.name = std::move(r.name);
     robot.model = std::move(r.model);

@@ -5,6 +5,7 @@
 // Eigen only.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,8 @@ class Scene {
   struct RobotSpec {
     std::string name;
     ArticulationModel model;
+    /// Its links' surface (as BodySpec's); unset: the scene's.
+    std::optional<double> friction = std::nullopt, restitution = std::nullopt;
   };
 
   /// `spec` gives the free bodies and every setting (scene, contact,
@@ -80,7 +83,8 @@ struct SceneLoads {
 struct SceneWorkspace {
   Workspace bodies;
   std::vector<ArticulationWorkspace> robots;
-  std::vector<Contact> robot_contacts;  ///< the contacts a robot's solve takes, during a step
+  std::vector<Contact> robot_contacts;        ///< the contacts a robot's solve takes, during a step
+  std::vector<ContactImpulse> last_impulses;  ///< the last step's, for the robots' warm start, during a step
   /// Per robot: whether the guard put it back in the last step (§11.7).
   std::vector<char> robot_diverged;
 };
