@@ -58,6 +58,7 @@ set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/urdf_lumper.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_parse.cpp
   ${RBS_SOURCE_ROOT}/src/io/robot.cpp
+  ${RBS_SOURCE_ROOT}/src/io/scene_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/world.cpp
   ${RBS_SOURCE_ROOT}/src/io/yaml_fields.cpp
   ${RBS_SOURCE_ROOT}/src/io/yaml_split_load.cpp

@@ -8,18 +8,13 @@
 
 namespace rigid_body_sim::io {
 
-Robot buildRobot(const SimConfig& config, core::ArticulationModel model) {
-  if (config.bodies_listed) {
-    throw ConfigError("config key 'bodies': robot '" + model.name +
-                      "' is a URDF with moving joints; a world of bodies does not take robots yet (give the robot "
-                      "alone, with --urdf)");
-  }
+void checkRobotSettings(const SimConfig& config, const std::string& robot) {
   // What a robot does not read is refused, not ignored: a robot's damping
   // is its joints' <dynamics damping>, its contacts are impulses, and its
   // dynamics always hold the gyroscopic terms.
   const core::ModelSpec& m = config.model;
-  const auto unread = [&model](const std::string& key, const std::string& why) {
-    throw ConfigError("config key '" + key + "': robot '" + model.name + "' " + why);
+  const auto unread = [&robot](const std::string& key, const std::string& why) {
+    throw ConfigError("config key '" + key + "': robot '" + robot + "' " + why);
   };
   const core::Damping& d = m.damping;
   if (d.linear != 0.0 || d.angular != 0.0 || d.linear_drag != 0.0 || d.angular_drag != 0.0) {
@@ -27,18 +22,34 @@ Robot buildRobot(const SimConfig& config, core::ArticulationModel model) {
   }
   if (m.contact.method != core::ContactMethod::kImpulse) unread("contact.method", "takes impulse contacts only");
   if (!m.gyroscopic) unread("gyroscopic", "always integrates its links' gyroscopic terms");
-  const core::LinkState& initial = config.initial;
-  checkStart(initial, config.model.limits, "initial");
+}
+
+core::ArticulationState robotStart(const core::ArticulationModel& model, const core::LinkState& initial,
+                                   const InitialJoints& joints, const core::SpeedLimits& limits,
+                                   const std::string& key) {
+  checkStart(initial, limits, key);
   if (model.fixed_base && (initial.v_WL != core::Vec3::Zero() || initial.w_W != core::Vec3::Zero())) {
-    throw ConfigError("config key 'initial.linear_velocity' / 'initial.angular_velocity': robot '" + model.name +
+    throw ConfigError("config key '" + key + ".linear_velocity' / '" + key + ".angular_velocity': robot '" +
+                      model.name +
                       "' is fixed to the world (its root link is 'world'): it may be placed, not set moving");
   }
-  core::ArticulationColliders colliders = core::articulationColliders(model, config.model);
   core::ArticulationState state = core::restState(model, core::Pose{initial.q_WL.normalized(), initial.p_WL});
   const core::Mat3 R_BW = state.X_WB.rotation.toRotationMatrix().transpose();
   state.V_B.head<3>() = R_BW * initial.w_W;  // the base twist, in its own axes
   state.V_B.tail<3>() = R_BW * initial.v_WL;
-  startJoints(model, config.initial_joints, config.model.limits, "initial", state);
+  startJoints(model, joints, limits, key, state);
+  return state;
+}
+
+Robot buildRobot(const SimConfig& config, core::ArticulationModel model) {
+  if (config.bodies_listed) {
+    throw ConfigError("config key 'bodies': robot '" + model.name +
+                      "' given alone (--urdf) with a bodies list: list it among the bodies instead");
+  }
+  checkRobotSettings(config, model.name);
+  core::ArticulationState state =
+      robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
+  core::ArticulationColliders colliders = core::articulationColliders(model, config.model);
   return {std::move(model), std::move(colliders), std::move(state)};
 }
 

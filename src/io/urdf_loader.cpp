@@ -30,7 +30,7 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
     if (joint->type != urdf::Joint::FIXED) {
       lumper.fail("joint '" + name + "' is " + detail::jointTypeName(joint->type) +
                   ": only fixed joints are supported in a body; a URDF with moving joints is a robot, which rbsim "
-                  "runs alone (rbsim --urdf ROBOT.urdf) and a world of bodies and the node do not take yet");
+                  "runs (rbsim --urdf ROBOT.urdf, or among a config's bodies) and the node does not take yet");
     }
   }
 

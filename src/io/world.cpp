@@ -24,8 +24,8 @@ core::BodyState startState(const core::Model& model, std::size_t i, const core::
 /// Joint values for a world of bodies: none has a moving joint.
 [[noreturn]] void refuseJoints(const std::string& key) {
   throw ConfigError("config key '" + key +
-                    ".joint_positions' / '.joint_velocities': a body has no moving joints (a robot is simulated "
-                    "alone for now: rbsim --urdf ROBOT.urdf)");
+                    ".joint_positions' / '.joint_velocities': a body has no moving joints (joint values are "
+                    "for a robot: a URDF with moving joints)");
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -23,7 +24,9 @@
 
 #include "rbsim_loop.h"
 #include "rbsim_output.h"
+#include "rbsim_report.h"
 #include "rbsim_robot.h"
+#include "rbsim_scene.h"
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/diagnostics.h"
 #include "rigid_body_sim/core/step.h"
@@ -31,6 +34,7 @@
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/orientation.h"
+#include "rigid_body_sim/io/scene_loader.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/io/world.h"
 
@@ -63,13 +67,13 @@ constexpr const char* kUsage =
     "  --every N          one CSV row every N steps (default 1), plus the final state\n"
     "  --quiet            no summary on stderr\n";
 
+using rigid_body_sim::tools::checkStep;
 using rigid_body_sim::tools::CsvWriter;
 using rigid_body_sim::tools::Diverged;
 using rigid_body_sim::tools::finalJson;
 using rigid_body_sim::tools::Json;
 using rigid_body_sim::tools::JsonLine;
 using rigid_body_sim::tools::num;
-using rigid_body_sim::tools::text;
 using rigid_body_sim::tools::UsageError;
 using rigid_body_sim::tools::vec;
 
@@ -139,30 +143,7 @@ Args parseArgs(int argc, char** argv) {
 /// several, the total about the world origin (Σ I ω + r × m v).
 Vec3 angularMomentum(const core::Model& model, const core::State& state) {
   if (model.bodyCount() == 1) return core::angularMomentumWorld(model.body(0), state.bodies[0]);
-  Vec3 total = Vec3::Zero();
-  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
-    const core::BodyState& s = state.bodies[i];
-    total += core::angularMomentumWorld(model.body(i), s) + model.body(i).mass * s.p_WB.cross(s.v_WB);
-  }
-  return total;
-}
-
-/// What a step reports beyond the state: a body held back by the speed
-/// limits (a warning, once per body) or put back by the guard (the end).
-void checkStep(const core::Model& model, const core::Workspace& ws, double t, std::vector<char>& limited) {
-  for (const core::Divergence& d : ws.diverged) {
-    throw Diverged("body '" + model.body(d.body).name + "': " + d.what + " stopped being finite at t = " + text(t) +
-                   " s (the step's guard put it back at rest; the run stops here)");
-  }
-  for (const int i : ws.speed_limited) {
-    if (limited[i]) continue;
-    limited[i] = 1;
-    std::fprintf(stderr,
-                 "rbsim: warning: body '%s' reached the speed limits at t = %s s (limits.max_linear_speed %s m/s, "
-                 "limits.max_angular_speed %s rad/s): its velocity is held to them\n",
-                 model.body(i).name.c_str(), text(t).c_str(), text(model.limits().max_linear_speed).c_str(),
-                 text(model.limits().max_angular_speed).c_str());
-  }
+  return rigid_body_sim::tools::bodiesAngularMomentum(model, state, model.bodyCount());
 }
 
 /// The config file with the command line's overrides. Its bodies list is
@@ -183,10 +164,8 @@ io::SimConfig readConfig(const Args& args) {
 }
 
 /// The world the command line gives: one body from --urdf, or the config's
-/// bodies list. The config is gone when this returns (its bodies list is a
-/// tenth of the memory of a world of 10,000 boxes).
-io::World loadWorld(const Args& args, bool* world_config) {
-  const io::SimConfig config = readConfig(args);
+/// bodies list.
+io::World loadWorld(const Args& args, const io::SimConfig& config, bool* world_config) {
   if (config.bodies_listed && config.bodies.empty()) {
     throw UsageError(
         "the config's bodies list is empty: nothing to simulate (an empty world is for sim_node's "
@@ -203,18 +182,26 @@ io::World loadWorld(const Args& args, bool* world_config) {
 }
 
 int run(const Args& args) {
+  const rigid_body_sim::tools::RunOptions options{args.duration, args.csv, args.every, args.quiet};
   if (!args.urdf.empty()) {  // a URDF with moving joints is a robot: rbsim_robot.cpp
     const std::string xml = io::readInput<io::UrdfError>(args.urdf, io::InputCaps::kUrdfBytes, "URDF");
     if (io::describesRobot(xml, args.urdf)) {
       const std::string dir = std::filesystem::path(args.urdf).parent_path().string();
       return rigid_body_sim::tools::runRobot(readConfig(args), io::loadArticulationString(xml, args.urdf, dir),
-                                             {args.duration, args.csv, args.every, args.quiet});
+                                             options);
     }
   }
   bool world_config = false;
-  io::World world = loadWorld(args, &world_config);
-  const core::Model& model = world.model;
-  core::State& state = world.state;
+  std::optional<io::World> world;
+  {
+    const io::SimConfig config = readConfig(args);
+    if (args.urdf.empty() && !config.bodies.empty() && io::listsRobots(config)) {  // rbsim_scene.cpp
+      return rigid_body_sim::tools::runScene(config, options);
+    }
+    world.emplace(loadWorld(args, config, &world_config));
+  }  // the config goes: its bodies list is a tenth of the memory of a world of 10,000 boxes
+  const core::Model& model = world->model;
+  core::State& state = world->state;
   const std::size_t n = model.bodyCount();
   if (!model.scene().empty()) {
     for (std::size_t i = 0; i < n; ++i) {

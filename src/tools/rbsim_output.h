@@ -104,10 +104,14 @@ class JsonLine {
 class CsvWriter {
  public:
   /// With `with_body`, a body column after t (a world of several bodies);
-  /// with `joints` (a robot), two columns per joint after the base's,
-  /// JOINT.position and JOINT.velocity.
+  /// with `joints` (robots), two columns per joint after the base's,
+  /// JOINT.position and JOINT.velocity (in a world, ROBOT/JOINT: a robot's
+  /// row fills its own, every other row leaves them empty).
   CsvWriter(const std::string& path, bool with_body, const std::vector<std::string>& joints = {})
-      : file_(std::fopen(path.c_str(), "w"), &std::fclose), path_(path), with_body_(with_body) {
+      : file_(std::fopen(path.c_str(), "w"), &std::fclose),
+        path_(path),
+        with_body_(with_body),
+        joints_(static_cast<int>(joints.size())) {
     if (!file_) throw UsageError("--csv: cannot write '" + path + "': " + std::strerror(errno));
     std::fputs(with_body_ ? "t,body,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz" : "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz",
                file_.get());
@@ -123,14 +127,23 @@ class CsvWriter {
     const int closed = std::fclose(f);
     if (failed || closed != 0) throw UsageError("--csv: writing '" + path_ + "' failed: " + std::strerror(errno));
   }
-  void row(double t, const std::string& body, const core::LinkState& s) {
-    start(t, body, s);
-    std::fputc('\n', file_.get());
-  }
+  void row(double t, const std::string& body, const core::LinkState& s) { row(t, body, s, 0, {}, {}); }
   /// A robot's row: its base, then each joint's position and velocity.
   void row(double t, const core::LinkState& base, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
-    start(t, "", base);
-    for (Eigen::Index i = 0; i < q.size(); ++i) std::fprintf(file_.get(), ",%.12g,%.12g", q(i), v(i));
+    row(t, "", base, 0, q, v);
+  }
+  /// A row whose joints (q, v) fill the joint columns from `first` on.
+  void row(double t, const std::string& body, const core::LinkState& s, int first, const Eigen::VectorXd& q,
+           const Eigen::VectorXd& v) {
+    start(t, body, s);
+    const int filled = static_cast<int>(q.size());
+    for (int i = 0; i < joints_; ++i) {
+      if (i >= first && i < first + filled) {
+        std::fprintf(file_.get(), ",%.12g,%.12g", q(i - first), v(i - first));
+      } else {
+        std::fputs(",,", file_.get());
+      }
+    }
     std::fputc('\n', file_.get());
   }
 
@@ -153,6 +166,7 @@ class CsvWriter {
   std::unique_ptr<FILE, int (*)(FILE*)> file_;
   std::string path_;
   bool with_body_;
+  int joints_;  ///< joint columns (pairs)
 };
 
 class ProgressBar {

@@ -11,42 +11,12 @@
 
 #include "rbsim_loop.h"
 #include "rbsim_output.h"
+#include "rbsim_report.h"
 #include "rigid_body_sim/core/articulation_dynamics.h"
 #include "rigid_body_sim/core/articulation_step.h"
 #include "rigid_body_sim/io/robot.h"
 
 namespace rigid_body_sim::tools {
-namespace {
-
-/// The base link's pose and twist in the world (its twist is kept in its own axes).
-core::LinkState baseState(const core::ArticulationState& s) {
-  const core::Mat3 R = s.X_WB.rotation.toRotationMatrix();
-  return {s.X_WB.translation, s.X_WB.rotation, R * s.V_B.tail<3>(), R * s.V_B.head<3>()};
-}
-
-double energy(const core::ArticulationModel& model, const core::ArticulationState& s, const core::Vec3& g) {
-  const core::ArticulationKinematics kin = core::kinematics(model, s);
-  return core::kineticEnergy(model, kin) + core::potentialEnergy(model, kin, g);
-}
-
-/// The whole robot's angular momentum about the world origin.
-core::Vec3 angularMomentum(const core::ArticulationModel& model, const core::ArticulationState& s) {
-  return core::momentum_W(model, core::kinematics(model, s)).head<3>();
-}
-
-/// At rest: every joint and the base slower than the sleep speeds (a
-/// prismatic joint and the base's v by the linear one).
-bool atRest(const core::ArticulationModel& model, const core::ArticulationState& s, const core::SleepSettings& sleep) {
-  if (s.V_B.head<3>().norm() >= sleep.angular_velocity || s.V_B.tail<3>().norm() >= sleep.linear_velocity) return false;
-  for (int i = 1; i <= model.jointCount(); ++i) {
-    const bool slides = model.links[i].type == core::JointType::Prismatic;
-    if (std::abs(s.v(i - 1)) >= (slides ? sleep.linear_velocity : sleep.angular_velocity)) return false;
-  }
-  return true;
-}
-
-}  // namespace
-
 int runRobot(const io::SimConfig& config, core::ArticulationModel articulation, const RunOptions& options) {
   io::Robot robot = io::buildRobot(config, std::move(articulation));
   const core::ArticulationModel& model = robot.model;
@@ -63,8 +33,8 @@ int runRobot(const io::SimConfig& config, core::ArticulationModel articulation, 
   }
   std::vector<std::string> joints;
   for (int i = 1; i <= model.jointCount(); ++i) joints.push_back(model.links[i].joint);
-  const double energy_start = energy(model, state, g);
-  const core::Vec3 momentum_start = angularMomentum(model, state);
+  const double energy_start = robotEnergy(model, state, g);
+  const core::Vec3 momentum_start = robotAngularMomentum(model, state);
 
   std::unique_ptr<CsvWriter> csv;
   if (!options.csv.empty()) csv = std::make_unique<CsvWriter>(options.csv, false, joints);
@@ -83,11 +53,7 @@ int runRobot(const io::SimConfig& config, core::ArticulationModel articulation, 
         max_penetration = std::max(max_penetration, ws.detection.deepest_penetration);
         if (ws.speed_limited && !limited) {
           limited = true;
-          std::fprintf(stderr,
-                       "rbsim: warning: robot '%s' reached the speed limits at t = %s s (limits.max_linear_speed %s "
-                       "m/s, limits.max_angular_speed %s rad/s): its velocities are held to them\n",
-                       model.name.c_str(), text(k * dt).c_str(), text(settings.limits().max_linear_speed).c_str(),
-                       text(settings.limits().max_angular_speed).c_str());
+          warnRobotLimited(model.name, settings.limits(), k * dt);
         }
       },
       write_row);
@@ -95,15 +61,11 @@ int runRobot(const io::SimConfig& config, core::ArticulationModel articulation, 
   const double ns_per_step = times.ns_per_step;
 
   const double sim_time = static_cast<double>(steps) * dt;
-  const double energy_end = energy(model, state, g);
-  const core::Vec3 momentum_end = angularMomentum(model, state);
-  const bool rest = atRest(model, state, settings.sleep());
+  const double energy_end = robotEnergy(model, state, g);
+  const core::Vec3 momentum_end = robotAngularMomentum(model, state);
+  const bool rest = robotAtRest(model, state, settings.sleep());
   Json final = finalJson(baseState(state));
-  Json joint_json = Json::object();
-  for (int i = 1; i <= model.jointCount(); ++i) {
-    joint_json[joints[i - 1]] = {{"position", num(state.q(i - 1))}, {"velocity", num(state.v(i - 1))}};
-  }
-  final["joints"] = joint_json;
+  final["joints"] = jointsJson(model, state);
   Json out = {
       {"steps", steps}, {"sim_time", num(sim_time)}, {"wall_s", num(wall_s)}, {"ns_per_step", num(ns_per_step)}};
   out["final"] = final;

@@ -70,7 +70,7 @@ TEST(Robot, RefusesAMovingStartForAFixedBaseAWorldOfBodiesAndKeysItWouldNotRead)
   refused("initial: {angular_velocity: [0, 0, 1]}", true, "robot 'cart' is fixed to the world");
   refused("initial: {linear_velocity: [1e9, 0, 0]}", false, "initial.linear_velocity");
   refused("initial: {joint_positions: {wheel: 1}}", false, "wheel");
-  refused("bodies: [{name: a, urdf: box.urdf}]", false, "a world of bodies does not take robots yet");
+  refused("bodies: [{name: a, urdf: box.urdf}]", false, "list it among the bodies instead");
   // Keys a robot would not read are refused, not ignored.
   refused("damping: {linear: 0.1}", false, "'damping': robot 'cart' is damped by its joints");
   refused("contact: {method: penalty_quadratic}", false, "'contact.method'");

@@ -334,8 +334,64 @@ TEST(Rbsim, RefusesARobotsBadStart) {
                    "'initial.linear_velocity' / 'initial.angular_velocity': robot 'pendulum' is fixed to the world");
   expectUsageError(pendulum + " --set 'initial.joint_positions={elbow: 1}'", "elbow");
   const std::string world = tempPath("robot_world.yaml");
-  std::ofstream(world) << "bodies:\n  - {name: swing, urdf: " << RBS_SOURCE_DIR << "/urdf/pendulum.urdf}\n";
-  expectUsageError("--config " + world + " --duration 1", "joint 'pivot' is continuous");
+  std::ofstream(world) << "bodies:\n  - {name: swing, urdf: " << RBS_SOURCE_DIR
+                       << "/urdf/pendulum.urdf, initial: {angular_velocity: [0, 1, 0]}}\n";
+  expectUsageError("--config " + world + " --duration 1", "'bodies[0].initial.linear_velocity'");
+}
+
+// The shipped world of robots and bodies: each entry in the config's
+// order, a robot's with its joints; the pendulum strikes the ball forward,
+// the rover rolls into the crate and stops against it.
+TEST(Rbsim, RunsAWorldOfRobotsAndBodies) {
+  const std::string csv = tempPath("scene.csv");
+  const Result r = rbsim("--config " + std::string(RBS_SOURCE_DIR) + "/config/robots.yaml --duration 3 --every 500 " +
+                         "--csv " + csv + " --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const YAML::Node j = YAML::Load(r.out);
+  const YAML::Node bodies = j["bodies"];
+  ASSERT_EQ(bodies.size(), 4u);
+  const std::vector<std::string> names{"pendulum", "ball", "rover", "crate"};
+  for (std::size_t i = 0; i < names.size(); ++i) EXPECT_EQ(bodies[i]["name"].as<std::string>(), names[i]);
+  EXPECT_TRUE(bodies[0]["final"]["joints"]["pivot"]["position"].IsDefined());
+  EXPECT_FALSE(bodies[1]["final"]["joints"].IsDefined());
+  EXPECT_GT(seq(bodies[1]["final"]["linear_velocity"])[0], 0.3);  // struck forward, rolling
+  EXPECT_EQ(bodies[2]["final"]["joints"].size(), 4u);
+  EXPECT_TRUE(bodies[3]["at_rest"].as<bool>());
+  EXPECT_GT(seq(bodies[3]["final"]["position"])[0], 0.6);  // pushed a little
+  EXPECT_LT(j["max_penetration"].as<double>(), 1e-4);
+  // The CSV: a row per entry, the robots' joints as ROBOT/JOINT columns,
+  // empty on every other entry's row.
+  std::istringstream rows(slurp(csv));
+  std::string header, first, second;
+  std::getline(rows, header);
+  std::getline(rows, first);
+  std::getline(rows, second);
+  EXPECT_EQ(header.substr(0, header.find(",pendulum/pivot.position")), "t,body,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz");
+  EXPECT_NE(header.find(",rover/rear_right_axle.velocity"), std::string::npos) << header;
+  const auto fields = [](const std::string& line) { return std::count(line.begin(), line.end(), ',') + 1; };
+  EXPECT_EQ(fields(first), fields(header));
+  EXPECT_EQ(fields(second), fields(header));
+  EXPECT_EQ(first.rfind("0,pendulum,", 0), 0u) << first;
+  EXPECT_NE(first.find(",1.57079632679,0,"), std::string::npos) << first;
+  EXPECT_EQ(second.substr(second.size() - 11), "0" + std::string(10, ',')) << second;  // 5 joints, none its own
+}
+
+// A robot among bodies it never touches moves exactly as it does alone.
+TEST(Rbsim, ARobotAmongBodiesItDoesNotTouchMovesAsAlone) {
+  const std::string pendulum = std::string(RBS_SOURCE_DIR) + "/urdf/pendulum.urdf";
+  const Result alone =
+      rbsim("--urdf " + pendulum + " --set 'initial.joint_positions={pivot: 1.5707963267948966}' --duration 2 --quiet");
+  ASSERT_EQ(alone.code, 0) << alone.err;
+  const std::string world = tempPath("apart.yaml");
+  std::ofstream(world) << "bodies:\n  - {name: pendulum, urdf: " << pendulum
+                       << ", initial: {joint_positions: {pivot: 1.5707963267948966}}}\n  - {name: box, urdf: " << kBox
+                       << ", initial: {position: [3, 0, 0.05]}}\n";
+  const Result both = rbsim("--config " + world + " --duration 2 --quiet");
+  ASSERT_EQ(both.code, 0) << both.err;
+  const YAML::Node a = YAML::Load(alone.out)["final"]["joints"]["pivot"];
+  const YAML::Node b = YAML::Load(both.out)["bodies"][0]["final"]["joints"]["pivot"];
+  EXPECT_EQ(a["position"].as<double>(), b["position"].as<double>());
+  EXPECT_EQ(a["velocity"].as<double>(), b["velocity"].as<double>());
 }
 
 }  // namespace

@@ -1,0 +1,47 @@
+// What rbsim reports of a run besides the states: energies, momenta, rest,
+// joints, and the steps' warnings. Shared by the world's run
+// (rbsim_main.cpp), a robot's (rbsim_robot.cpp) and a scene's
+// (rbsim_scene.cpp).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "rbsim_output.h"
+#include "rigid_body_sim/core/articulation.h"
+#include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/core/workspace.h"
+
+namespace rigid_body_sim::tools {
+
+/// A robot's base link: its pose and twist in the world (the step keeps
+/// the twist in the base's axes).
+core::LinkState baseState(const core::ArticulationState& s);
+
+/// A robot's kinetic and potential energy (J) under g.
+double robotEnergy(const core::ArticulationModel& model, const core::ArticulationState& s, const core::Vec3& g);
+
+/// A robot's angular momentum about the world origin.
+core::Vec3 robotAngularMomentum(const core::ArticulationModel& model, const core::ArticulationState& s);
+
+/// At rest: every joint and the base slower than the sleep speeds (a
+/// prismatic joint and the base's v by the linear one).
+bool robotAtRest(const core::ArticulationModel& model, const core::ArticulationState& s,
+                 const core::SleepSettings& sleep);
+
+/// final.joints: per joint, its position and velocity.
+Json jointsJson(const core::ArticulationModel& model, const core::ArticulationState& s);
+
+/// Σ I ω + r × m v of bodies 0 .. count − 1, about the world origin.
+core::Vec3 bodiesAngularMomentum(const core::Model& model, const core::State& state, std::size_t count);
+
+/// What a step reports beyond the state: a body held back by the speed
+/// limits (a warning, once per body, `limited` remembering) or put back by
+/// the guard (Diverged: the end).
+void checkStep(const core::Model& model, const core::Workspace& ws, double t, std::vector<char>& limited);
+
+/// The warning for a robot held back by the speed limits.
+void warnRobotLimited(const std::string& name, const core::SpeedLimits& limits, double t);
+
+}  // namespace rigid_body_sim::tools

@@ -1,0 +1,74 @@
+// A world of bodies and robots from a config (io/scene_loader.h): each entry
+// a body or a robot by its URDF, in the config's order; a robot's start and
+// surface from its entry; the refusals name the key.
+#include "rigid_body_sim/io/scene_loader.h"
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+#include "../test_util.h"
+#include "rigid_body_sim/io/config.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+const std::string kUrdf = std::string(RBS_SOURCE_DIR) + "/urdf/";
+
+io::SimConfig config(const std::string& yaml) { return io::parseConfig(YAML::Load(yaml), kUrdf); }
+
+TEST(SceneLoader, TellsRobotsFromBodiesAndKeepsTheConfigsOrder) {
+  const io::SimConfig c = config(R"(
+bodies:
+  - {name: a, urdf: box.urdf, initial: {position: [1, 0, 0.05]}}
+  - name: swing
+    urdf: pendulum.urdf
+    contact: {friction: 0.9}
+    initial: {position: [0, 0, -0.4], joint_positions: {pivot: 0.5}, joint_velocities: {pivot: -1}}
+  - {name: b, urdf: box.urdf, initial: {position: [2, 0, 0.05]}}
+)");
+  EXPECT_TRUE(io::listsRobots(c));
+  EXPECT_FALSE(io::listsRobots(config("bodies: [{name: a, urdf: box.urdf}]")));
+  const io::SceneSetup s = io::buildScene(c);
+  EXPECT_EQ(s.entry, (std::vector<int>{0, -1, 1}));
+  ASSERT_EQ(s.scene.freeBodyCount(), 2u);
+  EXPECT_EQ(s.scene.model().body(1).name, "b");
+  EXPECT_EQ(s.state.bodies.bodies[1].p_WB.x(), 2.0);
+  ASSERT_EQ(s.scene.robots().size(), 1u);
+  const core::SceneRobot& swing = s.scene.robots()[0];
+  EXPECT_EQ(swing.name, "swing");
+  EXPECT_EQ(s.state.robots[0].X_WB.translation, Vec3(0, 0, -0.4));
+  EXPECT_EQ(s.state.robots[0].q(0), 0.5);
+  EXPECT_EQ(s.state.robots[0].v(0), -1.0);
+  // Its rod is a body after the free ones, with the entry's surface, placed
+  // where the joint puts it.
+  ASSERT_EQ(swing.link.size(), 1u);
+  EXPECT_EQ(swing.first_body, 2);
+  EXPECT_EQ(s.scene.robotOf(2), 0);
+  EXPECT_EQ(s.scene.model().body(2).friction, 0.9);
+  const Vec3 rod = s.state.bodies.bodies[2].p_WB;  // 0.25 m down the rod from the pivot at z = 0.6
+  EXPECT_LT((rod - Vec3(-0.25 * std::sin(0.5), 0.0, 0.6 - 0.25 * std::cos(0.5))).norm(), 1e-12);
+}
+
+TEST(SceneLoader, RefusesWhatAnEntryWouldNotRead) {
+  const auto refused = [](const std::string& yaml, const std::string& what) {
+    try {
+      io::buildScene(config(yaml));
+      ADD_FAILURE() << "accepted: " << yaml;
+    } catch (const io::ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  const std::string swing = "  - {name: swing, urdf: pendulum.urdf}\n";
+  refused("bodies:\n" + swing + "  - {name: a, urdf: box.urdf, initial: {joint_positions: {pivot: 1}}}\n",
+          "'bodies[1].initial.joint_positions' / '.joint_velocities': body 'a' has no moving joints");
+  refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, initial: {linear_velocity: [1, 0, 0]}}\n",
+          "'bodies[0].initial.linear_velocity'");
+  refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, initial: {joint_positions: {elbow: 1}}}\n", "elbow");
+  refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, imu: {}}\n", "'bodies[0].imu': robot 'swing'");
+  refused("damping: {linear: 0.1}\nbodies:\n" + swing, "'damping': robot 'swing'");
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
