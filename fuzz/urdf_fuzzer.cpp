@@ -1,18 +1,59 @@
 // libFuzzer: any bytes as a URDF document, then the model of the body and
 // a few steps; and the same bytes as a robot (the articulation loader:
-// refused, or a model that a few steps on the ground leave finite, the guard
-// undoing any step that would not).
+// refused, or a model that a few steps on the ground, alone and in a scene
+// with a box, leave finite, the guards undoing any step that would not).
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "fuzz_model.h"
 #include "rigid_body_sim/core/articulation_step.h"
+#include "rigid_body_sim/core/scene.h"
 #include "rigid_body_sim/io/articulation_loader.h"
 #include "rigid_body_sim/io/urdf_loader.h"
+
+namespace {
+
+/// The robot in a scene on the ground with a box where its base is, so
+/// that its links and the box may press into each other: a few steps leave
+/// both finite (a link a body could not be refuses the scene).
+void steppedAmongBodies(const rigid_body_sim::core::ArticulationModel& robot) {
+  namespace core = rigid_body_sim::core;
+  core::ModelSpec spec;
+  spec.scene = {core::Sdf::plane(core::Vec3::UnitZ())};
+  core::BodySpec box;
+  box.name = "fuzz_box";
+  core::CollisionShape shape;
+  shape.kind = core::CollisionShape::Kind::kBox;
+  shape.size = core::Vec3(0.2, 0.2, 0.2);
+  box.collision = {shape};
+  box.I_C_L = core::Mat3::Identity() * (1.0 / 150.0);
+  spec.bodies = {box};
+  std::unique_ptr<core::Scene> scene;
+  try {
+    scene = std::make_unique<core::Scene>(spec, std::vector<core::Scene::RobotSpec>{{"robot", robot}});
+  } catch (const std::invalid_argument&) {
+    return;
+  }
+  core::State free;
+  free.bodies.resize(1);
+  free.bodies[0].p_WB = core::Vec3(0.0, 0.0, 0.1);
+  core::SceneState state = core::sceneState(*scene, free, {core::restState(robot)});
+  core::SceneWorkspace ws;
+  for (int n = 0; n < 5; ++n) core::stepScene(*scene, state, {}, ws);
+  const core::ArticulationState& r = state.robots[0];
+  const core::BodyState& b = state.bodies.bodies[0];
+  if (!r.q.allFinite() || !r.v.allFinite() || !r.V_B.allFinite() || !r.X_WB.translation.allFinite() ||
+      !b.p_WB.allFinite() || !b.v_WB.allFinite() || !b.w_B.allFinite()) {
+    std::abort();  // the guards must never let this through
+  }
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string xml(reinterpret_cast<const char*>(data), size);
@@ -37,6 +78,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!state.q.allFinite() || !state.v.allFinite() || !state.V_B.allFinite() || !state.X_WB.translation.allFinite()) {
       std::abort();  // the guard must never let this through
     }
+    steppedAmongBodies(robot);
   } catch (const rigid_body_sim::io::UrdfError&) {
   }
   rigid_body_sim::core::ModelSpec spec;

@@ -23,6 +23,7 @@ ModelSpec withLinks(const ModelSpec& spec, std::vector<Scene::RobotSpec>& specs,
   for (Scene::RobotSpec& r : specs) {
     LinkBodies links = linkBodies(r.model, spec.contact.self_collision ? -1 : group++);
     for (BodySpec& b : links.bodies) {
+      b.name = r.name + "/" + b.name;  // two robots of one URDF have links of one name
       b.friction = r.friction;
       b.restitution = r.restitution;
     }

@@ -241,6 +241,62 @@ TEST(Scene, CollisionKeepsTheMomentum) {
   EXPECT_LT((after - before).norm(), 1e-9) << (after - before).transpose();
 }
 
+// Two floating robots fly into each other in zero gravity: a contact
+// between two robots' links is one row with a side for each, so the total
+// momentum stays what it was.
+TEST(Scene, TwoRobotsCollideKeepingTheMomentum) {
+  const ArticulationModel arm = floatingArm();
+  ModelSpec spec = settings({}, 0.5, false);
+  spec.gravity_W = Vec3::Zero();
+  ArticulationState a = restState(arm, placed(Vec3(-0.6, 0.05, 0.0)));
+  a.q(0) = 0.3;
+  a.v(0) = 2.0;
+  a.V_B.tail<3>() = Vec3(1.0, 0.0, 0.0);
+  ArticulationState b = restState(arm, placed(Vec3(0.3, -0.05, 0.03)));
+  b.q(0) = -0.5;
+  b.V_B.head<3>() = Vec3(0.0, 0.0, 1.0);
+  SceneRun run(spec, {{"a", arm}, {"b", arm}}, {}, {a, b});
+  const auto total = [&run] {
+    Vec6 H = Vec6::Zero();
+    for (std::size_t r = 0; r < 2; ++r) {
+      const ArticulationState& s = run.state.robots[r];
+      H += s.carried.valid ? s.carried.H_W
+                           : momentum_W(run.scene.robots()[r].model, kinematics(run.scene.robots()[r].model, s));
+    }
+    return H;
+  };
+  const Vec6 before = total();
+  bool touched = false;
+  for (int i = 0; i < 1500; ++i) {
+    run.steps(1);
+    for (const Contact& c : run.ws.bodies.contacts) touched = touched || (c.other >= 0 && c.normal_impulse > 0.0);
+  }
+  ASSERT_TRUE(touched);
+  EXPECT_GT(run.state.robots[1].V_B.norm(), 0.1);  // b was struck
+  EXPECT_LT((total() - before).norm(), 1e-9) << (total() - before).transpose();
+}
+
+// A NaN effort on one robot: the guard puts that robot back where its step
+// began, at rest, and says so; the box beside it steps on.
+TEST(Scene, TheGuardPutsBackARobotAlone) {
+  const ArticulationModel pusher = slider(Vec3::UnitX(), Vec3(0.0, 0.0, 0.1), Vec3(0.1, 0.3, 0.1), 2.0);
+  const BodySpec box = test::boxBody(Vec3(0.1, 0.1, 0.1), 1.0);
+  ArticulationState start = restState(pusher);
+  start.q(0) = 0.01;
+  SceneRun run(settings({box}, 0.5, true), {{"pusher", pusher}}, {at(Vec3(1.0, 0.0, 0.5))}, {start});
+  run.loads.robots.resize(1);
+  run.loads.robots[0].effort = Eigen::VectorXd::Constant(1, std::numeric_limits<double>::quiet_NaN());
+  run.steps(1);
+  EXPECT_EQ(run.ws.robot_diverged, (std::vector<char>{1}));
+  EXPECT_EQ(run.state.robots[0].q(0), 0.01);
+  EXPECT_EQ(run.state.robots[0].v(0), 0.0);
+  EXPECT_NEAR(run.body(0).v_WB.z(), -9.81e-3, 1e-15);  // the box fell for one step
+  run.loads.robots[0].effort(0) = 1.0;
+  run.steps(1);
+  EXPECT_EQ(run.ws.robot_diverged, (std::vector<char>{0}));
+  EXPECT_GT(run.state.robots[0].v(0), 0.0);
+}
+
 // A free box falling onto the floor far from a robot steps exactly as it
 // does in a world of its own: islands without a robot are the free bodies'.
 TEST(Scene, FreeIslandsStepAsOnTheirOwn) {

@@ -46,6 +46,7 @@ bodies:
   ASSERT_EQ(swing.link.size(), 1u);
   EXPECT_EQ(swing.first_body, 2);
   EXPECT_EQ(s.scene.robotOf(2), 0);
+  EXPECT_EQ(s.scene.model().body(2).name, "swing/rod");  // two robots of one URDF do not clash
   EXPECT_EQ(s.scene.model().body(2).friction, 0.9);
   const Vec3 rod = s.state.bodies.bodies[2].p_WB;  // 0.25 m down the rod from the pivot at z = 0.6
   EXPECT_LT((rod - Vec3(-0.25 * std::sin(0.5), 0.0, 0.6 - 0.25 * std::cos(0.5))).norm(), 1e-12);

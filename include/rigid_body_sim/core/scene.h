@@ -40,7 +40,7 @@ class Scene {
 
   /// `spec` gives the free bodies and every setting (scene, contact,
   /// sleep, solver, limits); each robot's links with collision shapes
-  /// become bodies after them. With `contact.self_collision` off a robot's
+  /// become bodies after them, named ROBOT/LINK. With `contact.self_collision` off a robot's
   /// links share a collision group of their own. Throws
   /// std::invalid_argument as Model does, naming the link.
   Scene(const ModelSpec& spec, std::vector<RobotSpec> robots);
