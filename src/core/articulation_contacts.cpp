@@ -201,6 +201,21 @@ void findContactRows(const ArticulationModel& model, const ArticulationColliders
   }
 }
 
+void warmStart(const std::vector<ContactImpulse>& last, const std::vector<Contact>& contacts,
+               std::vector<ContactRows>& rows) {
+  std::size_t k = 0;
+  for (ContactRows& c : rows) {
+    const ContactKey key = contacts[c.contact].key();
+    while (k < last.size() && last[k].key() < key) ++k;
+    if (k == last.size() || !(last[k].key() == key)) continue;
+    const double normal = std::max(last[k].normal, 0.0);
+    Eigen::Vector2d tangent(c.tangent1_W.dot(last[k].tangent_W), c.tangent2_W.dot(last[k].tangent_W));
+    const double limit = c.friction * normal;
+    if (tangent.norm() > limit) tangent *= limit / tangent.norm();
+    c.warm_start = Eigen::Vector3d(normal, tangent.x(), tangent.y());
+  }
+}
+
 void reportContactImpulses(const std::vector<ContactRows>& contacts, std::vector<Contact>& contacts_out) {
   for (const ContactRows& c : contacts) {
     Contact& contact = contacts_out[c.contact];

@@ -253,8 +253,13 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
   detail::buildJointRows(model, state, u_next, h, 0, rows);
   std::vector<detail::ContactRows> contacts;
   if (colliders != nullptr) {
+    // The last step's impulses, for the warm start: the detection replaces its contacts.
+    ws.last_impulses.clear();
+    for (const Contact& c : ws.detection.contacts)
+      ws.last_impulses.push_back({c.key(), c.normal_impulse, c.tangent_impulse_W});
     setTwists(model, u_next, ws.kin);
     detail::findContactRows(model, *colliders, ws.kin, u_next, h, ws.links, ws.detection, contacts);
+    detail::warmStart(ws.last_impulses, ws.detection.contacts, contacts);
   }
   if (rows.empty() && contacts.empty()) {
     detail::finishArticulation(model, limits, h, nullptr, nullptr, state, ws);

@@ -157,6 +157,13 @@ void findContactRows(const ArticulationModel& model, const ArticulationColliders
 void setLinkStates(const Model& bodies, const std::vector<int>& link, const ArticulationKinematics& kin,
                    std::size_t first, std::vector<BodyState>& states);
 
+/// Each contact starts from the impulse it carried last step (the same key
+/// in `last`, sorted by key as `contacts` is), put in its cone, as the free
+/// bodies' do (§5.5): resting or pressing contacts then need a few sweeps,
+/// not hundreds. `rows` refer to `contacts` in ascending order.
+void warmStart(const std::vector<ContactImpulse>& last, const std::vector<Contact>& contacts,
+               std::vector<ContactRows>& rows);
+
 /// After the solve: each contact's impulses into `contacts_out`.
 void reportContactImpulses(const std::vector<ContactRows>& contacts, std::vector<Contact>& contacts_out);
 

@@ -141,25 +141,6 @@ void addSide(const Scene& scene, const SceneWorkspace& ws, const RobotSolve& sol
                        c.side[s].J);
 }
 
-/// Each contact starts from the impulse it carried last step (the same
-/// key), put in its cone, as the free bodies' do (§5.5): a robot resting on
-/// or pressing against something then needs a few sweeps, not hundreds.
-/// Both lists are sorted by key, so one merge walk finds them.
-void warmStart(const std::vector<ContactImpulse>& last, const std::vector<Contact>& contacts,
-               std::vector<ContactRows>& rows) {
-  std::size_t k = 0;
-  for (ContactRows& c : rows) {
-    const ContactKey key = contacts[c.contact].key();
-    while (k < last.size() && last[k].key() < key) ++k;
-    if (k == last.size() || !(last[k].key() == key)) continue;
-    const double normal = std::max(last[k].normal, 0.0);
-    Eigen::Vector2d tangent(c.tangent1_W.dot(last[k].tangent_W), c.tangent2_W.dot(last[k].tangent_W));
-    const double limit = c.friction * normal;
-    if (tangent.norm() > limit) tangent *= limit / tangent.norm();
-    c.warm_start = Eigen::Vector3d(normal, tangent.x(), tangent.y());
-  }
-}
-
 void solveRobotIslands(const Scene& scene, SceneState& state, double h, SceneWorkspace& ws, RobotSolve& solve) {
   const Model& model = scene.model();
   const std::vector<SceneRobot>& robots = scene.robots();
@@ -210,7 +191,7 @@ void solveRobotIslands(const Scene& scene, SceneState& state, double h, SceneWor
     c.contact = static_cast<int>(k);
     solve.contacts.push_back(std::move(c));
   }
-  warmStart(ws.last_impulses, ws.robot_contacts, solve.contacts);
+  detail::warmStart(ws.last_impulses, ws.robot_contacts, solve.contacts);
   solve.impulse.setZero(offset);
   solve.lift = false;
   if (solve.rows.empty() && solve.contacts.empty()) return;

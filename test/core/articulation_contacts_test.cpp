@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
+#include "rigid_body_sim/core/articulation_dynamics.h"
 #include "rigid_body_sim/core/articulation_step.h"
 #include "rigid_body_sim/core/contact.h"
 
@@ -196,9 +198,13 @@ TEST(ArticulationContacts, ArmDroppedFlatBouncesAtRestitution) {
   EXPECT_LT(run.state.V_B.head<3>().norm(), 1e-9);  // flat: no turn
 }
 
-// Bent and pushed sideways at 0.5 m/s, it slides to rest: friction takes
-// μ m g, so it stops within v²/(2 μ g) of where it began (less: the elbow's
-// turn takes some of the energy too).
+// Bent and pushed sideways at 0.5 m/s, it slides to rest. The friction on
+// it is at most μ m g, so its centre of mass needs at least v/(μ g) to stop
+// and goes at least v²/(2 μ g); exactly that if every contact slid straight
+// back, farther if the arm turns as it slides (the friction then spreads
+// over directions, as a spinning puck's does). How it turns depends on how
+// its weight splits between its contacts, which rigid contacts leave
+// undetermined (a warm start changes it).
 TEST(ArticulationContacts, ArmSlidingOnTheFloorStops) {
   const ArticulationModel model = lyingArm();
   ArticulationState start = restState(model);
@@ -221,9 +227,13 @@ TEST(ArticulationContacts, ArmSlidingOnTheFloorStops) {
   EXPECT_GT(-tangent.y(), 0.999 * friction);  // against the slide
   run.steps(995);
   EXPECT_LT(run.state.V_B.norm(), 1e-6);
-  const double y = run.state.X_WB.translation.y();
-  EXPECT_GT(y, 0.0);
-  EXPECT_LE(y, 0.25 / (2.0 * 0.5 * kG) + 1e-3);
+  const double y =
+      centreOfMass(model, kinematics(model, run.state)).y() - centreOfMass(model, kinematics(model, start)).y();
+  const double least = 0.25 / (2.0 * 0.5 * kG);
+  std::printf("slid %.6g m, at least v²/(2 μ g) = %.6g m; turned %.3g rad\n", y, least,
+              2.0 * std::atan2(run.state.X_WB.rotation.z(), run.state.X_WB.rotation.w()));
+  EXPECT_GE(y, least - 1e-9);
+  EXPECT_LT(y, 1.1 * least);
 }
 
 // The wheeled base driven by equal efforts: it rolls, the base's speed ω r.

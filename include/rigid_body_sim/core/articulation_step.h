@@ -41,9 +41,10 @@ struct ArticulationWorkspace {
   /// colliders, `detection.contacts` holds its contacts with their impulses.
   State links;
   Workspace detection;
-  bool speed_limited = false;  ///< the last step slowed something to the speed limits
-  Vec6 H_W = Vec6::Zero();     ///< the floating base's rows: the whole momentum, world axes, within a step
-  int predict_only = 0;        ///< within a step: the steps left that skip the corrector
+  std::vector<ContactImpulse> last_impulses;  ///< the last step's, for the warm start, during a step
+  bool speed_limited = false;                 ///< the last step slowed something to the speed limits
+  Vec6 H_W = Vec6::Zero();  ///< the floating base's rows: the whole momentum, world axes, within a step
+  int predict_only = 0;     ///< within a step: the steps left that skip the corrector
 };
 
 /// Advances `state` by h seconds under gravity g_W (m/s²): symplectic Euler
