@@ -8,6 +8,9 @@
 // runs its Euler integrator (velocities, then positions with them), Bullet
 // its multibody defaults less damping and velocity clamps. A peer is built
 // only where its package is (libmujoco-dev, libbullet-dev).
+// "rigid_body_sim scene" steps the base as the one robot of a scene.
+// "rigid_body_sim Euler" is our kernels on MuJoCo's algorithm (oursKernels):
+// the share of our step that is the corrector's.
 // Then contacts: the shipped four-wheeled base (urdf/four_wheeler.urdf) on
 // the ground, its wheels spun at 10 rad/s from rest, friction 0.5: ns per
 // step over `steps` steps (its wheels slip, then it rolls), and at 2 s its
@@ -28,6 +31,7 @@
 
 #include "rigid_body_sim/core/articulation_dynamics.h"
 #include "rigid_body_sim/core/articulation_step.h"
+#include "rigid_body_sim/core/scene.h"
 #include "rigid_body_sim/io/articulation_loader.h"
 
 #ifdef RBS_WITH_MUJOCO
@@ -66,7 +70,7 @@ struct Engine {
   std::function<double()> energy;  // J
 };
 
-Engine ours(const ChainSpec& c) {
+std::shared_ptr<ArticulationModel> chainModel(const ChainSpec& c) {
   auto model = std::make_shared<ArticulationModel>();
   model->fixed_base = true;
   model->links.push_back({});
@@ -84,11 +88,43 @@ Engine ours(const ChainSpec& c) {
     model->links.push_back(l);
   }
   checkArticulation(*model);
+  return model;
+}
+
+Engine ours(const ChainSpec& c) {
+  const std::shared_ptr<ArticulationModel> model = chainModel(c);
   auto state = std::make_shared<ArticulationState>(restState(*model));
   state->q.setConstant(c.q0);
   auto ws = std::make_shared<ArticulationWorkspace>();
   const Vec3 g(0, 0, -kG);
   return {[model, state, ws, g] { stepArticulation(*model, *state, {}, g, kDt, {}, ws.get()); },
+          [model, state, g] {
+            const ArticulationKinematics kin = kinematics(*model, *state);
+            return kineticEnergy(*model, kin) + potentialEnergy(*model, kin, g);
+          }};
+}
+
+/// Our kernels on MuJoCo's algorithm, from the public dynamics API: the
+/// kinematics, M by composite rigid bodies, its Cholesky factor, the bias
+/// by recursive Newton-Euler, then v += h M⁻¹(−c) and q += h v. What a step
+/// of ours costs without the symplectic corrector's passes, the momenta it
+/// carries and the rows: the part of the step MuJoCo's Euler also does.
+Engine oursKernels(const ChainSpec& c) {
+  const std::shared_ptr<ArticulationModel> model = chainModel(c);
+  auto state = std::make_shared<ArticulationState>(restState(*model));
+  state->q.setConstant(c.q0);
+  auto ws = std::make_shared<ArticulationWorkspace>();
+  const Vec3 g(0, 0, -kG);
+  return {[model, state, ws, g] {
+            kinematics(*model, *state, ws->kin);
+            massMatrix(*model, ws->kin, ws->dynamics, ws->A);
+            ws->llt.compute(ws->A);
+            biasForces(*model, ws->kin, g, {}, true, ws->dynamics, ws->bias);
+            ws->u = generalizedVelocity(*model, *state);
+            ws->u.noalias() -= kDt * ws->llt.solve(ws->bias);
+            setGeneralizedVelocity(*model, ws->u, *state);
+            state->q += kDt * state->v;
+          },
           [model, state, g] {
             const ArticulationKinematics kin = kinematics(*model, *state);
             return kineticEnergy(*model, kin) + potentialEnergy(*model, kin, g);
@@ -211,6 +247,24 @@ Roller oursRolling() {
           [=] { return std::make_pair(state->V_B(3), kWheelRadius * state->v.mean()); }};
 }
 
+/// The same base as the one robot of a scene (stepScene: its contacts in
+/// the scene's solve, warm started): what a scene costs a robot.
+Roller oursRollingInAScene() {
+  ArticulationModel model =
+      rigid_body_sim::io::loadArticulationFile(std::string(RBS_SOURCE_DIR) + "/urdf/four_wheeler.urdf");
+  ModelSpec ground;
+  ground.scene = {Sdf::plane(Vec3::UnitZ())};
+  ground.contact.friction = kFriction;
+  ground.sleep.enabled = false;
+  ArticulationState start = restState(model, Pose{Quat::Identity(), Vec3(0, 0, kWheelRadius)});
+  start.v.setConstant(kWheelSpin);
+  auto scene = std::make_shared<Scene>(ground, std::vector<Scene::RobotSpec>{{"base", std::move(model)}});
+  auto state = std::make_shared<SceneState>(sceneState(*scene, State(), {start}));
+  auto ws = std::make_shared<SceneWorkspace>();
+  return {[=] { stepScene(*scene, *state, {}, *ws); },
+          [=] { return std::make_pair(state->robots[0].V_B(3), kWheelRadius * state->robots[0].v.mean()); }};
+}
+
 #ifdef RBS_WITH_MUJOCO
 Roller mujocoRolling() {
   std::string xml =
@@ -255,7 +309,8 @@ int main(int argc, char** argv) {
       {"arm7", 7, 0.3, 2.0, 0.08, 0.3, {Vec3::UnitZ(), Vec3::UnitY()}},
       {"chain30", 30, 0.1, 0.1, 0.01, 0.02, {Vec3::UnitY()}},
   };
-  std::vector<std::pair<const char*, std::function<Engine(const ChainSpec&)>>> engines = {{"rigid_body_sim", ours}};
+  std::vector<std::pair<const char*, std::function<Engine(const ChainSpec&)>>> engines = {
+      {"rigid_body_sim", ours}, {"rigid_body_sim Euler", oursKernels}};
 #ifdef RBS_WITH_MUJOCO
   engines.push_back({"MuJoCo 2.2.2", mujoco});
 #endif
@@ -287,7 +342,8 @@ int main(int argc, char** argv) {
     }
   }
   // Contacts: the wheeled base.
-  std::vector<std::pair<const char*, std::function<Roller()>>> rollers = {{"rigid_body_sim", oursRolling}};
+  std::vector<std::pair<const char*, std::function<Roller()>>> rollers = {
+      {"rigid_body_sim", oursRolling}, {"rigid_body_sim scene", oursRollingInAScene}};
 #ifdef RBS_WITH_MUJOCO
   rollers.push_back({"MuJoCo 2.2.2", mujocoRolling});
 #endif
