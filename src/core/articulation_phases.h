@@ -26,6 +26,20 @@ void finishArticulation(const ArticulationModel& model, const SpeedLimits& limit
                         const Eigen::VectorXd* impulse, const Eigen::VectorXd* pseudo, ArticulationState& state,
                         ArticulationWorkspace& ws);
 
+/// Whether any effort, wrench or impulse acts (a sleeper wakes for it).
+bool loaded(const ArticulationLoads& loads);
+
+/// Sleep's clock (§11.8), as a body's (§6): the time the articulation has
+/// been touching something (`touching`) with every joint and the base
+/// slower than the sleep speeds (a prismatic joint and the base's v by the
+/// linear one); whether it has reached `sleep.time` (sleep on).
+bool updateStillTime(const ArticulationModel& model, const SleepSettings& sleep, bool touching, double h,
+                     ArticulationState& state);
+
+/// Asleep: its velocities zeroed, nothing carried; not stepped until a
+/// load wakes it or its caller clears the flag.
+void fallAsleep(ArticulationState& state);
+
 /// Throws std::invalid_argument when `loads` has a size other than the
 /// model's (efforts: one per joint; wrenches and impulses: one per link).
 void checkLoads(const ArticulationModel& model, const ArticulationLoads& loads);

@@ -3,6 +3,7 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -276,7 +277,10 @@ void advance(const ArticulationModel& model, ArticulationState& state, const Art
   detail::finishArticulation(model, limits, h, &impulse, lift ? &pseudo : nullptr, state, ws);
 }
 
-/// Whether any effort, wrench or impulse acts (a sleeper wakes for it).
+}  // namespace
+
+namespace detail {
+
 bool loaded(const ArticulationLoads& loads) {
   const bool effort = loads.effort.size() > 0 && (loads.effort.array() != 0.0).any();
   const auto any = [](const std::vector<Vec6>& ws) {
@@ -285,32 +289,24 @@ bool loaded(const ArticulationLoads& loads) {
   return effort || any(loads.wrench_L) || any(loads.impulse_L);
 }
 
-/// Sleep (§11.8), as a body's (§6): touching something, every joint and
-/// the base slower than the sleep speeds for `sleep.time`, the articulation
-/// stops where it is.
-void sleepIfStill(const ArticulationModel& model, const SleepSettings& sleep, bool touching, double h,
-                  ArticulationState& state) {
+bool updateStillTime(const ArticulationModel& model, const SleepSettings& sleep, bool touching, double h,
+                     ArticulationState& state) {
   bool still = sleep.enabled && touching && state.V_B.head<3>().norm() < sleep.angular_velocity &&
                state.V_B.tail<3>().norm() < sleep.linear_velocity;
   for (int i = 1; i <= model.jointCount() && still; ++i) {
     const bool slides = model.links[i].type == JointType::Prismatic;
     still = std::abs(state.v(i - 1)) < (slides ? sleep.linear_velocity : sleep.angular_velocity);
   }
-  if (!still) {
-    state.still_time = 0.0;
-    return;
-  }
-  state.still_time += h;
-  if (state.still_time < sleep.time) return;
+  state.still_time = still ? state.still_time + h : 0.0;
+  return still && state.still_time >= sleep.time;
+}
+
+void fallAsleep(ArticulationState& state) {
   state.asleep = true;
   state.v.setZero();
   state.V_B.setZero();
   state.carried = {};
 }
-
-}  // namespace
-
-namespace detail {
 
 void checkLoads(const ArticulationModel& model, const ArticulationLoads& loads) {
   const auto sized = [](long size, long wanted, const char* what) {
@@ -347,7 +343,7 @@ bool stepArticulation(const ArticulationModel& model, ArticulationState& state, 
   detail::checkLoads(model, loads);
   if (model.dofCount() == 0) return true;  // a base on the world and no joint: nothing moves
   if (state.asleep) {
-    if (!loaded(loads)) return true;  // it stays exactly where it is
+    if (!detail::loaded(loads)) return true;  // it stays exactly where it is
     state.asleep = false;
     state.still_time = 0.0;
   }
@@ -357,7 +353,12 @@ bool stepArticulation(const ArticulationModel& model, ArticulationState& state, 
   ws.start.q = state.q;  // the positions only: the guard puts back no velocity
   advance(model, state, loads, g_W, h, limits, colliders, ws);
   if (!detail::guardArticulation(model, ws.start, state)) return false;
-  if (colliders != nullptr) sleepIfStill(model, colliders->bodies.sleep(), !ws.detection.contacts.empty(), h, state);
+  // Sleep (§11.8), as a body's (§6): touching something, every joint and
+  // the base slower than the sleep speeds for `sleep.time`.
+  const bool touching = !ws.detection.contacts.empty();
+  if (colliders != nullptr && detail::updateStillTime(model, colliders->bodies.sleep(), touching, h, state)) {
+    detail::fallAsleep(state);
+  }
   return true;
 }
 

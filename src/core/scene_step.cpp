@@ -69,8 +69,14 @@ void takeRobotContacts(const Scene& scene, const State& state, SceneWorkspace& w
   for (const Contact& c : all) {
     if (c.other >= 0 && !state.bodies[c.body].asleep && !state.bodies[c.other].asleep) unite(c.body, c.other);
   }
+  ws.island_root.resize(n);
+  for (std::size_t i = 0; i < n; ++i) ws.island_root[i] = find(static_cast<int>(i));
+  // A sleeping robot's links are sleepers: their contacts are the free
+  // bodies' (ground to them) unless an awake robot's island holds them.
   std::vector<char> holds_robot(n, 0);
-  for (std::size_t i = scene.freeBodyCount(); i < n; ++i) holds_robot[find(static_cast<int>(i))] = 1;
+  for (std::size_t i = scene.freeBodyCount(); i < n; ++i) {
+    if (!state.bodies[i].asleep) holds_robot[ws.island_root[i]] = 1;
+  }
   ws.robot_contacts.clear();
   std::size_t kept = 0;
   for (const Contact& c : all) {
@@ -152,7 +158,7 @@ void solveRobotIslands(const Scene& scene, SceneState& state, double h, SceneWor
   int offset = 0;
   for (std::size_t r = 0; r < robots.size(); ++r) {
     const int n = robots[r].model.dofCount();
-    if (n == 0) continue;
+    if (n == 0 || state.robots[r].asleep) continue;  // a sleeping robot is ground
     solve.blocks.push_back({offset, n, &ws.robots[r].llt});
     solve.robot_offset[r] = offset;
     offset += n;
@@ -235,6 +241,115 @@ void mergeContacts(const std::vector<Contact>& a, const std::vector<Contact>& b,
   into.swap(merged);
 }
 
+void wakeRobot(ArticulationState& rs) {
+  rs.asleep = false;
+  rs.still_time = 0.0;
+}
+
+void wakeBody(BodyState& s) {
+  s.asleep = false;
+  s.still_time = 0.0;
+}
+
+/// Robot r's links as bodies where it is now, moving as it does; a
+/// sleeping robot's as sleepers.
+void placeLinks(const Scene& scene, std::size_t r, SceneState& state, SceneWorkspace& ws) {
+  const SceneRobot& robot = scene.robots()[r];
+  ArticulationWorkspace& rw = ws.robots[r];
+  kinematics(robot.model, state.robots[r], rw.kin);
+  const std::size_t first = static_cast<std::size_t>(robot.first_body);
+  detail::setLinkStates(scene.model(), robot.link, rw.kin, first, state.bodies.bodies);
+  if (!state.robots[r].asleep) return;
+  for (std::size_t i = 0; i < robot.link.size(); ++i) state.bodies.bodies[first + i].asleep = true;
+}
+
+/// Robot r's first half (awake, with dofs): its velocity without rows,
+/// its links placed moving at it (for the speculative margins).
+void predictRobot(const Scene& scene, std::size_t r, const ArticulationLoads& loads, double h, SceneState& state,
+                  SceneWorkspace& ws) {
+  const ArticulationModel& m = scene.robots()[r].model;
+  ArticulationWorkspace& rw = ws.robots[r];
+  ArticulationState& rs = state.robots[r];
+  rw.start.X_WB = rs.X_WB;
+  rw.start.q = rs.q;
+  if (m.dofCount() == 0 || rs.asleep) {
+    placeLinks(scene, r, state, ws);
+    return;
+  }
+  detail::predictArticulation(m, rs, loads, scene.model().gravity(), h, rw);
+  setTwists(m, rw.next, rw.kin);
+  const SceneRobot& robot = scene.robots()[r];
+  detail::setLinkStates(scene.model(), robot.link, rw.kin, static_cast<std::size_t>(robot.first_body),
+                        state.bodies.bodies);
+}
+
+/// A sleeping robot whose link the detection woke (something came at it)
+/// wakes, and takes its first half now. A robot woken this step (by that or
+/// by a load, `woken`) wakes the sleeping bodies its links touch: they
+/// slept as one island, and a robot pressing on a sleeper it rested against
+/// would not come at it fast enough to wake it (the free bodies' rule).
+template <class LoadsOf>
+void wakeHitRobots(const Scene& scene, const LoadsOf& loadsOf, double h, std::vector<char>& woken, SceneState& state,
+                   SceneWorkspace& ws) {
+  std::vector<BodyState>& bodies = state.bodies.bodies;
+  for (std::size_t r = 0; r < scene.robots().size(); ++r) {
+    const SceneRobot& robot = scene.robots()[r];
+    if (!state.robots[r].asleep) continue;
+    bool hit = false;
+    for (std::size_t i = 0; i < robot.link.size() && !hit; ++i) hit = !bodies[robot.first_body + i].asleep;
+    if (!hit) continue;
+    wakeRobot(state.robots[r]);
+    woken[r] = 1;
+    predictRobot(scene, r, loadsOf(r), h, state, ws);
+  }
+  for (const Contact& c : ws.bodies.contacts) {
+    if (c.other < 0) continue;
+    const int ra = scene.robotOf(static_cast<std::size_t>(c.body));
+    const int ro = scene.robotOf(static_cast<std::size_t>(c.other));
+    if (ra >= 0 && woken[ra] && ro < 0 && bodies[c.other].asleep) wakeBody(bodies[c.other]);
+    if (ro >= 0 && woken[ro] && ra < 0 && bodies[c.body].asleep) wakeBody(bodies[c.body]);
+  }
+}
+
+/// Sleep for the islands that hold a robot (§6, §11.9): every robot in it
+/// touching, slower than the sleep speeds for the sleep time, and every
+/// awake free body in it still as long: all of them fall asleep.
+void sleepRobotIslands(const Scene& scene, double h, SceneState& state, SceneWorkspace& ws) {
+  const Model& model = scene.model();
+  const std::size_t n = model.bodyCount();
+  std::vector<char> touching(scene.robots().size(), 0);
+  for (const Contact& c : ws.robot_contacts) {
+    for (const int b : {c.body, c.other}) {
+      const int r = b >= 0 ? scene.robotOf(static_cast<std::size_t>(b)) : -1;
+      if (r >= 0) touching[r] = 1;
+    }
+  }
+  std::vector<char> ready(n, 1);  // per island root
+  std::vector<char> holds(n, 0);  // per island root: an awake robot
+  for (std::size_t r = 0; r < scene.robots().size(); ++r) {
+    const SceneRobot& robot = scene.robots()[r];
+    ArticulationState& rs = state.robots[r];
+    if (rs.asleep || robot.link.empty()) continue;
+    const int root = ws.island_root[robot.first_body];
+    holds[root] = 1;
+    if (!detail::updateStillTime(robot.model, model.sleep(), touching[r] != 0, h, rs)) ready[root] = 0;
+  }
+  for (std::size_t i = 0; i < scene.freeBodyCount(); ++i) {
+    const BodyState& s = state.bodies.bodies[i];
+    if (!s.asleep && !readyToSleep(model, true, s)) ready[ws.island_root[i]] = 0;
+  }
+  for (std::size_t r = 0; r < scene.robots().size(); ++r) {
+    const SceneRobot& robot = scene.robots()[r];
+    if (state.robots[r].asleep || robot.link.empty()) continue;
+    if (ready[ws.island_root[robot.first_body]]) detail::fallAsleep(state.robots[r]);
+  }
+  for (std::size_t i = 0; i < scene.freeBodyCount(); ++i) {
+    BodyState& s = state.bodies.bodies[i];
+    const int root = ws.island_root[i];
+    if (!s.asleep && holds[root] && ready[root]) fallAsleep(s);
+  }
+}
+
 }  // namespace
 
 void stepScene(const Scene& scene, SceneState& state, const SceneLoads& loads, SceneWorkspace& ws) {
@@ -249,22 +364,20 @@ void stepScene(const Scene& scene, SceneState& state, const SceneLoads& loads, S
   bw.speed_limited.clear();
   bw.diverged.clear();
   // The robots' first halves: each one's velocity without rows, its links
-  // placed as bodies moving at it (for the speculative margins).
+  // placed as bodies moving at it (for the speculative margins); a
+  // sleeping robot's stay put, as sleepers, unless a load wakes it.
   const ArticulationLoads none;
+  const auto loadsOf = [&](std::size_t r) -> const ArticulationLoads& {
+    return loads.robots.empty() ? none : loads.robots[r];
+  };
+  std::vector<char> woken(robots.size(), 0);
   for (std::size_t r = 0; r < robots.size(); ++r) {
-    const ArticulationModel& m = robots[r].model;
-    ArticulationWorkspace& rw = ws.robots[r];
     ArticulationState& rs = state.robots[r];
-    rw.start.X_WB = rs.X_WB;
-    rw.start.q = rs.q;
-    if (m.dofCount() > 0) {
-      detail::predictArticulation(m, rs, loads.robots.empty() ? none : loads.robots[r], model.gravity(), h, rw);
-      setTwists(m, rw.next, rw.kin);
-    } else {
-      kinematics(m, rs, rw.kin);
+    if (rs.asleep && detail::loaded(loadsOf(r))) {
+      wakeRobot(rs);
+      woken[r] = 1;
     }
-    detail::setLinkStates(model, robots[r].link, rw.kin, static_cast<std::size_t>(robots[r].first_body),
-                          state.bodies.bodies);
+    predictRobot(scene, r, loadsOf(r), h, state, ws);
   }
   // The stages, as a table:
   // clang-format off
@@ -272,6 +385,7 @@ void stepScene(const Scene& scene, SceneState& state, const SceneLoads& loads, S
   bw.contacts.erase(std::remove_if(bw.contacts.begin(), bw.contacts.end(),
                                    [&](const Contact& c) { return adjacentLinks(scene, c); }),
                     bw.contacts.end());
+  wakeHitRobots(scene, loadsOf, h, woken, state, ws);                              // §11.9 a sleeping robot hit wakes
   takeRobotContacts(scene, state.bodies, ws);                               // §11.9 the robots' islands apart
   ws.last_impulses = state.bodies.contact_impulses;                         // the free solve rewrites them
   for (std::size_t i = scene.freeBodyCount(); i < model.bodyCount(); ++i) {
@@ -291,7 +405,7 @@ void stepScene(const Scene& scene, SceneState& state, const SceneLoads& loads, S
     const ArticulationModel& m = robots[r].model;
     ArticulationWorkspace& rw = ws.robots[r];
     ArticulationState& rs = state.robots[r];
-    if (m.dofCount() > 0) {
+    if (m.dofCount() > 0 && !rs.asleep) {
       const int at = solve.robot_offset[r];
       const Eigen::VectorXd impulse_r = solve.impulse.segment(at, m.dofCount());
       const Eigen::VectorXd pseudo_r =
@@ -299,10 +413,9 @@ void stepScene(const Scene& scene, SceneState& state, const SceneLoads& loads, S
       detail::finishArticulation(m, model.limits(), h, &impulse_r, solve.lift ? &pseudo_r : nullptr, rs, rw);
       if (!detail::guardArticulation(m, rw.start, rs)) ws.robot_diverged[r] = 1;
     }
-    kinematics(m, rs, rw.kin);  // the links where the robot now is, for readers and the next step
-    detail::setLinkStates(model, robots[r].link, rw.kin, static_cast<std::size_t>(robots[r].first_body),
-                          state.bodies.bodies);
   }
+  sleepRobotIslands(scene, h, state, ws);                                           // §11.9 sleep, island by island
+  for (std::size_t r = 0; r < robots.size(); ++r) placeLinks(scene, r, state, ws);  // for readers and the next step
   // Every contact, for the caller and the next step's warm start.
   mergeContacts(bw.contacts, ws.robot_contacts, bw.contacts);
   state.bodies.contact_impulses.clear();

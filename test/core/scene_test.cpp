@@ -276,6 +276,36 @@ TEST(Scene, TwoRobotsCollideKeepingTheMomentum) {
   EXPECT_LT((total() - before).norm(), 1e-9) << (total() - before).transpose();
 }
 
+// A pusher resting against a box on the floor: the island, robot and box,
+// falls asleep after the sleep time and then stays exactly put; an effort
+// wakes the robot, which wakes the box as it comes at it and shoves it.
+TEST(Scene, AnIslandWithARobotSleepsAndWakes) {
+  const ArticulationModel pusher = slider(Vec3::UnitX(), Vec3(0.0, 0.0, 0.1), Vec3(0.1, 0.3, 0.1), 2.0);
+  const BodySpec box = test::boxBody(Vec3(0.1, 0.1, 0.1), 1.0);
+  SceneRun run(settings({box}, 0.5, true), {{"pusher", pusher}}, {at(Vec3(0.15, 0.0, 0.1))}, {restState(pusher)});
+  int asleep_at = -1;
+  for (int i = 0; i < 1000 && asleep_at < 0; ++i) {
+    run.steps(1);
+    if (run.state.robots[0].asleep) asleep_at = i;
+  }
+  ASSERT_GE(asleep_at, 0);
+  EXPECT_NEAR(asleep_at * kH, 0.5, 0.01);  // sleep.time
+  EXPECT_TRUE(run.body(0).asleep);         // with its island
+  const SceneState held = run.state;
+  run.steps(200);
+  EXPECT_EQ(run.state.robots[0].q, held.robots[0].q);
+  EXPECT_TRUE(run.body(0).p_WB == held.bodies.bodies[0].p_WB &&
+              run.body(0).q_WB.coeffs() == held.bodies.bodies[0].q_WB.coeffs());
+  EXPECT_TRUE(run.state.robots[0].asleep && run.body(0).asleep);
+  run.loads.robots.resize(1);
+  run.loads.robots[0].effort = Eigen::VectorXd::Constant(1, 20.0);
+  run.steps(1);
+  EXPECT_FALSE(run.state.robots[0].asleep);
+  run.steps(300);
+  EXPECT_FALSE(run.body(0).asleep);
+  EXPECT_GT(run.body(0).p_WB.x(), 0.2);  // shoved
+}
+
 // A NaN effort on one robot: the guard puts that robot back where its step
 // began, at rest, and says so; the box beside it steps on.
 TEST(Scene, TheGuardPutsBackARobotAlone) {

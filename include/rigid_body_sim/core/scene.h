@@ -85,6 +85,7 @@ struct SceneWorkspace {
   std::vector<ArticulationWorkspace> robots;
   std::vector<Contact> robot_contacts;        ///< the contacts a robot's solve takes, during a step
   std::vector<ContactImpulse> last_impulses;  ///< the last step's, for the robots' warm start, during a step
+  std::vector<int> island_root;               ///< per body: its island's smallest body, during a step
   /// Per robot: whether the guard put it back in the last step (§11.7).
   std::vector<char> robot_diverged;
 };
@@ -94,9 +95,11 @@ struct SceneWorkspace {
 /// robot solved as free bodies' are (§5.5); every robot's joint rows and the
 /// contacts of the islands that hold a robot, with the free bodies in them,
 /// in one joint-space solve; then positions. The guard, the speed limits and
-/// sleep act as on their own: a robot in a scene does not sleep, nor do the
-/// free bodies it touches. Throws std::invalid_argument for loads of the
-/// wrong size.
+/// sleep act as on their own; an island that holds a robot sleeps as a
+/// whole, robots and bodies, when every one of them has been still for the
+/// sleep time, and a sleeping robot is, to the others, as a sleeping body
+/// is (ground, woken when something comes at it, or by a load). Throws
+/// std::invalid_argument for loads of the wrong size.
 void stepScene(const Scene& scene, SceneState& state, const SceneLoads& loads, SceneWorkspace& ws);
 
 }  // namespace rigid_body_sim::core
