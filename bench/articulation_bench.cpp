@@ -91,17 +91,26 @@ std::shared_ptr<ArticulationModel> chainModel(const ChainSpec& c) {
   return model;
 }
 
-Engine ours(const ChainSpec& c) {
+/// The chain stepped by `step(model, state, workspace, g)`, its energy
+/// the articulation's.
+template <class Step>
+Engine chainEngine(const ChainSpec& c, Step step) {
   const std::shared_ptr<ArticulationModel> model = chainModel(c);
   auto state = std::make_shared<ArticulationState>(restState(*model));
   state->q.setConstant(c.q0);
   auto ws = std::make_shared<ArticulationWorkspace>();
   const Vec3 g(0, 0, -kG);
-  return {[model, state, ws, g] { stepArticulation(*model, *state, {}, g, kDt, {}, ws.get()); },
+  return {[model, state, ws, g, step] { step(*model, *state, *ws, g); },
           [model, state, g] {
             const ArticulationKinematics kin = kinematics(*model, *state);
             return kineticEnergy(*model, kin) + potentialEnergy(*model, kin, g);
           }};
+}
+
+Engine ours(const ChainSpec& c) {
+  return chainEngine(c, [](const ArticulationModel& m, ArticulationState& s, ArticulationWorkspace& ws, const Vec3& g) {
+    stepArticulation(m, s, {}, g, kDt, {}, &ws);
+  });
 }
 
 /// Our kernels on MuJoCo's algorithm, from the public dynamics API: the
@@ -110,25 +119,16 @@ Engine ours(const ChainSpec& c) {
 /// of ours costs without the symplectic corrector's passes, the momenta it
 /// carries and the rows: the part of the step MuJoCo's Euler also does.
 Engine oursKernels(const ChainSpec& c) {
-  const std::shared_ptr<ArticulationModel> model = chainModel(c);
-  auto state = std::make_shared<ArticulationState>(restState(*model));
-  state->q.setConstant(c.q0);
-  auto ws = std::make_shared<ArticulationWorkspace>();
-  const Vec3 g(0, 0, -kG);
-  return {[model, state, ws, g] {
-            kinematics(*model, *state, ws->kin);
-            massMatrix(*model, ws->kin, ws->dynamics, ws->A);
-            ws->llt.compute(ws->A);
-            biasForces(*model, ws->kin, g, {}, true, ws->dynamics, ws->bias);
-            ws->u = generalizedVelocity(*model, *state);
-            ws->u.noalias() -= kDt * ws->llt.solve(ws->bias);
-            setGeneralizedVelocity(*model, ws->u, *state);
-            state->q += kDt * state->v;
-          },
-          [model, state, g] {
-            const ArticulationKinematics kin = kinematics(*model, *state);
-            return kineticEnergy(*model, kin) + potentialEnergy(*model, kin, g);
-          }};
+  return chainEngine(c, [](const ArticulationModel& m, ArticulationState& s, ArticulationWorkspace& ws, const Vec3& g) {
+    kinematics(m, s, ws.kin);
+    massMatrix(m, ws.kin, ws.dynamics, ws.A);
+    ws.llt.compute(ws.A);
+    biasForces(m, ws.kin, g, {}, true, ws.dynamics, ws.bias);
+    ws.u = generalizedVelocity(m, s);
+    ws.u.noalias() -= kDt * ws.llt.solve(ws.bias);
+    setGeneralizedVelocity(m, ws.u, s);
+    s.q += kDt * s.v;
+  });
 }
 
 #ifdef RBS_WITH_MUJOCO

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "articulation_models.h"
 #include "rigid_body_sim/core/articulation_dynamics.h"
 #include "rigid_body_sim/core/articulation_step.h"
 #include "rigid_body_sim/core/contact.h"
@@ -27,22 +28,8 @@ ModelSpec groundSettings(double friction) {
   return spec;
 }
 
-CollisionShape box(const Vec3& size, const Vec3& centre) {
-  CollisionShape s;
-  s.kind = CollisionShape::Kind::kBox;
-  s.size = size;
-  s.X_LS.translation = centre;
-  return s;
-}
-
-MassProperties boxMass(double m, const Vec3& size, const Vec3& centre) {
-  MassProperties p;
-  p.mass = m;
-  p.p_FC = centre;
-  const Vec3 s2 = size.cwiseProduct(size);
-  p.I_C_F = (m / 12.0 * Vec3(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y())).asDiagonal();
-  return p;
-}
+using test::boxMass;
+using test::boxShape;
 
 struct Robot {
   const ArticulationModel& model;
@@ -70,17 +57,8 @@ struct Robot {
 // out, released horizontal: it swings down and stops with the ball on the
 // floor, sin θ = (0.5 − 0.05)/0.6. One joint: each contact's K has rank 1.
 TEST(ArticulationContacts, PendulumComesToRestOnTheFloor) {
-  ArticulationModel model;
-  model.fixed_base = true;
-  model.links.resize(2);
-  model.links[0].name = "world";
+  ArticulationModel model = test::oneJoint(JointType::Continuous, "rod", "pivot", Vec3(0.0, 0.0, 0.5), Vec3::UnitY());
   ArticulatedLink& rod = model.links[1];
-  rod.name = "rod";
-  rod.joint = "pivot";
-  rod.parent = 0;
-  rod.type = JointType::Continuous;
-  rod.X_PJ.translation = Vec3(0.0, 0.0, 0.5);
-  rod.axis_J = Vec3::UnitY();
   rod.damping = 0.05;
   rod.mass = boxMass(1.0, Vec3(0.6, 0.02, 0.02), Vec3(0.3, 0.0, 0.0));
   CollisionShape ball;
@@ -103,30 +81,9 @@ TEST(ArticulationContacts, PendulumComesToRestOnTheFloor) {
   EXPECT_LT(run.deepest(), 1e-4 + 1e-9);
 }
 
-/// Two 0.4 m bars joined end to end by a hinge about z, lying flat on the
-/// floor, the base floating.
-ArticulationModel lyingArm() {
-  ArticulationModel model;
-  model.fixed_base = false;
-  model.links.resize(2);
-  const Vec3 size(0.4, 0.1, 0.1);
-  model.links[0].name = "upper";
-  model.links[0].mass = boxMass(1.0, size, Vec3::Zero());
-  model.links[0].collision = {box(size, Vec3::Zero())};
-  ArticulatedLink& fore = model.links[1];
-  fore.name = "fore";
-  fore.joint = "elbow";
-  fore.parent = 0;
-  fore.type = JointType::Revolute;
-  fore.limits.lower = -2.0;
-  fore.limits.upper = 2.0;
-  fore.X_PJ.translation = Vec3(0.2, 0.0, 0.0);
-  fore.axis_J = Vec3::UnitZ();
-  fore.mass = boxMass(1.0, size, Vec3(0.2, 0.0, 0.0));
-  fore.collision = {box(size, Vec3(0.2, 0.0, 0.0))};
-  checkArticulation(model);
-  return model;
-}
+/// Two bars joined end to end by a hinge about z, lying flat on the floor,
+/// the base floating.
+ArticulationModel lyingArm() { return test::twoBars(); }
 
 TEST(ArticulationContacts, ArmLyingOnTheFloorRestsWithoutCreep) {
   const ArticulationModel model = lyingArm();
@@ -325,7 +282,7 @@ ArticulationModel scissors() {
     const Vec3 size(lengths[i], 0.1, 0.1);
     const Vec3 centre = i == 0 ? Vec3::Zero() : Vec3(lengths[i] / 2.0, 0.0, 0.0);
     l.mass = boxMass(1.0, size, centre);
-    l.collision = {box(size, centre)};
+    l.collision = {boxShape(size, centre)};
     if (i == 0) continue;
     l.joint = "hinge" + std::to_string(i);
     l.parent = i - 1;

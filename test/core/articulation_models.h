@@ -1,5 +1,6 @@
 // Articulations the articulation suites share: random trees with skew axes,
-// offset centres of mass and full inertia tensors, and planar pendulums.
+// offset centres of mass and full inertia tensors, planar pendulums, and a
+// link on one joint to the world.
 #pragma once
 
 #include <random>
@@ -40,6 +41,69 @@ inline core::MassProperties randomMass(std::mt19937& rng) {
                  sides.x() * sides.x() + sides.y() * sides.y());
   mp.I_C_F = R * (mp.mass / 12.0 * box).asDiagonal() * R.transpose();
   return mp;
+}
+
+/// A solid box's shape, `size` its full extents (m), centred at `centre` in its link.
+inline core::CollisionShape boxShape(const Vec3& size, const Vec3& centre = Vec3::Zero()) {
+  core::CollisionShape s;
+  s.kind = core::CollisionShape::Kind::kBox;
+  s.size = size;
+  s.X_LS.translation = centre;
+  return s;
+}
+
+/// A solid box's mass properties: mass m (kg), extents `size`, centred at `centre`.
+inline core::MassProperties boxMass(double m, const Vec3& size, const Vec3& centre = Vec3::Zero()) {
+  core::MassProperties p;
+  p.mass = m;
+  p.p_FC = centre;
+  const Vec3 s2 = size.cwiseProduct(size);
+  p.I_C_F = (m / 12.0 * Vec3(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y())).asDiagonal();
+  return p;
+}
+
+/// Two 0.4 × 0.1 × 0.1 m, 1 kg bars joined end to end by a hinge about z
+/// (±2 rad), the first the floating base, both solid.
+inline ArticulationModel twoBars() {
+  ArticulationModel model;
+  model.fixed_base = false;
+  model.links.resize(2);
+  const Vec3 size(0.4, 0.1, 0.1);
+  model.links[0].name = "upper";
+  model.links[0].mass = boxMass(1.0, size);
+  model.links[0].collision = {boxShape(size)};
+  ArticulatedLink& fore = model.links[1];
+  fore.name = "fore";
+  fore.joint = "elbow";
+  fore.parent = 0;
+  fore.type = JointType::Revolute;
+  fore.limits.lower = -2.0;
+  fore.limits.upper = 2.0;
+  fore.X_PJ.translation = Vec3(0.2, 0.0, 0.0);
+  fore.axis_J = Vec3::UnitZ();
+  fore.mass = boxMass(1.0, size, Vec3(0.2, 0.0, 0.0));
+  fore.collision = {boxShape(size, Vec3(0.2, 0.0, 0.0))};
+  core::checkArticulation(model);
+  return model;
+}
+
+/// A robot fixed to the world with one moving link, `link`, on a joint of
+/// `type` named `joint` at `origin` (in the world) about or along `axis`;
+/// its mass, limits and shapes are the caller's to set.
+inline ArticulationModel oneJoint(JointType type, const std::string& link, const std::string& joint, const Vec3& origin,
+                                  const Vec3& axis) {
+  ArticulationModel model;
+  model.fixed_base = true;
+  model.links.resize(2);
+  model.links[0].name = "world";
+  ArticulatedLink& l = model.links[1];
+  l.name = link;
+  l.joint = joint;
+  l.parent = 0;
+  l.type = type;
+  l.X_PJ.translation = origin;
+  l.axis_J = axis;
+  return model;
 }
 
 /// n moving links; link i's parent is i − 1 (serial) or any earlier link.

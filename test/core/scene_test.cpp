@@ -11,6 +11,7 @@
 #include <string>
 
 #include "../test_util.h"
+#include "articulation_models.h"
 #include "rigid_body_sim/core/articulation_dynamics.h"
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/step.h"
@@ -21,35 +22,14 @@ namespace {
 constexpr double kG = 9.81;
 constexpr double kH = 1e-3;
 
-CollisionShape boxShape(const Vec3& size) {
-  CollisionShape s;
-  s.kind = CollisionShape::Kind::kBox;
-  s.size = size;
-  return s;
-}
-
-MassProperties boxMass(double m, const Vec3& size) {
-  MassProperties p;
-  p.mass = m;
-  const Vec3 s2 = size.cwiseProduct(size);
-  p.I_C_F = (m / 12.0 * Vec3(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y())).asDiagonal();
-  return p;
-}
+using test::boxMass;
+using test::boxShape;
 
 /// A world-fixed robot: one box link of `size` and `mass` on a prismatic
 /// joint along `axis`, its origin at `origin` when q = 0.
 ArticulationModel slider(const Vec3& axis, const Vec3& origin, const Vec3& size, double mass) {
-  ArticulationModel model;
-  model.fixed_base = true;
-  model.links.resize(2);
-  model.links[0].name = "world";
+  ArticulationModel model = test::oneJoint(JointType::Prismatic, "slider", "slide", origin, axis);
   ArticulatedLink& link = model.links[1];
-  link.name = "slider";
-  link.joint = "slide";
-  link.parent = 0;
-  link.type = JointType::Prismatic;
-  link.X_PJ.translation = origin;
-  link.axis_J = axis;
   link.limits.effort = 1000.0;
   link.mass = boxMass(mass, size);
   link.collision = {boxShape(size)};
@@ -171,31 +151,8 @@ TEST(Scene, LiftRaisesABox) {
   EXPECT_LT(run.body(0).v_WB.head<2>().norm(), 1e-12);
 }
 
-/// A floating two-link robot: two 0.4 × 0.1 × 0.1 bars joined by a hinge
-/// about z at x = 0.2.
-ArticulationModel floatingArm() {
-  ArticulationModel model;
-  model.fixed_base = false;
-  model.links.resize(2);
-  const Vec3 size(0.4, 0.1, 0.1);
-  model.links[0].name = "upper";
-  model.links[0].mass = boxMass(1.0, size);
-  model.links[0].collision = {boxShape(size)};
-  ArticulatedLink& fore = model.links[1];
-  fore.name = "fore";
-  fore.joint = "elbow";
-  fore.parent = 0;
-  fore.type = JointType::Continuous;
-  fore.X_PJ.translation = Vec3(0.2, 0.0, 0.0);
-  fore.axis_J = Vec3::UnitZ();
-  fore.mass = boxMass(1.0, size);
-  fore.mass.p_FC = Vec3(0.2, 0.0, 0.0);
-  CollisionShape shape = boxShape(size);
-  shape.X_LS.translation = Vec3(0.2, 0.0, 0.0);
-  fore.collision = {shape};
-  checkArticulation(model);
-  return model;
-}
+/// A floating two-link robot: two bars joined by a hinge about z.
+ArticulationModel floatingArm() { return test::twoBars(); }
 
 /// [angular about W's origin; linear] of the robot and the free bodies:
 /// the robot's as its step carries it (its velocities give it from where
