@@ -31,6 +31,8 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/position_correction.cpp
   ${RBS_SOURCE_ROOT}/src/core/round_contact.cpp
   ${RBS_SOURCE_ROOT}/src/core/scene.cpp
+  ${RBS_SOURCE_ROOT}/src/core/scene_sleep.cpp
+  ${RBS_SOURCE_ROOT}/src/core/scene_solve.cpp
   ${RBS_SOURCE_ROOT}/src/core/scene_step.cpp
   ${RBS_SOURCE_ROOT}/src/core/sdf.cpp
   ${RBS_SOURCE_ROOT}/src/core/sdf_grid.cpp
