@@ -40,7 +40,7 @@ void sleepRobotIslands(const Scene& scene, double h, SceneState& state, SceneWor
   const Model& model = scene.model();
   const std::size_t n = model.bodyCount();
   std::vector<char> touching(scene.robots().size(), 0);
-  for (const Contact& c : ws.robot_contacts) {
+  for (const Contact& c : ws.scratch->robot_contacts) {
     for (const int b : {c.body, c.other}) {
       const int r = b >= 0 ? scene.robotOf(static_cast<std::size_t>(b)) : -1;
       if (r >= 0) touching[r] = 1;
@@ -52,22 +52,22 @@ void sleepRobotIslands(const Scene& scene, double h, SceneState& state, SceneWor
     const SceneRobot& robot = scene.robots()[r];
     ArticulationState& rs = state.robots[r];
     if (rs.asleep || robot.link.empty()) continue;
-    const int root = ws.island_root[robot.first_body];
+    const int root = ws.scratch->island_root[robot.first_body];
     holds[root] = 1;
     if (!detail::updateStillTime(robot.model, model.sleep(), touching[r] != 0, h, rs)) ready[root] = 0;
   }
   for (std::size_t i = 0; i < scene.freeBodyCount(); ++i) {
     const BodyState& s = state.bodies.bodies[i];
-    if (!s.asleep && !readyToSleep(model, true, s)) ready[ws.island_root[i]] = 0;
+    if (!s.asleep && !readyToSleep(model, true, s)) ready[ws.scratch->island_root[i]] = 0;
   }
   for (std::size_t r = 0; r < scene.robots().size(); ++r) {
     const SceneRobot& robot = scene.robots()[r];
     if (state.robots[r].asleep || robot.link.empty()) continue;
-    if (ready[ws.island_root[robot.first_body]]) detail::fallAsleep(state.robots[r]);
+    if (ready[ws.scratch->island_root[robot.first_body]]) detail::fallAsleep(state.robots[r]);
   }
   for (std::size_t i = 0; i < scene.freeBodyCount(); ++i) {
     BodyState& s = state.bodies.bodies[i];
-    const int root = ws.island_root[i];
+    const int root = ws.scratch->island_root[i];
     if (!s.asleep && holds[root] && ready[root]) fallAsleep(s);
   }
 }

@@ -29,20 +29,20 @@ void takeRobotContacts(const Scene& scene, const State& state, SceneWorkspace& w
   for (const Contact& c : all) {
     if (c.other >= 0 && !state.bodies[c.body].asleep && !state.bodies[c.other].asleep) unite(c.body, c.other);
   }
-  ws.island_root.resize(n);
-  for (std::size_t i = 0; i < n; ++i) ws.island_root[i] = find(static_cast<int>(i));
+  ws.scratch->island_root.resize(n);
+  for (std::size_t i = 0; i < n; ++i) ws.scratch->island_root[i] = find(static_cast<int>(i));
   // A sleeping robot's links are sleepers: their contacts are the free
   // bodies' (ground to them) unless an awake robot's island holds them.
   std::vector<char> holds_robot(n, 0);
   for (std::size_t i = scene.freeBodyCount(); i < n; ++i) {
-    if (!state.bodies[i].asleep) holds_robot[ws.island_root[i]] = 1;
+    if (!state.bodies[i].asleep) holds_robot[ws.scratch->island_root[i]] = 1;
   }
-  ws.robot_contacts.clear();
+  ws.scratch->robot_contacts.clear();
   std::size_t kept = 0;
   for (const Contact& c : all) {
     const bool robot = holds_robot[find(c.body)] || (c.other >= 0 && holds_robot[find(c.other)]);
     if (robot) {
-      ws.robot_contacts.push_back(c);
+      ws.scratch->robot_contacts.push_back(c);
     } else {
       all[kept++] = c;
     }
@@ -115,7 +115,7 @@ void solveRobotIslands(const Scene& scene, SceneState& state, double h, SceneWor
     solve.robot_offset[r] = offset;
     offset += n;
   }
-  for (const Contact& c : ws.robot_contacts) {
+  for (const Contact& c : ws.scratch->robot_contacts) {
     if (scene.robotOf(c.body) < 0) addBodyBlock(model, bodies[c.body], c.body, solve, offset);
     if (c.other >= 0 && scene.robotOf(c.other) < 0) addBodyBlock(model, bodies[c.other], c.other, solve, offset);
   }
@@ -135,11 +135,15 @@ void solveRobotIslands(const Scene& scene, SceneState& state, double h, SceneWor
     if (solve.robot_offset[r] < 0) continue;
     detail::buildJointRows(robots[r].model, state.robots[r], ws.robots[r].next, h, solve.robot_offset[r], solve.rows);
   }
-  solve.contacts.clear();
-  for (std::size_t k = 0; k < ws.robot_contacts.size(); ++k) {
-    const Contact& contact = ws.robot_contacts[k];
-    ContactRows c;
+  // The contacts' rows, reusing last step's memory (their J's keep theirs).
+  const std::vector<Contact>& contacts = ws.scratch->robot_contacts;
+  if (solve.contacts.size() < contacts.size()) solve.contacts.resize(contacts.size());
+  std::size_t used = 0;
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const Contact& contact = contacts[k];
+    ContactRows& c = solve.contacts[used];
     c.sides = 0;
+    c.warm_start.setZero();
     const Mat3 directions = detail::frameContact(contact, c);
     const Vec3 x_W = bodies[contact.body].p_WB + contact.r_W;
     addSide(scene, ws, solve, contact.body, x_W, contact.r_W, directions, 1.0, c);
@@ -147,14 +151,15 @@ void solveRobotIslands(const Scene& scene, SceneState& state, double h, SceneWor
     if (c.sides == 0) continue;  // between things that do not move this step
     detail::aimContact(model, contact, h, solve.u, c);
     c.contact = static_cast<int>(k);
-    solve.contacts.push_back(std::move(c));
+    ++used;
   }
-  detail::warmStart(ws.last_impulses, ws.robot_contacts, solve.contacts);
+  solve.contacts.resize(used);
+  detail::warmStart(ws.scratch->last_impulses, ws.scratch->robot_contacts, solve.contacts);
   solve.impulse.setZero(offset);
   solve.lift = false;
   if (solve.rows.empty() && solve.contacts.empty()) return;
   detail::solveRows(model.solver(), solve.blocks, solve.rows, solve.contacts, solve.u, solve.impulse);
-  detail::reportContactImpulses(solve.contacts, ws.robot_contacts);
+  detail::reportContactImpulses(solve.contacts, ws.scratch->robot_contacts);
   solve.lift = !solve.contacts.empty() &&
                detail::liftOutOfContacts(solve.contacts, solve.u, h, model.contact().position_slop, solve.pseudo);
   // The velocities back: the robots' for their second half, the bodies'.

@@ -11,7 +11,6 @@
 #include "joint_rows.h"
 #include "rigid_body_sim/core/scene.h"
 
-#pragma GCC visibility push(hidden)
 namespace rigid_body_sim::core::detail {
 
 /// The solve of the islands that hold a robot, over u: every robot's
@@ -25,6 +24,18 @@ struct RobotSolve {
   std::vector<ContactRows> contacts;
   bool lift = false;  ///< pseudo moves something
 };
+
+/// What a scene's stages keep between and within steps.
+struct SceneScratch {
+  std::vector<Contact> robot_contacts;        ///< the contacts the robots' solve takes, during a step
+  std::vector<ContactImpulse> last_impulses;  ///< the last step's, for the robots' warm start, during a step
+  std::vector<int> island_root;               ///< per body: its island's smallest body, during a step
+  RobotSolve solve;
+};
+
+// The stages are not exported from the library (only its own files and the
+// core tests, which link its objects, call them).
+#pragma GCC visibility push(hidden)
 
 /// Robot r's loads (none when the scene's loads give none).
 const ArticulationLoads& robotLoads(const SceneLoads& loads, std::size_t r);
@@ -76,5 +87,6 @@ void wakeHitRobots(const Scene& scene, const SceneLoads& loads, double h, std::v
 /// awake free body in it still as long: all of them fall asleep.
 void sleepRobotIslands(const Scene& scene, double h, SceneState& state, SceneWorkspace& ws);
 
-}  // namespace rigid_body_sim::core::detail
 #pragma GCC visibility pop
+
+}  // namespace rigid_body_sim::core::detail

@@ -54,6 +54,11 @@ void predictRobot(const Scene& scene, std::size_t r, const ArticulationLoads& lo
 
 }  // namespace detail
 
+SceneWorkspace::SceneWorkspace() : scratch(std::make_unique<detail::SceneScratch>()) {}
+SceneWorkspace::~SceneWorkspace() = default;
+SceneWorkspace::SceneWorkspace(SceneWorkspace&&) noexcept = default;
+SceneWorkspace& SceneWorkspace::operator=(SceneWorkspace&&) noexcept = default;
+
 namespace {
 
 void checkSizes(const Scene& scene, const SceneState& state, const SceneLoads& loads) {
@@ -117,13 +122,13 @@ void stepScene(const Scene& scene, SceneState& state, const SceneLoads& loads, S
                     bw.contacts.end());
   detail::wakeHitRobots(scene, loads, h, woken, state, ws);                 // §11.9 a sleeping robot hit wakes
   detail::takeRobotContacts(scene, state.bodies, ws);                       // §11.9 the robots' islands apart
-  ws.last_impulses = state.bodies.contact_impulses;                         // the free solve rewrites them
+  ws.scratch->last_impulses = state.bodies.contact_impulses;                         // the free solve rewrites them
   for (std::size_t i = scene.freeBodyCount(); i < model.bodyCount(); ++i) {
     state.bodies.bodies[i].asleep = true;                                   // the free stages leave links alone
   }
   integrateVelocities(model, state.bodies, loads.bodies, h, bw);            // §5.2–4 integration.cpp
   const bool impulse = solveContactImpulses(model, state.bodies, h, bw);    // §5.5  contact_solver.cpp: the other islands
-  detail::RobotSolve solve;
+  detail::RobotSolve& solve = ws.scratch->solve;
   detail::solveRobotIslands(scene, state, h, ws, solve);                    // §11.9 the robots' islands, one solve
   integratePositions(model, state.bodies, h, bw);                           // §5.6–7 integration.cpp
   if (solve.lift) detail::liftBodies(scene, solve, h, state);               // §11.8 split impulse, the bodies
@@ -148,7 +153,7 @@ void stepScene(const Scene& scene, SceneState& state, const SceneLoads& loads, S
   for (std::size_t r = 0; r < robots.size(); ++r)
     detail::placeLinks(scene, r, state, ws);  // for readers and the next step
   // Every contact, for the caller and the next step's warm start.
-  mergeContacts(bw.contacts, ws.robot_contacts, bw.contacts);
+  mergeContacts(bw.contacts, ws.scratch->robot_contacts, bw.contacts);
   state.bodies.contact_impulses.clear();
   for (const Contact& c : bw.contacts) {
     state.bodies.contact_impulses.push_back({c.key(), c.normal_impulse, c.tangent_impulse_W});

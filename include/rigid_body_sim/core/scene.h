@@ -5,6 +5,7 @@
 // Eigen only.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -78,16 +79,28 @@ struct SceneLoads {
   std::vector<ArticulationLoads> robots;
 };
 
-/// The memory a scene's step reuses; `bodies.contacts` holds the step's
-/// contacts with their impulses (links by their body index), sorted by key.
+namespace detail {
+struct SceneScratch;
+}
+
+/// The memory a scene's step reuses, and its outputs. Results never depend
+/// on it.
 struct SceneWorkspace {
+  SceneWorkspace();
+  ~SceneWorkspace();
+  SceneWorkspace(SceneWorkspace&&) noexcept;
+  SceneWorkspace& operator=(SceneWorkspace&&) noexcept;
+
+  /// The free bodies' knobs (threads) and the step's outputs: `contacts`
+  /// (every contact, links by their body index, sorted by key, with their
+  /// impulses), the deepest penetration, the bodies the speed limits held
+  /// or the guard put back.
   Workspace bodies;
-  std::vector<ArticulationWorkspace> robots;
-  std::vector<Contact> robot_contacts;        ///< the contacts a robot's solve takes, during a step
-  std::vector<ContactImpulse> last_impulses;  ///< the last step's, for the robots' warm start, during a step
-  std::vector<int> island_root;               ///< per body: its island's smallest body, during a step
+  std::vector<ArticulationWorkspace> robots;  ///< per robot; `speed_limited` its output
   /// Per robot: whether the guard put it back in the last step (§11.7).
   std::vector<char> robot_diverged;
+  /// The stages' scratch memory; not for callers.
+  std::unique_ptr<detail::SceneScratch> scratch;
 };
 
 /// Advances the scene by one step of the model's dt (§11.9): the robots'
