@@ -32,6 +32,7 @@ RBS_APT_PACKAGES=(
   rosbash python3-rospy python3-rostopic python3-rosservice python3-rosnode
   python3-nav-msgs python3-geometry-msgs python3-std-srvs python3-tf2-msgs python3-rosgraph-msgs python3-sensor-msgs
   python3-visualization-msgs  # rostopic echo of the marker topics
+  ros-robot-state-publisher  # a robot's links on tf, from the node's joint_states (the launch files start it)
 )
 
 # What scripts/fuzz.sh and scripts/sanitize.sh add: clang 14 and its

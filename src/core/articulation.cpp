@@ -72,6 +72,11 @@ void checkArticulation(const ArticulationModel& model) {
   }
 }
 
+LinkState baseLinkState(const ArticulationState& s) {
+  const Mat3 R = s.X_WB.rotation.toRotationMatrix();
+  return {s.X_WB.translation, s.X_WB.rotation, R * s.V_B.tail<3>(), R * s.V_B.head<3>()};
+}
+
 ArticulationState restState(const ArticulationModel& model, const Pose& X_WB) {
   ArticulationState state;
   state.X_WB = X_WB;

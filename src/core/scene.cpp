@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "joint_rows.h"
@@ -56,6 +57,32 @@ Scene::Scene(const ModelSpec& spec, std::vector<RobotSpec> robots)
     const SceneRobot& robot = robots_[r];
     std::fill_n(robot_of_.begin() + robot.first_body, robot.link.size(), static_cast<int>(r));
   }
+}
+
+Scene::Scene(Model model) : model_(std::move(model)), free_bodies_(model_.bodyCount()) {
+  robot_of_.assign(model_.bodyCount(), -1);
+}
+
+void Scene::addBody(const PreparedBody& body) {
+  if (!robots_.empty()) {
+    throw std::invalid_argument("body '" + body.body().name +
+                                "': a world with robots takes its bodies at start (spawning beside robots is not "
+                                "supported yet)");
+  }
+  model_.addBody(body);
+  ++free_bodies_;
+  robot_of_.push_back(-1);
+}
+
+void Scene::removeBody(std::size_t i) {
+  if (i >= free_bodies_) {
+    throw std::invalid_argument("body " + std::to_string(i) + ": no free body (" + std::to_string(free_bodies_) +
+                                " in the scene)");
+  }
+  model_.removeBody(i);
+  --free_bodies_;
+  robot_of_.erase(robot_of_.begin() + static_cast<std::ptrdiff_t>(i));
+  for (SceneRobot& robot : robots_) --robot.first_body;
 }
 
 SceneState sceneState(const Scene& scene, const State& bodies, const std::vector<ArticulationState>& robots) {

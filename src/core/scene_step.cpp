@@ -65,7 +65,13 @@ void checkSizes(const Scene& scene, const SceneState& state, const SceneLoads& l
   const auto fail = [](const std::string& what) { throw std::invalid_argument("stepScene: " + what); };
   if (state.robots.size() != scene.robots().size()) fail("the state has another number of robots than the scene");
   if (state.bodies.bodies.size() != scene.model().bodyCount()) fail("the state has another number of bodies");
-  if (!loads.bodies.empty() && loads.bodies.size() != scene.freeBodyCount()) fail("one load per free body, or none");
+  const std::size_t n = loads.bodies.size();
+  if (n != 0 && n != scene.freeBodyCount() && n != scene.model().bodyCount()) {
+    fail("one load per free body, or per body, or none");
+  }
+  for (std::size_t i = scene.freeBodyCount(); i < n; ++i) {
+    if (!loads.bodies[i].isZero()) fail("a load on link '" + scene.model().body(i).name + "' (a robot's are its own)");
+  }
   if (!loads.robots.empty() && loads.robots.size() != scene.robots().size()) fail("one load per robot, or none");
   for (std::size_t r = 0; r < loads.robots.size(); ++r) detail::checkLoads(scene.robots()[r].model, loads.robots[r]);
 }

@@ -1,23 +1,60 @@
 #include "rigid_body_sim/core/simulation.h"
 
+#include <stdexcept>
+#include <string>
 #include <utility>
+
+#include "rigid_body_sim/core/step.h"
 
 namespace rigid_body_sim::core {
 
 Simulation::Simulation(Model model_in, State state_in)
-    : model(std::move(model_in)), state(std::move(state_in)), initial(state) {}
+    : scene(std::move(model_in)), state(std::move(state_in)), initial(state) {}
+
+Simulation::Simulation(Scene scene_in, SceneState state_in)
+    : scene(std::move(scene_in)),
+      state(std::move(state_in.bodies)),
+      initial(state),
+      robots(std::move(state_in.robots)),
+      initial_robots(robots) {}
+
+void Simulation::step(const Loads& loads, const std::vector<ArticulationLoads>& robot_loads) {
+  if (scene.robots().empty()) {
+    if (!robot_loads.empty()) throw std::invalid_argument("Simulation::step: robot loads, and no robot");
+    core::step(scene.model(), state, loads, &workspace);
+    return;
+  }
+  // stepScene works on a SceneState and a SceneWorkspace: ours are moved
+  // in for the step and back after it, also when it throws.
+  SceneState now{std::move(state), std::move(robots)};
+  std::swap(scene_workspace.bodies, workspace);
+  struct Back {
+    Simulation& sim;
+    SceneState& now;
+    ~Back() {
+      sim.state = std::move(now.bodies);
+      sim.robots = std::move(now.robots);
+      std::swap(sim.scene_workspace.bodies, sim.workspace);
+    }
+  } back{*this, now};
+  stepScene(scene, now, SceneLoads{loads, robot_loads}, scene_workspace);
+}
 
 void Simulation::addBody(const PreparedBody& body, const BodyState& start) {
-  model.addBody(body);  // in place, unchanged if it throws
+  scene.addBody(body);  // in place, unchanged if it throws
   state.bodies.push_back(start);
   initial.bodies.push_back(start);
   workspace = workspace.forEditedModel();  // its caches assumed the old model
 }
 
 std::size_t Simulation::removeBody(int i) {
-  core::removeBody(model, state, i);    // wakes what may touch it
-  core::removeBody(model, initial, i);  // reads the model with body i still in it
-  model.removeBody(static_cast<std::size_t>(i));
+  if (i < 0 || static_cast<std::size_t>(i) >= scene.freeBodyCount()) {
+    throw std::invalid_argument("body " + std::to_string(i) + ": no free body (" +
+                                std::to_string(scene.freeBodyCount()) + " in the world)");
+  }
+  core::removeBody(scene.model(), state, i);    // wakes what may touch it
+  core::removeBody(scene.model(), initial, i);  // reads the model with body i still in it
+  scene.removeBody(static_cast<std::size_t>(i));
   contacts.removeBody(i);
   workspace = workspace.forEditedModel();
   return schedule.removeBody(i);
@@ -31,14 +68,19 @@ void Simulation::place(int i, const BodyState& now) {
 }
 
 void Simulation::retune(const Tuning& tuning) {
-  model = model.retuned(tuning);
+  scene.retune(tuning);
   workspace = workspace.forEditedModel();  // the fixed-point cache assumed the old settings
   wakeAll(state);
+  for (ArticulationState& robot : robots) {
+    robot.asleep = false;
+    robot.still_time = 0.0;
+  }
 }
 
 void Simulation::reset(double time) {
   state = initial;
   state.time = time;
+  robots = initial_robots;
   schedule.clear(-1);
 }
 

@@ -19,28 +19,48 @@ namespace {
 /// What one URDF file describes.
 using Described = std::variant<core::BodySpec, core::ArticulationModel>;
 
-/// Each file of the bodies list read and parsed once (a world of 10,000
+/// A body, or a robot when the URDF has a moving joint.
+Described describe(const UrdfText& text) {
+  if (describesRobot(text.xml, text.source)) return loadArticulationString(text.xml, text.source, text.base_dir);
+  return loadUrdfString(text.xml, text.source, text.base_dir);
+}
+
+/// Each URDF of the bodies list read and parsed once (a world of 10,000
 /// boxes names one URDF 10,000 times).
 class Files {
  public:
-  explicit Files(const SimConfig& config) : base_dir_(config.base_dir) {}
-  const Described& get(const std::string& urdf) {
-    auto it = files_.find(urdf);
+  Files(const SimConfig& config, const UrdfReader& read) : base_dir_(config.base_dir), read_(read) {}
+  const Described& get(const BodyEntry& entry) {
+    auto it = files_.find(entry.urdf);
     if (it != files_.end()) return it->second;
-    const std::string path = resolveMeshUri(urdf, base_dir_);
-    const std::string xml = readInput<UrdfError>(path, InputCaps::kUrdfBytes, "URDF");
-    const std::string dir = std::filesystem::path(path).parent_path().string();
-    Described described = describesRobot(xml, path) ? Described(loadArticulationString(xml, path, dir))
-                                                    : Described(loadUrdfString(xml, path, dir));
-    return files_.emplace(urdf, std::move(described)).first->second;
+    return files_.emplace(entry.urdf, describe(read_ ? read_(entry) : readUrdfFile(entry.urdf, base_dir_)))
+        .first->second;
   }
 
  private:
   std::string base_dir_;
+  const UrdfReader& read_;
   std::map<std::string, Described> files_;
 };
 
+/// Refuses a robot's sensor and driver keys (`key`.imu, ...), not read yet.
+void refuseBodyDevices(const std::string& key, const std::string& robot, bool imu, bool odom_noise, bool cmd_vel) {
+  for (const auto& [what, set] :
+       {std::pair<const char*, bool>{"imu", imu}, {"odom_noise", odom_noise}, {"cmd_vel", cmd_vel}}) {
+    if (set) {
+      throw ConfigError("config key '" + key + what + "': robot '" + robot +
+                        "' does not read it yet (a body's sensor and driver, not a robot's)");
+    }
+  }
+}
+
 }  // namespace
+
+UrdfText readUrdfFile(const std::string& urdf, const std::string& base_dir) {
+  const std::string path = resolveMeshUri(urdf, base_dir);
+  return {readInput<UrdfError>(path, InputCaps::kUrdfBytes, "URDF"), path,
+          std::filesystem::path(path).parent_path().string()};
+}
 
 bool listsRobots(const SimConfig& config) {
   std::map<std::string, bool> seen;
@@ -56,8 +76,8 @@ bool listsRobots(const SimConfig& config) {
   return false;
 }
 
-SceneSetup buildScene(const SimConfig& config) {
-  Files files(config);
+SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
+  Files files(config, read);
   core::ModelSpec spec = config.model;
   spec.bodies.clear();
   std::vector<core::Scene::RobotSpec> robots;
@@ -67,7 +87,7 @@ SceneSetup buildScene(const SimConfig& config) {
   for (std::size_t i = 0; i < config.bodies.size(); ++i) {
     const BodyEntry& e = config.bodies[i];
     const std::string key = "bodies[" + std::to_string(i) + "]";
-    const Described& described = files.get(e.urdf);
+    const Described& described = files.get(e);
     if (const auto* body = std::get_if<core::BodySpec>(&described)) {
       if (!e.initial_joints.empty()) {
         throw ConfigError("config key '" + key + ".initial.joint_positions' / '.joint_velocities': body '" + e.name +
@@ -86,14 +106,7 @@ SceneSetup buildScene(const SimConfig& config) {
     core::ArticulationModel model = std::get<core::ArticulationModel>(described);
     model.name = e.name;
     checkRobotSettings(config, e.name);
-    for (const auto& [what, set] : {std::pair<const char*, bool>{"imu", e.imu.has_value()},
-                                    {"odom_noise", e.odom_noise.has_value()},
-                                    {"cmd_vel", e.cmd_vel.has_value()}}) {
-      if (set) {
-        throw ConfigError("config key '" + key + "." + what + "': robot '" + e.name +
-                          "' does not read it yet (a body's sensor and driver, not a robot's)");
-      }
-    }
+    refuseBodyDevices(key + ".", e.name, e.imu.has_value(), e.odom_noise.has_value(), e.cmd_vel.has_value());
     robot_starts.push_back(robotStart(model, e.initial, e.initial_joints, config.model.limits, key + ".initial"));
     entry.push_back(-1 - static_cast<int>(robots.size()));
     robots.push_back({e.name, std::move(model), e.friction, e.restitution});
@@ -106,6 +119,33 @@ SceneSetup buildScene(const SimConfig& config) {
   }
   core::SceneState state = core::sceneState(scene, free, robot_starts);
   return {std::move(scene), std::move(state), std::move(entry)};
+}
+
+}  // namespace rigid_body_sim::io
+
+namespace rigid_body_sim::io {
+
+SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& single, const UrdfReader& read) {
+  if (config.bodies_listed) return buildScene(config, read);
+  if (!single) throw ConfigError("bodies: the config lists no bodies, and no single body was given");
+  Described described = describe(single());
+  if (auto* body = std::get_if<core::BodySpec>(&described)) {
+    World world = loadWorld(config, [&] { return std::move(*body); });
+    core::Scene scene(std::move(world.model));
+    core::SceneState state{std::move(world.state), {}};
+    return {std::move(scene), std::move(state), {0}};
+  }
+  core::ArticulationModel model = std::move(std::get<core::ArticulationModel>(described));
+  checkRobotSettings(config, model.name);
+  refuseBodyDevices("", model.name, config.imu.has_value(), config.odom_noise.has_value(), config.cmd_vel.has_value());
+  core::ArticulationState start =
+      robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
+  core::ModelSpec spec = config.model;
+  spec.bodies.clear();
+  const std::string name = model.name;
+  core::Scene scene(spec, {{name, std::move(model)}});
+  core::SceneState state = core::sceneState(scene, {}, {start});
+  return {std::move(scene), std::move(state), {-1}};
 }
 
 }  // namespace rigid_body_sim::io

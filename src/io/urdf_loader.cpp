@@ -30,7 +30,8 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
     if (joint->type != urdf::Joint::FIXED) {
       lumper.fail("joint '" + name + "' is " + detail::jointTypeName(joint->type) +
                   ": only fixed joints are supported in a body; a URDF with moving joints is a robot, which rbsim "
-                  "runs (rbsim --urdf ROBOT.urdf, or among a config's bodies) and the node does not take yet");
+                  "and the node run (rbsim --urdf ROBOT.urdf, the node's robot_description, or among a config's "
+                  "bodies) and ~spawn_body does not take yet");
     }
   }
 

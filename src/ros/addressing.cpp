@@ -3,7 +3,7 @@
 namespace rigid_body_sim::node {
 
 std::optional<int> Addressing::body(const std::string& name, std::string& error) const {
-  const std::size_t n = sim_.model.bodyCount();
+  const std::size_t n = sim_.freeBodyCount();
   if (n == 0) {
     error = "the world has no bodies (~spawn_body adds one)";
     return std::nullopt;
@@ -18,7 +18,7 @@ std::optional<int> Addressing::body(const std::string& name, std::string& error)
 
 std::optional<Axes> Addressing::axes(const std::string& frame, int body, std::string& error) const {
   if (isWorld(frame)) return Axes{};
-  if (frame == ports_[body].frame || frame == sim_.model.body(body).link) return Axes{core::Frame::kBody, -1};
+  if (frame == ports_[body].frame || frame == sim_.model().body(body).link) return Axes{core::Frame::kBody, -1};
   if (const auto other = ports_.directory().byFrame(frame)) return Axes{core::Frame::kWorld, *other};
   error = "unknown frame '" + frame + "' (use '" + world_frame_ + "', the body's frame '" + ports_[body].frame + "'" +
           (ports_.size() > 1 ? " or another body's tf frame" : "") + ")";
@@ -37,7 +37,7 @@ std::optional<Target> Addressing::target(const std::string& body_name, const std
 std::optional<core::Pose> Addressing::pose(const std::string& frame, std::string& error) const {
   if (isWorld(frame)) return core::Pose{};
   if (const auto body = ports_.directory().byFrame(frame)) {
-    const core::LinkState link = core::linkState(sim_.model.body(*body), sim_.state.bodies[*body]);
+    const core::LinkState link = core::linkState(sim_.model().body(*body), sim_.state.bodies[*body]);
     return core::Pose{link.q_WL, link.p_WL};
   }
   error = "frame: unknown frame '" + frame + "' (use '" + world_frame_ + "'" +
@@ -48,7 +48,7 @@ std::optional<core::Pose> Addressing::pose(const std::string& frame, std::string
 core::Quat Addressing::orientationOf(const Axes& axes, int body) const {
   const int owner = axes.other >= 0 ? axes.other : axes.frame == core::Frame::kBody ? body : -1;
   if (owner < 0) return core::Quat::Identity();
-  return core::linkState(sim_.model.body(owner), sim_.state.bodies[owner]).q_WL;
+  return core::linkState(sim_.model().body(owner), sim_.state.bodies[owner]).q_WL;
 }
 
 const std::string& Addressing::frameOf(const Axes& axes, int body) const {

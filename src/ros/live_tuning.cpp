@@ -24,9 +24,9 @@ PhysicsConfig physicsNow(const core::Model& model, const NodeSettings& settings,
 
 TuningResult applyTuning(PhysicsConfig& config, core::Simulation& sim, NodeSettings& settings, bool paused) {
   TuningResult result;
-  const PhysicsConfig now = physicsNow(sim.model, settings, paused);
+  const PhysicsConfig now = physicsNow(sim.model(), settings, paused);
   // The model's settings: all or none (gravity's magnitude is one check).
-  const core::Tuning was = sim.model.tuning();
+  const core::Tuning was = sim.model().tuning();
   core::Tuning t = was;
   t.gravity_W = core::Vec3(config.gravity_x, config.gravity_y, config.gravity_z);
   t.friction = config.contact_friction;

@@ -46,14 +46,14 @@ bool LoadRequests::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response&
   }
   const double end = duration > 0.0 ? start + duration : core::WrenchSchedule::kForever;
   if (!sim_.schedule.add(body, {force, torque, point, axes.frame}, start, end, axes.other)) {
-    res.message = "body '" + sim_.model.body(body).name + "' already holds " +
+    res.message = "body '" + sim_.model().body(body).name + "' already holds " +
                   std::to_string(core::WrenchSchedule::kMaxPerBody) +
                   " wrenches, acting or yet to start (the most per body): wait for some to end, or clear_wrenches";
     return true;
   }
   res.success = true;
   std::ostringstream os;
-  os << "wrench on '" << sim_.model.body(body).name << "' " << when << " "
+  os << "wrench on '" << sim_.model().body(body).name << "' " << when << " "
      << (duration > 0.0 ? "for " + std::to_string(duration) + " s" : std::string("until cleared"));
   res.message = os.str();
   return true;
@@ -72,10 +72,10 @@ bool LoadRequests::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Respon
   core::BodyState after = sim_.state.bodies[body];
   core::Impulse impulse{linear, angular, point, axes.frame};
   if (axes.other >= 0) impulse = core::inWorldAxes(impulse, address_.orientationOf(axes, body));
-  core::applyImpulse(sim_.model.body(body), after, impulse);
-  const std::string speed = checkSpeed(after.v_WB, sim_.model.limits().max_linear_speed, "resulting velocity",
+  core::applyImpulse(sim_.model().body(body), after, impulse);
+  const std::string speed = checkSpeed(after.v_WB, sim_.model().limits().max_linear_speed, "resulting velocity",
                                        "limits.max_linear_speed", "m/s");
-  const std::string spin = checkSpeed(after.w_B, sim_.model.limits().max_angular_speed, "resulting angular velocity",
+  const std::string spin = checkSpeed(after.w_B, sim_.model().limits().max_angular_speed, "resulting angular velocity",
                                       "limits.max_angular_speed", "rad/s");
   if (!speed.empty() || !spin.empty()) {
     res.message = speed.empty() ? spin : speed;
@@ -83,7 +83,7 @@ bool LoadRequests::applyImpulse(ApplyImpulse::Request& req, ApplyImpulse::Respon
   }
   sim_.state.bodies[body] = after;
   res.success = true;
-  res.message = "impulse applied to '" + sim_.model.body(body).name + "'";
+  res.message = "impulse applied to '" + sim_.model().body(body).name + "'";
   return true;
 }
 
@@ -113,7 +113,7 @@ void LoadRequests::onWrench(const std::string& name, const geometry_msgs::Wrench
   if (why.empty()) why = checkVector(force, kMaxForce, "force", "N");
   if (why.empty()) why = checkVector(torque, kMaxTorque, "torque", "N*m");
   if (!why.empty()) {
-    ROS_WARN_THROTTLE(1.0, "sim_node: wrench for '%s' ignored: %s", sim_.model.body(body).name.c_str(), why.c_str());
+    ROS_WARN_THROTTLE(1.0, "sim_node: wrench for '%s' ignored: %s", sim_.model().body(body).name.c_str(), why.c_str());
     return;
   }
   const double timeout = settings_.wrench_timeout > 0.0 ? settings_.wrench_timeout : core::WrenchSchedule::kForever;

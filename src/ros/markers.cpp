@@ -171,7 +171,7 @@ void eraseBodyMarkers(const std::string& body, MarkerArray& markers) {
 MarkerArray bodyMarkers(const core::Model& model, const std::vector<std::string>& frames,
                         const std::vector<std::size_t>& colours) {
   MarkerArray markers;
-  for (std::size_t i = 0; i < model.bodyCount(); ++i) appendBodyMarkers(model.body(i), frames[i], colours[i], markers);
+  for (std::size_t i = 0; i < frames.size(); ++i) appendBodyMarkers(model.body(i), frames[i], colours[i], markers);
   return markers;
 }
 

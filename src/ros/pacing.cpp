@@ -26,7 +26,7 @@ void SimNode::stepOnce() {
     loads_[i].force_W += drive.force_W;
     loads_[i].torque_W += drive.torque_W;
   }
-  core::step(model_, state_, loads_, &workspace_);
+  sim_.step(loads_);
   if (!workspace_.speed_limited.empty() || !workspace_.diverged.empty()) reportStep();
   ++steps_;
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
@@ -43,6 +43,7 @@ void SimNode::stepOnce() {
 
 void SimNode::publish() {
   if (publisher_->state(sim_, ports_, stamp(), simTime())) markers_->afterTf();
+  robot_publisher_->publish(sim_, stamp());
 }
 
 void SimNode::reportStep() {
@@ -111,7 +112,7 @@ bool SimNode::step(Step::Request& req, Step::Response& res) {
   res.success = true;
   res.message = "stepped " + std::to_string(req.steps) + " steps";
   res.time = stamp();
-  for (std::size_t i = 0; i < model_.bodyCount(); ++i)
+  for (std::size_t i = 0; i < ports_.size(); ++i)
     res.states.push_back(state_requests_.bodyState(static_cast<int>(i), Axes{}));
   return true;
 }

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "rigid_body_sim/io/mesh_loader.h"
+#include "rigid_body_sim/io/scene_loader.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/io/world.h"
 #include "rigid_body_sim/ros/markers.h"
@@ -15,11 +16,11 @@
 namespace rigid_body_sim::node {
 namespace {
 
-/// The bodies: robot_description for one body, or the config's `bodies`,
-/// each urdf naming a parameter that holds a URDF or else a file
+/// The bodies and robots: robot_description for one, or the config's
+/// `bodies`, each urdf naming a parameter that holds a URDF or else a file
 /// (package://, absolute, or relative to ~config_file's folder); the world
-/// itself is set up as rbsim sets it up (io::loadWorld).
-io::World loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
+/// itself is set up as rbsim sets it up (io::loadScene).
+io::SceneSetup loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
   const auto robot_description = [&] {
     std::string xml;
     if (!nh.getParam("robot_description", xml)) {
@@ -27,13 +28,13 @@ io::World loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
                                "' is not set: load the body's URDF there (launch/sim.launch does), or list "
                                "bodies in ~bodies");
     }
-    return io::loadUrdfString(xml, nh.resolveName("robot_description"));
+    return io::UrdfText{xml, nh.resolveName("robot_description"), ""};
   };
   ROS_INFO("sim_node: loading the world (a big mesh takes seconds; Ctrl-C stops it)");
-  return io::loadWorld(params.sim, robot_description, [&](const io::BodyEntry& entry) {
+  return io::loadScene(params.sim, robot_description, [&](const io::BodyEntry& entry) {
     std::string xml;
     try {
-      if (nh.getParam(entry.urdf, xml)) return io::loadUrdfString(xml, nh.resolveName(entry.urdf));
+      if (nh.getParam(entry.urdf, xml)) return io::UrdfText{xml, nh.resolveName(entry.urdf), ""};
     } catch (const ros::InvalidNameException&) {
       // Not a parameter name (package://..., a path with dots): a file.
     }
@@ -45,11 +46,11 @@ io::World loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
                             "') is no absolute path to the config, so its folder is unknown: launch with "
                             "config:=$PWD/FILE.yaml, or give the urdf as package:// or an absolute path");
     }
-    return io::loadUrdfFile(io::resolveMeshUri(entry.urdf, params.sim.base_dir));
+    return io::readUrdfFile(entry.urdf, params.sim.base_dir);
   });
 }
 
-core::Simulation startOf(io::World world) { return {std::move(world.model), std::move(world.state)}; }
+core::Simulation startOf(io::SceneSetup world) { return {std::move(world.scene), std::move(world.state)}; }
 
 /// The world frame must be none of a body's frames: tf would get base_link
 /// → base_link, a loop every listener refuses.
@@ -90,15 +91,16 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
       },
       [this](const std::string& body, const geometry_msgs::Twist::ConstPtr& m) { load_requests_.onCmdVel(body, m); }};
   // One body keeps the single-body names; several get theirs under their name.
-  const bool several = model_.bodyCount() > 1;
-  const bool all_topics = static_cast<double>(model_.bodyCount()) <= settings_.per_body_topics;
+  const std::size_t bodies = sim_.freeBodyCount();
+  const bool several = bodies + sim_.scene.robots().size() > 1;
+  const bool all_topics = static_cast<double>(bodies) <= settings_.per_body_topics;
   if (!all_topics) {
     ROS_INFO(
         "sim_node: %zu bodies, more than ~per_body_topics %g: odometry and wrench topics only for bodies with "
         "a device (imu, odom_noise, cmd_vel); ~body_states, /tf and the services carry every body",
-        model_.bodyCount(), settings_.per_body_topics);
+        bodies, settings_.per_body_topics);
   }
-  for (std::size_t i = 0; i < model_.bodyCount(); ++i) {
+  for (std::size_t i = 0; i < bodies; ++i) {
     const core::BodyModel& body = model_.body(i);
     requireOwnWorldFrame(settings_.world_frame, several ? body.name + "/" : "", body);
     const io::SimConfig& c = params_.sim;
@@ -112,6 +114,11 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
              body.mass, body.contact_points.size());
     if (const std::string warning = io::touchesNothing(body); !warning.empty())
       ROS_WARN("sim_node: %s", warning.c_str());
+  }
+  checkRobotFrames(sim_.scene, settings_.world_frame, ports_.frames());
+  for (const core::SceneRobot& robot : sim_.scene.robots()) {
+    ROS_INFO("sim_node: robot '%s', %d moving joints, %s base", robot.name.c_str(), robot.model.jointCount(),
+             robot.model.fixed_base ? "a world-fixed" : "a floating");
   }
   if (model_.bodyCount() == 0) ROS_INFO("sim_node: an empty world (bodies: []); ~spawn_body adds bodies");
   ROS_INFO("sim_node: ~rate %g Hz, ~dt %g s, ~realtime_factor %g, ~publish_rate %g Hz (every %lld steps)",
@@ -130,6 +137,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
            listed.c_str());
 
   publisher_.emplace(nh_, pnh_, settings_, use_sim_time_);
+  robot_publisher_.emplace(nh_, sim_.scene, several, settings_.world_frame);
   services_ = {pnh_.advertiseService("apply_wrench", &LoadRequests::applyWrench, &load_requests_),
                pnh_.advertiseService("apply_impulse", &LoadRequests::applyImpulse, &load_requests_),
                pnh_.advertiseService("clear_wrenches", &LoadRequests::clearWrenches, &load_requests_),
@@ -157,7 +165,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
 // N = 1000 rebuilt every body's markers and names, and opened its topics
 // (round trips to the master), and cost the loop 5-6 ms (bench/spawn_memory.sh).
 void SimNode::afterSpawn() {
-  const std::size_t last = model_.bodyCount() - 1;
+  const std::size_t last = sim_.freeBodyCount() - 1;
   markers_->added(model_.body(last), ports_[last].frame, ports_[last].colour);
   publisher_->fixedFrames(model_, ports_, stamp(), last);
 }

@@ -27,7 +27,7 @@ BodyStates bodyStatesMessage(const core::Model& model, const core::State& state,
                              const std_msgs::Header& header, bool in_world) {
   BodyStates msg;
   msg.header = header;
-  const std::size_t n = model.bodyCount();
+  const std::size_t n = ports.size();  // the free bodies
   msg.names.reserve(n);
   msg.poses.reserve(n);
   msg.twist_frames.reserve(n);
@@ -91,9 +91,9 @@ bool StatePublisher::state(const core::Simulation& sim, PortRegistry& ports, con
   std_msgs::Header header;
   header.stamp = now;
   header.frame_id = settings_.world_frame;
-  const core::Model& model = sim.model;
-  tf_batch_.resize(settings_.publish_tf ? model.bodyCount() : 0);  // its strings keep their memory
-  for (std::size_t i = 0; i < model.bodyCount(); ++i) {
+  const core::Model& model = sim.model();
+  tf_batch_.resize(settings_.publish_tf ? ports.size() : 0);  // its strings keep their memory
+  for (std::size_t i = 0; i < ports.size(); ++i) {            // the free bodies
     const core::LinkState link = core::linkState(model.body(i), sim.state.bodies[i]);
     BodyPorts& p = ports[i];
     if (settings_.publish_tf) {
@@ -130,7 +130,7 @@ void StatePublisher::bodyStates(const core::Simulation& sim, const PortRegistry&
   header.stamp = now;
   header.frame_id = settings_.world_frame;
   body_states_pub_.publish(
-      bodyStatesMessage(sim.model, sim.state, ports, header, settings_.body_states_twist_in_world));
+      bodyStatesMessage(sim.model(), sim.state, ports, header, settings_.body_states_twist_in_world));
 }
 
 void StatePublisher::fixedFrames(const core::Model& model, const PortRegistry& ports, const ros::Time& now,
@@ -140,7 +140,7 @@ void StatePublisher::fixedFrames(const core::Model& model, const PortRegistry& p
   const bool had = !fixed.empty();
   if (first == 0) fixed.clear();
   const std::size_t before = fixed.size();
-  for (std::size_t i = first; i < model.bodyCount(); ++i) appendFixedFrames(model.body(i), ports[i], now, fixed);
+  for (std::size_t i = first; i < ports.size(); ++i) appendFixedFrames(model.body(i), ports[i], now, fixed);
   // A new set whole (latched: a later subscriber gets it), or fewer frames
   // after a delete; nothing when nothing changed.
   if (fixed.size() > before || (first == 0 && had)) tf_static_pub_.publish(static_frames_);

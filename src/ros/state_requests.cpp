@@ -30,8 +30,9 @@ bool StateRequests::setState(SetState::Request& req, SetState::Response& res) {
   const Quat q = fromQuaternion(req.state.pose.orientation);
   res.message = firstProblem(
       {checkVector(p, kMaxPosition, "position", "m"),
-       checkSpeed(v, sim_.model.limits().max_linear_speed, "linear velocity", "limits.max_linear_speed", "m/s"),
-       checkSpeed(w, sim_.model.limits().max_angular_speed, "angular velocity", "limits.max_angular_speed", "rad/s")});
+       checkSpeed(v, sim_.model().limits().max_linear_speed, "linear velocity", "limits.max_linear_speed", "m/s"),
+       checkSpeed(w, sim_.model().limits().max_angular_speed, "angular velocity", "limits.max_angular_speed",
+                  "rad/s")});
   if (!res.message.empty()) return true;
   if (!q.coeffs().allFinite() || std::abs(q.norm() - 1.0) > 1e-3) {
     std::ostringstream os;
@@ -46,8 +47,8 @@ bool StateRequests::setState(SetState::Request& req, SetState::Response& res) {
   const Quat q_frame = axes.frame == core::Frame::kBody ? link.q_WL : address_.orientationOf(axes, body);
   link.v_WL = q_frame * v;
   link.w_W = q_frame * w;
-  sim_.place(body, core::bodyStateFromLink(sim_.model.body(body), link));  // no warm start carries over
-  ports_.restart(body, sim_.state.bodies[body]);                           // the jump is no acceleration
+  sim_.place(body, core::bodyStateFromLink(sim_.model().body(body), link));  // no warm start carries over
+  ports_.restart(body, sim_.state.bodies[body]);                             // the jump is no acceleration
   res.success = true;
   res.message = "state set";
   hooks_.changed();
@@ -66,7 +67,7 @@ bool StateRequests::reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Respon
 }
 
 BodyState StateRequests::bodyState(int body, const Axes& axes) const {
-  const core::BodyModel& b = sim_.model.body(body);
+  const core::BodyModel& b = sim_.model().body(body);
   const core::LinkState link = core::linkState(b, sim_.state.bodies[body]);
   BodyState msg;
   msg.body = b.name;

@@ -34,7 +34,7 @@ bool WorldEdits::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res)
   }
   res.success = true;
   res.message = "body '" + req.name + "' deleted at t = " + time_.text() + " (" + std::to_string(dropped) +
-                " timed wrenches went with it); " + std::to_string(sim_.model.bodyCount()) + " bodies left";
+                " timed wrenches went with it); " + std::to_string(sim_.freeBodyCount()) + " bodies left";
   ROS_INFO("sim_node: %s", res.message.c_str());
   return true;
 }
@@ -68,7 +68,7 @@ SpawnBody::Response WorldEdits::insert(SpawnQueue::Spawn& spawn) {
   for (const std::string& frame : new_frames) {
     if (const auto owner = ports_.directory().ownerOf(frame)) {
       res.message = "name '" + req.name + "': the new body's frame '" + frame + "' is a frame of body '" +
-                    sim_.model.body(*owner).name + "'";
+                    sim_.model().body(*owner).name + "'";
       return res;
     }
   }
@@ -86,8 +86,8 @@ SpawnBody::Response WorldEdits::insert(SpawnQueue::Spawn& spawn) {
   link.w_W = X_WF->rotation * fromVector3(req.twist.angular);
   res.message = firstProblem(
       {checkVector(link.p_WL, kMaxPosition, "pose.position (in the world)", "m"),
-       checkSpeed(link.v_WL, sim_.model.limits().max_linear_speed, "twist.linear", "limits.max_linear_speed", "m/s"),
-       checkSpeed(link.w_W, sim_.model.limits().max_angular_speed, "twist.angular", "limits.max_angular_speed",
+       checkSpeed(link.v_WL, sim_.model().limits().max_linear_speed, "twist.linear", "limits.max_linear_speed", "m/s"),
+       checkSpeed(link.w_W, sim_.model().limits().max_angular_speed, "twist.angular", "limits.max_angular_speed",
                   "rad/s")});
   if (!res.message.empty()) return res;
   // Everything that may refuse runs before the world changes (the ports,

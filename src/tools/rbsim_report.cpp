@@ -9,11 +9,6 @@
 
 namespace rigid_body_sim::tools {
 
-core::LinkState baseState(const core::ArticulationState& s) {
-  const core::Mat3 R = s.X_WB.rotation.toRotationMatrix();
-  return {s.X_WB.translation, s.X_WB.rotation, R * s.V_B.tail<3>(), R * s.V_B.head<3>()};
-}
-
 double robotEnergy(const core::ArticulationModel& model, const core::ArticulationState& s, const core::Vec3& g) {
   const core::ArticulationKinematics kin = core::kinematics(model, s);
   return core::kineticEnergy(model, kin) + core::potentialEnergy(model, kin, g);

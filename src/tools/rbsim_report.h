@@ -15,10 +15,6 @@
 
 namespace rigid_body_sim::tools {
 
-/// A robot's base link: its pose and twist in the world (the step keeps
-/// the twist in the base's axes).
-core::LinkState baseState(const core::ArticulationState& s);
-
 /// A robot's kinetic and potential energy (J) under g.
 double robotEnergy(const core::ArticulationModel& model, const core::ArticulationState& s, const core::Vec3& g);
 

@@ -38,7 +38,7 @@ int runRobot(const io::SimConfig& config, core::ArticulationModel articulation, 
 
   std::unique_ptr<CsvWriter> csv;
   if (!options.csv.empty()) csv = std::make_unique<CsvWriter>(options.csv, false, joints);
-  const auto write_row = [&](long long done) { csv->row(done * dt, baseState(state), state.q, state.v); };
+  const auto write_row = [&](long long done) { csv->row(done * dt, core::baseLinkState(state), state.q, state.v); };
   core::ArticulationWorkspace ws;
   const core::ArticulationLoads loads;
   bool limited = false;
@@ -64,7 +64,7 @@ int runRobot(const io::SimConfig& config, core::ArticulationModel articulation, 
   const double energy_end = robotEnergy(model, state, g);
   const core::Vec3 momentum_end = robotAngularMomentum(model, state);
   const bool rest = robotAtRest(model, state, settings.sleep());
-  Json final = finalJson(baseState(state));
+  Json final = finalJson(core::baseLinkState(state));
   final["joints"] = jointsJson(model, state);
   Json out = {
       {"steps", steps}, {"sim_time", num(sim_time)}, {"wall_s", num(wall_s)}, {"ns_per_step", num(ns_per_step)}};
@@ -80,7 +80,7 @@ int runRobot(const io::SimConfig& config, core::ArticulationModel articulation, 
   line.finish();
 
   if (!options.quiet) {
-    const core::LinkState base = baseState(state);
+    const core::LinkState base = core::baseLinkState(state);
     std::fprintf(stderr,
                  "rbsim: robot '%s' (%.6g kg, %d joints, base %s) for %.6g s: %lld steps of %.6g s, %.3g s wall, "
                  "%.1f ns/step\n",

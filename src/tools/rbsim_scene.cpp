@@ -86,7 +86,7 @@ int runScene(const io::SimConfig& config, const RunOptions& options) {
       } else {
         const int r = -1 - e;
         const core::ArticulationState& s = state.robots[r];
-        csv->row(done * dt, robots[r].name, baseState(s), first_joint[r], s.q, s.v);
+        csv->row(done * dt, robots[r].name, core::baseLinkState(s), first_joint[r], s.q, s.v);
       }
     }
   };
@@ -146,7 +146,7 @@ int runScene(const io::SimConfig& config, const RunOptions& options) {
     } else {
       const int r = -1 - e;
       rest = robotAtRest(robots[r].model, state.robots[r], model.sleep());
-      Json final = finalJson(baseState(state.robots[r]));
+      Json final = finalJson(core::baseLinkState(state.robots[r]));
       final["joints"] = jointsJson(robots[r].model, state.robots[r]);
       entry = {{"name", robots[r].name}, {"final", final}};
       if (robot_limited[r]) limited_json.push_back(robots[r].name);

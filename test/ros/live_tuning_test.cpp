@@ -30,21 +30,21 @@ bool mentions(const std::vector<std::string>& messages, const std::string& part)
 TEST(LiveTuning, ARequestRetunesTheModelAndWakesEveryBody) {
   core::Simulation sim = restingBox();
   NodeSettings settings;
-  PhysicsConfig config = physicsNow(sim.model, settings, false);
+  PhysicsConfig config = physicsNow(sim.model(), settings, false);
   config.gravity_z = -1.62;
   config.damping_angular = 0.5;
   config.publish_rate = 50.0;
   const TuningResult r = applyTuning(config, sim, settings, false);
   EXPECT_TRUE(r.refused.empty());
   EXPECT_TRUE(r.model);
-  EXPECT_EQ(sim.model.gravity(), Vec3(0, 0, -1.62));
-  EXPECT_EQ(sim.model.tuning().damping.angular, 0.5);
+  EXPECT_EQ(sim.model().gravity(), Vec3(0, 0, -1.62));
+  EXPECT_EQ(sim.model().tuning().damping.angular, 0.5);
   EXPECT_FALSE(sim.state.bodies[0].asleep);
   EXPECT_TRUE(r.publish_rate);
   EXPECT_EQ(settings.publish_rate, 50.0);
   EXPECT_FALSE(r.realtime_factor);  // unchanged: the pacing goes on
   // What ~physics shows now is what holds.
-  const PhysicsConfig shown = physicsNow(sim.model, settings, true);
+  const PhysicsConfig shown = physicsNow(sim.model(), settings, true);
   EXPECT_EQ(shown.gravity_z, -1.62);
   EXPECT_TRUE(shown.paused);
 }
@@ -52,14 +52,14 @@ TEST(LiveTuning, ARequestRetunesTheModelAndWakesEveryBody) {
 TEST(LiveTuning, TheModelsSettingsGoAllOrNoneAndARefusedOneIsPutBack) {
   core::Simulation sim = restingBox();
   NodeSettings settings;
-  PhysicsConfig config = physicsNow(sim.model, settings, false);
+  PhysicsConfig config = physicsNow(sim.model(), settings, false);
   config.gravity_z = -5.0;
   config.damping_linear = 1e7;  // above the decay rates' bound, 1e6 1/s
   const TuningResult r = applyTuning(config, sim, settings, false);
   EXPECT_FALSE(r.model);
   ASSERT_EQ(r.refused.size(), 1u);
   EXPECT_TRUE(mentions(r.refused, "damping.linear")) << r.refused[0];
-  EXPECT_EQ(sim.model.gravity(), Vec3(0, 0, -9.81));  // none: gravity too stays
+  EXPECT_EQ(sim.model().gravity(), Vec3(0, 0, -9.81));  // none: gravity too stays
   EXPECT_EQ(config.gravity_z, -9.81);
   EXPECT_EQ(config.damping_linear, 0.0);
   EXPECT_TRUE(sim.state.bodies[0].asleep);  // nothing changed, nothing woke
@@ -68,7 +68,7 @@ TEST(LiveTuning, TheModelsSettingsGoAllOrNoneAndARefusedOneIsPutBack) {
 TEST(LiveTuning, TheNodesSettingsAreCheckedEachOnItsOwn) {
   core::Simulation sim = restingBox();
   NodeSettings settings;
-  PhysicsConfig config = physicsNow(sim.model, settings, false);
+  PhysicsConfig config = physicsNow(sim.model(), settings, false);
   config.realtime_factor = 5000.0;  // above ~realtime_factor's 1000
   config.publish_rate = 20.0;
   const TuningResult r = applyTuning(config, sim, settings, false);

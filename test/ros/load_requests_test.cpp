@@ -64,9 +64,9 @@ TEST(LoadRequests, AWrenchIsCheckedThenScheduledOnTheNodesClock) {
   EXPECT_TRUE(res.success) << res.message;
   EXPECT_EQ(res.message, "wrench on 'a' from t = 1000.250000000 s for 0.500000 s");
   core::Loads loads;
-  w.sim.schedule.loadsFor(w.sim.model, w.sim.state, 0.0, 0.25, loads);
+  w.sim.schedule.loadsFor(w.sim.model(), w.sim.state, 0.0, 0.25, loads);
   EXPECT_TRUE(loads.empty() || loads[0].force_W.isZero());  // not yet
-  w.sim.schedule.loadsFor(w.sim.model, w.sim.state, 0.25, 0.25, loads);
+  w.sim.schedule.loadsFor(w.sim.model(), w.sim.state, 0.25, 0.25, loads);
   ASSERT_EQ(loads.size(), 2u);
   EXPECT_EQ(loads[0].force_W, Vec3(2, 0, 0));
 }

@@ -26,11 +26,11 @@ struct PartsWorld {
       core::LinkState link;
       link.p_WL = Vec3(static_cast<double>(i), 0, 0);
       link.q_WL = Quat(Eigen::AngleAxisd(static_cast<double>(i) * kPi / 2, Vec3::UnitZ()));
-      sim.state.bodies.push_back(core::bodyStateFromLink(sim.model.body(i), link));
+      sim.state.bodies.push_back(core::bodyStateFromLink(sim.model().body(i), link));
       BodyPorts p;
       p.prefix = names.size() > 1 ? names[i] + "/" : "";
       p.frame = p.prefix + "base";
-      ports.add(std::move(p), sim.model.body(i), sim.state.bodies[i], 0.0);
+      ports.add(std::move(p), sim.model().body(i), sim.state.bodies[i], 0.0);
     }
     sim.initial = sim.state;
   }

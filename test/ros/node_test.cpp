@@ -426,12 +426,11 @@ TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
        head + "<inertial><mass value='1'/><inertia ixx='1' iyy='1' izz='3' ixy='0' ixz='0' iyz='0'/></inertial>" +
            kCollision + "</link></robot>",
        "triangle inequality"},
-      {"movable",
+      {"robot_massless_link",  // a robot (a moving joint) is read as one, and refused naming its link
        head + "<inertial><mass value='1'/>" + kInertia + "</inertial>" + kCollision +
-           "</link><link name='wheel'><inertial><mass value='1'/>" + kInertia +
-           "</inertial></link><joint name='axle' type='continuous'><parent link='base'/>"
+           "</link><link name='wheel'/><joint name='axle' type='continuous'><parent link='base'/>"
            "<child link='wheel'/><axis xyz='0 0 1'/></joint></robot>",
-       "joint 'axle' is continuous"},
+       "link 'wheel' has no <inertial>"},
       {"mass_with_unit",
        head + "<inertial><mass value='1kg'/>" + kInertia + "</inertial>" + kCollision + "</link></robot>",
        "link 'base' <inertial><mass value=\"1kg\">: not a number"},

@@ -77,7 +77,7 @@ TEST(StateRequests, SetStateRefusesWhatIsNoStateAndSetsTheRest) {
   req.state.twist_frame = "a/base";
   w.requests.setState(req, res);
   ASSERT_TRUE(res.success) << res.message;
-  const core::LinkState link = core::linkState(w.sim.model.body(0), w.sim.state.bodies[0]);
+  const core::LinkState link = core::linkState(w.sim.model().body(0), w.sim.state.bodies[0]);
   EXPECT_TRUE(link.p_WL.isApprox(Vec3(0, 0, 2)));
   EXPECT_TRUE(link.v_WL.isApprox(Vec3(0, 1, 0), 1e-15));  // its x is the world's y
   EXPECT_TRUE(w.sim.state.contact_impulses.empty());      // no warm start carries over to a new pose

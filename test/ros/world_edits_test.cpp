@@ -44,7 +44,7 @@ struct Edits : test::PartsWorld {
     s.request.frame = frame;
     s.request.pose.position.z = z;
     s.request.pose.orientation.w = 1.0;
-    s.body = sim.model.bodyBuilder().build(spec);
+    s.body = sim.model().bodyBuilder().build(spec);
     s.ports = std::make_unique<BodyPorts>();
     s.ports->prefix = name + "/";
     s.ports->frame = name + "/base";
@@ -63,7 +63,7 @@ TEST(WorldEdits, ASpawnThatDoesNotFitChangesNothing) {
   EXPECT_EQ(res.message.rfind("twist.linear is above the speed limit", 0), 0u) << res.message;
   SpawnQueue::Spawn nowhere = w.spawn("c", 1.0, "odom");
   EXPECT_FALSE(w.edits.insert(nowhere).success);
-  EXPECT_EQ(w.sim.model.bodyCount(), 2u);
+  EXPECT_EQ(w.sim.model().bodyCount(), 2u);
   EXPECT_EQ(w.sim.state.bodies.size(), 2u);
   EXPECT_EQ(w.ports.size(), 2u);
   EXPECT_TRUE(w.told.empty());
@@ -75,10 +75,10 @@ TEST(WorldEdits, ASpawnJoinsEveryTableInTheFrameItNames) {
   const SpawnBody::Response res = w.edits.insert(c);
   ASSERT_TRUE(res.success) << res.message;
   EXPECT_EQ(res.message, "body 'c' added at t = 0.000000000 s: frame 'c/base', topics 'c/odom' and 'c/wrench'");
-  ASSERT_EQ(w.sim.model.bodyCount(), 3u);
+  ASSERT_EQ(w.sim.model().bodyCount(), 3u);
   EXPECT_EQ(w.sim.initial.bodies.size(), 3u);  // reset puts it back where it was spawned
   EXPECT_EQ(w.ports.directory().byName("c"), 2);
-  const core::LinkState link = core::linkState(w.sim.model.body(2), w.sim.state.bodies[2]);
+  const core::LinkState link = core::linkState(w.sim.model().body(2), w.sim.state.bodies[2]);
   EXPECT_TRUE(link.p_WL.isApprox(Vec3(1, 0, 2)));
   EXPECT_TRUE((link.q_WL * Vec3::UnitX()).isApprox(Vec3::UnitY(), 1e-15));
   EXPECT_EQ(w.told, std::vector<std::string>{"added"});
@@ -99,8 +99,8 @@ TEST(WorldEdits, ADeleteTakesTheBodyOutOfEveryTable) {
   w.edits.deleteBody(req, res);
   ASSERT_TRUE(res.success) << res.message;
   EXPECT_EQ(res.message, "body 'a' deleted at t = 0.000000000 s (0 timed wrenches went with it); 2 bodies left");
-  ASSERT_EQ(w.sim.model.bodyCount(), 2u);
-  EXPECT_EQ(w.sim.model.body(1).name, "c");
+  ASSERT_EQ(w.sim.model().bodyCount(), 2u);
+  EXPECT_EQ(w.sim.model().body(1).name, "c");
   EXPECT_EQ(w.ports[1].frame, "c/base");
   EXPECT_EQ(w.ports.directory().byName("c"), 1);
   EXPECT_FALSE(w.ports.directory().byName("a"));

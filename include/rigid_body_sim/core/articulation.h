@@ -14,6 +14,7 @@
 #include "rigid_body_sim/core/inertia.h"
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/spatial.h"
+#include "rigid_body_sim/core/state.h"
 
 namespace rigid_body_sim::core {
 
@@ -104,6 +105,10 @@ struct ArticulationState {
 
 /// The state at rest with every joint at 0 (the base at X_WB).
 ArticulationState restState(const ArticulationModel& model, const Pose& X_WB = {});
+
+/// The base link's pose and twist in the world, as a free body's link is
+/// given (the state keeps the twist in the base's axes).
+LinkState baseLinkState(const ArticulationState& state);
 
 /// The generalized velocity vector: [V_B (floating only); v].
 Eigen::VectorXd generalizedVelocity(const ArticulationModel& model, const ArticulationState& state);

@@ -45,6 +45,20 @@ class Scene {
   /// links share a collision group of their own. Throws
   /// std::invalid_argument as Model does, naming the link.
   Scene(const ModelSpec& spec, std::vector<RobotSpec> robots);
+  /// A scene of free bodies only: `model`'s.
+  explicit Scene(Model model);
+
+  // Edits between steps (core::Simulation makes them, with the state's).
+  /// Adds a free body last among the free bodies. Throws as Model::addBody
+  /// does, and std::invalid_argument while the scene has robots (a body
+  /// beside robots is set up with them, not spawned yet); then nothing has changed.
+  void addBody(const PreparedBody& body);
+  /// Takes free body i out (Model::removeBody); the links after it move
+  /// down by one. Throws std::invalid_argument for a link or no body.
+  void removeBody(std::size_t i);
+  /// The settings `tuning` gives (Model::retuned: throws and changes nothing
+  /// when a check refuses them).
+  void retune(const Tuning& tuning) { model_ = model_.retuned(tuning); }
 
   /// The free bodies (0 .. freeBodyCount() − 1), then the robots' links.
   const Model& model() const { return model_; }
@@ -72,7 +86,8 @@ struct SceneState {
 /// `robots` (one per robot), the links where their robots put them.
 SceneState sceneState(const Scene& scene, const State& bodies, const std::vector<ArticulationState>& robots);
 
-/// What acts over one step: per free body (empty for none), per robot
+/// What acts over one step: per free body (empty for none; or per body,
+/// the links' zero, as WrenchSchedule::loadsFor gives them), per robot
 /// (empty for none).
 struct SceneLoads {
   Loads bodies;

@@ -1,13 +1,16 @@
-// A world as it runs: the model and everything kept in the order of its
-// bodies (the state, the state a reset returns to, the wrench schedule, the
-// contact ledger, the step's workspace). Every edit of the world goes
+// A world as it runs: the scene (its free bodies, and its robots' links
+// after them) and everything kept in the order of its bodies (the state,
+// the state a reset returns to, the wrench schedule, the contact ledger, the
+// step's workspace), and the robots' states. Every edit of the world goes
 // through here, so they never disagree on which index is which body.
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "rigid_body_sim/core/contact_report.h"
 #include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/scene.h"
 #include "rigid_body_sim/core/state.h"
 #include "rigid_body_sim/core/workspace.h"
 #include "rigid_body_sim/core/wrench_schedule.h"
@@ -15,22 +18,42 @@
 namespace rigid_body_sim::core {
 
 struct Simulation {
-  Model model;
-  State state;
-  State initial;  ///< what reset() returns to: the start, and each body where it was added
+  Scene scene;
+  State state;                            ///< every body's: the free bodies', then the links' (their robots place them)
+  State initial;                          ///< what reset() returns to: the start, and each body where it was added
+  std::vector<ArticulationState> robots;  ///< per robot of the scene
+  std::vector<ArticulationState> initial_robots;  ///< what reset() returns them to
   WrenchSchedule schedule;
   ContactLedger contacts;
+  /// The bodies' knobs (threads) and the step's outputs: contacts (links by
+  /// their body index), speed limits, the guard.
   Workspace workspace;
+  /// With robots: the scene step's scratch and the robots' outputs
+  /// (`robot_diverged`, `robots[r].speed_limited`); its `bodies` is
+  /// `workspace`'s only while it steps.
+  SceneWorkspace scene_workspace;
 
-  /// `state` is also the initial state.
+  /// A world of free bodies; `state` is also the initial state.
   Simulation(Model model, State state);
+  /// A scene and its start (sceneState), also the initial state.
+  Simulation(Scene scene, SceneState state);
+
+  const Model& model() const { return scene.model(); }
+  std::size_t freeBodyCount() const { return scene.freeBodyCount(); }
+
+  /// One step of dt under `loads` (per free body, or per body with the
+  /// links' zero, or none) and `robot_loads` (per robot, or none): core::step
+  /// for a world of free bodies (bit for bit as ever), stepScene with robots.
+  /// Throws std::invalid_argument for loads of the wrong size, and then
+  /// nothing has changed.
+  void step(const Loads& loads, const std::vector<ArticulationLoads>& robot_loads = {});
 
   /// Adds `body` last, at `start` (also its initial state). The model
   /// refuses a body it cannot take (a taken name, settings the body breaks)
   /// by throwing, and then nothing has changed.
   void addBody(const PreparedBody& body, const BodyState& start);
 
-  /// Takes body i out of every table at once: its contacts, its wrenches and
+  /// Takes free body i out of every table at once: its contacts, its wrenches and
   /// those in its axes go, what may touch it wakes (core::removeBody), and
   /// the later bodies' indices move down by one everywhere. Returns how many
   /// timed wrenches (WrenchSchedule::add) went with it.
@@ -46,8 +69,8 @@ struct Simulation {
   /// rested under the old settings must move under the new.
   void retune(const Tuning& tuning);
 
-  /// Back to the initial state at sim time `time` (which only goes forward),
-  /// every wrench cleared.
+  /// Back to the initial state, robots too, at sim time `time` (which only
+  /// goes forward), every wrench cleared.
   void reset(double time);
 };
 

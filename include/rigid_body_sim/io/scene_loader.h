@@ -1,8 +1,9 @@
-// A world of bodies and robots from a config's bodies list: each entry a
-// free body, or a robot when its URDF has moving joints (docs/physics.md
-// §11.9). rbsim's way to such a world; ROS-free.
+// A world of bodies and robots from a config: each entry of its bodies list
+// a free body, or a robot when its URDF has moving joints (docs/physics.md
+// §11.9). rbsim's and the node's way to such a world; ROS-free.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,19 @@ struct SceneSetup {
   std::vector<int> entry;
 };
 
+/// A URDF's text, where it came from (for messages) and the folder its
+/// relative mesh paths start from.
+struct UrdfText {
+  std::string xml, source, base_dir;
+};
+
+/// The URDF a `bodies` entry names (the node's: a parameter, or a file).
+using UrdfReader = std::function<UrdfText(const BodyEntry&)>;
+
+/// The URDF file `urdf` names (package://, absolute, or relative to
+/// `base_dir`), read within the input caps.
+UrdfText readUrdfFile(const std::string& urdf, const std::string& base_dir);
+
 /// Whether some entry of the config's bodies list is a robot (its URDF has
 /// a moving joint). Reads each named file once.
 bool listsRobots(const SimConfig& config);
@@ -27,10 +41,19 @@ bool listsRobots(const SimConfig& config);
 /// The scene of the config's bodies list with its settings: a body's entry
 /// as buildWorld reads it, a robot's with its base at bodies[i].initial and
 /// its joints at bodies[i].initial.joint_positions and .joint_velocities
-/// (io::robotStart), its links' surface from bodies[i].contact. Refused
+/// (io::robotStart), its links' surface from bodies[i].contact. Each URDF
+/// comes from `read` (default: readUrdfFile), once per name. Refused
 /// (ConfigError naming the key): joint values for a body, and for a robot
 /// the keys it does not read yet (bodies[i].imu, .odom_noise, .cmd_vel)
 /// and the settings io::checkRobotSettings refuses.
-SceneSetup buildScene(const SimConfig& config);
+SceneSetup buildScene(const SimConfig& config, const UrdfReader& read = {});
+
+/// The world a config describes, as the node runs it: its bodies list
+/// (buildScene), or, when it has none, the one body or robot `single`
+/// gives (the node's robot_description) at the config's `initial`, a
+/// robot's joints at `initial.joint_positions` and `.joint_velocities`,
+/// named as its URDF names it. The top-level `imu`, `odom_noise` and
+/// `cmd_vel` are refused for a robot, as its entry's are.
+SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& single, const UrdfReader& read = {});
 
 }  // namespace rigid_body_sim::io

@@ -42,6 +42,7 @@
 #include "rigid_body_sim/ros/markers.h"
 #include "rigid_body_sim/ros/pacer.h"
 #include "rigid_body_sim/ros/params.h"
+#include "rigid_body_sim/ros/robot_ports.h"
 #include "rigid_body_sim/ros/sim_clock.h"
 #include "rigid_body_sim/ros/spawn_queue.h"
 #include "rigid_body_sim/ros/state_publisher.h"
@@ -111,7 +112,7 @@ class SimNode {
   const NodeSettings& settings_ = params_.node;  ///< ~physics changes params_.node
   /// The model and every table in its bodies' order: a world edit goes through it once.
   core::Simulation sim_;
-  const core::Model& model_ = sim_.model;
+  const core::Model& model_ = sim_.model();
   core::State& state_ = sim_.state;
   core::Workspace& workspace_ = sim_.workspace;
   core::WrenchSchedule& schedule_ = sim_.schedule;
@@ -148,8 +149,9 @@ class SimNode {
 
   Pacer pacer_;  ///< sim time against the wall clock × realtime factor; the loop's timing
 
-  std::optional<StatePublisher> publisher_;  ///< tf, odometry, ~body_states, /clock, /tf_static
-  std::optional<MarkerPublisher> markers_;   ///< ~scene_markers, ~body_markers
+  std::optional<StatePublisher> publisher_;        ///< tf, odometry, ~body_states, /clock, /tf_static
+  std::optional<MarkerPublisher> markers_;         ///< ~scene_markers, ~body_markers
+  std::optional<RobotPublisher> robot_publisher_;  ///< each robot's joint_states and floating base
   std::vector<ros::ServiceServer> services_;
 
   // The spawn thread: ~spawn_body on its own queue.

@@ -1,0 +1,84 @@
+// The robots' joint states and floating bases: robot_ports.h.
+#include "rigid_body_sim/ros/robot_ports.h"
+
+#include <map>
+#include <utility>
+
+#include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/ros/conversions.h"
+
+namespace rigid_body_sim::node {
+
+sensor_msgs::JointState jointStateMessage(const core::ArticulationModel& robot, const core::ArticulationState& state,
+                                          const std::vector<double>& effort, const ros::Time& stamp) {
+  sensor_msgs::JointState msg;
+  msg.header.stamp = stamp;
+  const int n = robot.jointCount();
+  msg.name.reserve(n);
+  for (int i = 1; i <= n; ++i) msg.name.push_back(robot.links[i].joint);
+  msg.position.assign(state.q.data(), state.q.data() + n);
+  msg.velocity.assign(state.v.data(), state.v.data() + n);
+  msg.effort = effort.empty() ? std::vector<double>(n, 0.0) : effort;
+  return msg;
+}
+
+geometry_msgs::TransformStamped baseTransform(const core::ArticulationState& state, const RobotPorts& ports,
+                                              const std::string& world_frame, const ros::Time& stamp) {
+  geometry_msgs::TransformStamped tf;
+  tf.header.stamp = stamp;
+  tf.header.frame_id = world_frame;
+  tf.child_frame_id = ports.base_frame;
+  tf.transform = toTransform(state.X_WB.translation, state.X_WB.rotation);
+  return tf;
+}
+
+void checkRobotFrames(const core::Scene& scene, const std::string& world_frame,
+                      const std::vector<std::string>& body_frames) {
+  std::map<std::string, std::string> owner;  // frame -> who has it
+  for (const std::string& frame : body_frames) owner.emplace(frame, "a body");
+  for (const core::SceneRobot& robot : scene.robots()) {
+    for (std::size_t k = 0; k < robot.model.links.size(); ++k) {
+      const std::string& link = robot.model.links[k].name;
+      if (k == 0 && robot.model.fixed_base) continue;  // `world`: the root robot_state_publisher starts from
+      const std::string who = "robot '" + robot.name + "'";
+      if (link == world_frame) {
+        throw io::ConfigError(who + ": its link '" + link + "' is named as ~world_frame; tf would publish " + link +
+                              " -> " + link + " (name the world frame otherwise)");
+      }
+      const auto [it, added] = owner.emplace(link, who);
+      if (!added) {
+        throw io::ConfigError(who + ": its link '" + link + "' is also a frame of " + it->second +
+                              "; robot_state_publisher names a robot's frames as its URDF does, so tf would mix "
+                              "them up (give each robot's URDF its own link names, as a xacro prefix does)");
+      }
+    }
+  }
+}
+
+RobotPublisher::RobotPublisher(const ros::NodeHandle& nh, const core::Scene& scene, bool several,
+                               std::string world_frame)
+    : nh_(nh), world_frame_(std::move(world_frame)) {
+  for (const core::SceneRobot& robot : scene.robots()) {
+    RobotPorts p;
+    p.name = robot.name;
+    p.prefix = several ? robot.name + "/" : "";
+    p.base_frame = robot.model.fixed_base ? "" : robot.model.links[0].name;
+    p.joint_states = CountedPublisher::advertise<sensor_msgs::JointState>(nh_, p.prefix + "joint_states", 10);
+    robots_.push_back(std::move(p));
+  }
+}
+
+void RobotPublisher::publish(const core::Simulation& sim, const ros::Time& now) {
+  if (!ros::ok()) return;
+  bases_.clear();
+  for (std::size_t r = 0; r < robots_.size(); ++r) {
+    const RobotPorts& p = robots_[r];
+    const core::ArticulationState& state = sim.robots[r];
+    if (p.joint_states.listened())
+      p.joint_states.publish(jointStateMessage(sim.scene.robots()[r].model, state, {}, now));
+    if (!p.base_frame.empty()) bases_.push_back(baseTransform(state, p, world_frame_, now));
+  }
+  if (!bases_.empty()) tf_.sendTransform(bases_);
+}
+
+}  // namespace rigid_body_sim::node

@@ -1,0 +1,146 @@
+// A world as it runs with robots in it (core::Simulation over a Scene): it
+// steps as the scene does, its edits move the links' indices with the free
+// bodies', reset puts the robots back, and what it refuses changes nothing.
+#include "rigid_body_sim/core/simulation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "../test_util.h"
+#include "articulation_models.h"
+#include "rigid_body_sim/core/articulation_dynamics.h"
+
+namespace rigid_body_sim::core {
+namespace {
+
+constexpr double kH = 1e-3;
+
+/// A 1 kg, 0.4 m bar hanging from a hinge about y at (0, 0, 1.5), released
+/// from horizontal: it swings clear of the floor.
+ArticulationModel pendulum() {
+  ArticulationModel model = test::oneJoint(JointType::Revolute, "bar", "hinge", Vec3(0.0, 0.0, 1.5), Vec3::UnitY());
+  ArticulatedLink& bar = model.links[1];
+  bar.limits.lower = -4.0;
+  bar.limits.upper = 4.0;
+  bar.limits.effort = 10.0;
+  const Vec3 size(0.4, 0.05, 0.05), centre(0.2, 0.0, 0.0);
+  bar.mass = test::boxMass(1.0, size, centre);
+  bar.collision = {test::boxShape(size, centre)};
+  checkArticulation(model);
+  return model;
+}
+
+BodySpec box(const std::string& name) {
+  BodySpec b = test::boxBody(Vec3(0.1, 0.1, 0.1));
+  b.name = name;
+  return b;
+}
+
+/// Boxes "a", "b", ... dropped on a floor at x = 3, 6, ... (far from the
+/// pendulum and from each other) and the pendulum released from horizontal.
+struct World {
+  Scene scene;
+  SceneState start;
+
+  explicit World(const std::vector<std::string>& boxes) : scene(spec(boxes), {{"arm", pendulum()}}) {
+    State free;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      LinkState X;
+      X.p_WL = Vec3(3.0 * (boxes[i][0] - 'a' + 1), 0.0, 0.5);
+      free.bodies.push_back(bodyStateFromLink(scene.model().body(i), X));
+    }
+    start = sceneState(scene, free, {restState(scene.robots()[0].model, Pose())});
+  }
+
+  static ModelSpec spec(const std::vector<std::string>& boxes) {
+    ModelSpec s;
+    s.dt = kH;
+    s.scene = {Sdf::plane(Vec3::UnitZ())};
+    for (const std::string& name : boxes) s.bodies.push_back(box(name));
+    return s;
+  }
+};
+
+void expectSameBody(const BodyState& a, const BodyState& b) {
+  EXPECT_EQ(a.p_WB, b.p_WB);
+  EXPECT_EQ(a.q_WB.coeffs(), b.q_WB.coeffs());
+  EXPECT_EQ(a.v_WB, b.v_WB);
+  EXPECT_EQ(a.w_B, b.w_B);
+}
+
+TEST(Simulation, StepsAsTheSceneDoes) {
+  World w({"a", "b"});
+  Simulation sim(w.scene, w.start);
+  SceneState direct = w.start;
+  SceneWorkspace ws;
+  for (int n = 0; n < 600; ++n) {
+    sim.step({});
+    stepScene(w.scene, direct, {}, ws);
+  }
+  ASSERT_EQ(sim.state.bodies.size(), 3u);  // two boxes, the bar
+  for (std::size_t i = 0; i < 3; ++i) expectSameBody(sim.state.bodies[i], direct.bodies.bodies[i]);
+  EXPECT_EQ(sim.robots[0].q, direct.robots[0].q);
+  EXPECT_EQ(sim.robots[0].v, direct.robots[0].v);
+  EXPECT_GT(std::abs(sim.robots[0].q[0]), 0.5);  // it swung
+  EXPECT_EQ(sim.workspace.contacts.size(), ws.bodies.contacts.size());
+}
+
+// Deleting a free body moves the links down one index everywhere, and the
+// robot and the other body step on bit for bit as in a world that never had it.
+TEST(Simulation, RemovingABodyMovesTheLinksDown) {
+  World three({"a", "b"}), two({"b"});
+  Simulation sim(three.scene, three.start);
+  Simulation without(two.scene, two.start);
+  for (int n = 0; n < 300; ++n) {
+    sim.step({});
+    without.step({});
+  }
+  sim.removeBody(0);
+  EXPECT_EQ(sim.scene.robots()[0].first_body, 1);
+  EXPECT_EQ(sim.scene.robotOf(1), 0);
+  EXPECT_EQ(sim.model().body(1).name, "arm/bar");
+  for (int n = 0; n < 300; ++n) {
+    sim.step({});
+    without.step({});
+  }
+  for (std::size_t i = 0; i < 2; ++i) expectSameBody(sim.state.bodies[i], without.state.bodies[i]);
+  EXPECT_EQ(sim.robots[0].q, without.robots[0].q);
+}
+
+TEST(Simulation, ResetPutsTheRobotsBack) {
+  World w({"a"});
+  Simulation sim(w.scene, w.start);
+  for (int n = 0; n < 400; ++n) sim.step({});
+  ASSERT_NE(sim.robots[0].q, w.start.robots[0].q);
+  sim.reset(7.0);
+  EXPECT_EQ(sim.robots[0].q, w.start.robots[0].q);
+  EXPECT_EQ(sim.robots[0].v, w.start.robots[0].v);
+  expectSameBody(sim.state.bodies[1], w.start.bodies.bodies[1]);  // the bar's link, where it started
+  EXPECT_EQ(sim.state.time, 7.0);
+}
+
+TEST(Simulation, RefusedEditsAndLoadsChangeNothing) {
+  World w({"a"});
+  Simulation sim(w.scene, w.start);
+  for (int n = 0; n < 100; ++n) sim.step({});
+  const State before = sim.state;
+  const std::vector<ArticulationState> robots_before = sim.robots;
+  EXPECT_THROW(sim.removeBody(1), std::invalid_argument);  // the bar: a link, not a free body
+  PreparedBody extra = sim.model().bodyBuilder().build(box("c"));
+  EXPECT_THROW(sim.addBody(extra, BodyState{}), std::invalid_argument);
+  Loads on_link(2);
+  on_link[1].force_W = Vec3(1.0, 0.0, 0.0);  // the bar's: a robot's loads are its own
+  EXPECT_THROW(sim.step(on_link), std::invalid_argument);
+  ASSERT_EQ(sim.state.bodies.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) expectSameBody(sim.state.bodies[i], before.bodies[i]);
+  EXPECT_EQ(sim.state.time, before.time);
+  EXPECT_EQ(sim.robots[0].q, robots_before[0].q);
+  sim.step(Loads(2));  // per body, the link's zero: taken
+  EXPECT_GT(sim.state.time, before.time);
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::core
