@@ -39,6 +39,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/sdf_surface.cpp
   ${RBS_SOURCE_ROOT}/src/core/setting_keys.cpp
   ${RBS_SOURCE_ROOT}/src/core/shape_matching.cpp
+  ${RBS_SOURCE_ROOT}/src/core/joint_control.cpp
   ${RBS_SOURCE_ROOT}/src/core/simulation.cpp
   ${RBS_SOURCE_ROOT}/src/core/sleep.cpp
   ${RBS_SOURCE_ROOT}/src/core/solver_contact.cpp
@@ -56,6 +57,8 @@ set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/mesh_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/scene_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/device_config.cpp
+  ${RBS_SOURCE_ROOT}/src/io/controller_config.cpp
+  ${RBS_SOURCE_ROOT}/src/io/controllers.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_lumper.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_parse.cpp

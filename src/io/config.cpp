@@ -9,6 +9,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "controller_config.h"
 #include "device_config.h"
 #include "rigid_body_sim/core/setting_keys.h"
 #include "rigid_body_sim/io/input_bounds.h"
@@ -127,7 +128,8 @@ class BodyList {
 
   void add(const YAML::Node& entry, std::size_t i) {
     const std::string path = "bodies[" + std::to_string(i) + "]";
-    requireKnownKeys(entry, path, {"name", "urdf", "initial", "contact", "imu", "odom_noise", "cmd_vel"});
+    requireKnownKeys(entry, path,
+                     {"name", "urdf", "initial", "contact", "imu", "odom_noise", "cmd_vel", "controllers"});
     if (!entry["name"]) fail(path + ".name", "every body needs a name");
     if (!entry["urdf"]) fail(path + ".urdf", "every body needs a urdf (a file, or for the node a parameter)");
     BodyEntry b;
@@ -151,6 +153,7 @@ class BodyList {
     if (entry["imu"]) b.imu = parseImu(entry["imu"], path + ".imu");
     if (entry["odom_noise"]) b.odom_noise = parseOdomNoise(entry["odom_noise"], path + ".odom_noise");
     if (entry["cmd_vel"]) b.cmd_vel = parseDriver(entry["cmd_vel"], path + ".cmd_vel");
+    if (entry["controllers"]) b.controllers = parseControllers(entry["controllers"], path + ".controllers");
     bodies_.push_back(std::move(b));
   }
 
@@ -188,7 +191,7 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
   if (!root || root.IsNull()) return c;
   requireKnownKeys(root, "",
                    {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver",
-                    "limits", "bodies", "imu", "odom_noise", "cmd_vel"});
+                    "limits", "bodies", "imu", "odom_noise", "cmd_vel", "controllers"});
   parseSection(root, "", c.model);  // dt, gravity, gyroscopic
   parseSection(root, "damping", c.model);
   if (root["initial"]) parseInitial(root["initial"], c.initial, c.initial_joints);
@@ -211,6 +214,10 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
   if (root["cmd_vel"]) {
     if (root["bodies"]) fail("cmd_vel", "with a bodies list, give each body its own bodies[i].cmd_vel");
     c.cmd_vel = parseDriver(root["cmd_vel"], "cmd_vel");
+  }
+  if (root["controllers"]) {
+    if (root["bodies"]) fail("controllers", "with a bodies list, give each robot its own bodies[i].controllers");
+    c.controllers = parseControllers(root["controllers"], "controllers");
   }
   // Sensors sample at most once a step: checked against the dt just read.
   if (c.imu) validateImuEntry(*c.imu, c.model.dt, "imu");

@@ -84,11 +84,15 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
   std::vector<core::LinkState> body_starts;
   std::vector<core::ArticulationState> robot_starts;
   std::vector<int> entry;
+  std::vector<RobotControls> controls;
   for (std::size_t i = 0; i < config.bodies.size(); ++i) {
     const BodyEntry& e = config.bodies[i];
     const std::string key = "bodies[" + std::to_string(i) + "]";
     const Described& described = files.get(e);
     if (const auto* body = std::get_if<core::BodySpec>(&described)) {
+      if (!e.controllers.empty()) {
+        throw ConfigError("config key '" + key + ".controllers': body '" + e.name + "' has no moving joints");
+      }
       if (!e.initial_joints.empty()) {
         throw ConfigError("config key '" + key + ".initial.joint_positions' / '.joint_velocities': body '" + e.name +
                           "' has no moving joints");
@@ -108,6 +112,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     checkRobotSettings(config, e.name);
     refuseBodyDevices(key + ".", e.name, e.imu.has_value(), e.odom_noise.has_value(), e.cmd_vel.has_value());
     robot_starts.push_back(robotStart(model, e.initial, e.initial_joints, config.model.limits, key + ".initial"));
+    controls.push_back(buildControls(e.controllers, model));
     entry.push_back(-1 - static_cast<int>(robots.size()));
     robots.push_back({e.name, std::move(model), e.friction, e.restitution});
   }
@@ -118,7 +123,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     free.bodies[i] = core::bodyStateFromLink(scene.model().body(i), body_starts[i]);
   }
   core::SceneState state = core::sceneState(scene, free, robot_starts);
-  return {std::move(scene), std::move(state), std::move(entry)};
+  return {std::move(scene), std::move(state), std::move(entry), std::move(controls)};
 }
 
 }  // namespace rigid_body_sim::io
@@ -130,22 +135,26 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
   if (!single) throw ConfigError("bodies: the config lists no bodies, and no single body was given");
   Described described = describe(single());
   if (auto* body = std::get_if<core::BodySpec>(&described)) {
+    if (!config.controllers.empty()) {
+      throw ConfigError("config key 'controllers': body '" + body->name + "' has no moving joints");
+    }
     World world = loadWorld(config, [&] { return std::move(*body); });
     core::Scene scene(std::move(world.model));
     core::SceneState state{std::move(world.state), {}};
-    return {std::move(scene), std::move(state), {0}};
+    return {std::move(scene), std::move(state), {0}, {}};
   }
   core::ArticulationModel model = std::move(std::get<core::ArticulationModel>(described));
   checkRobotSettings(config, model.name);
   refuseBodyDevices("", model.name, config.imu.has_value(), config.odom_noise.has_value(), config.cmd_vel.has_value());
   core::ArticulationState start =
       robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
+  RobotControls controls = buildControls(config.controllers, model);
   core::ModelSpec spec = config.model;
   spec.bodies.clear();
   const std::string name = model.name;
   core::Scene scene(spec, {{name, std::move(model)}});
   core::SceneState state = core::sceneState(scene, {}, {start});
-  return {std::move(scene), std::move(state), {-1}};
+  return {std::move(scene), std::move(state), {-1}, {std::move(controls)}};
 }
 
 }  // namespace rigid_body_sim::io

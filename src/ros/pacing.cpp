@@ -26,7 +26,8 @@ void SimNode::stepOnce() {
     loads_[i].force_W += drive.force_W;
     loads_[i].torque_W += drive.torque_W;
   }
-  sim_.step(loads_);
+  commands_->loadsFor(sim_, robot_loads_);  // the robots' controllers, from the state before the step
+  sim_.step(loads_, robot_loads_);
   if (!workspace_.speed_limited.empty() || !workspace_.diverged.empty()) reportStep();
   ++steps_;
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
@@ -35,15 +36,20 @@ void SimNode::stepOnce() {
   schedule_.dropFinished(simTime());
   if (steps_ % publish_every_ == 0) {
     publisher_->clock(stamp());
-    publish();
+    publishBodies();
     publisher_->contacts(sim_, stamp());
   }
+  robot_publisher_->publish(sim_, commands_->applied(), stamp(), steps_);  // each at its rate
   if (steps_ % body_states_every_ == 0) publisher_->bodyStates(sim_, ports_, stamp());
 }
 
 void SimNode::publish() {
+  publishBodies();
+  robot_publisher_->publish(sim_, commands_->applied(), stamp());
+}
+
+void SimNode::publishBodies() {
   if (publisher_->state(sim_, ports_, stamp(), simTime())) markers_->afterTf();
-  robot_publisher_->publish(sim_, stamp());
 }
 
 void SimNode::reportStep() {

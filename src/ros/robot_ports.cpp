@@ -1,6 +1,8 @@
 // The robots' joint states and floating bases: robot_ports.h.
 #include "rigid_body_sim/ros/robot_ports.h"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <utility>
 
@@ -10,7 +12,7 @@
 namespace rigid_body_sim::node {
 
 sensor_msgs::JointState jointStateMessage(const core::ArticulationModel& robot, const core::ArticulationState& state,
-                                          const std::vector<double>& effort, const ros::Time& stamp) {
+                                          const Eigen::VectorXd& effort, const ros::Time& stamp) {
   sensor_msgs::JointState msg;
   msg.header.stamp = stamp;
   const int n = robot.jointCount();
@@ -18,7 +20,8 @@ sensor_msgs::JointState jointStateMessage(const core::ArticulationModel& robot, 
   for (int i = 1; i <= n; ++i) msg.name.push_back(robot.links[i].joint);
   msg.position.assign(state.q.data(), state.q.data() + n);
   msg.velocity.assign(state.v.data(), state.v.data() + n);
-  msg.effort = effort.empty() ? std::vector<double>(n, 0.0) : effort;
+  msg.effort.assign(n, 0.0);
+  if (effort.size() == n) msg.effort.assign(effort.data(), effort.data() + n);
   return msg;
 }
 
@@ -56,7 +59,8 @@ void checkRobotFrames(const core::Scene& scene, const std::string& world_frame,
 }
 
 RobotPublisher::RobotPublisher(const ros::NodeHandle& nh, const core::Scene& scene, bool several,
-                               std::string world_frame)
+                               std::string world_frame, double dt, double publish_rate,
+                               const std::function<double(std::size_t)>& rate)
     : nh_(nh), world_frame_(std::move(world_frame)) {
   for (const core::SceneRobot& robot : scene.robots()) {
     RobotPorts p;
@@ -64,18 +68,23 @@ RobotPublisher::RobotPublisher(const ros::NodeHandle& nh, const core::Scene& sce
     p.prefix = several ? robot.name + "/" : "";
     p.base_frame = robot.model.fixed_base ? "" : robot.model.links[0].name;
     p.joint_states = CountedPublisher::advertise<sensor_msgs::JointState>(nh_, p.prefix + "joint_states", 10);
+    const double hz = rate(robots_.size()) > 0.0 ? rate(robots_.size()) : publish_rate;
+    p.every = std::max(1LL, std::llround(1.0 / (hz * dt)));
     robots_.push_back(std::move(p));
   }
 }
 
-void RobotPublisher::publish(const core::Simulation& sim, const ros::Time& now) {
+void RobotPublisher::publish(const core::Simulation& sim, const std::vector<Eigen::VectorXd>& applied,
+                             const ros::Time& now, long long steps) {
   if (!ros::ok()) return;
   bases_.clear();
   for (std::size_t r = 0; r < robots_.size(); ++r) {
     const RobotPorts& p = robots_[r];
+    if (steps >= 0 && steps % p.every != 0) continue;
     const core::ArticulationState& state = sim.robots[r];
-    if (p.joint_states.listened())
-      p.joint_states.publish(jointStateMessage(sim.scene.robots()[r].model, state, {}, now));
+    if (p.joint_states.listened()) {
+      p.joint_states.publish(jointStateMessage(sim.scene.robots()[r].model, state, applied[r], now));
+    }
     if (!p.base_frame.empty()) bases_.push_back(baseTransform(state, p, world_frame_, now));
   }
   if (!bases_.empty()) tf_.sendTransform(bases_);

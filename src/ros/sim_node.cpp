@@ -50,7 +50,11 @@ io::SceneSetup loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
   });
 }
 
-core::Simulation startOf(io::SceneSetup world) { return {std::move(world.scene), std::move(world.state)}; }
+/// The simulation of `world`; its controllers go to `controls`.
+core::Simulation startOf(io::SceneSetup world, std::vector<io::RobotControls>& controls) {
+  controls = std::move(world.controls);
+  return {std::move(world.scene), std::move(world.state)};
+}
 
 /// The world frame must be none of a body's frames: tf would get base_link
 /// → base_link, a loop every listener refuses.
@@ -71,7 +75,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     : nh_(nh),
       pnh_(private_nh),
       params_(readParams(private_nh)),
-      sim_(startOf(loadWorld(params_, nh_))),
+      sim_(startOf(loadWorld(params_, nh_), start_controls_)),
       use_sim_time_(ros::param::param("/use_sim_time", false)),
       time_(model_.dt(), !use_sim_time_) {
   // ROS shut down while the world loaded (rosnode kill; SIGINT ends the
@@ -137,7 +141,9 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
            listed.c_str());
 
   publisher_.emplace(nh_, pnh_, settings_, use_sim_time_);
-  robot_publisher_.emplace(nh_, sim_.scene, several, settings_.world_frame);
+  commands_.emplace(nh_, std::move(start_controls_), sim_, several);
+  robot_publisher_.emplace(nh_, sim_.scene, several, settings_.world_frame, model_.dt(), settings_.publish_rate,
+                           [this](std::size_t r) { return commands_->jointStateRate(r); });
   services_ = {pnh_.advertiseService("apply_wrench", &LoadRequests::applyWrench, &load_requests_),
                pnh_.advertiseService("apply_impulse", &LoadRequests::applyImpulse, &load_requests_),
                pnh_.advertiseService("clear_wrenches", &LoadRequests::clearWrenches, &load_requests_),

@@ -149,18 +149,35 @@ Vec3 angularMomentum(const core::Model& model, const core::State& state) {
 /// The config file with the command line's overrides. Its bodies list is
 /// read an entry at a time: as a YAML tree it took about 7 KB a body, more
 /// than the bodies themselves (bench/HISTORY.md).
+/// Refuses a config's `controllers` (ConfigError naming the key): they take
+/// their commands on the node's topics, and rbsim runs none.
+void refuseControllers(const io::SimConfig& config) {
+  const auto refuse = [](const std::string& key) {
+    throw io::ConfigError("config key '" + key +
+                          "': rbsim runs no controllers (they take their commands on sim_node's topics)");
+  };
+  if (!config.controllers.empty()) refuse("controllers");
+  for (std::size_t i = 0; i < config.bodies.size(); ++i) {
+    if (!config.bodies[i].controllers.empty()) refuse("bodies[" + std::to_string(i) + "].controllers");
+  }
+}
+
 io::SimConfig readConfig(const Args& args) {
   std::vector<std::string> overrides = args.sets;
   if (!args.dt.empty()) overrides.push_back("dt=" + args.dt);
   if (args.config.empty()) {
     YAML::Node tree;
     for (const std::string& s : overrides) io::applyOverride(tree, s);
-    return io::parseConfig(tree, ".");
+    io::SimConfig config = io::parseConfig(tree, ".");
+    refuseControllers(config);
+    return config;
   }
   // Absolute: a body's relative URDF is joined to it once, and a relative
   // folder was joined twice ("worlds/worlds/box.urdf").
   const std::string config_dir = std::filesystem::absolute(args.config).parent_path().string();
-  return io::loadConfigFile(args.config, overrides, config_dir);
+  io::SimConfig config = io::loadConfigFile(args.config, overrides, config_dir);
+  refuseControllers(config);
+  return config;
 }
 
 /// The world the command line gives: one body from --urdf, or the config's

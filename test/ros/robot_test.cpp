@@ -1,10 +1,14 @@
-// A robot in the node, as its users meet it: joint_states received, and the
-// tf robot_state_publisher makes of them. pendulum.test runs the rod
-// pendulum of urdf/pendulum.urdf released from 0.3 rad.
+// A robot in the node, as its users meet it: joint_states received, the tf
+// robot_state_publisher makes of them, controllers commanded on their
+// topics. pendulum.test runs the rod pendulum of urdf/pendulum.urdf
+// released from 0.3 rad; arm.test the two-link arm of urdf/arm2.urdf under
+// config/arm2.yaml's position controllers.
 #include <geometry_msgs/TransformStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
+#include <std_msgs/Float64.h>
+#include <std_srvs/Trigger.h>
 #include <tf2_msgs/TFMessage.h>
 
 #include <algorithm>
@@ -12,6 +16,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "node_fixture.h"
@@ -114,6 +119,85 @@ TEST_F(RodPendulum, RobotStatePublisherTfFollowsTheJointStates) {
     ++matched;
   }
   EXPECT_GE(matched, 15);
+}
+
+// ------------------------------------------------------------------ the arm under position controllers
+
+/// The efforts that hold urdf/arm2.urdf still at (q1, q2) against gravity:
+/// each link a bar of mass m and length l = 0.4 m along d(q) = (cos q, 0,
+/// −sin q), so V = −g [m1 (l/2) sin q1 + m2 (l sin q1 + (l/2) sin(q1 + q2))]
+/// and the holding effort is ∂V/∂q.
+std::pair<double, double> holdingEfforts(double q1, double q2) {
+  const double m1 = 1.5, m2 = 1.0, l = 0.4;
+  const double e2 = -kG * m2 * 0.5 * l * std::cos(q1 + q2);
+  const double e1 = -kG * (m1 * 0.5 * l * std::cos(q1) + m2 * l * std::cos(q1)) + e2;
+  return {e1, e2};
+}
+
+class Arm : public Node {
+ protected:
+  void SetUp() override {
+    Node::SetUp();
+    shoulder_ = nh_.advertise<std_msgs::Float64>("/shoulder_position_controller/command", 1, true);
+    elbow_ = nh_.advertise<std_msgs::Float64>("/elbow_position_controller/command", 1, true);
+    joints_ = nh_.subscribe<sensor_msgs::JointState>(
+        "/joint_states", 100, [this](const sensor_msgs::JointState::ConstPtr& m) { last_ = *m; });
+    ASSERT_TRUE(spinUntil([&] { return !last_.name.empty(); }, 30.0));
+    ASSERT_EQ(last_.name, (std::vector<std::string>{"shoulder", "elbow"}));
+  }
+  void command(double shoulder, double elbow) {
+    std_msgs::Float64 a, b;
+    a.data = shoulder;
+    b.data = elbow;
+    shoulder_.publish(a);
+    elbow_.publish(b);
+  }
+  /// Waits `seconds` of sim time (the stamps of joint_states).
+  void wait(double seconds) {
+    const double until = last_.header.stamp.toSec() + seconds;
+    ASSERT_TRUE(spinUntil([&] { return last_.header.stamp.toSec() >= until; }, 60.0));
+  }
+  sensor_msgs::JointState last_;
+
+ private:
+  ros::Publisher shoulder_, elbow_;
+  ros::Subscriber joints_;
+};
+
+// Held at its targets against gravity, within 0.01 rad, by the efforts
+// gravity needs there (within the URDF's 40 and 20 N·m); a NaN command and
+// a command of the wrong kind change nothing; after a reset the
+// controllers hold the start, not the old targets (gazebo_ros_pkgs #1311).
+TEST_F(Arm, PositionControllersHoldTargetsAgainstGravity) {
+  command(-0.5, 0.8);
+  wait(6.0);
+  EXPECT_NEAR(last_.position[0], -0.5, 0.01);
+  EXPECT_NEAR(last_.position[1], 0.8, 0.01);
+  const auto [e1, e2] = holdingEfforts(last_.position[0], last_.position[1]);
+  EXPECT_NEAR(last_.effort[0], e1, 0.01 * std::abs(e1)) << "shoulder";
+  EXPECT_NEAR(last_.effort[1], e2, 0.01 * std::abs(e2)) << "elbow";
+  EXPECT_LE(std::abs(last_.effort[0]), 40.0);
+  EXPECT_LE(std::abs(last_.effort[1]), 20.0);
+  std::printf("arm held at (%.5f, %.5f) rad for (-0.5, 0.8); efforts (%.4f, %.4f) N m, gravity's (%.4f, %.4f)\n",
+              last_.position[0], last_.position[1], last_.effort[0], last_.effort[1], e1, e2);
+
+  command(std::nan(""), 0.8);  // dropped with a warning
+  wait(1.0);
+  EXPECT_NEAR(last_.position[0], -0.5, 0.01);
+  EXPECT_NEAR(last_.position[1], 0.8, 0.01);
+
+  ASSERT_TRUE(trigger("reset"));
+  wait(4.0);
+  EXPECT_NEAR(last_.position[0], 0.0, 0.01) << "the controllers drove the reset arm back to their old targets";
+  EXPECT_NEAR(last_.position[1], 0.0, 0.01);
+}
+
+// A target past the URDF's range is held to it (warned once).
+TEST_F(Arm, TargetsPastTheRangeAreHeldToIt) {
+  command(0.0, 3.0);  // the elbow's upper limit is 2.5
+  wait(5.0);
+  EXPECT_NEAR(last_.position[1], 2.5, 0.01);
+  EXPECT_NEAR(last_.position[0], 0.0, 0.01);
 }
 
 }  // namespace

@@ -333,6 +333,9 @@ TEST(Rbsim, RefusesARobotsBadStart) {
   expectUsageError(pendulum + " --set initial.linear_velocity=[1,0,0]",
                    "'initial.linear_velocity' / 'initial.angular_velocity': robot 'pendulum' is fixed to the world");
   expectUsageError(pendulum + " --set 'initial.joint_positions={elbow: 1}'", "elbow");
+  expectUsageError(
+      pendulum + " --set 'controllers={a: {type: effort_controllers/JointEffortController, joint: pivot}}'",
+      "'controllers': rbsim runs no controllers");
   const std::string world = tempPath("robot_world.yaml");
   std::ofstream(world) << "bodies:\n  - {name: swing, urdf: " << RBS_SOURCE_DIR
                        << "/urdf/pendulum.urdf, initial: {angular_velocity: [0, 1, 0]}}\n";

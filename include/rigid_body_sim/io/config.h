@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "rigid_body_sim/core/imu.h"
+#include "rigid_body_sim/core/joint_control.h"
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/odom_noise.h"
 #include "rigid_body_sim/core/state.h"
@@ -41,6 +42,20 @@ struct InitialJoints {
   bool empty() const { return positions.empty() && velocities.empty(); }
 };
 
+/// One controller of a robot's `controllers` map, as ros_controllers' YAML
+/// gives it (io/controllers.h turns it into the core's).
+struct ControllerEntry {
+  std::string name;                 ///< its key in the map: its topic's namespace
+  std::string type;                 ///< e.g. effort_controllers/JointPositionController
+  std::vector<std::string> joints;  ///< `joint`, or `joints`
+  bool joint_list = false;          ///< given as `joints` (a group's key)
+  /// Per joint, `pid` (one joint) or `gains: {JOINT: {p, i, d, i_clamp}}`
+  /// (a group); empty where none was given.
+  std::vector<std::optional<core::PidGains>> gains;
+  std::optional<double> publish_rate;  ///< Hz, a JointStateController's `publish_rate`
+  std::string key;                     ///< "controllers.NAME", "bodies[2].controllers.NAME"
+};
+
 /// One entry of the `bodies` list: a body of the world.
 struct BodyEntry {
   std::string name;  ///< unique in the world
@@ -53,6 +68,7 @@ struct BodyEntry {
   std::optional<ImuEntry> imu;                        ///< bodies[i].imu
   std::optional<core::OdomNoiseSettings> odom_noise;  ///< bodies[i].odom_noise
   std::optional<core::DriverSettings> cmd_vel;        ///< bodies[i].cmd_vel
+  std::vector<ControllerEntry> controllers;           ///< bodies[i].controllers (a robot's)
 };
 
 struct SimConfig {
@@ -71,6 +87,7 @@ struct SimConfig {
   std::optional<ImuEntry> imu;
   std::optional<core::OdomNoiseSettings> odom_noise;
   std::optional<core::DriverSettings> cmd_vel;  ///< the one body's velocity driver
+  std::vector<ControllerEntry> controllers;     ///< the one robot's `controllers`
   /// The config file's folder (parseConfig's base_dir): package:// URDFs are
   /// also looked for above it, so a package's own worlds load without ROS.
   std::string base_dir;

@@ -9,6 +9,7 @@
 
 #include "rigid_body_sim/core/scene.h"
 #include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/controllers.h"
 
 namespace rigid_body_sim::io {
 
@@ -19,6 +20,8 @@ struct SceneSetup {
   /// Per entry of config.bodies, in its order: a free body's index (≥ 0),
   /// or −1 − r for robot r.
   std::vector<int> entry;
+  /// Per robot: its controllers (`controllers`, `bodies[i].controllers`).
+  std::vector<RobotControls> controls;
 };
 
 /// A URDF's text, where it came from (for messages) and the folder its

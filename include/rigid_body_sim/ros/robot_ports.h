@@ -10,6 +10,7 @@
 #include <sensor_msgs/JointState.h>
 #include <tf2_ros/transform_broadcaster.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@ struct RobotPorts {
   /// URDF's root is then `world`, and robot_state_publisher roots it there).
   std::string base_frame;
   CountedPublisher joint_states;
+  long long every = 1;  ///< joint_states every this many steps
 };
 
 /// sensor_msgs/JointState of `state`: every moving joint of `robot` in its
@@ -34,7 +36,7 @@ struct RobotPorts {
 /// (continuous joints unwrapped, as gazebo_ros_control reports them),
 /// velocities, and `effort` (N·m or N, per joint; empty: zero).
 sensor_msgs::JointState jointStateMessage(const core::ArticulationModel& robot, const core::ArticulationState& state,
-                                          const std::vector<double>& effort, const ros::Time& stamp);
+                                          const Eigen::VectorXd& effort, const ros::Time& stamp);
 
 /// The transform `world_frame` -> `ports.base_frame` of `state`'s base.
 geometry_msgs::TransformStamped baseTransform(const core::ArticulationState& state, const RobotPorts& ports,
@@ -50,11 +52,15 @@ void checkRobotFrames(const core::Scene& scene, const std::string& world_frame,
 class RobotPublisher {
  public:
   /// Advertises each robot's joint_states on `nh` (under "NAME/" when
-  /// `several` things are in the world).
-  RobotPublisher(const ros::NodeHandle& nh, const core::Scene& scene, bool several, std::string world_frame);
+  /// `several` things are in the world), at `rate(r)` Hz of sim time (its
+  /// joint_state_controller's), or `publish_rate` where that is 0.
+  RobotPublisher(const ros::NodeHandle& nh, const core::Scene& scene, bool several, std::string world_frame, double dt,
+                 double publish_rate, const std::function<double(std::size_t)>& rate);
 
-  /// Every robot's joint states and floating base now, stamped `now`.
-  void publish(const core::Simulation& sim, const ros::Time& now);
+  /// Robot r's joint states (efforts `applied[r]`) and floating base,
+  /// stamped `now`: every robot, or with `steps` ≥ 0 those due at that step.
+  void publish(const core::Simulation& sim, const std::vector<Eigen::VectorXd>& applied, const ros::Time& now,
+               long long steps = -1);
 
   const std::vector<RobotPorts>& robots() const { return robots_; }
 

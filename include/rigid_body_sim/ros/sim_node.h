@@ -42,6 +42,7 @@
 #include "rigid_body_sim/ros/markers.h"
 #include "rigid_body_sim/ros/pacer.h"
 #include "rigid_body_sim/ros/params.h"
+#include "rigid_body_sim/ros/robot_commands.h"
 #include "rigid_body_sim/ros/robot_ports.h"
 #include "rigid_body_sim/ros/sim_clock.h"
 #include "rigid_body_sim/ros/spawn_queue.h"
@@ -75,8 +76,11 @@ class SimNode {
   /// Says what the step reported: bodies the speed limits held (once each),
   /// bodies the guard put back (their wrenches cleared).
   void reportStep();
-  /// tf and odometry now (StatePublisher::state), then the markers if due.
+  /// tf and odometry now (StatePublisher::state), then the markers if due;
+  /// and every robot's joint states.
   void publish();
+  /// The bodies' part of publish().
+  void publishBodies();
 
   // The services that run the loop (pacing.cpp): pause, unpause, step.
   bool pause(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
@@ -110,6 +114,8 @@ class SimNode {
   ros::NodeHandle nh_, pnh_;
   NodeParams params_;
   const NodeSettings& settings_ = params_.node;  ///< ~physics changes params_.node
+  /// The robots' controllers as the world was loaded, until commands_ takes them.
+  std::vector<io::RobotControls> start_controls_;
   /// The model and every table in its bodies' order: a world edit goes through it once.
   core::Simulation sim_;
   const core::Model& model_ = sim_.model();
@@ -117,6 +123,8 @@ class SimNode {
   core::Workspace& workspace_ = sim_.workspace;
   core::WrenchSchedule& schedule_ = sim_.schedule;
   core::Loads loads_;
+  std::vector<core::ArticulationLoads> robot_loads_;  ///< per robot, its controllers' efforts
+  std::optional<RobotCommands> commands_;             ///< the robots' controllers and their topics
 
   /// Every body's frames, topics and devices, and its names: a spawn, a
   /// delete and a reset go through it (body_ports.h).
@@ -133,7 +141,16 @@ class SimNode {
                           pacer_,
                           {[this] { afterSpawn(); }, [this](const std::string& name) { afterDelete(name); }}};
   /// get_state, set_state, reset: each published at once, a reset re-paced.
-  StateRequests state_requests_{sim_, ports_, address_, time_, {[this] { publish(); }, [this] { rebaseClock(); }}};
+  StateRequests state_requests_{
+      sim_,
+      ports_,
+      address_,
+      time_,
+      {[this] { publish(); },
+       [this] {
+         rebaseClock();
+         commands_->restart(sim_);  // nothing drives a reset robot back (gazebo_ros_pkgs #1311)
+       }}};
   PortContext port_context_;  ///< what opening a body's ports needs of the node (read only once made)
   /// Samples the IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();

@@ -1,0 +1,36 @@
+// A robot's controllers from its config's `controllers` map: each type as
+// ros_controllers names it turned into the core's joint controllers
+// (core/joint_control.h), which act through effort only. ROS-free.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/core/joint_control.h"
+#include "rigid_body_sim/io/config.h"
+
+namespace rigid_body_sim::io {
+
+/// What the node runs of a robot's controllers.
+struct RobotControls {
+  core::JointControllers controllers;  ///< every commanding controller, in the map's order
+  /// Per controller of `controllers`: its command is a std_msgs/Float64MultiArray
+  /// (a Joint*GroupController), else a std_msgs/Float64.
+  std::vector<char> group;
+  /// Hz of sim time of a joint_state_controller/JointStateController's
+  /// joint_states; 0: none was given (the node's ~publish_rate).
+  double joint_state_rate = 0.0;
+};
+
+/// The types this project runs, as ros_controllers names them.
+std::vector<std::string> controllerTypes();
+
+/// `entries` for the robot `model`. Refused (ConfigError naming the key):
+/// a type it does not run (the message lists those it does), `joint` for a
+/// group type or `joints` for a one-joint type, a joint the robot does not
+/// have or a mimic joint, a joint two controllers own, a position or
+/// velocity controller without gains for each joint (`pid`, or `gains` for
+/// a group): they act through a PID on effort, never by setting the joint.
+RobotControls buildControls(const std::vector<ControllerEntry>& entries, const core::ArticulationModel& model);
+
+}  // namespace rigid_body_sim::io

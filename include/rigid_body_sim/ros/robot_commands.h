@@ -1,0 +1,57 @@
+// The robots' controllers in the node: each controller's command topic
+// (CONTROLLER/command under the robot's namespace: std_msgs/Float64, or
+// Float64MultiArray for a group), the efforts they give every step, and
+// their restart when a robot is put somewhere. The control itself is the
+// core's (core/joint_control.h), through effort only.
+#pragma once
+
+#include <ros/ros.h>
+
+#include <Eigen/Core>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rigid_body_sim/core/articulation_step.h"
+#include "rigid_body_sim/core/simulation.h"
+#include "rigid_body_sim/io/controllers.h"
+
+namespace rigid_body_sim::node {
+
+class RobotCommands {
+ public:
+  RobotCommands(const RobotCommands&) = delete;  // its subscribers' callbacks hold `this`
+  RobotCommands& operator=(const RobotCommands&) = delete;
+  /// Subscribes every controller's command on `nh` (under "NAME/" for each
+  /// robot when `several` things are in the world); the position
+  /// controllers hold the joints where `sim` starts them.
+  RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotControls> controls, const core::Simulation& sim,
+                bool several);
+
+  /// Each robot's loads for the step from `sim`'s state: its controllers'
+  /// efforts, within the joints' limits (also kept for joint_states).
+  void loadsFor(const core::Simulation& sim, std::vector<core::ArticulationLoads>& loads);
+  /// The efforts of the last step, per robot (empty before the first).
+  const std::vector<Eigen::VectorXd>& applied() const { return applied_; }
+  /// After a reset or set_state: every controller starts again from where
+  /// its robot now is (no integral, position targets where the joints are).
+  void restart(const core::Simulation& sim);
+  /// Hz of robot r's joint_state_controller, 0 for none.
+  double jointStateRate(std::size_t r) const { return controls_[r].joint_state_rate; }
+
+  /// A command for robot r's controller c (the topics' callback; public for
+  /// the tests): refused with a warning when not finite or of the wrong
+  /// length, clipped to the limits with a warning once per joint.
+  void command(std::size_t r, std::size_t c, const std::vector<double>& values);
+
+ private:
+  std::vector<io::RobotControls> controls_;
+  std::vector<std::string> robot_names_;
+  std::vector<std::vector<std::string>> joint_names_;  ///< per robot, per link
+  std::vector<Eigen::VectorXd> applied_;
+  std::set<std::pair<std::string, std::string>> warned_;  ///< (robot/joint, limit) clipped once
+  std::vector<ros::Subscriber> subscribers_;
+};
+
+}  // namespace rigid_body_sim::node

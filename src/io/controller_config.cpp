@@ -1,0 +1,75 @@
+// A robot's `controllers` map: controller_config.h.
+#include "controller_config.h"
+
+#include <utility>
+
+#include "yaml_fields.h"
+
+namespace rigid_body_sim::io {
+
+using namespace yaml_fields;
+
+namespace {
+
+/// control_toolbox's gains at `path`: p, i, d, i_clamp (each ≥ 0, 0 if not given).
+core::PidGains parseGains(const YAML::Node& node, const std::string& path) {
+  if (!node.IsMap()) fail(path, "expected a map {p, i, d, i_clamp}");
+  requireKnownKeys(node, path, {"p", "i", "d", "i_clamp"});
+  core::PidGains g;
+  for (const auto& [key, field] :
+       {std::pair<const char*, double*>{"p", &g.p}, {"i", &g.i}, {"d", &g.d}, {"i_clamp", &g.i_clamp}}) {
+    if (!node[key]) continue;
+    *field = number(node[key], join(path, key));
+    if (*field < 0.0) fail(join(path, key), "must be ≥ 0");
+  }
+  return g;
+}
+
+}  // namespace
+
+std::vector<ControllerEntry> parseControllers(const YAML::Node& node, const std::string& path) {
+  if (!node.IsMap()) fail(path, "expected a map from controller name to {type, joint or joints, pid or gains}");
+  std::vector<ControllerEntry> out;
+  for (const auto& item : node) {
+    ControllerEntry c;
+    c.name = text(item.first, path);
+    c.key = join(path, c.name);
+    const YAML::Node& body = item.second;
+    if (!body.IsMap()) fail(c.key, "expected a map {type, joint or joints, pid or gains}");
+    requireKnownKeys(body, c.key, {"type", "joint", "joints", "pid", "gains", "publish_rate"});
+    if (!body["type"]) fail(join(c.key, "type"), "every controller needs a type (as ros_controllers names it)");
+    c.type = text(body["type"], join(c.key, "type"));
+    if (body["joint"] && body["joints"]) fail(c.key, "give joint (one) or joints (a group), not both");
+    if (body["joint"]) c.joints = {text(body["joint"], join(c.key, "joint"))};
+    if (body["joints"]) {
+      c.joint_list = true;
+      const YAML::Node& list = body["joints"];
+      if (!list.IsSequence()) fail(join(c.key, "joints"), "expected a list of joint names");
+      for (std::size_t k = 0; k < list.size(); ++k) {
+        c.joints.push_back(text(list[k], join(c.key, "joints") + "[" + std::to_string(k) + "]"));
+      }
+    }
+    c.gains.assign(c.joints.size(), std::nullopt);
+    if (body["pid"]) {
+      if (c.joints.size() != 1)
+        fail(join(c.key, "pid"), "is for a one-joint controller; a group takes gains: {JOINT: {p, i, d}}");
+      c.gains[0] = parseGains(body["pid"], join(c.key, "pid"));
+    }
+    if (body["gains"]) {
+      const YAML::Node& gains = body["gains"];
+      if (!gains.IsMap()) fail(join(c.key, "gains"), "expected a map from joint name to {p, i, d, i_clamp}");
+      for (const auto& g : gains) {
+        const std::string joint = text(g.first, join(c.key, "gains"));
+        std::size_t k = 0;
+        while (k < c.joints.size() && c.joints[k] != joint) ++k;
+        if (k == c.joints.size()) fail(join(join(c.key, "gains"), joint), "is not one of the controller's joints");
+        c.gains[k] = parseGains(g.second, join(join(c.key, "gains"), joint));
+      }
+    }
+    if (body["publish_rate"]) c.publish_rate = positiveNumber(body["publish_rate"], join(c.key, "publish_rate"));
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+}  // namespace rigid_body_sim::io

@@ -1,0 +1,134 @@
+// A robot's controllers from the config (io/controllers.h): ros_controllers'
+// types and YAML as a Gazebo user loads them, each refusal naming the key.
+#include "rigid_body_sim/io/controllers.h"
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+#include "rigid_body_sim/io/articulation_loader.h"
+#include "rigid_body_sim/io/scene_loader.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+const std::string kUrdf = std::string(RBS_SOURCE_DIR) + "/urdf/";
+
+io::RobotControls controls(const std::string& yaml) {
+  const io::SimConfig c = io::parseConfig(YAML::Load(yaml));
+  return io::buildControls(c.controllers, io::loadArticulationFile(kUrdf + "arm2.urdf"));
+}
+
+/// The message controls(yaml) is refused with ("" if accepted).
+std::string refusal(const std::string& yaml) {
+  try {
+    controls(yaml);
+  } catch (const io::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Controllers, ReadsRosControllersYaml) {
+  const io::RobotControls c = controls(R"(
+controllers:
+  joint_state_controller: {type: joint_state_controller/JointStateController, publish_rate: 25}
+  shoulder_effort: {type: effort_controllers/JointEffortController, joint: shoulder}
+  elbow_velocity:
+    type: velocity_controllers/JointVelocityController
+    joint: elbow
+    pid: {p: 2.0, i: 0.5, d: 0.1, i_clamp: 1.0}
+)");
+  EXPECT_EQ(c.joint_state_rate, 25.0);
+  ASSERT_EQ(c.controllers.specs().size(), 2u);
+  const core::JointControllerSpec& effort = c.controllers.specs()[0];
+  EXPECT_EQ(effort.name, "shoulder_effort");
+  EXPECT_EQ(effort.mode, core::ControlMode::kEffort);
+  EXPECT_EQ(effort.joints, std::vector<int>{1});
+  const core::JointControllerSpec& velocity = c.controllers.specs()[1];
+  EXPECT_EQ(velocity.mode, core::ControlMode::kVelocity);
+  EXPECT_EQ(velocity.joints, std::vector<int>{2});
+  ASSERT_EQ(velocity.gains.size(), 1u);
+  EXPECT_EQ(velocity.gains[0].p, 2.0);
+  EXPECT_EQ(velocity.gains[0].i, 0.5);
+  EXPECT_EQ(velocity.gains[0].d, 0.1);
+  EXPECT_EQ(velocity.gains[0].i_clamp, 1.0);
+  EXPECT_EQ(c.group, (std::vector<char>{0, 0}));
+}
+
+TEST(Controllers, GroupsTakeJointsAndPerJointGains) {
+  const io::RobotControls c = controls(R"(
+controllers:
+  arm:
+    type: effort_controllers/JointGroupPositionController
+    joints: [elbow, shoulder]
+    gains:
+      shoulder: {p: 100, d: 10}
+      elbow: {p: 50, i: 1, i_clamp: 2}
+)");
+  ASSERT_EQ(c.controllers.specs().size(), 1u);
+  const core::JointControllerSpec& arm = c.controllers.specs()[0];
+  EXPECT_EQ(arm.joints, (std::vector<int>{2, 1}));  // in the command's order
+  EXPECT_EQ(arm.gains[0].p, 50.0);
+  EXPECT_EQ(arm.gains[1].d, 10.0);
+  EXPECT_EQ(c.group, std::vector<char>{1});
+}
+
+TEST(Controllers, RefusalsNameTheKey) {
+  const struct {
+    std::string yaml, expected;
+  } cases[] = {
+      {"controllers: {a: {type: effort_controllers/JointFooController, joint: elbow}}",
+       "'controllers.a.type': 'effort_controllers/JointFooController' is not a controller type this project runs; "
+       "the types: joint_state_controller/JointStateController, effort_controllers/JointEffortController"},
+      {"controllers: {a: {type: effort_controllers/JointTrajectoryController, joints: [elbow]}}",
+       "not run yet (the trajectory controller comes next)"},
+      {"controllers: {a: {type: effort_controllers/JointEffortController, joint: wrist}}",
+       "'controllers.a.joint': robot 'arm2' has no moving joint 'wrist' (its joints: 'shoulder', 'elbow')"},
+      {"controllers: {a: {type: position_controllers/JointPositionController, joint: elbow}}",
+       "'controllers.a.pid': 'position_controllers/JointPositionController' acts here through a PID on effort"},
+      {"controllers: {a: {type: effort_controllers/JointGroupPositionController, joints: [elbow], gains: {}}}",
+       "'controllers.a.gains.elbow'"},
+      {"controllers: {a: {type: effort_controllers/JointGroupEffortController, joint: elbow}}",
+       "'controllers.a': 'effort_controllers/JointGroupEffortController' takes joints: [NAME, ...]"},
+      {"controllers: {a: {type: effort_controllers/JointEffortController, joints: [elbow]}}", "takes joint: NAME"},
+      {"controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow, antiwindup: true}}",
+       "antiwindup"},
+      {"controllers: {a: {type: effort_controllers/JointPositionController, joint: elbow, pid: {p: -1}}}",
+       "'controllers.a.pid.p'"},
+      {"controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow},"
+       " b: {type: effort_controllers/JointEffortController, joint: elbow}}",
+       "'controllers': controller 'b': joint 'elbow' is already controller 'a''s"},
+      {"controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow, publish_rate: 10}}",
+       "'controllers.a.publish_rate'"},
+      {"controllers: {a: {joint: elbow}}", "'controllers.a.type'"},
+  };
+  for (const auto& c : cases) {
+    const std::string message = refusal(c.yaml);
+    EXPECT_NE(message.find(c.expected), std::string::npos) << c.yaml << "\n  -> " << message;
+  }
+}
+
+TEST(Controllers, ABodyTakesNoneAndARobotEntryItsOwn) {
+  const std::string box = kUrdf + "box.urdf", arm = kUrdf + "arm2.urdf";
+  try {
+    io::buildScene(io::parseConfig(YAML::Load("bodies:\n  - {name: crate, urdf: " + box +
+                                              ", controllers: {a: {type: effort_controllers/JointEffortController,"
+                                              " joint: x}}}\n")));
+    ADD_FAILURE() << "a body took controllers";
+  } catch (const io::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("'bodies[0].controllers': body 'crate' has no moving joints"),
+              std::string::npos)
+        << e.what();
+  }
+  const io::SceneSetup s = io::buildScene(io::parseConfig(
+      YAML::Load("bodies:\n  - {name: crate, urdf: " + box + "}\n  - {name: arm, urdf: " + arm +
+                 ", controllers: {e: {type: effort_controllers/JointEffortController, joint: elbow}}}\n")));
+  ASSERT_EQ(s.controls.size(), 1u);
+  ASSERT_EQ(s.controls[0].controllers.specs().size(), 1u);
+  EXPECT_EQ(s.controls[0].controllers.specs()[0].joints, std::vector<int>{2});
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
