@@ -115,6 +115,10 @@ bool JointControllers::command(std::size_t c, const std::vector<double>& values,
 }
 
 void JointControllers::efforts(const ArticulationState& state, double dt, Eigen::VectorXd& effort) {
+  if (owner_.empty()) {  // made without a model: nothing to drive
+    effort.resize(0);
+    return;
+  }
   effort.setZero(static_cast<Eigen::Index>(owner_.size()) - 1);
   for (std::size_t c = 0; c < specs_.size(); ++c) {
     const JointControllerSpec& spec = specs_[c];

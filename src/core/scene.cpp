@@ -85,6 +85,12 @@ void Scene::removeBody(std::size_t i) {
   for (SceneRobot& robot : robots_) --robot.first_body;
 }
 
+void placeRobot(const Scene& scene, std::size_t r, const ArticulationState& now, State& bodies) {
+  ArticulationKinematics kin;
+  kinematics(scene.robots().at(r).model, now, kin);
+  placeLinks(scene, r, kin, bodies);
+}
+
 SceneState sceneState(const Scene& scene, const State& bodies, const std::vector<ArticulationState>& robots) {
   SceneState s;
   s.bodies = bodies;

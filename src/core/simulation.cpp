@@ -67,6 +67,16 @@ void Simulation::place(int i, const BodyState& now) {
   state.contact_impulses.clear();
 }
 
+void Simulation::placeRobot(std::size_t r, const ArticulationState& now) {
+  ArticulationState& robot = robots.at(r);
+  robot = now;
+  robot.asleep = false;
+  robot.still_time = 0.0;
+  robot.carried = {};
+  core::placeRobot(scene, r, robot, state);
+  state.contact_impulses.clear();
+}
+
 void Simulation::retune(const Tuning& tuning) {
   scene.retune(tuning);
   workspace = workspace.forEditedModel();  // the fixed-point cache assumed the old settings
@@ -82,6 +92,7 @@ void Simulation::reset(double time) {
   state.time = time;
   robots = initial_robots;
   schedule.clear(-1);
+  joint_efforts.clearAll();
 }
 
 }  // namespace rigid_body_sim::core

@@ -24,26 +24,10 @@ bool LoadRequests::applyWrench(ApplyWrench::Request& req, ApplyWrench::Response&
         "or call apply_impulse for an instantaneous push";
     return true;
   }
-  // start_time is on the node's clock (the stamps of /odom and tf): 0 or
-  // the past means now, the next step; far ahead is another clock's reading.
-  double start = time_.simTime();
-  std::string when = "from now (t = " + time_.text() + ")";
-  if (!req.start_time.isZero()) {
-    const int64_t asked = static_cast<int64_t>(req.start_time.toNSec());
-    const double at = time_.clock.simTimeAt(asked), lead = at - time_.simTime();
-    if (lead > kMaxLeadTime) {
-      res.message = "start_time " + formatStamp(asked) + " s is " + std::to_string(lead) +
-                    " s ahead of this node's clock (now " + time_.text() +
-                    "): is it on another clock? Stamps of odom and tf are on this one; 0 means now";
-      return true;
-    }
-    if (lead > 0.0) {
-      start = at;
-      when = "from t = " + formatStamp(asked) + " s";
-    } else if (lead < 0.0) {
-      when = "from now (start_time " + formatStamp(asked) + " s is past; t = " + time_.text() + ")";
-    }
-  }
+  std::string when;
+  const std::optional<double> starts = startOf(req.start_time, time_, when, res.message);
+  if (!starts) return true;
+  const double start = *starts;
   const double end = duration > 0.0 ? start + duration : core::WrenchSchedule::kForever;
   if (!sim_.schedule.add(body, {force, torque, point, axes.frame}, start, end, axes.other)) {
     res.message = "body '" + sim_.model().body(body).name + "' already holds " +

@@ -26,7 +26,7 @@ void SimNode::stepOnce() {
     loads_[i].force_W += drive.force_W;
     loads_[i].torque_W += drive.torque_W;
   }
-  commands_->loadsFor(sim_, robot_loads_);  // the robots' controllers, from the state before the step
+  commands_->loadsFor(sim_, t, robot_loads_);  // the robots' controllers, from the state before the step
   sim_.step(loads_, robot_loads_);
   if (!workspace_.speed_limited.empty() || !workspace_.diverged.empty()) reportStep();
   ++steps_;
@@ -34,6 +34,7 @@ void SimNode::stepOnce() {
   sampleSensors();
   sim_.contacts.update(state_, workspace_.contacts);
   schedule_.dropFinished(simTime());
+  sim_.joint_efforts.dropFinished(simTime());
   if (steps_ % publish_every_ == 0) {
     publisher_->clock(stamp());
     publishBodies();

@@ -2,14 +2,18 @@
 // refused request changes nothing). Private to the node.
 #pragma once
 
+#include <ros/time.h>
+
 #include <algorithm>
 #include <cctype>
 #include <initializer_list>
+#include <optional>
 #include <sstream>
 #include <string>
 
 #include "rigid_body_sim/core/types.h"
 #include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/ros/sim_clock.h"
 
 namespace rigid_body_sim::node {
 
@@ -65,6 +69,30 @@ inline std::string firstProblem(std::initializer_list<std::string> problems) {
     if (!p.empty()) return p;
   }
   return {};
+}
+
+/// When a request's `start_time` starts, in sim time: it is on the node's
+/// clock (the stamps of /odom, tf and joint_states); 0 or the past means
+/// now, the next step. Far ahead is another clock's reading: refused
+/// (nullopt, `error` says why). `when` says which, for the answer.
+inline std::optional<double> startOf(const ros::Time& start_time, const NodeTime& time, std::string& when,
+                                     std::string& error) {
+  when = "from now (t = " + time.text() + ")";
+  if (start_time.isZero()) return time.simTime();
+  const int64_t asked = static_cast<int64_t>(start_time.toNSec());
+  const double at = time.clock.simTimeAt(asked), lead = at - time.simTime();
+  if (lead > kMaxLeadTime) {
+    error = "start_time " + formatStamp(asked) + " s is " + std::to_string(lead) +
+            " s ahead of this node's clock (now " + time.text() +
+            "): is it on another clock? Stamps of odom and tf are on this one; 0 means now";
+    return std::nullopt;
+  }
+  if (lead > 0.0) {
+    when = "from t = " + formatStamp(asked) + " s";
+    return at;
+  }
+  if (lead < 0.0) when = "from now (start_time " + formatStamp(asked) + " s is past; t = " + time.text() + ")";
+  return time.simTime();
 }
 
 }  // namespace rigid_body_sim::node

@@ -4,6 +4,8 @@
 #include <std_msgs/Float64.h>
 #include <std_msgs/Float64MultiArray.h>
 
+#include <algorithm>
+
 namespace rigid_body_sim::node {
 
 RobotCommands::RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotControls> controls,
@@ -55,24 +57,29 @@ void RobotCommands::command(std::size_t r, std::size_t c, const std::vector<doub
   }
 }
 
-void RobotCommands::loadsFor(const core::Simulation& sim, std::vector<core::ArticulationLoads>& loads) {
+void RobotCommands::loadsFor(const core::Simulation& sim, double t, std::vector<core::ArticulationLoads>& loads) {
   loads.resize(controls_.size());
   const double dt = sim.model().dt();
   for (std::size_t r = 0; r < controls_.size(); ++r) {
-    if (controls_[r].controllers.specs().empty()) {
-      loads[r].effort.resize(0);
-      continue;
+    const core::ArticulationModel& model = sim.scene.robots()[r].model;
+    Eigen::VectorXd& effort = applied_[r];
+    controls_[r].controllers.efforts(sim.robots[r], dt, effort);  // zero where none acts
+    if (effort.size() != model.jointCount()) effort.setZero(model.jointCount());
+    sim.joint_efforts.addEfforts(r, t, dt, effort);
+    for (int j = 1; j <= model.jointCount(); ++j) {  // the sum within the limit, as reported
+      effort(j - 1) = std::clamp(effort(j - 1), -model.links[j].limits.effort, model.links[j].limits.effort);
     }
-    controls_[r].controllers.efforts(sim.robots[r], dt, applied_[r]);
-    loads[r].effort = applied_[r];
+    loads[r].effort = effort;
   }
 }
 
 void RobotCommands::restart(const core::Simulation& sim) {
-  for (std::size_t r = 0; r < controls_.size(); ++r) {
-    controls_[r].controllers.restart(sim.robots[r]);
-    applied_[r].resize(0);
-  }
+  for (std::size_t r = 0; r < controls_.size(); ++r) restart(sim, r);
+}
+
+void RobotCommands::restart(const core::Simulation& sim, std::size_t r) {
+  controls_.at(r).controllers.restart(sim.robots[r]);
+  applied_[r].resize(0);
 }
 
 }  // namespace rigid_body_sim::node

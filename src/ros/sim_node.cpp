@@ -144,16 +144,21 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   commands_.emplace(nh_, std::move(start_controls_), sim_, several);
   robot_publisher_.emplace(nh_, sim_.scene, several, settings_.world_frame, model_.dt(), settings_.publish_rate,
                            [this](std::size_t r) { return commands_->jointStateRate(r); });
-  services_ = {pnh_.advertiseService("apply_wrench", &LoadRequests::applyWrench, &load_requests_),
-               pnh_.advertiseService("apply_impulse", &LoadRequests::applyImpulse, &load_requests_),
-               pnh_.advertiseService("clear_wrenches", &LoadRequests::clearWrenches, &load_requests_),
-               pnh_.advertiseService("get_state", &StateRequests::getState, &state_requests_),
-               pnh_.advertiseService("set_state", &StateRequests::setState, &state_requests_),
-               pnh_.advertiseService("reset", &StateRequests::reset, &state_requests_),
-               pnh_.advertiseService("pause", &SimNode::pause, this),
-               pnh_.advertiseService("unpause", &SimNode::unpause, this),
-               pnh_.advertiseService("step", &SimNode::step, this),
-               pnh_.advertiseService("delete_body", &WorldEdits::deleteBody, &world_edits_)};
+  services_ = {
+      pnh_.advertiseService("apply_wrench", &LoadRequests::applyWrench, &load_requests_),
+      pnh_.advertiseService("apply_impulse", &LoadRequests::applyImpulse, &load_requests_),
+      pnh_.advertiseService("clear_wrenches", &LoadRequests::clearWrenches, &load_requests_),
+      pnh_.advertiseService("get_state", &StateRequests::getState, &state_requests_),
+      pnh_.advertiseService("set_state", &StateRequests::setState, &state_requests_),
+      pnh_.advertiseService("reset", &StateRequests::reset, &state_requests_),
+      pnh_.advertiseService("pause", &SimNode::pause, this),
+      pnh_.advertiseService("unpause", &SimNode::unpause, this),
+      pnh_.advertiseService("step", &SimNode::step, this),
+      pnh_.advertiseService("delete_body", &WorldEdits::deleteBody, &world_edits_),
+      pnh_.advertiseService("set_model_configuration", &JointRequests::setModelConfiguration, &joint_requests_),
+      pnh_.advertiseService("get_joint_properties", &JointRequests::getJointProperties, &joint_requests_),
+      pnh_.advertiseService("apply_joint_effort", &JointRequests::applyJointEffort, &joint_requests_),
+      pnh_.advertiseService("clear_joint_forces", &JointRequests::clearJointForces, &joint_requests_)};
   ros::NodeHandle spawn_nh(pnh_);
   spawn_nh.setCallbackQueue(&spawn_queue_);
   spawn_service_ = spawn_nh.advertiseService("spawn_body", &SimNode::spawnBody, this);

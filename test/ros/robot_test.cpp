@@ -20,6 +20,10 @@
 #include <vector>
 
 #include "node_fixture.h"
+#include "rigid_body_sim/ApplyJointEffort.h"
+#include "rigid_body_sim/ClearJointForces.h"
+#include "rigid_body_sim/GetJointProperties.h"
+#include "rigid_body_sim/SetModelConfiguration.h"
 
 namespace {
 
@@ -121,6 +125,68 @@ TEST_F(RodPendulum, RobotStatePublisherTfFollowsTheJointStates) {
   EXPECT_GE(matched, 15);
 }
 
+// apply_joint_effort acts for its duration (joint_states reports it as the
+// effort applied, on the steps it covers), until cleared when the duration
+// is negative; what it refuses changes nothing.
+TEST_F(RodPendulum, ApplyJointEffortActsForItsDurationOrUntilCleared) {
+  std::vector<sensor_msgs::JointState> got;
+  const ros::Subscriber sub = nh_.subscribe<sensor_msgs::JointState>(
+      "/joint_states", 10000, [&](const sensor_msgs::JointState::ConstPtr& m) { got.push_back(*m); });
+  ASSERT_TRUE(spinUntil([&] { return !got.empty(); }, 30.0));
+  rigid_body_sim::ApplyJointEffort e;
+  e.request.joint_name = "pivot";
+  e.request.effort = 0.7;
+  e.request.start_time = got.back().header.stamp + ros::Duration(0.2);
+  e.request.duration = ros::Duration(0.5);
+  e = call("apply_joint_effort", e);
+  ASSERT_TRUE(e.response.success) << e.response.status_message;
+  const double start = e.request.start_time.toSec();
+  ASSERT_TRUE(spinUntil([&] { return got.back().header.stamp.toSec() > start + 1.0; }, 30.0));
+  // Each joint_states reports the effort of the step just before its stamp.
+  for (const sensor_msgs::JointState& m : got) {
+    const double t = m.header.stamp.toSec();
+    if (t <= start - 1e-9 || (t > start + 1e-9 && t < start + 0.5 - 1e-9) || t > start + 0.5 + 1e-9) {
+      // (a step's share is its overlap over h, to rounding)
+      EXPECT_NEAR(m.effort[0], (t > start && t < start + 0.5) ? 0.7 : 0.0, 1e-12) << "at t = " << t;
+    }
+  }
+  // Until cleared, then nothing.
+  e.request.start_time = ros::Time(0);
+  e.request.duration = ros::Duration(-1.0);
+  ASSERT_TRUE(call("apply_joint_effort", e).response.success);
+  const std::size_t before = got.size();
+  ASSERT_TRUE(spinUntil([&] { return got.size() > before + 30; }, 30.0));
+  EXPECT_NEAR(got.back().effort[0], 0.7, 1e-12);
+  rigid_body_sim::ClearJointForces clear;
+  clear.request.joint_name = "pendulum/pivot";
+  clear = call("clear_joint_forces", clear);
+  ASSERT_TRUE(clear.response.success) << clear.response.status_message;
+  EXPECT_EQ(clear.response.status_message, "1 efforts on joint 'pivot' cleared");
+  const std::size_t cleared = got.size();
+  ASSERT_TRUE(spinUntil([&] { return got.size() > cleared + 5; }, 30.0));
+  EXPECT_EQ(got.back().effort[0], 0.0);
+  // Refused: NaN, duration 0, an unknown joint.
+  const struct {
+    std::string joint;
+    double effort, duration;
+    std::string expected;
+  } bad[] = {{"pivot", std::nan(""), 1.0, "effort: nan"},
+             {"pivot", 1.0, 0.0, "duration 0 applies nothing"},
+             {"hinge", 1.0, 1.0, "joint_name: no robot has a moving joint 'hinge'"}};
+  for (const auto& b : bad) {
+    rigid_body_sim::ApplyJointEffort r;
+    r.request.joint_name = b.joint;
+    r.request.effort = b.effort;
+    r.request.duration = ros::Duration(b.duration);
+    r = call("apply_joint_effort", r);
+    EXPECT_FALSE(r.response.success);
+    EXPECT_NE(r.response.status_message.find(b.expected), std::string::npos) << r.response.status_message;
+  }
+  const std::size_t after = got.size();
+  ASSERT_TRUE(spinUntil([&] { return got.size() > after + 20; }, 30.0));
+  EXPECT_EQ(got.back().effort[0], 0.0);
+}
+
 // ------------------------------------------------------------------ the arm under position controllers
 
 /// The efforts that hold urdf/arm2.urdf still at (q1, q2) against gravity:
@@ -198,6 +264,66 @@ TEST_F(Arm, TargetsPastTheRangeAreHeldToIt) {
   wait(5.0);
   EXPECT_NEAR(last_.position[1], 2.5, 0.01);
   EXPECT_NEAR(last_.position[0], 0.0, 0.01);
+}
+
+// set_model_configuration puts the arm there with its velocities, the
+// controllers hold it there (not at their old targets), and what it
+// refuses changes nothing; get_joint_properties reads the joint back.
+TEST_F(Arm, SetModelConfigurationPlacesTheJointsAndTheControllersStay) {
+  command(-0.5, 0.8);
+  wait(3.0);
+  rigid_body_sim::SetModelConfiguration set;
+  set.request.model_name = "arm2";
+  set.request.joint_names = {"elbow", "shoulder"};
+  set.request.joint_positions = {-0.3, 0.4};
+  set.request.joint_velocities = {0.0, 0.5};
+  set = call("set_model_configuration", set);
+  ASSERT_TRUE(set.response.success) << set.response.status_message;
+  // The first joint_states after it: where it was put, at its velocities.
+  const double put_at = last_.header.stamp.toSec();
+  ASSERT_TRUE(spinUntil([&] { return last_.header.stamp.toSec() >= put_at; }, 10.0));
+  rigid_body_sim::GetJointProperties props;
+  props.request.joint_name = "shoulder";
+  props = call("get_joint_properties", props);
+  ASSERT_TRUE(props.response.success) << props.response.status_message;
+  EXPECT_EQ(props.response.type, rigid_body_sim::GetJointProperties::Response::REVOLUTE);
+  EXPECT_EQ(props.response.damping, std::vector<double>{0.1});
+  wait(4.0);
+  // The shoulder was set moving at 0.5 rad/s: the controller brings it back
+  // to where it was put and holds it there, not at -0.5.
+  EXPECT_NEAR(last_.position[0], 0.4, 0.02);
+  EXPECT_NEAR(last_.position[1], -0.3, 0.01);
+
+  const struct {
+    std::vector<std::string> names;
+    std::vector<double> positions, velocities;
+    std::string expected;
+  } bad[] = {
+      {{"elbow"}, {3.0}, {}, "joint_positions[0]: joint 'elbow' = 3 is outside its limits [-2.5, 2.5]"},
+      {{"wrist"}, {0.0}, {}, "joint_names[0]: robot 'arm2' has no moving joint 'wrist'"},
+      {{"elbow"}, {std::nan("")}, {}, "joint_positions[0]: joint 'elbow' = nan"},
+      {{"elbow"}, {0.1}, {9.0}, "joint_velocities[0]: joint 'elbow' = 9 is faster than its velocity limit 4"},
+      {{"elbow", "shoulder"}, {0.1}, {}, "joint_positions: 1 values for 2 joint_names"},
+      {{"elbow", "elbow"}, {0.1, 0.2}, {}, "joint_names[1]: joint 'elbow' is named twice"},
+  };
+  for (const auto& b : bad) {
+    rigid_body_sim::SetModelConfiguration s;
+    s.request.joint_names = b.names;
+    s.request.joint_positions = b.positions;
+    s.request.joint_velocities = b.velocities;
+    s = call("set_model_configuration", s);
+    EXPECT_FALSE(s.response.success) << b.expected;
+    EXPECT_NE(s.response.status_message.find(b.expected), std::string::npos) << s.response.status_message;
+  }
+  wait(0.5);  // still held where it was put: a refused request moved nothing, nor any target
+  EXPECT_NEAR(last_.position[0], 0.4, 0.01);
+  EXPECT_NEAR(last_.position[1], -0.3, 0.01);
+  rigid_body_sim::GetJointProperties unknown;
+  unknown.request.joint_name = "knee";
+  unknown = call("get_joint_properties", unknown);
+  EXPECT_FALSE(unknown.response.success);
+  EXPECT_NE(unknown.response.status_message.find("joint_name: no robot has a moving joint 'knee'"), std::string::npos)
+      << unknown.response.status_message;
 }
 
 }  // namespace

@@ -86,6 +86,9 @@ struct SceneState {
 /// `robots` (one per robot), the links where their robots put them.
 SceneState sceneState(const Scene& scene, const State& bodies, const std::vector<ArticulationState>& robots);
 
+/// Robot r at `now`, its links placed where it puts them in `bodies`.
+void placeRobot(const Scene& scene, std::size_t r, const ArticulationState& now, State& bodies);
+
 /// What acts over one step: per free body (empty for none; or per body,
 /// the links' zero, as WrenchSchedule::loadsFor gives them), per robot
 /// (empty for none).

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rigid_body_sim/core/contact_report.h"
+#include "rigid_body_sim/core/joint_effort_schedule.h"
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/scene.h"
 #include "rigid_body_sim/core/state.h"
@@ -24,6 +25,7 @@ struct Simulation {
   std::vector<ArticulationState> robots;  ///< per robot of the scene
   std::vector<ArticulationState> initial_robots;  ///< what reset() returns them to
   WrenchSchedule schedule;
+  JointEffortSchedule joint_efforts;  ///< the robots' timed joint efforts
   ContactLedger contacts;
   /// The bodies' knobs (threads) and the step's outputs: contacts (links by
   /// their body index), speed limits, the guard.
@@ -64,13 +66,18 @@ struct Simulation {
   /// (its still time from zero) to move from there.
   void place(int i, const BodyState& now);
 
+  /// Puts robot r at `now` (a user's set_model_configuration): its links
+  /// where it puts them, every contact's warm start gone, the robot awake
+  /// (its still time from zero), its carried momenta dropped.
+  void placeRobot(std::size_t r, const ArticulationState& now);
+
   /// The model with `tuning`'s settings (Model::retuned, which throws and
   /// changes nothing when a check refuses them), and every body awake: what
   /// rested under the old settings must move under the new.
   void retune(const Tuning& tuning);
 
   /// Back to the initial state, robots too, at sim time `time` (which only
-  /// goes forward), every wrench cleared.
+  /// goes forward), every wrench and joint effort cleared.
   void reset(double time);
 };
 

@@ -29,14 +29,17 @@ class RobotCommands {
   RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotControls> controls, const core::Simulation& sim,
                 bool several);
 
-  /// Each robot's loads for the step from `sim`'s state: its controllers'
-  /// efforts, within the joints' limits (also kept for joint_states).
-  void loadsFor(const core::Simulation& sim, std::vector<core::ArticulationLoads>& loads);
+  /// Each robot's loads for the step [t, t + dt) from `sim`'s state: its
+  /// controllers' efforts and the timed ones (apply_joint_effort) added,
+  /// within the joints' limits (also kept for joint_states).
+  void loadsFor(const core::Simulation& sim, double t, std::vector<core::ArticulationLoads>& loads);
   /// The efforts of the last step, per robot (empty before the first).
   const std::vector<Eigen::VectorXd>& applied() const { return applied_; }
   /// After a reset or set_state: every controller starts again from where
   /// its robot now is (no integral, position targets where the joints are).
   void restart(const core::Simulation& sim);
+  /// The same for robot r alone (after set_model_configuration).
+  void restart(const core::Simulation& sim, std::size_t r);
   /// Hz of robot r's joint_state_controller, 0 for none.
   double jointStateRate(std::size_t r) const { return controls_[r].joint_state_rate; }
 

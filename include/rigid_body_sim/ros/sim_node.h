@@ -38,6 +38,7 @@
 #include "rigid_body_sim/ros/addressing.h"
 #include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
+#include "rigid_body_sim/ros/joint_requests.h"
 #include "rigid_body_sim/ros/load_requests.h"
 #include "rigid_body_sim/ros/markers.h"
 #include "rigid_body_sim/ros/pacer.h"
@@ -151,6 +152,11 @@ class SimNode {
          rebaseClock();
          commands_->restart(sim_);  // nothing drives a reset robot back (gazebo_ros_pkgs #1311)
        }}};
+  /// set_model_configuration, get_joint_properties.
+  JointRequests joint_requests_{sim_, time_, [this](std::size_t r) {
+                                  commands_->restart(sim_, r);
+                                  publish();
+                                }};
   PortContext port_context_;  ///< what opening a body's ports needs of the node (read only once made)
   /// Samples the IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();
