@@ -1,0 +1,106 @@
+// A wheeled robot in the node: urdf/diff_drive.urdf under
+// config/diff_drive.yaml's velocity controllers, driven by its wheels'
+// friction on the ground (diff_drive.test). What a subscriber receives: the
+// base's tf from the node, the wheels' joint_states.
+#include <geometry_msgs/TransformStamped.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <std_msgs/Float64.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "node_fixture.h"
+
+namespace {
+
+using namespace rbs_test;
+
+constexpr double kWheelRadius = 0.06;  // m, urdf/diff_drive.urdf
+constexpr double kTrack = 0.36;        // m between the wheels' mid-planes
+constexpr double kWidth = 0.03;        // m, a wheel's
+
+class DiffDrive : public Node {
+ protected:
+  void SetUp() override {
+    Node::SetUp();
+    left_ = nh_.advertise<std_msgs::Float64>("/left_wheel_velocity_controller/command", 1, true);
+    right_ = nh_.advertise<std_msgs::Float64>("/right_wheel_velocity_controller/command", 1, true);
+    tf_ = nh_.subscribe<tf2_msgs::TFMessage>("/tf", 1000, [this](const tf2_msgs::TFMessage::ConstPtr& m) {
+      for (const auto& t : m->transforms) {
+        if (t.child_frame_id == "base_link") base_.push_back(t);
+      }
+    });
+    joints_ = nh_.subscribe<sensor_msgs::JointState>(
+        "/joint_states", 100, [this](const sensor_msgs::JointState::ConstPtr& m) { last_ = *m; });
+    ASSERT_TRUE(spinUntil([&] { return !last_.name.empty() && !base_.empty(); }, 30.0));
+  }
+  void drive(double left, double right) {
+    std_msgs::Float64 a, b;
+    a.data = left;
+    b.data = right;
+    left_.publish(a);
+    right_.publish(b);
+  }
+  /// Waits `seconds` of sim time (the stamps of joint_states).
+  void wait(double seconds) {
+    const double until = last_.header.stamp.toSec() + seconds;
+    ASSERT_TRUE(spinUntil([&] { return last_.header.stamp.toSec() >= until; }, 60.0));
+  }
+  std::vector<geometry_msgs::TransformStamped> base_;
+  sensor_msgs::JointState last_;
+
+ private:
+  ros::Publisher left_, right_;
+  ros::Subscriber tf_, joints_;
+};
+
+/// The base's speed over the last `span` s of its tf, and its yaw rate.
+void speedOver(const std::vector<geometry_msgs::TransformStamped>& base, double span, double& speed, double& yaw_rate) {
+  const geometry_msgs::TransformStamped& b = base.back();
+  std::size_t k = base.size() - 1;
+  while (k > 0 && b.header.stamp.toSec() - base[k].header.stamp.toSec() < span) --k;
+  const geometry_msgs::TransformStamped& a = base[k];
+  const double dt = b.header.stamp.toSec() - a.header.stamp.toSec();
+  const auto yaw = [](const geometry_msgs::Quaternion& q) {
+    return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+  };
+  speed = std::hypot(b.transform.translation.x - a.transform.translation.x,
+                     b.transform.translation.y - a.transform.translation.y) /
+          dt;
+  yaw_rate = std::remainder(yaw(b.transform.rotation) - yaw(a.transform.rotation), 2.0 * M_PI) / dt;
+}
+
+// Both wheels at ω: the base drives straight at ω r (within 3 %: the
+// issue's bound; it is exact to 5 digits). Then the wheels opposite: it
+// turns on the spot. A wheel touches the ground across its width, so no
+// single rolling radius about the turn's centre holds across it (the
+// wheel scrubs): the yaw rate lies between 2 ω r / (track + width), the
+// outer edges rolling, and 2 ω r / (track − width), the inner ones.
+TEST_F(DiffDrive, DrivesOnItsWheelsAtOmegaR) {
+  const double omega = 5.0;
+  drive(omega, omega);
+  wait(3.0);
+  double speed = 0.0, yaw_rate = 0.0;
+  speedOver(base_, 1.0, speed, yaw_rate);
+  EXPECT_NEAR(last_.velocity[0], omega, 0.01 * omega);
+  EXPECT_NEAR(last_.velocity[1], omega, 0.01 * omega);
+  EXPECT_NEAR(speed, omega * kWheelRadius, 0.03 * omega * kWheelRadius);
+  EXPECT_NEAR(yaw_rate, 0.0, 0.01);
+  std::printf("diff drive: wheels at %.4f and %.4f rad/s, base at %.5f m/s (omega r = %.5f), yaw rate %.5f rad/s\n",
+              last_.velocity[0], last_.velocity[1], speed, omega * kWheelRadius, yaw_rate);
+  drive(-omega, omega);
+  wait(3.0);
+  speedOver(base_, 1.0, speed, yaw_rate);
+  const double outer = 2.0 * omega * kWheelRadius / (kTrack + kWidth);
+  const double inner = 2.0 * omega * kWheelRadius / (kTrack - kWidth);
+  EXPECT_GE(yaw_rate, 0.99 * outer);
+  EXPECT_LE(yaw_rate, inner);
+  std::printf("diff drive: turning at %.5f rad/s (2 omega r / track = %.5f; outer edges %.5f, inner %.5f)\n", yaw_rate,
+              2.0 * omega * kWheelRadius / kTrack, outer, inner);
+}
+
+}  // namespace

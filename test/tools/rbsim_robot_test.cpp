@@ -1,0 +1,128 @@
+// rbsim end to end with robots: the rod pendulum's period, the wheeled
+// base rolling at ω r, a world of robots and bodies, and the refusals.
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "rbsim_run.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+// A robot: the shipped rod pendulum released from horizontal comes back
+// after its closed-form period, 4 √(I/(m g l)) K(sin(θ₀/2)); the JSON gives
+// final.joints.pivot, the CSV the joint's columns.
+TEST(Rbsim, RunsARobotAndReportsItsJoints) {
+  const double I = 1.0 / 12.0, m = 1.0, l = 0.25, g = 9.81;
+  const double period = 4.0 * std::sqrt(I / (m * g * l)) * std::comp_ellint_1(std::sin(M_PI / 4.0));
+  const double duration = std::round(period * 1e3) / 1e3;  // whole steps: off by ≤ 0.5 ms at the turning point
+  const std::string csv = tempPath("robot.csv");
+  const Result r = rbsim("--urdf " + std::string(RBS_SOURCE_DIR) +
+                         "/urdf/pendulum.urdf --set 'initial.joint_positions={pivot: 1.5707963267948966}' --duration " +
+                         std::to_string(duration) + " --every 100 --csv " + csv + " --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const YAML::Node j = YAML::Load(r.out);
+  const YAML::Node pivot = j["final"]["joints"]["pivot"];
+  // ½ θ̈ δt² with θ̈ = m g l / I = 29.4 rad/s² and δt ≤ 0.5 ms: 4e-6 rad, and the step's own phase error.
+  EXPECT_NEAR(pivot["position"].as<double>(), M_PI / 2.0, 2e-3);
+  EXPECT_NEAR(pivot["velocity"].as<double>(), 0.0, 0.03);  // θ̈ δt
+  EXPECT_EQ(j["bodies"][0]["name"].as<std::string>(), "pendulum");
+  EXPECT_NEAR(j["energy"]["end"].as<double>(), j["energy"]["start"].as<double>(), 1e-3 * m * g * l);
+  const std::string rows = slurp(csv);
+  EXPECT_EQ(rows.substr(0, rows.find('\n')), "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz,pivot.position,pivot.velocity");
+  EXPECT_NE(rows.find("\n0,0,0,0,0,0,0,1,0,0,0,0,0,0,1.57079632679,0\n"), std::string::npos) << rows;
+}
+
+// The shipped four-wheeled base, its wheels spun at 10 rad/s on the ground:
+// they slip until it rolls, then it rolls at ω r.
+TEST(Rbsim, AFourWheeledBaseRollsAtOmegaR) {
+  const Result r = rbsim("--urdf " + std::string(RBS_SOURCE_DIR) +
+                         "/urdf/four_wheeler.urdf --set initial.position=[0,0,0.1] --set "
+                         "'initial.joint_velocities={front_left_axle: 10, front_right_axle: 10, rear_left_axle: 10, "
+                         "rear_right_axle: 10}' --duration 2 --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const YAML::Node j = YAML::Load(r.out);
+  const double speed = seq(j["final"]["linear_velocity"])[0];
+  EXPECT_GT(speed, 0.1);
+  for (const char* wheel : {"front_left_axle", "front_right_axle", "rear_left_axle", "rear_right_axle"}) {
+    EXPECT_NEAR(speed, 0.1 * j["final"]["joints"][wheel]["velocity"].as<double>(), 1e-3 * speed) << wheel;
+  }
+  EXPECT_NEAR(seq(j["final"]["position"])[2], 0.1, 1e-4);
+  EXPECT_LT(j["max_penetration"].as<double>(), 1e-4);
+}
+
+TEST(Rbsim, RefusesARobotsBadStart) {
+  const std::string pendulum = " --urdf " + std::string(RBS_SOURCE_DIR) + "/urdf/pendulum.urdf --duration 1";
+  expectUsageError(pendulum + " --set initial.linear_velocity=[1,0,0]",
+                   "'initial.linear_velocity' / 'initial.angular_velocity': robot 'pendulum' is fixed to the world");
+  expectUsageError(pendulum + " --set 'initial.joint_positions={elbow: 1}'", "elbow");
+  expectUsageError(
+      pendulum + " --set 'controllers={a: {type: effort_controllers/JointEffortController, joint: pivot}}'",
+      "'controllers': rbsim runs no controllers");
+  const std::string world = tempPath("robot_world.yaml");
+  std::ofstream(world) << "bodies:\n  - {name: swing, urdf: " << RBS_SOURCE_DIR
+                       << "/urdf/pendulum.urdf, initial: {angular_velocity: [0, 1, 0]}}\n";
+  expectUsageError("--config " + world + " --duration 1", "'bodies[0].initial.linear_velocity'");
+}
+
+// The shipped world of robots and bodies: each entry in the config's
+// order, a robot's with its joints; the pendulum strikes the ball forward,
+// the rover rolls into the crate and stops against it.
+TEST(Rbsim, RunsAWorldOfRobotsAndBodies) {
+  const std::string csv = tempPath("scene.csv");
+  const Result r = rbsim("--config " + std::string(RBS_SOURCE_DIR) + "/config/robots.yaml --duration 3 --every 500 " +
+                         "--csv " + csv + " --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const YAML::Node j = YAML::Load(r.out);
+  const YAML::Node bodies = j["bodies"];
+  ASSERT_EQ(bodies.size(), 4u);
+  const std::vector<std::string> names{"pendulum", "ball", "rover", "crate"};
+  for (std::size_t i = 0; i < names.size(); ++i) EXPECT_EQ(bodies[i]["name"].as<std::string>(), names[i]);
+  EXPECT_TRUE(bodies[0]["final"]["joints"]["pivot"]["position"].IsDefined());
+  EXPECT_FALSE(bodies[1]["final"]["joints"].IsDefined());
+  EXPECT_GT(seq(bodies[1]["final"]["linear_velocity"])[0], 0.3);  // struck forward, rolling
+  EXPECT_EQ(bodies[2]["final"]["joints"].size(), 4u);
+  EXPECT_TRUE(bodies[3]["at_rest"].as<bool>());
+  EXPECT_GT(seq(bodies[3]["final"]["position"])[0], 0.6);  // pushed a little
+  EXPECT_LT(j["max_penetration"].as<double>(), 1e-4);
+  // The CSV: a row per entry, the robots' joints as ROBOT/JOINT columns,
+  // empty on every other entry's row.
+  std::istringstream rows(slurp(csv));
+  std::string header, first, second;
+  std::getline(rows, header);
+  std::getline(rows, first);
+  std::getline(rows, second);
+  EXPECT_EQ(header.substr(0, header.find(",pendulum/pivot.position")), "t,body,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz");
+  EXPECT_NE(header.find(",rover/rear_right_axle.velocity"), std::string::npos) << header;
+  const auto fields = [](const std::string& line) { return std::count(line.begin(), line.end(), ',') + 1; };
+  EXPECT_EQ(fields(first), fields(header));
+  EXPECT_EQ(fields(second), fields(header));
+  EXPECT_EQ(first.rfind("0,pendulum,", 0), 0u) << first;
+  EXPECT_NE(first.find(",1.57079632679,0,"), std::string::npos) << first;
+  EXPECT_EQ(second.substr(second.size() - 11), "0" + std::string(10, ',')) << second;  // 5 joints, none its own
+}
+
+// A robot among bodies it never touches moves exactly as it does alone.
+TEST(Rbsim, ARobotAmongBodiesItDoesNotTouchMovesAsAlone) {
+  const std::string pendulum = std::string(RBS_SOURCE_DIR) + "/urdf/pendulum.urdf";
+  const Result alone =
+      rbsim("--urdf " + pendulum + " --set 'initial.joint_positions={pivot: 1.5707963267948966}' --duration 2 --quiet");
+  ASSERT_EQ(alone.code, 0) << alone.err;
+  const std::string world = tempPath("apart.yaml");
+  std::ofstream(world) << "bodies:\n  - {name: pendulum, urdf: " << pendulum
+                       << ", initial: {joint_positions: {pivot: 1.5707963267948966}}}\n  - {name: box, urdf: " << kBox
+                       << ", initial: {position: [3, 0, 0.05]}}\n";
+  const Result both = rbsim("--config " + world + " --duration 2 --quiet");
+  ASSERT_EQ(both.code, 0) << both.err;
+  const YAML::Node a = YAML::Load(alone.out)["final"]["joints"]["pivot"];
+  const YAML::Node b = YAML::Load(both.out)["bodies"][0]["final"]["joints"]["pivot"];
+  EXPECT_EQ(a["position"].as<double>(), b["position"].as<double>());
+  EXPECT_EQ(a["velocity"].as<double>(), b["velocity"].as<double>());
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
