@@ -89,29 +89,47 @@ bool JointControllers::command(std::size_t c, const std::vector<double>& values,
     if (!std::isfinite(v)) return false;
   }
   for (std::size_t k = 0; k < values.size(); ++k) {
-    const int j = spec.joints[k];
-    const JointLimits& lim = limits_[j];
-    double v = values[k];
-    const auto hold = [&](double lo, double hi, const char* what) {
-      if (v < lo || v > hi) {
-        v = std::clamp(v, lo, hi);
-        clipped.push_back({j, what});
-      }
-    };
-    switch (spec.mode) {
-      case ControlMode::kEffort:
-        hold(-lim.effort, lim.effort, "effort");
-        break;
-      case ControlMode::kVelocity:
-        hold(-lim.velocity, lim.velocity, "velocity");
-        break;
-      case ControlMode::kPosition:
-        if (type_[j] != JointType::Continuous) hold(lim.lower, lim.upper, "position range");
-        break;
-    }
-    target_[c][k] = v;
+    target_[c][k] = withinLimits(spec.joints[k], spec.mode, values[k], clipped);
   }
   return true;
+}
+
+double JointControllers::withinLimits(int j, ControlMode mode, double v, std::vector<Clipped>& clipped) const {
+  const JointLimits& lim = limits_[j];
+  const auto hold = [&](double lo, double hi, const char* what) {
+    if (v < lo || v > hi) {
+      v = std::clamp(v, lo, hi);
+      clipped.push_back({j, what});
+    }
+  };
+  switch (mode) {
+    case ControlMode::kEffort:
+      hold(-lim.effort, lim.effort, "effort");
+      break;
+    case ControlMode::kVelocity:
+      hold(-lim.velocity, lim.velocity, "velocity");
+      break;
+    case ControlMode::kPosition:
+      if (type_[j] != JointType::Continuous) hold(lim.lower, lim.upper, "position range");
+      break;
+  }
+  return v;
+}
+
+std::string JointControllers::commandJoint(int joint, ControlMode mode, double value, std::vector<Clipped>& clipped) {
+  const int c = ownerOf(joint);
+  if (c < 0) return "no controller owns it";
+  const JointControllerSpec& spec = specs_[c];
+  static const char* const kNames[] = {"effort", "velocity", "position"};
+  if (spec.mode != mode) {
+    return std::string("its controller '") + spec.name + "' takes " + kNames[static_cast<int>(spec.mode)] + ", not " +
+           kNames[static_cast<int>(mode)];
+  }
+  if (!std::isfinite(value)) return "not finite";
+  std::size_t k = 0;
+  while (spec.joints[k] != joint) ++k;
+  target_[c][k] = withinLimits(joint, mode, value, clipped);
+  return "";
 }
 
 void JointControllers::efforts(const ArticulationState& state, double dt, Eigen::VectorXd& effort) {

@@ -5,6 +5,7 @@
 #include <std_msgs/Float64MultiArray.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace rigid_body_sim::node {
 
@@ -34,6 +35,11 @@ RobotCommands::RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotCon
       ROS_INFO("sim_node: robot '%s': controller '%s' on %s", robots[r].name.c_str(), specs[c].name.c_str(),
                handle.resolveName(topic).c_str());
     }
+    if (!specs.empty()) {
+      subscribers_.push_back(handle.subscribe<sensor_msgs::JointState>(
+          prefix + "joint_command", 10,
+          [this, r](const sensor_msgs::JointState::ConstPtr& m) { jointCommand(r, *m); }));
+    }
   }
   restart(sim);
 }
@@ -47,13 +53,65 @@ void RobotCommands::command(std::size_t r, std::size_t c, const std::vector<doub
              robot_names_[r].c_str(), spec.name.c_str(), values.size(), spec.joints.size());
     return;
   }
+  warnClipped(r, "controller '" + spec.name + "'", clipped);
+}
+
+void RobotCommands::jointCommand(std::size_t r, const sensor_msgs::JointState& msg) {
+  core::JointControllers& controllers = controls_[r].controllers;
+  const std::size_t n = msg.name.size();
+  const auto drop = [&](const std::string& why) {
+    ROS_WARN("sim_node: robot '%s': joint_command dropped: %s", robot_names_[r].c_str(), why.c_str());
+  };
+  for (const auto& [field, values] : {std::pair<const char*, const std::vector<double>*>{"position", &msg.position},
+                                      {"velocity", &msg.velocity},
+                                      {"effort", &msg.effort}}) {
+    if (!values->empty() && values->size() != n) {
+      return drop(std::string(field) + " has " + std::to_string(values->size()) + " values for " + std::to_string(n) +
+                  " names");
+    }
+  }
+  // Checked whole first: each joint, its controller's field, its value.
+  struct Target {
+    int joint;
+    core::ControlMode mode;
+    double value;
+  };
+  std::vector<Target> targets;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::vector<std::string>& names = joint_names_[r];
+    int j = 1;
+    while (j < static_cast<int>(names.size()) && names[j] != msg.name[k]) ++j;
+    if (j == static_cast<int>(names.size()))
+      return drop("name[" + std::to_string(k) + "]: no joint '" + msg.name[k] + "'");
+    const int c = controllers.ownerOf(j);
+    if (c < 0) return drop("joint '" + msg.name[k] + "': no controller owns it");
+    const core::ControlMode mode = controllers.specs()[c].mode;
+    const std::vector<double>& values = mode == core::ControlMode::kPosition   ? msg.position
+                                        : mode == core::ControlMode::kVelocity ? msg.velocity
+                                                                               : msg.effort;
+    const char* field = mode == core::ControlMode::kPosition   ? "position"
+                        : mode == core::ControlMode::kVelocity ? "velocity"
+                                                               : "effort";
+    if (values.empty()) {
+      return drop("joint '" + msg.name[k] + "': its controller '" + controllers.specs()[c].name + "' takes " + field +
+                  ", and the message has none");
+    }
+    if (!std::isfinite(values[k])) return drop(std::string(field) + "[" + std::to_string(k) + "] is not finite");
+    targets.push_back({j, mode, values[k]});
+  }
+  std::vector<core::Clipped> clipped;
+  for (const Target& t : targets) controllers.commandJoint(t.joint, t.mode, t.value, clipped);
+  warnClipped(r, "joint_command", clipped);
+}
+
+void RobotCommands::warnClipped(std::size_t r, const std::string& source, const std::vector<core::Clipped>& clipped) {
   for (const core::Clipped& k : clipped) {
     const std::string joint = robot_names_[r] + "/" + joint_names_[r][k.joint];
     if (!warned_.insert({joint, k.what}).second) continue;
     ROS_WARN(
-        "sim_node: robot '%s': controller '%s': a command for joint '%s' is past its URDF %s limit: held to "
-        "it (said once per joint)",
-        robot_names_[r].c_str(), spec.name.c_str(), joint_names_[r][k.joint].c_str(), k.what.c_str());
+        "sim_node: robot '%s': %s: a command for joint '%s' is past its URDF %s limit: held to it (said once "
+        "per joint)",
+        robot_names_[r].c_str(), source.c_str(), joint_names_[r][k.joint].c_str(), k.what.c_str());
   }
 }
 

@@ -171,6 +171,28 @@ TEST(JointControllers, RefusesWhatItCannotDrive) {
   }
 }
 
+// One joint of a group is set alone; the others keep their targets; a
+// joint nobody owns, another mode or NaN is refused and changes nothing.
+TEST(JointControllers, OneJointOfAGroupIsSetAlone) {
+  ArticulationModel model = test::twoBars();
+  model.links[1].limits.effort = 5.0;
+  JointControllers ctl(model, {{"all", ControlMode::kEffort, {1}, {}}});
+  std::vector<Clipped> clipped;
+  ArticulationState s = restState(model);
+  Eigen::VectorXd effort;
+  EXPECT_EQ(ctl.commandJoint(1, ControlMode::kEffort, 9.0, clipped), "");
+  ASSERT_EQ(clipped.size(), 1u);  // held to 5
+  ctl.efforts(s, kH, effort);
+  EXPECT_EQ(effort(0), 5.0);
+  EXPECT_EQ(ctl.commandJoint(1, ControlMode::kPosition, 1.0, clipped),
+            "its controller 'all' takes effort, not position");
+  EXPECT_EQ(ctl.commandJoint(1, ControlMode::kEffort, std::nan(""), clipped), "not finite");
+  JointControllers none(model, {});
+  EXPECT_EQ(none.commandJoint(1, ControlMode::kEffort, 1.0, clipped), "no controller owns it");
+  ctl.efforts(s, kH, effort);
+  EXPECT_EQ(effort(0), 5.0);
+}
+
 // A reset: integrals go, a position controller holds where the robot now is.
 TEST(JointControllers, RestartHoldsTheJointsWhereTheyAre) {
   const ArticulationModel model = pendulum(20.0);

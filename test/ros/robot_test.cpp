@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -256,6 +257,36 @@ TEST_F(Arm, PositionControllersHoldTargetsAgainstGravity) {
   wait(4.0);
   EXPECT_NEAR(last_.position[0], 0.0, 0.01) << "the controllers drove the reset arm back to their old targets";
   EXPECT_NEAR(last_.position[1], 0.0, 0.01);
+}
+
+// joint_command (an Isaac Sim style JointState) sets the named joints'
+// targets from the field their controllers take; a message naming an
+// unknown joint, or giving a position controller a velocity, is dropped
+// whole.
+TEST_F(Arm, JointCommandSetsTheNamedJoints) {
+  ros::Publisher joint_command = nh_.advertise<sensor_msgs::JointState>("/joint_command", 1, true);
+  ASSERT_TRUE(spinUntil([&] { return joint_command.getNumSubscribers() > 0; }, 10.0));
+  sensor_msgs::JointState m;
+  m.name = {"elbow"};
+  m.position = {0.6};
+  joint_command.publish(m);
+  wait(4.0);
+  EXPECT_NEAR(last_.position[1], 0.6, 0.01);
+  const double shoulder = last_.position[0];
+  for (const auto& [names, position, velocity] :
+       {std::tuple<std::vector<std::string>, std::vector<double>, std::vector<double>>{
+            {"elbow", "wrist"}, {0.0, 0.0}, {}},
+        {{"elbow"}, {}, {1.0}},
+        {{"elbow"}, {0.1, 0.2}, {}}}) {
+    sensor_msgs::JointState bad;
+    bad.name = names;
+    bad.position = position;
+    bad.velocity = velocity;
+    joint_command.publish(bad);
+  }
+  wait(1.0);
+  EXPECT_NEAR(last_.position[1], 0.6, 0.01);
+  EXPECT_NEAR(last_.position[0], shoulder, 0.01);
 }
 
 // A target past the URDF's range is held to it (warned once).

@@ -83,6 +83,11 @@ class JointControllers {
   /// finite; `clipped` gets the values held to a limit.
   bool command(std::size_t c, const std::vector<double>& values, std::vector<Clipped>& clipped);
 
+  /// Sets the target of `joint` (a link index) alone, within its owner,
+  /// whose mode must be `mode`; returns "" or why it was refused (no
+  /// owner, another mode, not finite), and then nothing has changed.
+  std::string commandJoint(int joint, ControlMode mode, double value, std::vector<Clipped>& clipped);
+
   /// The efforts of the step from `state` (per joint, zero where no
   /// controller acts), within each joint's effort limit.
   void efforts(const ArticulationState& state, double dt, Eigen::VectorXd& effort);
@@ -94,6 +99,9 @@ class JointControllers {
   void restart(const ArticulationState& state);
 
  private:
+  /// `value` for joint j under `mode`, held to its limits (noted in `clipped`).
+  double withinLimits(int j, ControlMode mode, double value, std::vector<Clipped>& clipped) const;
+
   std::vector<JointType> type_;      ///< per link (the base's unused)
   std::vector<JointLimits> limits_;  ///< per link
   std::vector<JointControllerSpec> specs_;

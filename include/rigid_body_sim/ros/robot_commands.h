@@ -1,11 +1,13 @@
 // The robots' controllers in the node: each controller's command topic
 // (CONTROLLER/command under the robot's namespace: std_msgs/Float64, or
-// Float64MultiArray for a group), the efforts they give every step, and
-// their restart when a robot is put somewhere. The control itself is the
+// Float64MultiArray for a group), the robot's `joint_command` (an Isaac
+// Sim style sensor_msgs/JointState, joints by name), the efforts they give
+// every step, and their restart when a robot is put somewhere. The control itself is the
 // core's (core/joint_control.h), through effort only.
 #pragma once
 
 #include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
 
 #include <Eigen/Core>
 #include <set>
@@ -47,8 +49,17 @@ class RobotCommands {
   /// the tests): refused with a warning when not finite or of the wrong
   /// length, clipped to the limits with a warning once per joint.
   void command(std::size_t r, std::size_t c, const std::vector<double>& values);
+  /// A joint_command for robot r: each named joint's target from the field
+  /// its controller takes (position, velocity or effort). The message is
+  /// dropped whole with a warning when a joint is unknown or owned by no
+  /// controller, its field is missing, a value is not finite, or the
+  /// arrays' lengths differ from the names'.
+  void jointCommand(std::size_t r, const sensor_msgs::JointState& msg);
 
  private:
+  /// Warns once per joint and limit of the commands `source` had clipped.
+  void warnClipped(std::size_t r, const std::string& source, const std::vector<core::Clipped>& clipped);
+
   std::vector<io::RobotControls> controls_;
   std::vector<std::string> robot_names_;
   std::vector<std::vector<std::string>> joint_names_;  ///< per robot, per link
