@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "node_fixture.h"
+#include "robot_fixture.h"
 
 namespace {
 
@@ -23,39 +23,22 @@ constexpr double kWheelRadius = 0.06;  // m, urdf/diff_drive.urdf
 constexpr double kTrack = 0.36;        // m between the wheels' mid-planes
 constexpr double kWidth = 0.03;        // m, a wheel's
 
-class DiffDrive : public Node {
+class DiffDrive : public RobotNode {
  protected:
   void SetUp() override {
     Node::SetUp();
-    left_ = nh_.advertise<std_msgs::Float64>("/left_wheel_velocity_controller/command", 1, true);
-    right_ = nh_.advertise<std_msgs::Float64>("/right_wheel_velocity_controller/command", 1, true);
     tf_ = nh_.subscribe<tf2_msgs::TFMessage>("/tf", 1000, [this](const tf2_msgs::TFMessage::ConstPtr& m) {
       for (const auto& t : m->transforms) {
         if (t.child_frame_id == "base_link") base_.push_back(t);
       }
     });
-    joints_ = nh_.subscribe<sensor_msgs::JointState>(
-        "/joint_states", 100, [this](const sensor_msgs::JointState::ConstPtr& m) { last_ = *m; });
-    ASSERT_TRUE(spinUntil([&] { return !last_.name.empty() && !base_.empty(); }, 30.0));
-  }
-  void drive(double left, double right) {
-    std_msgs::Float64 a, b;
-    a.data = left;
-    b.data = right;
-    left_.publish(a);
-    right_.publish(b);
-  }
-  /// Waits `seconds` of sim time (the stamps of joint_states).
-  void wait(double seconds) {
-    const double until = last_.header.stamp.toSec() + seconds;
-    ASSERT_TRUE(spinUntil([&] { return last_.header.stamp.toSec() >= until; }, 60.0));
+    start("/left_wheel_velocity_controller/command", "/right_wheel_velocity_controller/command");
+    ASSERT_TRUE(spinUntil([&] { return !base_.empty(); }, 30.0));
   }
   std::vector<geometry_msgs::TransformStamped> base_;
-  sensor_msgs::JointState last_;
 
  private:
-  ros::Publisher left_, right_;
-  ros::Subscriber tf_, joints_;
+  ros::Subscriber tf_;
 };
 
 /// The base's speed over the last `span` s of its tf, and its yaw rate.
@@ -82,7 +65,7 @@ void speedOver(const std::vector<geometry_msgs::TransformStamped>& base, double 
 // outer edges rolling, and 2 ω r / (track − width), the inner ones.
 TEST_F(DiffDrive, DrivesOnItsWheelsAtOmegaR) {
   const double omega = 5.0;
-  drive(omega, omega);
+  command(omega, omega);
   wait(3.0);
   double speed = 0.0, yaw_rate = 0.0;
   speedOver(base_, 1.0, speed, yaw_rate);
@@ -92,7 +75,7 @@ TEST_F(DiffDrive, DrivesOnItsWheelsAtOmegaR) {
   EXPECT_NEAR(yaw_rate, 0.0, 0.01);
   std::printf("diff drive: wheels at %.4f and %.4f rad/s, base at %.5f m/s (omega r = %.5f), yaw rate %.5f rad/s\n",
               last_.velocity[0], last_.velocity[1], speed, omega * kWheelRadius, yaw_rate);
-  drive(-omega, omega);
+  command(-omega, omega);
   wait(3.0);
   speedOver(base_, 1.0, speed, yaw_rate);
   const double outer = 2.0 * omega * kWheelRadius / (kTrack + kWidth);

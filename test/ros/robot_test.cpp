@@ -20,11 +20,11 @@
 #include <utility>
 #include <vector>
 
-#include "node_fixture.h"
 #include "rigid_body_sim/ApplyJointEffort.h"
 #include "rigid_body_sim/ClearJointForces.h"
 #include "rigid_body_sim/GetJointProperties.h"
 #include "rigid_body_sim/SetModelConfiguration.h"
+#include "robot_fixture.h"
 
 namespace {
 
@@ -201,34 +201,13 @@ std::pair<double, double> holdingEfforts(double q1, double q2) {
   return {e1, e2};
 }
 
-class Arm : public Node {
+class Arm : public RobotNode {
  protected:
   void SetUp() override {
     Node::SetUp();
-    shoulder_ = nh_.advertise<std_msgs::Float64>("/shoulder_position_controller/command", 1, true);
-    elbow_ = nh_.advertise<std_msgs::Float64>("/elbow_position_controller/command", 1, true);
-    joints_ = nh_.subscribe<sensor_msgs::JointState>(
-        "/joint_states", 100, [this](const sensor_msgs::JointState::ConstPtr& m) { last_ = *m; });
-    ASSERT_TRUE(spinUntil([&] { return !last_.name.empty(); }, 30.0));
+    start("/shoulder_position_controller/command", "/elbow_position_controller/command");
     ASSERT_EQ(last_.name, (std::vector<std::string>{"shoulder", "elbow"}));
   }
-  void command(double shoulder, double elbow) {
-    std_msgs::Float64 a, b;
-    a.data = shoulder;
-    b.data = elbow;
-    shoulder_.publish(a);
-    elbow_.publish(b);
-  }
-  /// Waits `seconds` of sim time (the stamps of joint_states).
-  void wait(double seconds) {
-    const double until = last_.header.stamp.toSec() + seconds;
-    ASSERT_TRUE(spinUntil([&] { return last_.header.stamp.toSec() >= until; }, 60.0));
-  }
-  sensor_msgs::JointState last_;
-
- private:
-  ros::Publisher shoulder_, elbow_;
-  ros::Subscriber joints_;
 };
 
 // Held at its targets against gravity, within 0.01 rad, by the efforts
