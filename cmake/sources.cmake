@@ -41,6 +41,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/shape_matching.cpp
   ${RBS_SOURCE_ROOT}/src/core/joint_control.cpp
   ${RBS_SOURCE_ROOT}/src/core/joint_effort_schedule.cpp
+  ${RBS_SOURCE_ROOT}/src/core/joint_trajectory.cpp
   ${RBS_SOURCE_ROOT}/src/core/simulation.cpp
   ${RBS_SOURCE_ROOT}/src/core/sleep.cpp
   ${RBS_SOURCE_ROOT}/src/core/solver_contact.cpp

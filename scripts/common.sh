@@ -24,6 +24,7 @@ RBS_APT_PACKAGES=(
   libroscpp-dev ros-message-generation ros-message-runtime
   libgeometry-msgs-dev ros-geometry-msgs libnav-msgs-dev ros-nav-msgs libstd-srvs-dev ros-std-srvs
   libsensor-msgs-dev ros-sensor-msgs
+  libtrajectory-msgs-dev ros-trajectory-msgs  # the trajectory controllers' command
   libvisualization-msgs-dev ros-visualization-msgs libros-rosgraph-msgs-dev ros-std-msgs libstd-msgs-dev
   libtf2-ros-dev libtf2-dev librostest-dev python3-rostest python3-roslaunch
   # the node's live tuning (~physics): the cfg generator and the C++ server
@@ -31,6 +32,7 @@ RBS_APT_PACKAGES=(
   # running and poking at the node (rosrun, roslaunch, rostopic, rosservice, the demo's printer)
   rosbash python3-rospy python3-rostopic python3-rosservice python3-rosnode
   python3-nav-msgs python3-geometry-msgs python3-std-srvs python3-tf2-msgs python3-rosgraph-msgs python3-sensor-msgs
+  python3-trajectory-msgs  # rostopic pub of a trajectory
   python3-visualization-msgs  # rostopic echo of the marker topics
   ros-robot-state-publisher  # a robot's links on tf, from the node's joint_states (the launch files start it)
 )

@@ -73,6 +73,8 @@ JointControllers::JointControllers(const ArticulationModel& model, std::vector<J
       pids.emplace_back(pid ? spec.gains[k] : PidGains{});
       target.push_back(0.0);
     }
+    // A trajectory controller holds its joints at 0 until restart() says where they are.
+    trajectory_.push_back(spec.mode == ControlMode::kTrajectory ? JointTrajectory(target) : JointTrajectory());
     pids_.push_back(std::move(pids));
     target_.push_back(std::move(target));
   }
@@ -84,7 +86,7 @@ int JointControllers::ownerOf(int joint) const {
 
 bool JointControllers::command(std::size_t c, const std::vector<double>& values, std::vector<Clipped>& clipped) {
   const JointControllerSpec& spec = specs_.at(c);
-  if (values.size() != spec.joints.size()) return false;
+  if (spec.mode == ControlMode::kTrajectory || values.size() != spec.joints.size()) return false;
   for (const double v : values) {
     if (!std::isfinite(v)) return false;
   }
@@ -110,6 +112,7 @@ double JointControllers::withinLimits(int j, ControlMode mode, double v, std::ve
       hold(-lim.velocity, lim.velocity, "velocity");
       break;
     case ControlMode::kPosition:
+    case ControlMode::kTrajectory:
       if (type_[j] != JointType::Continuous) hold(lim.lower, lim.upper, "position range");
       break;
   }
@@ -120,7 +123,7 @@ std::string JointControllers::commandJoint(int joint, ControlMode mode, double v
   const int c = ownerOf(joint);
   if (c < 0) return "no controller owns it";
   const JointControllerSpec& spec = specs_[c];
-  static const char* const kNames[] = {"effort", "velocity", "position"};
+  static const char* const kNames[] = {"effort", "velocity", "position", "trajectories"};
   if (spec.mode != mode) {
     return std::string("its controller '") + spec.name + "' takes " + kNames[static_cast<int>(spec.mode)] + ", not " +
            kNames[static_cast<int>(mode)];
@@ -132,7 +135,41 @@ std::string JointControllers::commandJoint(int joint, ControlMode mode, double v
   return "";
 }
 
-void JointControllers::efforts(const ArticulationState& state, double dt, Eigen::VectorXd& effort) {
+std::string JointControllers::followTrajectory(std::size_t c, double now, double start,
+                                               std::vector<TrajectoryPoint> points, std::vector<Clipped>& clipped,
+                                               int& dropped) {
+  const JointControllerSpec& spec = specs_.at(c);
+  if (spec.mode != ControlMode::kTrajectory) return "controller '" + spec.name + "' takes no trajectories";
+  std::string problem = JointTrajectory::check(points, spec.joints.size());
+  if (!problem.empty()) return problem;
+  std::vector<Clipped> held;
+  std::vector<char> wraps;
+  for (std::size_t k = 0; k < spec.joints.size(); ++k) {
+    const int j = spec.joints[k];
+    wraps.push_back(type_[j] == JointType::Continuous ? 1 : 0);
+    for (TrajectoryPoint& p : points) {
+      p.position[k] = withinLimits(j, ControlMode::kTrajectory, p.position[k], held);
+      if (!p.velocity.empty()) p.velocity[k] = withinLimits(j, ControlMode::kVelocity, p.velocity[k], held);
+    }
+  }
+  JointTrajectory next = trajectory_[c];
+  dropped = next.follow(now, start, points, wraps);
+  if (dropped < 0)
+    return "every point is past (the last was due at " + std::to_string(start + points.back().time) + " s, now is " +
+           std::to_string(now) + " s)";
+  trajectory_[c] = std::move(next);
+  clipped.insert(clipped.end(), held.begin(), held.end());
+  return {};
+}
+
+void JointControllers::hold(std::size_t c, const ArticulationState& state) {
+  std::vector<double> q;
+  for (const int j : specs_.at(c).joints) q.push_back(state.q(j - 1));
+  trajectory_[c] = JointTrajectory(q);
+  for (Pid& pid : pids_[c]) pid.reset();
+}
+
+void JointControllers::efforts(const ArticulationState& state, double t, double dt, Eigen::VectorXd& effort) {
   if (owner_.empty()) {  // made without a model: nothing to drive
     effort.resize(0);
     return;
@@ -157,6 +194,11 @@ void JointControllers::efforts(const ArticulationState& state, double dt, Eigen:
           u = pids_[c][k].command(error, -v, dt);
           break;
         }
+        case ControlMode::kTrajectory: {
+          const Setpoint s = trajectory_[c].sample(t, k);
+          u = pids_[c][k].command(s.position - q, s.velocity - v, dt);
+          break;
+        }
       }
       effort(j - 1) = std::clamp(u, -limits_[j].effort, limits_[j].effort);
     }
@@ -165,6 +207,7 @@ void JointControllers::efforts(const ArticulationState& state, double dt, Eigen:
 
 void JointControllers::restart(const ArticulationState& state) {
   for (std::size_t c = 0; c < specs_.size(); ++c) {
+    if (specs_[c].mode == ControlMode::kTrajectory) hold(c, state);
     for (std::size_t k = 0; k < specs_[c].joints.size(); ++k) {
       pids_[c][k].reset();
       target_[c][k] = specs_[c].mode == ControlMode::kPosition ? state.q(specs_[c].joints[k] - 1) : 0.0;

@@ -36,6 +36,16 @@ std::vector<ControllerEntry> parseControllers(const YAML::Node& node, const std:
     c.key = join(path, c.name);
     const YAML::Node& body = item.second;
     if (!body.IsMap()) fail(c.key, "expected a map {type, joint or joints, pid or gains}");
+    // A JointTrajectoryController's keys that belong to its action and state topics (control_msgs,
+    // not in Debian 12): refused by name rather than read halfway.
+    for (const char* key : {"constraints", "state_publish_rate", "action_monitor_rate", "stop_trajectory_duration",
+                            "allow_partial_joints_goal", "velocity_ff"}) {
+      if (body[key]) {
+        fail(join(c.key, key),
+             "is not read here: the trajectory controller runs its command topic only "
+             "(control_msgs' action and state are not in Debian 12); remove it");
+      }
+    }
     requireKnownKeys(body, c.key, {"type", "joint", "joints", "pid", "gains", "publish_rate"});
     if (!body["type"]) fail(join(c.key, "type"), "every controller needs a type (as ros_controllers names it)");
     c.type = text(body["type"], join(c.key, "type"));

@@ -22,6 +22,10 @@ constexpr TypeInfo kTypes[] = {
     {"velocity_controllers/JointGroupVelocityController", core::ControlMode::kVelocity, true},
     {"position_controllers/JointPositionController", core::ControlMode::kPosition, false},
     {"position_controllers/JointGroupPositionController", core::ControlMode::kPosition, true},
+    // Every trajectory controller tracks its setpoints through effort (never by setting the joint).
+    {"effort_controllers/JointTrajectoryController", core::ControlMode::kTrajectory, true},
+    {"position_controllers/JointTrajectoryController", core::ControlMode::kTrajectory, true},
+    {"velocity_controllers/JointTrajectoryController", core::ControlMode::kTrajectory, true},
 };
 constexpr const char* kJointState = "joint_state_controller/JointStateController";
 
@@ -64,11 +68,7 @@ RobotControls buildControls(const std::vector<ControllerEntry>& entries, const c
     if (info == nullptr) {
       std::string known;
       for (const std::string& t : controllerTypes()) known += (known.empty() ? "" : ", ") + t;
-      const bool trajectory = e.type.find("JointTrajectoryController") != std::string::npos;
-      refuse(type_key, "'" + e.type + "' is " +
-                           (trajectory ? "not run yet (the trajectory controller comes next)"
-                                       : "not a controller type this project runs") +
-                           "; the types: " + known);
+      refuse(type_key, "'" + e.type + "' is not a controller type this project runs; the types: " + known);
     }
     if (e.publish_rate) refuse(e.key + ".publish_rate", "is a JointStateController's key");
     if (e.joints.empty() || info->group != e.joint_list) {

@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "request_checks.h"
+
 namespace rigid_body_sim::node {
 
 RobotCommands::RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotControls> controls,
-                             const core::Simulation& sim, bool several)
-    : controls_(std::move(controls)) {
+                             const core::Simulation& sim, const NodeTime& time, bool several)
+    : sim_(sim), time_(time), controls_(std::move(controls)) {
   ros::NodeHandle handle(nh);
   const std::vector<core::SceneRobot>& robots = sim.scene.robots();
   controls_.resize(robots.size());
@@ -25,7 +27,10 @@ RobotCommands::RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotCon
     const std::vector<core::JointControllerSpec>& specs = controls_[r].controllers.specs();
     for (std::size_t c = 0; c < specs.size(); ++c) {
       const std::string topic = prefix + specs[c].name + "/command";
-      if (controls_[r].group[c] != 0) {
+      if (specs[c].mode == core::ControlMode::kTrajectory) {
+        subscribers_.push_back(handle.subscribe<trajectory_msgs::JointTrajectory>(
+            topic, 10, [this, r, c](const trajectory_msgs::JointTrajectory::ConstPtr& m) { trajectory(r, c, *m); }));
+      } else if (controls_[r].group[c] != 0) {
         subscribers_.push_back(handle.subscribe<std_msgs::Float64MultiArray>(
             topic, 10, [this, r, c](const std_msgs::Float64MultiArray::ConstPtr& m) { command(r, c, m->data); }));
       } else {
@@ -86,6 +91,10 @@ void RobotCommands::jointCommand(std::size_t r, const sensor_msgs::JointState& m
     const int c = controllers.ownerOf(j);
     if (c < 0) return drop("joint '" + msg.name[k] + "': no controller owns it");
     const core::ControlMode mode = controllers.specs()[c].mode;
+    if (mode == core::ControlMode::kTrajectory) {
+      return drop("joint '" + msg.name[k] + "': its controller '" + controllers.specs()[c].name +
+                  "' takes trajectories, on its command topic");
+    }
     const std::vector<double>& values = mode == core::ControlMode::kPosition   ? msg.position
                                         : mode == core::ControlMode::kVelocity ? msg.velocity
                                                                                : msg.effort;
@@ -102,6 +111,68 @@ void RobotCommands::jointCommand(std::size_t r, const sensor_msgs::JointState& m
   std::vector<core::Clipped> clipped;
   for (const Target& t : targets) controllers.commandJoint(t.joint, t.mode, t.value, clipped);
   warnClipped(r, "joint_command", clipped);
+}
+
+void RobotCommands::trajectory(std::size_t r, std::size_t c, const trajectory_msgs::JointTrajectory& msg) {
+  core::JointControllers& controllers = controls_[r].controllers;
+  const core::JointControllerSpec& spec = controllers.specs()[c];
+  const auto drop = [&](const std::string& why) {
+    ROS_WARN("sim_node: robot '%s': controller '%s': trajectory dropped: %s", robot_names_[r].c_str(),
+             spec.name.c_str(), why.c_str());
+  };
+  // Each of the controller's joints named once: where each is in the message.
+  const std::size_t n = spec.joints.size();
+  if (msg.joint_names.size() != n) {
+    return drop("joint_names has " + std::to_string(msg.joint_names.size()) + " names; the controller's " +
+                std::to_string(n) + " joints must each be named once");
+  }
+  std::vector<std::size_t> from(n, n);
+  for (std::size_t m = 0; m < n; ++m) {
+    std::size_t k = 0;
+    while (k < n && joint_names_[r][spec.joints[k]] != msg.joint_names[m]) ++k;
+    if (k == n) return drop("joint_names[" + std::to_string(m) + "]: '" + msg.joint_names[m] + "' is not its joint");
+    if (from[k] != n) return drop("joint_names[" + std::to_string(m) + "]: '" + msg.joint_names[m] + "' twice");
+    from[k] = m;
+  }
+  if (msg.points.empty()) {  // ros_controllers: an empty trajectory stops the joints where they are
+    controllers.hold(c, sim_.robots[r]);
+    ROS_INFO("sim_node: robot '%s': controller '%s': an empty trajectory: holding where the joints are",
+             robot_names_[r].c_str(), spec.name.c_str());
+    return;
+  }
+  // In the controller's order (a field of another length goes as it is: the check names it).
+  const auto ordered = [&](const std::vector<double>& values) {
+    if (values.size() != n) return values;
+    std::vector<double> out(n);
+    for (std::size_t k = 0; k < n; ++k) out[k] = values[from[k]];
+    return out;
+  };
+  std::vector<core::TrajectoryPoint> points;
+  for (const trajectory_msgs::JointTrajectoryPoint& p : msg.points) {
+    points.push_back(
+        {p.time_from_start.toSec(), ordered(p.positions), ordered(p.velocities), ordered(p.accelerations)});
+  }
+  const double now = time_.simTime();
+  double start = now;
+  if (!msg.header.stamp.isZero()) {
+    start = time_.clock.simTimeAt(static_cast<int64_t>(msg.header.stamp.toNSec()));
+    if (start - now > kMaxLeadTime) {
+      return drop("header.stamp " + formatStamp(static_cast<int64_t>(msg.header.stamp.toNSec())) + " s is " +
+                  std::to_string(start - now) + " s ahead of this node's clock (now " + time_.text() +
+                  "): is it on another clock? 0 means now");
+    }
+  }
+  std::vector<core::Clipped> clipped;
+  int dropped = 0;
+  const std::string problem = controllers.followTrajectory(c, now, start, std::move(points), clipped, dropped);
+  if (!problem.empty()) return drop(problem);
+  // A first point at 0 from "now" is where the joints are meant to be already: dropped quietly (ros_controllers).
+  const bool quiet = dropped == 1 && msg.header.stamp.isZero() && msg.points.front().time_from_start.isZero();
+  if (dropped > 0 && !quiet) {
+    ROS_WARN("sim_node: robot '%s': controller '%s': the first %d of %zu points are past (now %s): dropped",
+             robot_names_[r].c_str(), spec.name.c_str(), dropped, msg.points.size(), time_.text().c_str());
+  }
+  warnClipped(r, "controller '" + spec.name + "'", clipped);
 }
 
 void RobotCommands::warnClipped(std::size_t r, const std::string& source, const std::vector<core::Clipped>& clipped) {
@@ -121,7 +192,7 @@ void RobotCommands::loadsFor(const core::Simulation& sim, double t, std::vector<
   for (std::size_t r = 0; r < controls_.size(); ++r) {
     const core::ArticulationModel& model = sim.scene.robots()[r].model;
     Eigen::VectorXd& effort = applied_[r];
-    controls_[r].controllers.efforts(sim.robots[r], dt, effort);  // zero where none acts
+    controls_[r].controllers.efforts(sim.robots[r], t, dt, effort);  // zero where none acts
     if (effort.size() != model.jointCount()) effort.setZero(model.jointCount());
     sim.joint_efforts.addEfforts(r, t, dt, effort);
     for (int j = 1; j <= model.jointCount(); ++j) {  // the sum within the limit, as reported

@@ -141,7 +141,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
            listed.c_str());
 
   publisher_.emplace(nh_, pnh_, settings_, use_sim_time_);
-  commands_.emplace(nh_, std::move(start_controls_), sim_, several);
+  commands_.emplace(nh_, std::move(start_controls_), sim_, time_, several);
   robot_publisher_.emplace(nh_, sim_.scene, several, settings_.world_frame, model_.dt(), settings_.publish_rate,
                            [this](std::size_t r) { return commands_->jointStateRate(r); });
   services_ = {

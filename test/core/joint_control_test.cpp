@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -63,7 +64,7 @@ TEST(JointControllers, PositionPidHoldsAPendulumWithTheEffortGravityNeeds) {
   EXPECT_TRUE(clipped.empty());
   ArticulationLoads loads;
   for (int n = 0; n < 20000; ++n) {
-    ctl.efforts(s, kH, loads.effort);
+    ctl.efforts(s, n * kH, kH, loads.effort);
     stepArticulation(model, s, loads, Vec3(0.0, 0.0, -kG), kH);
   }
   EXPECT_NEAR(s.q(0), 0.6, 1e-6);  // the integral took the steady error away
@@ -83,7 +84,7 @@ TEST(JointControllers, EffortsStayWithinTheLimit) {
   ArticulationLoads loads;
   double most = 0.0;
   for (int n = 0; n < 20000; ++n) {
-    ctl.efforts(s, kH, loads.effort);
+    ctl.efforts(s, n * kH, kH, loads.effort);
     most = std::max(most, std::abs(loads.effort(0)));
     stepArticulation(model, s, loads, Vec3(0.0, 0.0, -kG), kH);
   }
@@ -108,7 +109,7 @@ TEST(JointControllers, VelocityPidSpinsAWheelUpAsTheFirstOrderLaw) {
   ASSERT_TRUE(ctl.command(0, {omega}, clipped));
   ArticulationLoads loads;
   for (int n = 1; n <= 200; ++n) {
-    ctl.efforts(s, kH, loads.effort);
+    ctl.efforts(s, n * kH, kH, loads.effort);
     stepArticulation(model, s, loads, Vec3(0.0, 0.0, -kG), kH);
     ASSERT_NEAR(s.v(0), omega * (1.0 - std::pow(1.0 - kH * p / I, n)), 1e-12) << n;
   }
@@ -125,7 +126,7 @@ TEST(JointControllers, CommandsAreClippedToTheLimitsAndNonFiniteOnesRefused) {
   EXPECT_EQ(clipped[0].what, "position range");
   ArticulationState s = restState(model);
   Eigen::VectorXd effort;
-  position.efforts(s, kH, effort);
+  position.efforts(s, 0.0, kH, effort);
   EXPECT_DOUBLE_EQ(effort(0), 3.0);  // p (3 − 0): the target held at 3
   // NaN, infinity and a wrong count change nothing.
   for (const std::vector<double>& bad :
@@ -133,14 +134,14 @@ TEST(JointControllers, CommandsAreClippedToTheLimitsAndNonFiniteOnesRefused) {
         std::vector<double>{1.0, 2.0}, std::vector<double>{}}) {
     EXPECT_FALSE(position.command(0, bad, clipped));
   }
-  position.efforts(s, kH, effort);
+  position.efforts(s, 0.0, kH, effort);
   EXPECT_DOUBLE_EQ(effort(0), 3.0);
   JointControllers velocity(model, {{"v", ControlMode::kVelocity, {1}, {{1.0, 0.0, 0.0, 0.0}}}});
   clipped.clear();
   ASSERT_TRUE(velocity.command(0, {-7.0}, clipped));
   ASSERT_EQ(clipped.size(), 1u);
   EXPECT_EQ(clipped[0].what, "velocity");
-  velocity.efforts(s, kH, effort);
+  velocity.efforts(s, 0.0, kH, effort);
   EXPECT_DOUBLE_EQ(effort(0), -2.0);
 }
 
@@ -182,14 +183,14 @@ TEST(JointControllers, OneJointOfAGroupIsSetAlone) {
   Eigen::VectorXd effort;
   EXPECT_EQ(ctl.commandJoint(1, ControlMode::kEffort, 9.0, clipped), "");
   ASSERT_EQ(clipped.size(), 1u);  // held to 5
-  ctl.efforts(s, kH, effort);
+  ctl.efforts(s, 0.0, kH, effort);
   EXPECT_EQ(effort(0), 5.0);
   EXPECT_EQ(ctl.commandJoint(1, ControlMode::kPosition, 1.0, clipped),
             "its controller 'all' takes effort, not position");
   EXPECT_EQ(ctl.commandJoint(1, ControlMode::kEffort, std::nan(""), clipped), "not finite");
   JointControllers none(model, {});
   EXPECT_EQ(none.commandJoint(1, ControlMode::kEffort, 1.0, clipped), "no controller owns it");
-  ctl.efforts(s, kH, effort);
+  ctl.efforts(s, 0.0, kH, effort);
   EXPECT_EQ(effort(0), 5.0);
 }
 
@@ -202,14 +203,75 @@ TEST(JointControllers, RestartHoldsTheJointsWhereTheyAre) {
   ASSERT_TRUE(ctl.command(0, {0.6}, clipped));
   ArticulationLoads loads;
   for (int n = 0; n < 3000; ++n) {
-    ctl.efforts(s, kH, loads.effort);
+    ctl.efforts(s, n * kH, kH, loads.effort);
     stepArticulation(model, s, loads, Vec3(0.0, 0.0, 0.0), kH);  // no gravity: at rest means no effort
   }
   ArticulationState put = restState(model);
   put.q(0) = -0.4;
   ctl.restart(put);
-  ctl.efforts(put, kH, loads.effort);
+  ctl.efforts(put, 0.0, kH, loads.effort);
   EXPECT_EQ(loads.effort(0), 0.0);  // no error, no integral: nothing drives it back to 0.6
+}
+
+// A trajectory controller on the pendulum, against gravity: at each
+// point's time the bob is where the point says (PID on the error from the
+// setpoint and on the velocity error, ros_controllers' effort joint).
+TEST(JointControllers, ATrajectoryReachesItsPointsAtTheirTimes) {
+  const ArticulationModel model = pendulum(20.0);
+  JointControllers ctl(model, {{"arm", ControlMode::kTrajectory, {1}, {{400.0, 400.0, 40.0, 10.0}}}});
+  ArticulationState s = restState(model);
+  ctl.restart(s);
+  std::vector<Clipped> clipped;
+  int dropped = -1;
+  const std::vector<TrajectoryPoint> points{{1.0, {0.4}, {0.3}, {}}, {2.0, {0.8}, {0.0}, {}}, {3.0, {0.2}, {}, {}}};
+  ASSERT_EQ(ctl.followTrajectory(0, 0.0, 0.0, points, clipped, dropped), "");
+  EXPECT_EQ(dropped, 0);
+  ArticulationLoads loads;
+  std::vector<double> reached;
+  for (int n = 0; n < 6000; ++n) {
+    if (n % 1000 == 0 && n > 0 && n <= 3000) reached.push_back(s.q(0));
+    ctl.efforts(s, n * kH, kH, loads.effort);
+    stepArticulation(model, s, loads, Vec3(0.0, 0.0, -kG), kH);
+  }
+  reached.push_back(s.q(0));
+  ASSERT_EQ(reached.size(), 4u);
+  EXPECT_NEAR(reached[0], 0.4, 0.01);
+  EXPECT_NEAR(reached[1], 0.8, 0.01);
+  EXPECT_NEAR(reached[2], 0.2, 0.01);
+  EXPECT_NEAR(reached[3], 0.2, 1e-3);  // held 3 s after the last point, the integral at work
+  std::printf("pendulum trajectory: %.5f %.5f %.5f rad at 1, 2, 3 s for 0.4, 0.8, 0.2; %.6f at 6 s\n", reached[0],
+              reached[1], reached[2], reached[3]);
+}
+
+// Trajectory controllers take trajectories only; positions past the range
+// are held to it; a restart holds where the joints are.
+TEST(JointControllers, TrajectoriesAreCheckedClippedAndRestarted) {
+  const ArticulationModel model = pendulum(20.0);
+  JointControllers ctl(model, {{"arm", ControlMode::kTrajectory, {1}, {{10.0, 0.0, 0.0, 0.0}}}});
+  JointControllers position(model, {positionController(1.0, 0.0, 0.0, 0.0)});
+  std::vector<Clipped> clipped;
+  int dropped = 0;
+  EXPECT_FALSE(ctl.command(0, {0.5}, clipped));
+  EXPECT_EQ(ctl.commandJoint(1, ControlMode::kPosition, 0.5, clipped),
+            "its controller 'arm' takes trajectories, not position");
+  EXPECT_EQ(position.followTrajectory(0, 0.0, 0.0, {{1.0, {0.5}, {}, {}}}, clipped, dropped),
+            "controller 'hinge_position' takes no trajectories");
+  EXPECT_EQ(ctl.followTrajectory(0, 0.0, 0.0, {{1.0, {0.5, 1.0}, {}, {}}}, clipped, dropped),
+            "points[0].positions has 2 values for 1 joints");
+  EXPECT_EQ(ctl.followTrajectory(0, 5.0, 0.0, {{1.0, {0.5}, {}, {}}}, clipped, dropped).rfind("every point is past", 0),
+            0u);
+  EXPECT_TRUE(clipped.empty());
+  ASSERT_EQ(ctl.followTrajectory(0, 0.0, 0.0, {{1.0, {4.0}, {}, {}}}, clipped, dropped), "");
+  ASSERT_EQ(clipped.size(), 1u);
+  EXPECT_EQ(clipped[0].what, "position range");
+  EXPECT_EQ(ctl.trajectory(0).sample(1.0, 0).position, 3.0);  // held at the upper limit
+  ArticulationState put = restState(model);
+  put.q(0) = -0.4;
+  ctl.restart(put);
+  Eigen::VectorXd effort;
+  ctl.efforts(put, 0.5, kH, effort);
+  EXPECT_EQ(effort(0), 0.0);  // holding where it was put
+  EXPECT_EQ(ctl.trajectory(0).sample(1.0, 0).position, -0.4);
 }
 
 }  // namespace

@@ -75,6 +75,30 @@ controllers:
   EXPECT_EQ(c.group, std::vector<char>{1});
 }
 
+TEST(Controllers, TrajectoryControllersTakeAGroupsYaml) {
+  // As a Gazebo user's YAML gives one (without the action's constraints).
+  const io::RobotControls c = controls(R"(
+controllers:
+  arm_controller:
+    type: effort_controllers/JointTrajectoryController
+    joints: [shoulder, elbow]
+    gains:
+      shoulder: {p: 200, i: 10, d: 20, i_clamp: 5}
+      elbow: {p: 100, d: 10}
+)");
+  ASSERT_EQ(c.controllers.specs().size(), 1u);
+  const core::JointControllerSpec& arm = c.controllers.specs()[0];
+  EXPECT_EQ(arm.mode, core::ControlMode::kTrajectory);
+  EXPECT_EQ(arm.joints, (std::vector<int>{1, 2}));
+  EXPECT_EQ(arm.gains[0].i_clamp, 5.0);
+  EXPECT_EQ(arm.gains[1].d, 10.0);
+  for (const char* type : {"position_controllers", "velocity_controllers"}) {
+    const io::RobotControls other = controls(std::string("controllers: {t: {type: ") + type +
+                                             "/JointTrajectoryController, joints: [elbow], gains: {elbow: {p: 1}}}}");
+    EXPECT_EQ(other.controllers.specs()[0].mode, core::ControlMode::kTrajectory) << type;
+  }
+}
+
 TEST(Controllers, RefusalsNameTheKey) {
   const struct {
     std::string yaml, expected;
@@ -83,7 +107,14 @@ TEST(Controllers, RefusalsNameTheKey) {
        "'controllers.a.type': 'effort_controllers/JointFooController' is not a controller type this project runs; "
        "the types: joint_state_controller/JointStateController, effort_controllers/JointEffortController"},
       {"controllers: {a: {type: effort_controllers/JointTrajectoryController, joints: [elbow]}}",
-       "not run yet (the trajectory controller comes next)"},
+       "'controllers.a.gains.elbow': 'effort_controllers/JointTrajectoryController' acts here through a PID"},
+      {"controllers: {a: {type: effort_controllers/JointTrajectoryController, joint: elbow}}", "takes joints:"},
+      {"controllers: {a: {type: effort_controllers/JointTrajectoryController, joints: [elbow],"
+       " constraints: {goal_time: 0.5}}}",
+       "'controllers.a.constraints': is not read here: the trajectory controller runs its command topic only"},
+      {"controllers: {a: {type: position_controllers/JointTrajectoryController, joints: [elbow],"
+       " state_publish_rate: 25}}",
+       "'controllers.a.state_publish_rate'"},
       {"controllers: {a: {type: effort_controllers/JointEffortController, joint: wrist}}",
        "'controllers.a.joint': robot 'arm2' has no moving joint 'wrist' (its joints: 'shoulder', 'elbow')"},
       {"controllers: {a: {type: position_controllers/JointPositionController, joint: elbow}}",

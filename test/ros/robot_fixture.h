@@ -1,6 +1,6 @@
-// The fixture of the robot rostests (robot_test.cpp, diff_drive_test.cpp):
-// the node's fixture, the latest joint_states received, waiting in sim
-// time, and two controllers' Float64 commands.
+// The fixture of the robot rostests (robot_test.cpp, diff_drive_test.cpp,
+// trajectory_test.cpp): the node's fixture, the joint_states received,
+// waiting in sim time, and two controllers' Float64 commands.
 #pragma once
 
 #include <ros/ros.h>
@@ -8,6 +8,7 @@
 #include <std_msgs/Float64.h>
 
 #include <string>
+#include <vector>
 
 #include "node_fixture.h"
 
@@ -15,14 +16,20 @@ namespace rbs_test {
 
 class RobotNode : public Node {
  protected:
-  /// Subscribes /joint_states and waits for the first; `first`, `second`:
-  /// the two controllers command() addresses.
+  /// Subscribes /joint_states (every message to `seen_` too) and waits for the first.
+  void listen() {
+    joints_ = nh_.subscribe<sensor_msgs::JointState>("/joint_states", 1000,
+                                                     [this](const sensor_msgs::JointState::ConstPtr& m) {
+                                                       last_ = *m;
+                                                       seen_.push_back(*m);
+                                                     });
+    ASSERT_TRUE(spinUntil([&] { return !last_.name.empty(); }, 30.0));
+  }
+  /// listen(), and `first`, `second`: the two controllers command() addresses.
   void start(const std::string& first, const std::string& second) {
     first_ = nh_.advertise<std_msgs::Float64>(first, 1, true);
     second_ = nh_.advertise<std_msgs::Float64>(second, 1, true);
-    joints_ = nh_.subscribe<sensor_msgs::JointState>(
-        "/joint_states", 100, [this](const sensor_msgs::JointState::ConstPtr& m) { last_ = *m; });
-    ASSERT_TRUE(spinUntil([&] { return !last_.name.empty(); }, 30.0));
+    listen();
   }
   /// The two controllers' commands.
   void command(double first, double second) {
@@ -38,6 +45,7 @@ class RobotNode : public Node {
     ASSERT_TRUE(spinUntil([&] { return last_.header.stamp.toSec() >= until; }, 60.0));
   }
   sensor_msgs::JointState last_;
+  std::vector<sensor_msgs::JointState> seen_;  ///< every joint_states received
 
  private:
   ros::Publisher first_, second_;

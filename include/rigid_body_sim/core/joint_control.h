@@ -1,8 +1,8 @@
 // Joint controllers as ros_controllers names them, acting through effort
 // only (docs/physics.md §11.10): an effort command passes through, a
-// position or velocity command is tracked by control_toolbox's PID on
-// effort, never by setting the joint (Gazebo's position interface teleports
-// it). Every effort is clipped to the joint's limit, position commands to
+// position or velocity command, or a trajectory (joint_trajectory.h), is
+// tracked by control_toolbox's PID on effort, never by setting the joint
+// (Gazebo's position interface teleports it). Every effort is clipped to the joint's limit, position commands to
 // its range, velocity commands to its speed limit. ROS-free: the node feeds
 // the commands and adds the efforts to the robot's loads.
 #pragma once
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "rigid_body_sim/core/articulation.h"
+#include "rigid_body_sim/core/joint_trajectory.h"
 
 namespace rigid_body_sim::core {
 
@@ -49,6 +50,9 @@ enum class ControlMode {
   kEffort,    ///< N·m or N, applied as given (within the limit)
   kVelocity,  ///< rad/s or m/s, tracked by a PID on the velocity error
   kPosition,  ///< rad or m, tracked by a PID on the position error, its rate −v (ros_controllers' d term)
+  /// Waypoints, tracked by a PID on the error from the trajectory's setpoint, its rate that
+  /// of the velocity error (ros_controllers' JointTrajectoryController on an effort joint).
+  kTrajectory,
 };
 
 /// One controller of one robot.
@@ -80,7 +84,7 @@ class JointControllers {
 
   /// Sets controller c's command, one value per joint. Refused (returns
   /// false and changes nothing) when the count is wrong or a value is not
-  /// finite; `clipped` gets the values held to a limit.
+  /// finite, or c follows trajectories; `clipped` gets the values held to a limit.
   bool command(std::size_t c, const std::vector<double>& values, std::vector<Clipped>& clipped);
 
   /// Sets the target of `joint` (a link index) alone, within its owner,
@@ -88,14 +92,30 @@ class JointControllers {
   /// owner, another mode, not finite), and then nothing has changed.
   std::string commandJoint(int joint, ControlMode mode, double value, std::vector<Clipped>& clipped);
 
-  /// The efforts of the step from `state` (per joint, zero where no
-  /// controller acts), within each joint's effort limit.
-  void efforts(const ArticulationState& state, double dt, Eigen::VectorXd& effort);
+  /// Trajectory controller c follows `points` (its joints' order; times
+  /// from `start`, s of sim time; `now` the sim time) after what it
+  /// follows now (JointTrajectory::follow). Returns "" or why it was
+  /// refused (a problem JointTrajectory::check finds, c is no trajectory
+  /// controller, every point is past), and then nothing has changed.
+  /// Positions are held to the joints' ranges (not a continuous joint's),
+  /// velocities to their limits (in `clipped`); `dropped`: the points
+  /// already past.
+  std::string followTrajectory(std::size_t c, double now, double start, std::vector<TrajectoryPoint> points,
+                               std::vector<Clipped>& clipped, int& dropped);
+  /// Trajectory controller c holds its joints where `state` has them
+  /// (an empty trajectory_msgs/JointTrajectory: stop).
+  void hold(std::size_t c, const ArticulationState& state);
+  /// What trajectory controller c follows (empty for another kind).
+  const JointTrajectory& trajectory(std::size_t c) const { return trajectory_.at(c); }
+
+  /// The efforts of the step [t, t + dt) from `state` (per joint, zero
+  /// where no controller acts), within each joint's effort limit.
+  void efforts(const ArticulationState& state, double t, double dt, Eigen::VectorXd& effort);
 
   /// After the robot was put somewhere (reset, set_state): the integrals and
-  /// last errors go, position controllers hold the joints where they now
-  /// are, velocity and effort commands are zero, so nothing drives the robot
-  /// back to where it was.
+  /// last errors go, position and trajectory controllers hold the joints
+  /// where they now are, velocity and effort commands are zero, so nothing
+  /// drives the robot back to where it was.
   void restart(const ArticulationState& state);
 
  private:
@@ -108,6 +128,7 @@ class JointControllers {
   std::vector<int> owner_;                   ///< per link: its controller, or −1
   std::vector<std::vector<Pid>> pids_;       ///< per controller, per joint
   std::vector<std::vector<double>> target_;  ///< per controller, per joint
+  std::vector<JointTrajectory> trajectory_;  ///< per controller (empty but for kTrajectory)
 };
 
 }  // namespace rigid_body_sim::core

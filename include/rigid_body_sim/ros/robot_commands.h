@@ -1,6 +1,7 @@
 // The robots' controllers in the node: each controller's command topic
-// (CONTROLLER/command under the robot's namespace: std_msgs/Float64, or
-// Float64MultiArray for a group), the robot's `joint_command` (an Isaac
+// (CONTROLLER/command under the robot's namespace: std_msgs/Float64,
+// Float64MultiArray for a group, trajectory_msgs/JointTrajectory for a
+// trajectory controller), the robot's `joint_command` (an Isaac
 // Sim style sensor_msgs/JointState, joints by name), the efforts they give
 // every step, and their restart when a robot is put somewhere. The control itself is the
 // core's (core/joint_control.h), through effort only.
@@ -8,6 +9,7 @@
 
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
+#include <trajectory_msgs/JointTrajectory.h>
 
 #include <Eigen/Core>
 #include <set>
@@ -18,6 +20,7 @@
 #include "rigid_body_sim/core/articulation_step.h"
 #include "rigid_body_sim/core/simulation.h"
 #include "rigid_body_sim/io/controllers.h"
+#include "rigid_body_sim/ros/sim_clock.h"
 
 namespace rigid_body_sim::node {
 
@@ -26,10 +29,12 @@ class RobotCommands {
   RobotCommands(const RobotCommands&) = delete;  // its subscribers' callbacks hold `this`
   RobotCommands& operator=(const RobotCommands&) = delete;
   /// Subscribes every controller's command on `nh` (under "NAME/" for each
-  /// robot when `several` things are in the world); the position
-  /// controllers hold the joints where `sim` starts them.
+  /// robot when `several` things are in the world); the position and
+  /// trajectory controllers hold the joints where `sim` starts them. `sim`
+  /// and `time` (the node's, which outlive this) are read when a
+  /// trajectory arrives: where it starts, on which clock.
   RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotControls> controls, const core::Simulation& sim,
-                bool several);
+                const NodeTime& time, bool several);
 
   /// Each robot's loads for the step [t, t + dt) from `sim`'s state: its
   /// controllers' efforts and the timed ones (apply_joint_effort) added,
@@ -55,11 +60,20 @@ class RobotCommands {
   /// controller, its field is missing, a value is not finite, or the
   /// arrays' lengths differ from the names'.
   void jointCommand(std::size_t r, const sensor_msgs::JointState& msg);
+  /// A trajectory for robot r's trajectory controller c, as ros_controllers'
+  /// JointTrajectoryController takes it on its command topic: every joint
+  /// of the controller named once, in any order; header.stamp 0 starts it
+  /// now, else at the stamp (the node's clock); points already past are
+  /// dropped; no points: hold where the joints are. Dropped whole with a
+  /// warning otherwise (joint_trajectory.h's checks, a stamp far ahead).
+  void trajectory(std::size_t r, std::size_t c, const trajectory_msgs::JointTrajectory& msg);
 
  private:
   /// Warns once per joint and limit of the commands `source` had clipped.
   void warnClipped(std::size_t r, const std::string& source, const std::vector<core::Clipped>& clipped);
 
+  const core::Simulation& sim_;
+  const NodeTime& time_;
   std::vector<io::RobotControls> controls_;
   std::vector<std::string> robot_names_;
   std::vector<std::vector<std::string>> joint_names_;  ///< per robot, per link
