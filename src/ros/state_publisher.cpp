@@ -23,6 +23,25 @@ nav_msgs::Odometry odometryMessage(const core::OdomReport& r, const std::string&
   return odom;
 }
 
+namespace {
+
+/// One entry of ~body_states: `link`'s pose, its twist in `twist_frame`'s
+/// axes (the link's own, or the world's when `in_world`).
+void addEntry(BodyStates& msg, const std::string& name, const core::LinkState& link, const std::string& twist_frame,
+              bool in_world, bool asleep) {
+  const Quat q = in_world ? Quat::Identity() : link.q_WL.conjugate();
+  msg.names.push_back(name);
+  msg.poses.push_back(toPose(link.p_WL, link.q_WL));
+  msg.twist_frames.push_back(in_world ? msg.header.frame_id : twist_frame);
+  geometry_msgs::Twist twist;
+  twist.linear = toVector3(q * link.v_WL);
+  twist.angular = toVector3(q * link.w_W);
+  msg.twists.push_back(twist);
+  msg.asleep.push_back(asleep);
+}
+
+}  // namespace
+
 BodyStates bodyStatesMessage(const core::Model& model, const core::State& state, const PortRegistry& ports,
                              const std_msgs::Header& header, bool in_world) {
   BodyStates msg;
@@ -34,18 +53,20 @@ BodyStates bodyStatesMessage(const core::Model& model, const core::State& state,
   msg.twists.reserve(n);
   msg.asleep.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const core::LinkState link = core::linkState(model.body(i), state.bodies[i]);
-    const Quat q = in_world ? Quat::Identity() : link.q_WL.conjugate();
-    msg.names.push_back(model.body(i).name);
-    msg.poses.push_back(toPose(link.p_WL, link.q_WL));
-    msg.twist_frames.push_back(in_world ? header.frame_id : ports[i].frame);
-    geometry_msgs::Twist twist;
-    twist.linear = toVector3(q * link.v_WL);
-    twist.angular = toVector3(q * link.w_W);
-    msg.twists.push_back(twist);
-    msg.asleep.push_back(state.bodies[i].asleep);
+    addEntry(msg, model.body(i).name, core::linkState(model.body(i), state.bodies[i]), ports[i].frame, in_world,
+             state.bodies[i].asleep);
   }
   return msg;
+}
+
+void appendRobotBases(const core::Simulation& sim, bool in_world, BodyStates& msg) {
+  const std::vector<core::SceneRobot>& robots = sim.scene.robots();
+  for (std::size_t r = 0; r < robots.size(); ++r) {
+    const core::ArticulationModel& model = robots[r].model;
+    // A fixed base's link is `world`: its twist (zero) in the world's axes.
+    addEntry(msg, robots[r].name, core::baseLinkState(sim.robots[r]), model.links[0].name, in_world || model.fixed_base,
+             sim.robots[r].asleep);
+  }
 }
 
 void appendFixedFrames(const core::BodyModel& body, const BodyPorts& ports, const ros::Time& stamp,
@@ -129,8 +150,9 @@ void StatePublisher::bodyStates(const core::Simulation& sim, const PortRegistry&
   std_msgs::Header header;
   header.stamp = now;
   header.frame_id = settings_.world_frame;
-  body_states_pub_.publish(
-      bodyStatesMessage(sim.model(), sim.state, ports, header, settings_.body_states_twist_in_world));
+  BodyStates msg = bodyStatesMessage(sim.model(), sim.state, ports, header, settings_.body_states_twist_in_world);
+  appendRobotBases(sim, settings_.body_states_twist_in_world, msg);
+  body_states_pub_.publish(msg);
 }
 
 void StatePublisher::fixedFrames(const core::Model& model, const PortRegistry& ports, const ros::Time& now,

@@ -9,10 +9,14 @@
 #include <std_msgs/Float64.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
+#include "rigid_body_sim/BodyStates.h"
+#include "rigid_body_sim/Contacts.h"
 #include "robot_fixture.h"
 
 namespace {
@@ -84,6 +88,50 @@ TEST_F(DiffDrive, DrivesOnItsWheelsAtOmegaR) {
   EXPECT_LE(yaw_rate, inner);
   std::printf("diff drive: turning at %.5f rad/s (2 omega r / track = %.5f; outer edges %.5f, inner %.5f)\n", yaw_rate,
               2.0 * omega * kWheelRadius / kTrack, outer, inner);
+}
+
+// ~body_states carries the robot by its name, its base where tf has it at
+// the same stamp; ~contacts names the links touching the ground as
+// ROBOT/LINK (the caster, fixed to the base, is part of base_link's body),
+// and their normal forces carry the robot's weight.
+TEST_F(DiffDrive, BodyStatesHaveItsBaseAndContactsNameItsLinks) {
+  std::vector<rigid_body_sim::BodyStates> states;
+  rigid_body_sim::Contacts contacts;
+  ros::Subscriber s1 = nh_.subscribe<rigid_body_sim::BodyStates>(
+      "/sim_node/body_states", 100, [&](const rigid_body_sim::BodyStates::ConstPtr& m) { states.push_back(*m); });
+  ros::Subscriber s2 = nh_.subscribe<rigid_body_sim::Contacts>(
+      "/sim_node/contacts", 10, [&](const rigid_body_sim::Contacts::ConstPtr& m) { contacts = *m; });
+  command(2.0, 3.0);  // a gentle curve
+  wait(2.0);
+  ASSERT_FALSE(states.empty());
+  const rigid_body_sim::BodyStates& last = states.back();
+  ASSERT_EQ(last.names, std::vector<std::string>{"diff_drive"});
+  EXPECT_EQ(last.twist_frames[0], "base_link");
+  bool compared = false;
+  for (const geometry_msgs::TransformStamped& t : base_) {
+    if (t.header.stamp != last.header.stamp) continue;
+    EXPECT_NEAR(last.poses[0].position.x, t.transform.translation.x, 1e-9);
+    EXPECT_NEAR(last.poses[0].position.y, t.transform.translation.y, 1e-9);
+    EXPECT_NEAR(last.poses[0].orientation.z, t.transform.rotation.z, 1e-9);
+    compared = true;
+  }
+  EXPECT_TRUE(compared) << "no tf of base_link stamped as the last body_states";
+  EXPECT_GT(last.twists[0].linear.x, 0.1);   // driving forward, in its own axes
+  EXPECT_GT(last.twists[0].angular.z, 0.1);  // turning left (the right wheel faster)
+
+  ASSERT_TRUE(spinUntil([&] { return !contacts.pairs.empty(); }, 10.0));
+  double weight = 0.0;
+  std::vector<std::string> touching;
+  for (const rigid_body_sim::ContactPair& p : contacts.pairs) {
+    EXPECT_EQ(p.other, "scene[0]");
+    touching.push_back(p.body);
+    weight += p.normal_force.z;
+  }
+  std::sort(touching.begin(), touching.end());
+  EXPECT_EQ(touching,
+            (std::vector<std::string>{"diff_drive/base_link", "diff_drive/left_wheel", "diff_drive/right_wheel"}));
+  const double mass = 4.0 + 0.2 + 0.5 + 0.5;  // kg, urdf/diff_drive.urdf
+  EXPECT_NEAR(weight, mass * 9.81, 0.02 * mass * 9.81);
 }
 
 }  // namespace

@@ -38,6 +38,11 @@ nav_msgs::Odometry odometryMessage(const core::OdomReport& report, const std::st
 /// ports' frames name them) or, `in_world`, in the world's axes.
 BodyStates bodyStatesMessage(const core::Model& model, const core::State& state, const PortRegistry& ports,
                              const std_msgs::Header& header, bool in_world);
+/// Appends each robot of `sim` to `msg` after the bodies, by its name: its
+/// base link's pose and twist (a world-fixed robot's where it is fixed, at
+/// rest, its twist in the world's axes), as Gazebo's model_states has every
+/// model.
+void appendRobotBases(const core::Simulation& sim, bool in_world, BodyStates& msg);
 
 /// m of arrow per N in ~contact_markers.
 inline constexpr double kContactForceScale = 0.01;
