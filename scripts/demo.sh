@@ -3,6 +3,10 @@
 # (launch/sim.launch: a body dropped from 1 m, turning, onto the ground), and
 # prints the body's pose a few times a second from t = 0 until Ctrl-C. Extra
 # arguments go to roslaunch, e.g. urdf:=$PWD/urdf/bunny.urdf rviz:=true.
+# robot:=arm2 (the two-link arm under a trajectory controller) or
+# robot:=diff_drive (the wheeled base under wheel velocity controllers)
+# launches that robot instead and drives it (scripts/drive_robot), printing
+# its joints, or its base's pose, a few times a second.
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 rbs_install_packages
@@ -10,6 +14,17 @@ rbs_build
 set +u
 source "$RBS_WS/devel/setup.bash"
 set -u
+robot=""
+args=()
+for a in "$@"; do
+  case "$a" in
+    robot:=arm2) robot=arm2 args+=("urdf:=$RBS_ROOT/urdf/arm2.urdf" "config:=$RBS_ROOT/config/arm2_trajectory.yaml") ;;
+    robot:=diff_drive) robot=diff_drive args+=("urdf:=$RBS_ROOT/urdf/diff_drive.urdf" "config:=$RBS_ROOT/config/diff_drive.yaml") ;;
+    robot:=*) echo "demo: ${a}: the shipped robots are robot:=arm2 and robot:=diff_drive" >&2; exit 2 ;;
+    *) args+=("$a") ;;
+  esac
+done
+set -- "${args[@]+"${args[@]}"}"
 mkdir -p "$ROS_HOME"
 log="$ROS_HOME/demo_launch.log"
 echo "demo: launching sim.launch${*:+ $*} (log: ${log#"$PWD"/})" >&2
@@ -21,6 +36,11 @@ for _ in $(seq 150); do
   if ! kill -0 $launch 2>/dev/null; then echo "demo: roslaunch stopped; its log:" >&2; cat "$log" >&2; exit 1; fi
   sleep 0.2
 done
+if [ -n "$robot" ]; then
+  echo "demo: driving $robot through its controllers' topics; Ctrl-C stops" >&2
+  "$RBS_WS/devel/lib/rigid_body_sim/drive_robot" _robot:=$robot
+  exit
+fi
 echo "demo: the body drops from 1 m, turning, and comes to rest; Ctrl-C stops. Push it from another terminal:" >&2
 echo "  source .ws/devel/setup.bash" >&2
 echo "  rosservice call /sim_node/apply_impulse \"{frame: world, linear: {x: 0.5, y: 0, z: 4}}\"" >&2
