@@ -90,4 +90,13 @@ void ContactLedger::removeBody(int body) {
   if (static_cast<std::size_t>(body) < was_asleep_.size()) was_asleep_.erase(was_asleep_.begin() + body);
 }
 
+void ContactLedger::insertBody(int body) {
+  for (Contact& c : kept_) {
+    if (c.body >= body) ++c.body;
+    if (c.other >= body) ++c.other;
+  }
+  if (static_cast<std::size_t>(body) <= kept_for_.size()) kept_for_.insert(kept_for_.begin() + body, char{0});
+  if (static_cast<std::size_t>(body) <= was_asleep_.size()) was_asleep_.insert(was_asleep_.begin() + body, char{0});
+}
+
 }  // namespace rigid_body_sim::core

@@ -183,12 +183,16 @@ Model Model::withoutBody(std::size_t i) const {
   return m;
 }
 
-void Model::addBody(const PreparedBody& body) {
+void Model::insertBody(std::size_t i, const PreparedBody& body) {
   const std::string& name = body.body().name;
+  if (i > bodies_.size()) {
+    detail::fail("body", std::to_string(i), "past the last body (" + std::to_string(bodies_.size()) + " in the model)");
+  }
   for (const BodyModel& b : bodies_) {
     if (b.name == name) detail::fail("name", "'" + name + "'", "another body has this name; names must be unique");
   }
-  bodies_.push_back(body.body());
+  const auto at = bodies_.begin() + static_cast<std::ptrdiff_t>(i);
+  bodies_.insert(at, body.body());
   try {
     for (BodyModel& b : bodies_) {  // a one-body world had no solids: contact between bodies needs them
       if (b.solid_B.empty()) {
@@ -203,7 +207,7 @@ void Model::addBody(const PreparedBody& body) {
     validateBarrier(contact_, limits_, gravity_W_, bodies_);
   } catch (...) {
     // Unchanged but for the solids built above, which only bodies use.
-    bodies_.pop_back();
+    bodies_.erase(bodies_.begin() + static_cast<std::ptrdiff_t>(i));
     deriveSettings();
     throw;
   }

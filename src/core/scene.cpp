@@ -64,14 +64,10 @@ Scene::Scene(Model model) : model_(std::move(model)), free_bodies_(model_.bodyCo
 }
 
 void Scene::addBody(const PreparedBody& body) {
-  if (!robots_.empty()) {
-    throw std::invalid_argument("body '" + body.body().name +
-                                "': a world with robots takes its bodies at start (spawning beside robots is not "
-                                "supported yet)");
-  }
-  model_.addBody(body);
+  model_.insertBody(free_bodies_, body);
+  robot_of_.insert(robot_of_.begin() + static_cast<std::ptrdiff_t>(free_bodies_), -1);
   ++free_bodies_;
-  robot_of_.push_back(-1);
+  for (SceneRobot& robot : robots_) ++robot.first_body;
 }
 
 void Scene::removeBody(std::size_t i) {

@@ -41,9 +41,12 @@ void Simulation::step(const Loads& loads, const std::vector<ArticulationLoads>& 
 }
 
 void Simulation::addBody(const PreparedBody& body, const BodyState& start) {
-  scene.addBody(body);  // in place, unchanged if it throws
-  state.bodies.push_back(start);
-  initial.bodies.push_back(start);
+  const int i = static_cast<int>(scene.freeBodyCount());  // before the robots' links
+  scene.addBody(body);                                    // in place, unchanged if it throws
+  insertBody(state, i, start);
+  insertBody(initial, i, start);
+  contacts.insertBody(i);
+  schedule.insertBody(i);
   workspace = workspace.forEditedModel();  // its caches assumed the old model
 }
 

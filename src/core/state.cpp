@@ -63,6 +63,14 @@ void removeBody(const Model& model, State& state, int i) {
   state.bodies.erase(state.bodies.begin() + i);
 }
 
+void insertBody(State& state, int i, const BodyState& start) {
+  for (ContactImpulse& c : state.contact_impulses) {  // a monotone renaming: the list stays sorted by key
+    if (c.body >= i) ++c.body;
+    if (c.other >= i) ++c.other;
+  }
+  state.bodies.insert(state.bodies.begin() + i, start);
+}
+
 State restState(const Model& model) {
   State state;
   for (const BodyModel& b : model.bodies()) state.bodies.push_back(bodyStateFromLink(b, LinkState{}));

@@ -62,6 +62,16 @@ std::size_t WrenchSchedule::removeBody(int body) {
   return before - size();
 }
 
+void WrenchSchedule::insertBody(int body) {
+  for (std::vector<Entry>* entries : {&acting_, &waiting_, &held_}) {
+    for (Entry& e : *entries) {
+      if (e.body >= body) ++e.body;
+      if (e.axes_body >= body) ++e.axes_body;
+    }
+  }
+  if (static_cast<std::size_t>(body) <= count_.size()) count_.insert(count_.begin() + body, 0);
+}
+
 void WrenchSchedule::dropFinished(double t) {
   // The waiting wrenches that started are a prefix of waiting_.
   const auto started = std::find_if(waiting_.begin(), waiting_.end(), [t](const Entry& e) { return !(e.start < t); });

@@ -72,6 +72,20 @@ SpawnBody::Response WorldEdits::insert(SpawnQueue::Spawn& spawn) {
       return res;
     }
   }
+  // The robots' names and their links' frames (the URDF's, unprefixed) are taken too.
+  for (const core::SceneRobot& robot : sim_.scene.robots()) {
+    if (robot.name == req.name) {
+      res.message = "name '" + req.name + "' is taken by a robot in the world";
+      return res;
+    }
+    for (const core::ArticulatedLink& link : robot.model.links) {
+      if (std::find(new_frames.begin(), new_frames.end(), link.name) != new_frames.end()) {
+        res.message =
+            "name '" + req.name + "': the new body's frame '" + link.name + "' is a link of robot '" + robot.name + "'";
+        return res;
+      }
+    }
+  }
   if (std::find(new_frames.begin(), new_frames.end(), settings_.world_frame) != new_frames.end()) {
     res.message =
         "name '" + req.name + "': the new body's frames include the world frame '" + settings_.world_frame + "'";

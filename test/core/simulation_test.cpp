@@ -18,10 +18,10 @@ namespace {
 
 constexpr double kH = 1e-3;
 
-/// A 1 kg, 0.4 m bar hanging from a hinge about y at (0, 0, 1.5), released
-/// from horizontal: it swings clear of the floor.
-ArticulationModel pendulum() {
-  ArticulationModel model = test::oneJoint(JointType::Revolute, "bar", "hinge", Vec3(0.0, 0.0, 1.5), Vec3::UnitY());
+/// A 1 kg, 0.4 m bar hanging from a hinge about y at (0, 0, `hinge_z`),
+/// released from horizontal: from 1.5 m it swings clear of the floor.
+ArticulationModel pendulum(double hinge_z) {
+  ArticulationModel model = test::oneJoint(JointType::Revolute, "bar", "hinge", Vec3(0.0, 0.0, hinge_z), Vec3::UnitY());
   ArticulatedLink& bar = model.links[1];
   bar.limits.lower = -4.0;
   bar.limits.upper = 4.0;
@@ -45,7 +45,8 @@ struct World {
   Scene scene;
   SceneState start;
 
-  explicit World(const std::vector<std::string>& boxes) : scene(spec(boxes), {{"arm", pendulum()}}) {
+  explicit World(const std::vector<std::string>& boxes, double hinge_z = 1.5)
+      : scene(spec(boxes), {{"arm", pendulum(hinge_z)}}) {
     State free;
     for (std::size_t i = 0; i < boxes.size(); ++i) {
       LinkState X;
@@ -110,6 +111,47 @@ TEST(Simulation, RemovingABodyMovesTheLinksDown) {
   EXPECT_EQ(sim.robots[0].q, without.robots[0].q);
 }
 
+// A free body spawned beside a robot goes before its links, which move up
+// one index everywhere (the contact impulses' warm starts renamed with
+// them): from then on the world steps bit for bit as one that had the body
+// from the start. The bar, hinged low, is on the floor by then (not yet
+// asleep), so its link has warm starts to keep; the new box is high up,
+// still falling.
+TEST(Simulation, ABodySpawnedBesideARobotGoesBeforeItsLinks) {
+  World one({"a"}, 0.3), two({"a", "b"}, 0.3);
+  LinkState high;
+  high.p_WL = Vec3(6.0, 0.0, 100.0);
+  two.start.bodies.bodies[1] = bodyStateFromLink(two.scene.model().body(1), high);
+  Simulation sim(one.scene, one.start);
+  Simulation with(two.scene, two.start);
+  for (int n = 0; n < 500; ++n) {
+    sim.step({});
+    with.step({});
+  }
+  const auto onLink = [](const State& s, int link) {
+    return std::count_if(s.contact_impulses.begin(), s.contact_impulses.end(),
+                         [&](const ContactImpulse& c) { return c.body == link || c.other == link; });
+  };
+  ASSERT_GT(onLink(sim.state, 1), 0) << "the bar is not on the floor";
+  const BodyState spawned = with.state.bodies[1];
+  sim.addBody(sim.model().bodyBuilder().build(box("b")), spawned);
+  EXPECT_EQ(sim.model().body(1).name, "b");
+  EXPECT_EQ(sim.model().body(2).name, "arm/bar");
+  EXPECT_EQ(sim.scene.robots()[0].first_body, 2);
+  EXPECT_EQ(sim.scene.robotOf(2), 0);
+  EXPECT_EQ(sim.scene.robotOf(1), -1);
+  EXPECT_EQ(onLink(sim.state, 2), onLink(with.state, 2));  // the bar's warm starts, renamed
+  for (int n = 0; n < 300; ++n) {
+    sim.step({});
+    with.step({});
+  }
+  for (std::size_t i = 0; i < 3; ++i) expectSameBody(sim.state.bodies[i], with.state.bodies[i]);
+  EXPECT_EQ(sim.robots[0].q, with.robots[0].q);
+  EXPECT_EQ(sim.robots[0].v, with.robots[0].v);
+  sim.reset(0.0);  // a reset puts the spawned body where it was spawned
+  expectSameBody(sim.state.bodies[1], spawned);
+}
+
 TEST(Simulation, ResetPutsTheRobotsBack) {
   World w({"a"});
   Simulation sim(w.scene, w.start);
@@ -128,9 +170,9 @@ TEST(Simulation, RefusedEditsAndLoadsChangeNothing) {
   for (int n = 0; n < 100; ++n) sim.step({});
   const State before = sim.state;
   const std::vector<ArticulationState> robots_before = sim.robots;
-  EXPECT_THROW(sim.removeBody(1), std::invalid_argument);  // the bar: a link, not a free body
-  PreparedBody extra = sim.model().bodyBuilder().build(box("c"));
-  EXPECT_THROW(sim.addBody(extra, BodyState{}), std::invalid_argument);
+  EXPECT_THROW(sim.removeBody(1), std::invalid_argument);          // the bar: a link, not a free body
+  PreparedBody taken = sim.model().bodyBuilder().build(box("a"));  // a's name is taken
+  EXPECT_THROW(sim.addBody(taken, BodyState{}), std::invalid_argument);
   Loads on_link(2);
   on_link[1].force_W = Vec3(1.0, 0.0, 0.0);  // the bar's: a robot's loads are its own
   EXPECT_THROW(sim.step(on_link), std::invalid_argument);

@@ -52,6 +52,8 @@ class ContactLedger {
   /// After `removeBody(model, state, body)`: its contacts go and the later
   /// indices move down, as the state's did.
   void removeBody(int body);
+  /// After `insertBody(state, body, ...)`: the indices from `body` on move up.
+  void insertBody(int body);
 
  private:
   std::vector<Contact> kept_;

@@ -209,7 +209,10 @@ class Model {
   /// two steps copies none of the other bodies (the node's spawns and
   /// deletes, issue 32). addBody() leaves the model as it was when it
   /// throws. Step an edited model with Workspace::forEditedModel().
-  void addBody(const PreparedBody& body);
+  void addBody(const PreparedBody& body) { insertBody(bodies_.size(), body); }
+  /// addBody() at index i ≤ bodyCount(): the bodies from i on move up by
+  /// one (a scene's free body goes before the robots' links).
+  void insertBody(std::size_t i, const PreparedBody& body);
   void removeBody(std::size_t i);
   /// The coefficients of a contact between `body` and `other` (< 0: the
   /// scene), by the contact settings' combine rules.

@@ -49,9 +49,9 @@ class Scene {
   explicit Scene(Model model);
 
   // Edits between steps (core::Simulation makes them, with the state's).
-  /// Adds a free body last among the free bodies. Throws as Model::addBody
-  /// does, and std::invalid_argument while the scene has robots (a body
-  /// beside robots is set up with them, not spawned yet); then nothing has changed.
+  /// Adds a free body last among the free bodies, before the robots'
+  /// links (which move up by one). Throws as Model::addBody does, and then
+  /// nothing has changed.
   void addBody(const PreparedBody& body);
   /// Takes free body i out (Model::removeBody); the links after it move
   /// down by one. Throws std::invalid_argument for a link or no body.

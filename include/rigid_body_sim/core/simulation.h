@@ -50,7 +50,8 @@ struct Simulation {
   /// nothing has changed.
   void step(const Loads& loads, const std::vector<ArticulationLoads>& robot_loads = {});
 
-  /// Adds `body` last, at `start` (also its initial state). The model
+  /// Adds `body` last among the free bodies (the robots' links move up by
+  /// one), at `start` (also its initial state). The model
   /// refuses a body it cannot take (a taken name, settings the body breaks)
   /// by throwing, and then nothing has changed.
   void addBody(const PreparedBody& body, const BodyState& start);

@@ -101,6 +101,10 @@ BodyState bodyStateFromLink(const BodyModel& body, const LinkState& link);
 /// every body that may touch it wakes (within both bounding radii plus 1 cm
 /// of it, or holding a contact impulse with it): what rested on it falls.
 void removeBody(const Model& model, State& state, int i);
+/// Puts `start` in as body i, as Model::insertBody(i) puts a body in: the
+/// bodies from i on move up by one in the contact impulses (their warm
+/// starts kept). Nothing wakes: the new body's contacts wake what it hits.
+void insertBody(State& state, int i, const BodyState& start);
 
 /// Every body awake, its still time from zero: after the settings a body
 /// rests under changed (gravity, friction), none may stay asleep.

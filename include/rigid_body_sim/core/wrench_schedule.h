@@ -56,6 +56,8 @@ class WrenchSchedule {
   /// moves the later bodies' indices down by one. Returns how many of the
   /// timed ones (add()) it dropped.
   std::size_t removeBody(int body);
+  /// Follows Model::insertBody(body): the indices from `body` on move up by one.
+  void insertBody(int body);
 
   /// Forgets wrenches whose window ended by time t (held ones, whose
   /// timeout did), and counts those that started before t as acting.
