@@ -128,8 +128,9 @@ class BodyList {
 
   void add(const YAML::Node& entry, std::size_t i) {
     const std::string path = "bodies[" + std::to_string(i) + "]";
-    requireKnownKeys(entry, path,
-                     {"name", "urdf", "initial", "contact", "imu", "odom_noise", "cmd_vel", "controllers"});
+    requireKnownKeys(
+        entry, path,
+        {"name", "urdf", "initial", "contact", "imu", "odom_noise", "cmd_vel", "controllers", "gazebo_ros_control"});
     if (!entry["name"]) fail(path + ".name", "every body needs a name");
     if (!entry["urdf"]) fail(path + ".urdf", "every body needs a urdf (a file, or for the node a parameter)");
     BodyEntry b;
@@ -154,6 +155,9 @@ class BodyList {
     if (entry["odom_noise"]) b.odom_noise = parseOdomNoise(entry["odom_noise"], path + ".odom_noise");
     if (entry["cmd_vel"]) b.cmd_vel = parseDriver(entry["cmd_vel"], path + ".cmd_vel");
     if (entry["controllers"]) b.controllers = parseControllers(entry["controllers"], path + ".controllers");
+    if (entry["gazebo_ros_control"]) {
+      applyPidGains(entry["gazebo_ros_control"], path + ".gazebo_ros_control", b.controllers);
+    }
     bodies_.push_back(std::move(b));
   }
 
@@ -191,7 +195,7 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
   if (!root || root.IsNull()) return c;
   requireKnownKeys(root, "",
                    {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver",
-                    "limits", "bodies", "imu", "odom_noise", "cmd_vel", "controllers"});
+                    "limits", "bodies", "imu", "odom_noise", "cmd_vel", "controllers", "gazebo_ros_control"});
   parseSection(root, "", c.model);  // dt, gravity, gyroscopic
   parseSection(root, "damping", c.model);
   if (root["initial"]) parseInitial(root["initial"], c.initial, c.initial_joints);
@@ -218,6 +222,12 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
   if (root["controllers"]) {
     if (root["bodies"]) fail("controllers", "with a bodies list, give each robot its own bodies[i].controllers");
     c.controllers = parseControllers(root["controllers"], "controllers");
+  }
+  if (root["gazebo_ros_control"]) {
+    if (root["bodies"]) {
+      fail("gazebo_ros_control", "with a bodies list, give each robot its own bodies[i].gazebo_ros_control");
+    }
+    applyPidGains(root["gazebo_ros_control"], "gazebo_ros_control", c.controllers);
   }
   // Sensors sample at most once a step: checked against the dt just read.
   if (c.imu) validateImuEntry(*c.imu, c.model.dt, "imu");

@@ -82,4 +82,34 @@ std::vector<ControllerEntry> parseControllers(const YAML::Node& node, const std:
   return out;
 }
 
+void applyPidGains(const YAML::Node& node, const std::string& path, std::vector<ControllerEntry>& entries) {
+  if (!node.IsMap()) fail(path, "expected a map {pid_gains: {JOINT: {p, i, d, i_clamp}}}");
+  requireKnownKeys(node, path, {"pid_gains"});
+  const std::string gains_path = join(path, "pid_gains");
+  const YAML::Node& gains = node["pid_gains"];
+  if (!gains) return;
+  if (!gains.IsMap()) fail(gains_path, "expected a map from joint name to {p, i, d, i_clamp}");
+  for (const auto& g : gains) {
+    const std::string joint = text(g.first, gains_path), key = join(gains_path, joint);
+    ControllerEntry* owner = nullptr;
+    std::size_t k = 0;
+    for (ControllerEntry& e : entries) {
+      for (std::size_t j = 0; j < e.joints.size(); ++j) {
+        if (e.joints[j] == joint) {
+          owner = &e;
+          k = j;
+        }
+      }
+    }
+    if (owner == nullptr) fail(key, "no controller in `controllers` names joint '" + joint + "'");
+    if (owner->type.rfind("position_controllers/", 0) != 0 && owner->type.rfind("velocity_controllers/", 0) != 0) {
+      fail(key, "joint '" + joint + "' is controller '" + owner->name + "''s, a " + owner->type +
+                    ": it takes its own gains (gazebo_ros_control's pid_gains are for position_controllers and "
+                    "velocity_controllers)");
+    }
+    if (owner->gains[k]) fail(key, "joint '" + joint + "' has gains already, in " + owner->key);
+    owner->gains[k] = parseGains(g.second, key);
+  }
+}
+
 }  // namespace rigid_body_sim::io

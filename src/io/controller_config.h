@@ -18,4 +18,13 @@ namespace rigid_body_sim::io {
 /// (io/controllers.h).
 std::vector<ControllerEntry> parseControllers(const YAML::Node& node, const std::string& path);
 
+/// gazebo_ros_control's map at `path` ({pid_gains: {JOINT: {p, i, d,
+/// i_clamp}}}): each joint's gains go to the position_controllers or
+/// velocity_controllers controller in `entries` that owns it (in Gazebo
+/// they act at its hardware interface; here, as everywhere, on effort).
+/// Refused (ConfigError naming the key): a joint no controller of
+/// `entries` owns, one of an effort_controllers controller (it takes its
+/// own `pid`), one whose controller has gains already, any other key.
+void applyPidGains(const YAML::Node& node, const std::string& path, std::vector<ControllerEntry>& entries);
+
 }  // namespace rigid_body_sim::io

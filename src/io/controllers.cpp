@@ -82,9 +82,12 @@ RobotControls buildControls(const std::vector<ControllerEntry>& entries, const c
       spec.joints.push_back(jointIndex(model, e.joints[k], key));
       if (info->mode == core::ControlMode::kEffort) continue;
       if (!e.gains[k]) {
+        const bool interface_pid =
+            e.type.rfind("position_controllers/", 0) == 0 || e.type.rfind("velocity_controllers/", 0) == 0;
         refuse(e.key + (info->group ? ".gains." + e.joints[k] : ".pid"),
                "'" + e.type + "' acts here through a PID on effort (never by setting the joint, as Gazebo's " +
-                   "position interface does): give its gains {p, i, d, i_clamp}");
+                   "position interface does): give its gains {p, i, d, i_clamp}" +
+                   (interface_pid ? " (here, or as gazebo_ros_control: {pid_gains: {" + e.joints[k] + ": ...}})" : ""));
       }
       spec.gains.push_back(*e.gains[k]);
     }

@@ -99,6 +99,47 @@ controllers:
   }
 }
 
+// gazebo_ros_control's pid_gains, as a Gazebo user's YAML gives them for
+// position_controllers and velocity_controllers: the gains of those joints.
+TEST(Controllers, GazeboRosControlPidGainsGiveInterfaceControllersTheirGains) {
+  const io::RobotControls c = controls(R"(
+controllers:
+  shoulder: {type: position_controllers/JointPositionController, joint: shoulder}
+  elbow: {type: velocity_controllers/JointVelocityController, joint: elbow}
+gazebo_ros_control:
+  pid_gains:
+    shoulder: {p: 100.0, i: 0.01, d: 10.0}
+    elbow: {p: 5.0}
+)");
+  ASSERT_EQ(c.controllers.specs().size(), 2u);
+  EXPECT_EQ(c.controllers.specs()[0].gains[0].p, 100.0);
+  EXPECT_EQ(c.controllers.specs()[0].gains[0].i, 0.01);
+  EXPECT_EQ(c.controllers.specs()[0].gains[0].d, 10.0);
+  EXPECT_EQ(c.controllers.specs()[1].gains[0].p, 5.0);
+  const struct {
+    std::string yaml, expected;
+  } cases[] = {
+      {"controllers: {a: {type: position_controllers/JointPositionController, joint: elbow}}\n"
+       "gazebo_ros_control: {pid_gains: {shoulder: {p: 1}}}",
+       "'gazebo_ros_control.pid_gains.shoulder': no controller in `controllers` names joint 'shoulder'"},
+      {"controllers: {a: {type: effort_controllers/JointPositionController, joint: elbow, pid: {p: 1}}}\n"
+       "gazebo_ros_control: {pid_gains: {elbow: {p: 1}}}",
+       "is controller 'a''s, a effort_controllers/JointPositionController: it takes its own gains"},
+      {"controllers: {a: {type: position_controllers/JointPositionController, joint: elbow, pid: {p: 1}}}\n"
+       "gazebo_ros_control: {pid_gains: {elbow: {p: 1}}}",
+       "'gazebo_ros_control.pid_gains.elbow': joint 'elbow' has gains already, in controllers.a"},
+      {"controllers: {a: {type: position_controllers/JointPositionController, joint: elbow}}\n"
+       "gazebo_ros_control: {robotNamespace: /arm}",
+       "robotNamespace"},
+      {"controllers: {a: {type: position_controllers/JointPositionController, joint: elbow}}",
+       "(here, or as gazebo_ros_control: {pid_gains: {elbow: ...}})"},
+  };
+  for (const auto& k : cases) {
+    const std::string message = refusal(k.yaml);
+    EXPECT_NE(message.find(k.expected), std::string::npos) << k.yaml << "\n  -> " << message;
+  }
+}
+
 TEST(Controllers, RefusalsNameTheKey) {
   const struct {
     std::string yaml, expected;
