@@ -11,7 +11,7 @@ set -euo pipefail
 source "$(dirname "$0")/../scripts/common.sh"
 SECONDS_PER_RUN=${1:-10}
 ROUNDS=${2:-3}
-rbs_bench_node_setup 11498
+rbs_bench_node_setup 11520
 core=$RBS_MASTER_PID
 "$RBS_WS/devel/lib/rigid_body_sim/bench_listener" >/dev/null 2>&1 &
 listener=$!

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "../test_util.h"
+#include "rigid_body_sim/io/articulation_loader.h"
 #include "rigid_body_sim/ros/state_publisher.h"
 
 namespace rigid_body_sim::node {
@@ -71,6 +72,37 @@ TEST(StateMessages, BodyStatesGiveTwistsInTheBodysFrameOrTheWorldsAxes) {
   const BodyStates world = bodyStatesMessage(model, s, ports, header("map"), true);
   EXPECT_EQ(world.twist_frames[0], "map");
   expectVector(world.twists[0].linear, Vec3(1, 0, 0));
+}
+
+// Each robot follows the bodies by its name: a floating base's pose and
+// twist in its base link's axes (or the world's), a world-fixed one where it
+// is fixed, at rest, its twist in the world's axes.
+TEST(StateMessages, BodyStatesCarryEachRobotsBase) {
+  const std::string urdf = std::string(RBS_SOURCE_DIR) + "/urdf/";
+  core::ModelSpec spec;
+  spec.dt = 1e-3;
+  core::Scene scene(spec, {{"rod", io::loadArticulationFile(urdf + "pendulum.urdf")},
+                           {"rover", io::loadArticulationFile(urdf + "diff_drive.urdf")}});
+  std::vector<core::ArticulationState> robots;
+  for (const core::SceneRobot& r : scene.robots()) robots.push_back(core::restState(r.model));
+  robots[1].X_WB = core::Pose{Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ())), Vec3(1.0, 2.0, 0.1)};
+  robots[1].V_B.head<3>() = Vec3(0.0, 0.0, 0.5);  // ω, in the base's axes
+  robots[1].V_B.tail<3>() = Vec3(0.3, 0.0, 0.0);  // v, in the base's axes: forward
+  const core::Simulation sim(scene, core::sceneState(scene, core::State{}, robots));
+  for (const bool in_world : {false, true}) {
+    BodyStates msg;
+    msg.header = header("map");
+    appendRobotBases(sim, in_world, msg);
+    ASSERT_EQ(msg.names, (std::vector<std::string>{"rod", "rover"}));
+    EXPECT_EQ(msg.twist_frames[0], "map");  // fixed to the world
+    expectVector(msg.twists[0].linear, Vec3::Zero());
+    EXPECT_EQ(msg.twist_frames[1], in_world ? "map" : "base_link");
+    EXPECT_NEAR(msg.poses[1].position.y, 2.0, 1e-12);
+    EXPECT_NEAR(msg.poses[1].orientation.z, std::sqrt(0.5), 1e-12);
+    expectVector(msg.twists[1].linear, in_world ? Vec3(0.0, 0.3, 0.0) : Vec3(0.3, 0.0, 0.0));
+    expectVector(msg.twists[1].angular, Vec3(0.0, 0.0, 0.5));
+    EXPECT_FALSE(msg.asleep[1]);
+  }
 }
 
 TEST(StateMessages, OdometryCarriesTheReportsCovariancesOrTheExactOnes) {
