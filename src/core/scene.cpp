@@ -14,6 +14,24 @@ namespace rigid_body_sim::core {
 
 namespace {
 
+/// Robot `r`'s links as bodies (`bodies`), in collision group `group` (−1:
+/// none), named ROBOT/LINK; the robot itself, its links from `first_body` on.
+SceneRobot robotLinks(Scene::RobotSpec& r, int group, int first_body, std::vector<BodySpec>& bodies) {
+  LinkBodies links = linkBodies(r.model, group);
+  for (BodySpec& b : links.bodies) {
+    b.name = r.name + "/" + b.name;  // two robots of one URDF have links of one name
+    b.friction = r.friction;
+    b.restitution = r.restitution;
+  }
+  SceneRobot robot;
+  robot.name = std::move(r.name);
+  robot.model = std::move(r.model);
+  robot.first_body = first_body;
+  robot.link = std::move(links.link);
+  bodies = std::move(links.bodies);
+  return robot;
+}
+
 /// `spec` with every robot's links appended as bodies; `robots` gets where.
 ModelSpec withLinks(const ModelSpec& spec, std::vector<Scene::RobotSpec>& specs, std::vector<SceneRobot>& robots) {
   ModelSpec all = spec;
@@ -22,19 +40,10 @@ ModelSpec withLinks(const ModelSpec& spec, std::vector<Scene::RobotSpec>& specs,
   int group = 0;
   for (const BodySpec& b : spec.bodies) group = std::max(group, b.collision_group + 1);
   for (Scene::RobotSpec& r : specs) {
-    LinkBodies links = linkBodies(r.model, spec.contact.self_collision ? -1 : group++);
-    for (BodySpec& b : links.bodies) {
-      b.name = r.name + "/" + b.name;  // two robots of one URDF have links of one name
-      b.friction = r.friction;
-      b.restitution = r.restitution;
-    }
-    SceneRobot robot;
-    robot.name = std::move(r.name);
-    robot.model = std::move(r.model);
-    robot.first_body = static_cast<int>(all.bodies.size());
-    robot.link = std::move(links.link);
-    all.bodies.insert(all.bodies.end(), links.bodies.begin(), links.bodies.end());
-    robots.push_back(std::move(robot));
+    std::vector<BodySpec> links;
+    robots.push_back(
+        robotLinks(r, spec.contact.self_collision ? -1 : group++, static_cast<int>(all.bodies.size()), links));
+    all.bodies.insert(all.bodies.end(), links.begin(), links.end());
   }
   return all;
 }
@@ -68,6 +77,27 @@ void Scene::addBody(const PreparedBody& body) {
   robot_of_.insert(robot_of_.begin() + static_cast<std::ptrdiff_t>(free_bodies_), -1);
   ++free_bodies_;
   for (SceneRobot& robot : robots_) ++robot.first_body;
+}
+
+void Scene::addRobot(RobotSpec spec) {
+  for (const SceneRobot& robot : robots_) {
+    if (robot.name == spec.name) throw std::invalid_argument("robot '" + spec.name + "': another robot has this name");
+  }
+  if (model_.contact().method != ContactMethod::kImpulse) {
+    throw std::invalid_argument(
+        "contact.method: a scene with robots takes the impulse method (robots' contacts are rows of its solve)");
+  }
+  int group = 0;  // after every group in use, as the constructor numbers them
+  for (const BodyModel& b : model_.bodies()) group = std::max(group, b.collision_group + 1);
+  std::vector<BodySpec> links;
+  SceneRobot robot =
+      robotLinks(spec, model_.contact().self_collision ? -1 : group, static_cast<int>(model_.bodyCount()), links);
+  Model next = model_;  // the bodies' grids are shared, not copied; unchanged if a link throws
+  const BodyBuilder builder = next.bodyBuilder();
+  for (const BodySpec& b : links) next.addBody(builder.build(b));
+  model_ = std::move(next);
+  robot_of_.resize(model_.bodyCount(), static_cast<int>(robots_.size()));
+  robots_.push_back(std::move(robot));
 }
 
 void Scene::removeBody(std::size_t i) {

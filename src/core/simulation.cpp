@@ -50,6 +50,18 @@ void Simulation::addBody(const PreparedBody& body, const BodyState& start) {
   workspace = workspace.forEditedModel();  // its caches assumed the old model
 }
 
+void Simulation::addRobot(Scene::RobotSpec robot, const ArticulationState& start) {
+  scene.addRobot(std::move(robot));  // unchanged if it throws
+  const std::size_t r = scene.robots().size() - 1;
+  robots.push_back(start);
+  initial_robots.push_back(start);
+  state.bodies.resize(model().bodyCount());
+  initial.bodies.resize(model().bodyCount());
+  core::placeRobot(scene, r, start, state);
+  core::placeRobot(scene, r, start, initial);
+  workspace = workspace.forEditedModel();
+}
+
 std::size_t Simulation::removeBody(int i) {
   if (i < 0 || static_cast<std::size_t>(i) >= scene.freeBodyCount()) {
     throw std::invalid_argument("body " + std::to_string(i) + ": no free body (" +

@@ -152,6 +152,41 @@ TEST(Simulation, ABodySpawnedBesideARobotGoesBeforeItsLinks) {
   expectSameBody(sim.state.bodies[1], spawned);
 }
 
+// A robot added to a running world goes last, its links after every body:
+// from then on the world steps bit for bit as one made with it. A second
+// robot of the same name is refused and changes nothing.
+TEST(Simulation, ARobotAddedGoesLastAndStepsAsOneMadeWithIt) {
+  World one({"a"});
+  const Pose there{Quat::Identity(), Vec3(-3.0, 0.0, 0.0)};
+  Scene made(World::spec({"a"}), {{"arm", pendulum(1.5)}, {"low", pendulum(0.3)}});
+  std::vector<ArticulationState> robots{one.start.robots[0], restState(made.robots()[1].model, there)};
+  Simulation with(made, sceneState(made, one.start.bodies, robots));
+  Simulation sim(one.scene, one.start);
+  sim.addRobot({"low", pendulum(0.3)}, robots[1]);
+  ASSERT_EQ(sim.model().bodyCount(), 3u);
+  EXPECT_EQ(sim.model().body(2).name, "low/bar");
+  EXPECT_EQ(sim.scene.robots()[1].first_body, 2);
+  EXPECT_EQ(sim.scene.robotOf(2), 1);
+  EXPECT_NE(sim.model().body(2).collision_group, sim.model().body(1).collision_group);
+  expectSameBody(sim.state.bodies[2], with.state.bodies[2]);  // its link placed where it starts
+  for (int n = 0; n < 600; ++n) {
+    sim.step({});
+    with.step({});
+  }
+  for (std::size_t i = 0; i < 3; ++i) expectSameBody(sim.state.bodies[i], with.state.bodies[i]);
+  for (std::size_t r = 0; r < 2; ++r) {
+    EXPECT_EQ(sim.robots[r].q, with.robots[r].q);
+    EXPECT_EQ(sim.robots[r].v, with.robots[r].v);
+  }
+  const State before = sim.state;
+  EXPECT_THROW(sim.addRobot({"low", pendulum(1.0)}, robots[1]), std::invalid_argument);
+  ASSERT_EQ(sim.model().bodyCount(), 3u);
+  ASSERT_EQ(sim.robots.size(), 2u);
+  for (std::size_t i = 0; i < 3; ++i) expectSameBody(sim.state.bodies[i], before.bodies[i]);
+  sim.reset(0.0);  // a reset puts the added robot back where it was added
+  EXPECT_EQ(sim.robots[1].q, robots[1].q);
+}
+
 TEST(Simulation, ResetPutsTheRobotsBack) {
   World w({"a"});
   Simulation sim(w.scene, w.start);

@@ -53,6 +53,12 @@ class Scene {
   /// links (which move up by one). Throws as Model::addBody does, and then
   /// nothing has changed.
   void addBody(const PreparedBody& body);
+  /// Adds a robot last: its links become bodies after every other, in a
+  /// collision group of their own (unless self-collision is on), named
+  /// ROBOT/LINK, as the constructor makes them. Throws std::invalid_argument
+  /// for a name another robot has, or as Model::addBody does for a link;
+  /// then nothing has changed.
+  void addRobot(RobotSpec robot);
   /// Takes free body i out (Model::removeBody); the links after it move
   /// down by one. Throws std::invalid_argument for a link or no body.
   void removeBody(std::size_t i);

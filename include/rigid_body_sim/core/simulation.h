@@ -55,6 +55,10 @@ struct Simulation {
   /// refuses a body it cannot take (a taken name, settings the body breaks)
   /// by throwing, and then nothing has changed.
   void addBody(const PreparedBody& body, const BodyState& start);
+  /// Adds `robot` last (Scene::addRobot), at `start` (also its initial
+  /// state), its links placed there. Throws as Scene::addRobot does, and
+  /// then nothing has changed.
+  void addRobot(Scene::RobotSpec robot, const ArticulationState& start);
 
   /// Takes free body i out of every table at once: its contacts, its wrenches and
   /// those in its axes go, what may touch it wakes (core::removeBody), and
