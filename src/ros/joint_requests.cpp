@@ -66,55 +66,44 @@ std::optional<std::pair<std::size_t, int>> JointRequests::joint(const std::strin
   return std::nullopt;
 }
 
-bool JointRequests::setModelConfiguration(SetModelConfiguration::Request& req, SetModelConfiguration::Response& res) {
-  res.success = false;
-  const auto r = robot(req.model_name, res.status_message);
-  if (!r) return true;
-  const core::ArticulationModel& model = sim_.scene.robots()[*r].model;
-  const std::size_t n = req.joint_names.size();
-  if (req.joint_positions.size() != n) {
-    res.status_message = "joint_positions: " + std::to_string(req.joint_positions.size()) + " values for " +
-                         std::to_string(n) + " joint_names";
-    return true;
+std::string configureJoints(const core::ArticulationModel& model, const core::SpeedLimits& limits,
+                            const std::vector<std::string>& names, const std::vector<double>& positions,
+                            const std::vector<double>& velocities, core::ArticulationState& state) {
+  const std::size_t n = names.size();
+  if (positions.size() != n) {
+    return "joint_positions: " + std::to_string(positions.size()) + " values for " + std::to_string(n) + " joint_names";
   }
-  if (!req.joint_velocities.empty() && req.joint_velocities.size() != n) {
-    res.status_message = "joint_velocities: " + std::to_string(req.joint_velocities.size()) + " values for " +
-                         std::to_string(n) + " joint_names (give one per joint, or none: at rest)";
-    return true;
+  if (!velocities.empty() && velocities.size() != n) {
+    return "joint_velocities: " + std::to_string(velocities.size()) + " values for " + std::to_string(n) +
+           " joint_names (give one per joint, or none: at rest)";
   }
-  core::ArticulationState now = sim_.robots[*r];
+  core::ArticulationState now = state;
   std::set<int> named;
-  const core::SpeedLimits& limits = sim_.model().limits();
   for (std::size_t k = 0; k < n; ++k) {
-    const std::string& name = req.joint_names[k];
+    const std::string& name = names[k];
     const std::string at = "[" + std::to_string(k) + "]";
     const int j = linkOf(model, name);
-    const auto refuse = [&](const std::string& why) {
-      res.status_message = why;
-      return true;
-    };
-    if (j < 0) return refuse("joint_names" + at + ": robot '" + model.name + "' has no moving joint '" + name + "'");
+    if (j < 0) return "joint_names" + at + ": robot '" + model.name + "' has no moving joint '" + name + "'";
     const core::ArticulatedLink& link = model.links[j];
     if (link.mimic.joint >= 0) {
-      return refuse("joint_names" + at + ": joint '" + name + "' mimics '" + model.links[link.mimic.joint].joint +
-                    "': set that one (a mimic joint follows it)");
+      return "joint_names" + at + ": joint '" + name + "' mimics '" + model.links[link.mimic.joint].joint +
+             "': set that one (a mimic joint follows it)";
     }
-    if (!named.insert(j).second) return refuse("joint_names" + at + ": joint '" + name + "' is named twice");
-    const double q = req.joint_positions[k];
+    if (!named.insert(j).second) return "joint_names" + at + ": joint '" + name + "' is named twice";
+    const double q = positions[k];
     const bool bounded = link.type != core::JointType::Continuous;
     if (!std::isfinite(q) || (bounded && (q < link.limits.lower || q > link.limits.upper)) || std::abs(q) > 1e6) {
-      return refuse("joint_positions" + at + ": joint '" + name + "' = " + number(q) + " is " +
-                    (bounded
-                         ? "outside its limits [" + number(link.limits.lower) + ", " + number(link.limits.upper) + "]"
-                         : "not a finite angle within 1e6 rad"));
+      return "joint_positions" + at + ": joint '" + name + "' = " + number(q) + " is " +
+             (bounded ? "outside its limits [" + number(link.limits.lower) + ", " + number(link.limits.upper) + "]"
+                      : "not a finite angle within 1e6 rad");
     }
-    const double v = req.joint_velocities.empty() ? 0.0 : req.joint_velocities[k];
+    const double v = velocities.empty() ? 0.0 : velocities[k];
     const double top =
         std::min(link.limits.velocity,
                  link.type == core::JointType::Prismatic ? limits.max_linear_speed : limits.max_angular_speed);
     if (!std::isfinite(v) || std::abs(v) > top) {
-      return refuse("joint_velocities" + at + ": joint '" + name + "' = " + number(v) +
-                    " is faster than its velocity limit " + number(top) + " (the URDF's, or limits.max_*_speed)");
+      return "joint_velocities" + at + ": joint '" + name + "' = " + number(v) + " is faster than its velocity limit " +
+             number(top) + " (the URDF's, or limits.max_*_speed)";
     }
     now.q(j - 1) = q;
     now.v(j - 1) = v;
@@ -125,10 +114,23 @@ bool JointRequests::setModelConfiguration(SetModelConfiguration::Request& req, S
     now.q(j - 1) = mimic.multiplier * now.q(mimic.joint - 1) + mimic.offset;
     now.v(j - 1) = mimic.multiplier * now.v(mimic.joint - 1);
   }
+  state = now;
+  return {};
+}
+
+bool JointRequests::setModelConfiguration(SetModelConfiguration::Request& req, SetModelConfiguration::Response& res) {
+  res.success = false;
+  const auto r = robot(req.model_name, res.status_message);
+  if (!r) return true;
+  const core::ArticulationModel& model = sim_.scene.robots()[*r].model;
+  core::ArticulationState now = sim_.robots[*r];
+  res.status_message =
+      configureJoints(model, sim_.model().limits(), req.joint_names, req.joint_positions, req.joint_velocities, now);
+  if (!res.status_message.empty()) return true;
   sim_.placeRobot(*r, now);
   placed_(*r);
   res.success = true;
-  res.status_message = "robot '" + model.name + "': " + std::to_string(n) + " joints set";
+  res.status_message = "robot '" + model.name + "': " + std::to_string(req.joint_names.size()) + " joints set";
   return true;
 }
 

@@ -19,10 +19,7 @@ RobotCommands::RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotCon
   controls_.resize(robots.size());
   applied_.resize(robots.size());
   for (std::size_t r = 0; r < robots.size(); ++r) {
-    robot_names_.push_back(robots[r].name);
-    std::vector<std::string> joints;
-    for (const core::ArticulatedLink& link : robots[r].model.links) joints.push_back(link.joint);
-    joint_names_.push_back(std::move(joints));
+    nameJoints(robots[r]);
     const std::string prefix = several ? robots[r].name + "/" : "";
     const std::vector<core::JointControllerSpec>& specs = controls_[r].controllers.specs();
     for (std::size_t c = 0; c < specs.size(); ++c) {
@@ -47,6 +44,19 @@ RobotCommands::RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotCon
     }
   }
   restart(sim);
+}
+
+void RobotCommands::nameJoints(const core::SceneRobot& robot) {
+  robot_names_.push_back(robot.name);
+  std::vector<std::string> joints;
+  for (const core::ArticulatedLink& link : robot.model.links) joints.push_back(link.joint);
+  joint_names_.push_back(std::move(joints));
+}
+
+void RobotCommands::addRobot(const core::Simulation& sim, std::size_t r) {
+  nameJoints(sim.scene.robots().at(r));
+  controls_.emplace_back();
+  applied_.emplace_back();
 }
 
 void RobotCommands::command(std::size_t r, std::size_t c, const std::vector<double>& values) {

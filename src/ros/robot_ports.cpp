@@ -61,17 +61,21 @@ void checkRobotFrames(const core::Scene& scene, const std::string& world_frame,
 RobotPublisher::RobotPublisher(const ros::NodeHandle& nh, const core::Scene& scene, bool several,
                                std::string world_frame, double dt, double publish_rate,
                                const std::function<double(std::size_t)>& rate)
-    : nh_(nh), world_frame_(std::move(world_frame)) {
+    : nh_(nh), world_frame_(std::move(world_frame)), dt_(dt) {
   for (const core::SceneRobot& robot : scene.robots()) {
-    RobotPorts p;
-    p.name = robot.name;
-    p.prefix = several ? robot.name + "/" : "";
-    p.base_frame = robot.model.fixed_base ? "" : robot.model.links[0].name;
-    p.joint_states = CountedPublisher::advertise<sensor_msgs::JointState>(nh_, p.prefix + "joint_states", 10);
     const double hz = rate(robots_.size()) > 0.0 ? rate(robots_.size()) : publish_rate;
-    p.every = std::max(1LL, std::llround(1.0 / (hz * dt)));
-    robots_.push_back(std::move(p));
+    addRobot(robot, several ? robot.name + "/" : "", hz);
   }
+}
+
+void RobotPublisher::addRobot(const core::SceneRobot& robot, const std::string& prefix, double hz) {
+  RobotPorts p;
+  p.name = robot.name;
+  p.prefix = prefix;
+  p.base_frame = robot.model.fixed_base ? "" : robot.model.links[0].name;
+  p.joint_states = CountedPublisher::advertise<sensor_msgs::JointState>(nh_, p.prefix + "joint_states", 10);
+  p.every = std::max(1LL, std::llround(1.0 / (hz * dt_)));
+  robots_.push_back(std::move(p));
 }
 
 void RobotPublisher::publish(const core::Simulation& sim, const std::vector<Eigen::VectorXd>& applied,

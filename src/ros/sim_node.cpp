@@ -181,6 +181,12 @@ void SimNode::afterSpawn() {
   publisher_->fixedFrames(model_, ports_, stamp(), last);
 }
 
+void SimNode::afterRobotSpawn(const std::string& prefix) {
+  const std::size_t r = sim_.scene.robots().size() - 1;
+  robot_publisher_->addRobot(sim_.scene.robots()[r], prefix, settings_.publish_rate);
+  commands_->addRobot(sim_, r);
+}
+
 void SimNode::afterDelete(const std::string& name) {
   markers_->removed(name);
   publisher_->fixedFrames(model_, ports_, stamp());

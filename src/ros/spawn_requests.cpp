@@ -10,10 +10,13 @@
 
 #include "request_checks.h"
 #include "rigid_body_sim/core/ranges.h"
+#include "rigid_body_sim/io/articulation_loader.h"
 #include "rigid_body_sim/io/mesh_loader.h"
+#include "rigid_body_sim/io/scene_loader.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/io/world.h"
 #include "rigid_body_sim/ros/conversions.h"
+#include "rigid_body_sim/ros/joint_requests.h"
 #include "rigid_body_sim/ros/sim_node.h"
 
 namespace rigid_body_sim::node {
@@ -36,18 +39,17 @@ std::string checkSpawnRequest(const SpawnBody::Request& req) {
                        req.own_restitution ? checkCoefficient(req.restitution, 1.0, "restitution") : ""});
 }
 
-/// The body the request's URDF describes: exactly one of urdf_xml,
-/// urdf_param (read from the parameter server) or urdf_file. Throws
-/// std::exception with a message that starts with the field.
-core::BodySpec loadRequestedUrdf(const SpawnBody::Request& req, const ros::NodeHandle& nh,
-                                 const std::string& base_dir) {
+/// The URDF text of the request: exactly one of urdf_xml, urdf_param
+/// (read from the parameter server) or urdf_file. Throws std::exception
+/// with a message that starts with the field.
+io::UrdfText readRequestedUrdf(const SpawnBody::Request& req, const ros::NodeHandle& nh, const std::string& base_dir) {
   const int given = !req.urdf_xml.empty() + !req.urdf_param.empty() + !req.urdf_file.empty();
   if (given != 1) {
     throw std::invalid_argument("urdf_xml, urdf_param, urdf_file: give exactly one (" + std::to_string(given) +
                                 " given)");
   }
   // Each loader's message starts with the source it was given: the field.
-  if (!req.urdf_xml.empty()) return io::loadUrdfString(req.urdf_xml, "urdf_xml");
+  if (!req.urdf_xml.empty()) return {req.urdf_xml, "urdf_xml", ""};
   if (!req.urdf_param.empty()) {
     std::string xml, where;
     try {
@@ -56,7 +58,7 @@ core::BodySpec loadRequestedUrdf(const SpawnBody::Request& req, const ros::NodeH
     } catch (const ros::InvalidNameException& e) {
       throw std::invalid_argument("urdf_param '" + req.urdf_param + "': not a parameter name (" + e.what() + ")");
     }
-    return io::loadUrdfString(xml, where);
+    return {xml, where, ""};
   }
   const std::string& uri = req.urdf_file;
   if (uri.rfind("package://", 0) != 0 && uri.rfind("file://", 0) != 0 && uri.front() != '/') {
@@ -65,10 +67,36 @@ core::BodySpec loadRequestedUrdf(const SpawnBody::Request& req, const ros::NodeH
                                 "absolute path or package://PACKAGE/PATH");
   }
   try {
-    return io::loadUrdfFile(io::resolveMeshUri(uri, base_dir));
+    return io::readUrdfFile(uri, base_dir);
   } catch (const std::exception& e) {
     throw std::invalid_argument("urdf_file: " + std::string(e.what()));
   }
+}
+
+/// The robot a request's URDF describes, its joints set as joint_names says
+/// (the base where the loop puts it). Throws std::exception naming the field.
+void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf, const core::SpeedLimits& limits,
+                        SpawnQueue::Spawn& spawn) {
+  for (const auto& [field, given] : {std::pair<const char*, bool>{"imu", !req.imu.empty()},
+                                     {"odom_noise", !req.odom_noise.empty()},
+                                     {"cmd_vel", !req.cmd_vel.empty()}}) {
+    if (given) throw std::invalid_argument(std::string(field) + ": a robot takes no devices yet");
+  }
+  core::ArticulationModel model = io::loadArticulationString(urdf.xml, urdf.source, urdf.base_dir);
+  model.name = req.name;
+  if (model.fixed_base &&
+      (fromVector3(req.twist.linear) != core::Vec3::Zero() || fromVector3(req.twist.angular) != core::Vec3::Zero())) {
+    throw std::invalid_argument("twist: robot '" + req.name +
+                                "' is fixed to the world (its root link is 'world'): it may be placed, not set moving");
+  }
+  spawn.robot_start = core::restState(model);
+  const std::string problem =
+      configureJoints(model, limits, req.joint_names, req.joint_positions, {}, spawn.robot_start);
+  if (!problem.empty()) throw std::invalid_argument(problem);
+  core::Scene::RobotSpec robot{req.name, std::move(model)};
+  if (req.own_friction) robot.friction = req.friction;
+  if (req.own_restitution) robot.restitution = req.restitution;
+  spawn.robot = std::move(robot);
 }
 
 }  // namespace
@@ -81,7 +109,17 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
   if (!res.message.empty()) return true;
   SpawnQueue::Spawn spawn;
   try {
-    core::BodySpec spec = loadRequestedUrdf(req, nh_, params_.sim.base_dir);
+    const io::UrdfText urdf = readRequestedUrdf(req, nh_, params_.sim.base_dir);
+    if (io::describesRobot(urdf.xml, urdf.source)) {
+      loadRequestedRobot(req, urdf, spawn_limits_, spawn);
+      spawn.request = req;
+      res = spawns_.submit(std::move(spawn), [] { return ros::ok(); });  // the loop adds it at its next tick
+      return true;
+    }
+    if (!req.joint_names.empty() || !req.joint_positions.empty()) {
+      throw std::invalid_argument("joint_names: the URDF has no moving joints (a body, not a robot)");
+    }
+    core::BodySpec spec = io::loadUrdfString(urdf.xml, urdf.source, urdf.base_dir);
     spec.name = req.name;
     if (req.own_friction) spec.friction = req.friction;
     if (req.own_restitution) spec.restitution = req.restitution;

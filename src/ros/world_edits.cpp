@@ -50,7 +50,70 @@ void WorldEdits::insertQueued(SpawnQueue& queue) {
   });
 }
 
+std::string WorldEdits::nameTaken(const std::string& name) const {
+  if (ports_.directory().byName(name)) return "name '" + name + "' is taken by a body in the world";
+  for (const core::SceneRobot& robot : sim_.scene.robots()) {
+    if (robot.name == name) return "name '" + name + "' is taken by a robot in the world";
+  }
+  return {};
+}
+
+SpawnBody::Response WorldEdits::insertRobot(SpawnQueue::Spawn& spawn) {
+  SpawnBody::Response res;
+  res.success = false;
+  const SpawnBody::Request& req = spawn.request;
+  res.message = nameTaken(req.name);
+  if (!res.message.empty()) return res;
+  const core::ArticulationModel& model = spawn.robot->model;
+  // Its links' frames are the URDF's names (robot_state_publisher's): none may be taken.
+  for (std::size_t k = model.fixed_base ? 1 : 0; k < model.links.size(); ++k) {
+    const std::string& frame = model.links[k].name;
+    std::string owner;
+    if (frame == settings_.world_frame) owner = "the world";
+    if (const auto body = ports_.directory().ownerOf(frame)) owner = "body '" + sim_.model().body(*body).name + "'";
+    for (const core::SceneRobot& robot : sim_.scene.robots()) {
+      for (const core::ArticulatedLink& link : robot.model.links) {
+        if (link.name == frame) owner = "robot '" + robot.name + "'";
+      }
+    }
+    if (!owner.empty()) {
+      res.message = "name '" + req.name + "': the robot's link frame '" + frame + "' is a frame of " + owner +
+                    " (robot_state_publisher names links as the URDF does: give each robot its own link names)";
+      return res;
+    }
+  }
+  const auto X_WF = address_.pose(req.frame, res.message);
+  if (!X_WF) return res;
+  core::ArticulationState start = spawn.robot_start;
+  start.X_WB = core::Pose{(X_WF->rotation * fromQuaternion(req.pose.orientation).normalized()).normalized(),
+                          *X_WF * fromPoint(req.pose.position)};
+  const core::Vec3 v_W = X_WF->rotation * fromVector3(req.twist.linear);
+  const core::Vec3 w_W = X_WF->rotation * fromVector3(req.twist.angular);
+  res.message = firstProblem(
+      {checkVector(start.X_WB.translation, kMaxPosition, "pose.position (in the world)", "m"),
+       checkSpeed(v_W, sim_.model().limits().max_linear_speed, "twist.linear", "limits.max_linear_speed", "m/s"),
+       checkSpeed(w_W, sim_.model().limits().max_angular_speed, "twist.angular", "limits.max_angular_speed", "rad/s")});
+  if (!res.message.empty()) return res;
+  const core::Mat3 R_BW = start.X_WB.rotation.toRotationMatrix().transpose();
+  start.V_B.head<3>() = R_BW * w_W;  // the base twist, in its own axes
+  start.V_B.tail<3>() = R_BW * v_W;
+  try {
+    sim_.addRobot(std::move(*spawn.robot), start);  // unchanged if it throws; reset puts it back here
+  } catch (const std::exception& e) {
+    res.message = e.what();
+    return res;
+  }
+  hooks_.robot_added(req.name + "/");
+  res.success = true;
+  res.message = "robot '" + req.name + "' added at t = " + time_.text() + ": " +
+                std::to_string(sim_.scene.robots().back().model.jointCount()) + " moving joints, '" + req.name +
+                "/joint_states' (no controllers: apply_joint_effort drives it)";
+  ROS_INFO("sim_node: %s", res.message.c_str());
+  return res;
+}
+
 SpawnBody::Response WorldEdits::insert(SpawnQueue::Spawn& spawn) {
+  if (spawn.robot) return insertRobot(spawn);
   SpawnBody::Response res;
   res.success = false;
   const SpawnBody::Request& req = spawn.request;
@@ -61,10 +124,8 @@ SpawnBody::Response WorldEdits::insert(SpawnQueue::Spawn& spawn) {
   std::vector<std::string> new_frames{prefix + body.link};
   for (const core::FixedLink& link : body.fixed_links) new_frames.push_back(prefix + link.name);
   if (spawn.ports->imu) new_frames.push_back(spawn.ports->imu_frame);  // not one of the body's (openPorts)
-  if (ports_.directory().byName(req.name)) {
-    res.message = "name '" + req.name + "' is taken by a body in the world";
-    return res;
-  }
+  res.message = nameTaken(req.name);
+  if (!res.message.empty()) return res;
   for (const std::string& frame : new_frames) {
     if (const auto owner = ports_.directory().ownerOf(frame)) {
       res.message = "name '" + req.name + "': the new body's frame '" + frame + "' is a frame of body '" +
@@ -72,12 +133,8 @@ SpawnBody::Response WorldEdits::insert(SpawnQueue::Spawn& spawn) {
       return res;
     }
   }
-  // The robots' names and their links' frames (the URDF's, unprefixed) are taken too.
+  // The robots' links' frames (the URDF's, unprefixed) are taken too.
   for (const core::SceneRobot& robot : sim_.scene.robots()) {
-    if (robot.name == req.name) {
-      res.message = "name '" + req.name + "' is taken by a robot in the world";
-      return res;
-    }
     for (const core::ArticulatedLink& link : robot.model.links) {
       if (std::find(new_frames.begin(), new_frames.end(), link.name) != new_frames.end()) {
         res.message =

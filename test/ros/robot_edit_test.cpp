@@ -1,15 +1,20 @@
 // World edits beside a robot (trajectory.test's node: the two-link arm):
 // a body spawned with ~spawn_body falls and lands while the arm's
-// joint_states go on; a name or URDF a robot has is refused; the body is
-// deleted again.
+// joint_states go on; a name a robot has is refused; the body is deleted
+// again. A robot spawned with its joints set (spawn_model's -J) publishes
+// NAME/joint_states from there and swings; one whose links' frames another
+// robot has is refused.
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
+#include <sensor_msgs/JointState.h>
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "rigid_body_sim/Contacts.h"
 #include "rigid_body_sim/DeleteBody.h"
+#include "rigid_body_sim/GetJointProperties.h"
 #include "rigid_body_sim/SpawnBody.h"
 #include "robot_fixture.h"
 
@@ -62,9 +67,10 @@ TEST_F(ArmEdits, ABodySpawnsBesideTheArmAndIsDeleted) {
   EXPECT_FALSE(as_robot.success);
   EXPECT_NE(as_robot.message.find("name 'arm2' is taken by a robot in the world"), std::string::npos)
       << as_robot.message;
-  const SpawnBody::Response robot = spawn("second_arm", "arm2.urdf");  // a robot: not spawned yet
-  EXPECT_FALSE(robot.success);
-  EXPECT_FALSE(robot.message.empty());
+  const SpawnBody::Response same_links = spawn("second_arm", "arm2.urdf");  // its links are the arm's
+  EXPECT_FALSE(same_links.success);
+  EXPECT_NE(same_links.message.find("the robot's link frame 'upper' is a frame of robot 'arm2'"), std::string::npos)
+      << same_links.message;
 
   rigid_body_sim::DeleteBody d;
   d.request.name = "crate";
@@ -73,6 +79,51 @@ TEST_F(ArmEdits, ABodySpawnsBesideTheArmAndIsDeleted) {
   const double stamp = last_.header.stamp.toSec();
   wait(0.5);
   EXPECT_GT(last_.header.stamp.toSec(), stamp);
+}
+
+// urdf/pendulum.urdf spawned with its pivot at 0.5 rad (spawn_model's -J):
+// pend/joint_states starts there, the rod swings under gravity, ~body_states
+// has it; a position past a joint's limit or an unknown joint is refused;
+// a reset puts it back where it was spawned.
+TEST_F(ArmEdits, ARobotSpawnsWithItsJointsSet) {
+  sensor_msgs::JointState first, latest;  // pend/joint_states
+  ros::Subscriber pend = nh_.subscribe<sensor_msgs::JointState>("/pend/joint_states", 100,
+                                                                [&](const sensor_msgs::JointState::ConstPtr& m) {
+                                                                  if (first.name.empty()) first = *m;
+                                                                  latest = *m;
+                                                                });
+  SpawnBody s;
+  s.request.name = "pend";
+  s.request.urdf_file = "package://rigid_body_sim/urdf/pendulum.urdf";
+  s.request.pose.position.x = -2.0;
+  s.request.pose.position.z = 1.0;
+  s.request.pose.orientation.w = 1.0;
+  s.request.joint_names = {"nowhere"};
+  s.request.joint_positions = {0.5};
+  EXPECT_FALSE(call("spawn_body", s).response.success);
+  s.request.joint_names = {"pivot"};
+  s.request.joint_positions = {0.5, 1.0};
+  const SpawnBody::Response wrong = call("spawn_body", s).response;
+  EXPECT_FALSE(wrong.success);
+  EXPECT_NE(wrong.message.find("joint_positions: 2 values for 1 joint_names"), std::string::npos) << wrong.message;
+  s.request.joint_positions = {0.5};
+  const SpawnBody::Response added = call("spawn_body", s).response;
+  ASSERT_TRUE(added.success) << added.message;
+  const auto pivot = [&] {
+    rigid_body_sim::GetJointProperties p;
+    p.request.joint_name = "pend/pivot";
+    p = call("get_joint_properties", p);
+    EXPECT_TRUE(p.response.success) << p.response.status_message;
+    return p.response.position.empty() ? NAN : p.response.position[0];
+  };
+  // At most a few steps later: the rod (α = 14 rad/s² at 0.5 rad) has not moved 0.02 rad yet.
+  EXPECT_NEAR(pivot(), 0.5, 0.02);
+  ASSERT_TRUE(spinUntil([&] { return !first.name.empty(); }, 10.0));
+  EXPECT_EQ(first.name, std::vector<std::string>{"pivot"});
+  wait(0.5);
+  EXPECT_LT(latest.position[0], 0.45) << "it did not swing down";
+  ASSERT_TRUE(trigger("reset"));
+  EXPECT_NEAR(pivot(), 0.5, 0.02) << "a reset did not put it back where it was spawned";
 }
 
 }  // namespace

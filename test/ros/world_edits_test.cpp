@@ -32,7 +32,8 @@ struct Edits : test::PartsWorld {
       settings,
       time,
       pacer,
-      {[this] { told.push_back("added"); }, [this](const std::string& n) { told.push_back("removed " + n); }}};
+      {[this] { told.push_back("added"); }, [this](const std::string& n) { told.push_back("removed " + n); },
+       [this](const std::string& prefix) { told.push_back("robot added " + prefix); }}};
 
   /// A spawn of a box named `name` at `z` m above the origin of `frame`, as the spawn thread hands it over.
   SpawnQueue::Spawn spawn(const std::string& name, double z, const std::string& frame) {

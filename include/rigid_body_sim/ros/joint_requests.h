@@ -19,6 +19,17 @@
 
 namespace rigid_body_sim::node {
 
+/// Puts the joints `names` of `model` at `positions`, with `velocities`
+/// (none: at rest), in `state`; a mimic joint follows its leader. Returns
+/// "" or why not, naming the field and index (joint_names, joint_positions,
+/// joint_velocities: an unknown, mimic or repeated joint, a position
+/// outside the limits, a velocity past them, a count that does not match),
+/// and then `state` is unchanged. set_model_configuration's check, and
+/// ~spawn_body's for a robot's joint_names.
+std::string configureJoints(const core::ArticulationModel& model, const core::SpeedLimits& limits,
+                            const std::vector<std::string>& names, const std::vector<double>& positions,
+                            const std::vector<double>& velocities, core::ArticulationState& state);
+
 class JointRequests {
  public:
   /// `placed(r)` after robot r was put somewhere: its controllers restart,

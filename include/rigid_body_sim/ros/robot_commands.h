@@ -36,6 +36,10 @@ class RobotCommands {
   RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotControls> controls, const core::Simulation& sim,
                 const NodeTime& time, bool several);
 
+  /// Robot r of `sim`, added to the world (~spawn_body): no controllers,
+  /// so no topics; its efforts are the timed ones (apply_joint_effort).
+  void addRobot(const core::Simulation& sim, std::size_t r);
+
   /// Each robot's loads for the step [t, t + dt) from `sim`'s state: its
   /// controllers' efforts and the timed ones (apply_joint_effort) added,
   /// within the joints' limits (also kept for joint_states).
@@ -69,6 +73,8 @@ class RobotCommands {
   void trajectory(std::size_t r, std::size_t c, const trajectory_msgs::JointTrajectory& msg);
 
  private:
+  /// Keeps `robot`'s name and its joints' (for messages and joint_command).
+  void nameJoints(const core::SceneRobot& robot);
   /// Warns once per joint and limit of the commands `source` had clipped.
   void warnClipped(std::size_t r, const std::string& source, const std::vector<core::Clipped>& clipped);
 

@@ -57,6 +57,10 @@ class RobotPublisher {
   RobotPublisher(const ros::NodeHandle& nh, const core::Scene& scene, bool several, std::string world_frame, double dt,
                  double publish_rate, const std::function<double(std::size_t)>& rate);
 
+  /// A robot added to the world (~spawn_body): its joint_states under
+  /// `prefix`, at `hz` Hz of sim time.
+  void addRobot(const core::SceneRobot& robot, const std::string& prefix, double hz);
+
   /// Robot r's joint states (efforts `applied[r]`) and floating base,
   /// stamped `now`: every robot, or with `steps` ≥ 0 those due at that step.
   void publish(const core::Simulation& sim, const std::vector<Eigen::VectorXd>& applied, const ros::Time& now,
@@ -67,6 +71,7 @@ class RobotPublisher {
  private:
   ros::NodeHandle nh_;
   std::string world_frame_;
+  double dt_;
   std::vector<RobotPorts> robots_;
   std::vector<geometry_msgs::TransformStamped> bases_;
   tf2_ros::TransformBroadcaster tf_;

@@ -97,6 +97,8 @@ class SimNode {
   void afterSpawn();
   /// After the body named `name` was deleted: the markers and fixed frames without it.
   void afterDelete(const std::string& name);
+  /// After a robot was added last: its joint_states under `prefix`, its efforts.
+  void afterRobotSpawn(const std::string& prefix);
 
   // Live tuning (reconfigure.cpp): the dynamic_reconfigure server ~physics.
   void startReconfigure();
@@ -140,7 +142,8 @@ class SimNode {
                           params_.node,
                           time_,
                           pacer_,
-                          {[this] { afterSpawn(); }, [this](const std::string& name) { afterDelete(name); }}};
+                          {[this] { afterSpawn(); }, [this](const std::string& name) { afterDelete(name); },
+                           [this](const std::string& prefix) { afterRobotSpawn(prefix); }}};
   /// get_state, set_state, reset: each published at once, a reset re-paced.
   StateRequests state_requests_{
       sim_,
@@ -160,7 +163,8 @@ class SimNode {
   PortContext port_context_;  ///< what opening a body's ports needs of the node (read only once made)
   /// Samples the IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();
-  const double dt_ = model_.dt();  ///< for the spawn thread (no edit changes it)
+  const double dt_ = model_.dt();                           ///< for the spawn thread (no edit changes it)
+  const core::SpeedLimits spawn_limits_ = model_.limits();  ///< for the spawn thread (no edit changes them)
 
   bool paused_ = false;
   bool use_sim_time_ = false;

@@ -10,10 +10,12 @@
 #include <future>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include "rigid_body_sim/SpawnBody.h"
 #include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/scene.h"
 #include "rigid_body_sim/ros/body_ports.h"
 
 namespace rigid_body_sim::node {
@@ -25,6 +27,10 @@ class SpawnQueue {
     SpawnBody::Request request;
     core::PreparedBody body;
     std::unique_ptr<BodyPorts> ports;  ///< opened on the spawn thread (openPorts)
+    /// A robot instead (its URDF has moving joints): it, and its joints as
+    /// joint_names set them (the base placed by the loop).
+    std::optional<core::Scene::RobotSpec> robot;
+    core::ArticulationState robot_start;
   };
   /// Adds a spawn to the world, or says why not (loop thread).
   using Insert = std::function<SpawnBody::Response(Spawn&)>;

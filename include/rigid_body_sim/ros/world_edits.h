@@ -24,10 +24,12 @@ namespace rigid_body_sim::node {
 class WorldEdits {
  public:
   /// What an edit asks of the node once made: `added` after a body joined
-  /// last, `removed` after the body of that name left.
+  /// last, `removed` after the body of that name left, `robot_added` after
+  /// a robot joined last (its topics under `prefix`).
   struct Hooks {
     std::function<void()> added;
     std::function<void(const std::string&)> removed;
+    std::function<void(const std::string& prefix)> robot_added;
   };
 
   /// Reads the node's time from `time`; records each edit's
@@ -51,6 +53,12 @@ class WorldEdits {
   bool deleteBody(DeleteBody::Request& req, DeleteBody::Response& res);
 
  private:
+  /// The robot of `spawn` (spawn.robot) into the world, its base at the
+  /// request's pose and twist, or why not (a name or link frame taken).
+  SpawnBody::Response insertRobot(SpawnQueue::Spawn& spawn);
+  /// "" if `name` names nothing in the world yet, else why not.
+  std::string nameTaken(const std::string& name) const;
+
   core::Simulation& sim_;
   PortRegistry& ports_;
   const Addressing& address_;
