@@ -112,6 +112,13 @@ class RobotAttack : public Node {
     }
     return out;
   }
+  /// Calls service `name` with `srv`: whether it succeeded; `what` its answer.
+  template <class Srv>
+  bool ask(const std::string& name, Srv& srv, std::string& what) {
+    srv = call(name, srv);
+    what = name + ": " + srv.response.status_message;
+    return srv.response.success;
+  }
   ros::Publisher shoulder_, elbow_, joint_command_;
   ros::Subscriber joints_;
   int received_ = 0, bad_ = 0;
@@ -164,9 +171,7 @@ TEST_F(RobotAttack, SeededRandomJointCommandsAndCallsNeverBreakIt) {
         s.request.joint_names = r.joints();
         s.request.joint_positions = r.values(3);
         if (r.pick(2) == 0) s.request.joint_velocities = r.values(3);
-        s = call("set_model_configuration", s);
-        ok = s.response.success;
-        what = "set_model_configuration: " + s.response.status_message;
+        ok = ask("set_model_configuration", s, what);
         break;
       }
       case 4: {
@@ -175,17 +180,13 @@ TEST_F(RobotAttack, SeededRandomJointCommandsAndCallsNeverBreakIt) {
         a.request.effort = r.value() * (r.pick(2) == 0 ? 10.0 : 1.0);
         a.request.duration = ros::Duration(r.pick(3) == 0 ? -1.0 : 0.01 * static_cast<double>(r.pick(50)));
         if (r.pick(4) == 0) a.request.start_time = ros::Time(static_cast<double>(r.pick(100)));
-        a = call("apply_joint_effort", a);
-        ok = a.response.success;
-        what = "apply_joint_effort: " + a.response.status_message;
+        ok = ask("apply_joint_effort", a, what);
         break;
       }
       case 5: {
         rigid_body_sim::ClearJointForces c;
         c.request.joint_name = r.joint();
-        c = call("clear_joint_forces", c);
-        ok = c.response.success;
-        what = "clear_joint_forces: " + c.response.status_message;
+        ok = ask("clear_joint_forces", c, what);
         break;
       }
       case 6: {
