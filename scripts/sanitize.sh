@@ -25,7 +25,7 @@ if [ "$which" = all ] || [ "$which" = asan ]; then
   echo "sanitize: every test under ASan and UBSan (ctest, 2 at a time)" >&2
   ctest --test-dir "$root_ws/asan/build" --output-on-failure -j2 >"$root_ws/asan/ctest.log" 2>&1 || status=$?
   grep -E "tests passed|tests failed" "$root_ws/asan/ctest.log" | tail -n 1 | sed 's/^/sanitize: asan: /' >&2
-  [ "$status" -eq 0 ] || grep -E "Failed|ERROR: |runtime error" "$root_ws/asan/ctest.log" | head -n 40 >&2
+  [ "$status" -eq 0 ] || grep -E "Failed|ERROR: |runtime error|\[FAILURE\]|Expected|actual: |Which is: |Value of: " "$root_ws/asan/ctest.log" | head -n 60 >&2
   unset ASAN_OPTIONS UBSAN_OPTIONS
 fi
 if [ "$which" = all ] || [ "$which" = tsan ]; then
