@@ -115,14 +115,23 @@ TEST_F(ArmTrajectory, BadTrajectoriesChangeNothing) {
 // An empty trajectory stops the arm where it is; a reset ends a trajectory
 // and the controller holds the reset arm (gazebo_ros_pkgs #1311).
 TEST_F(ArmTrajectory, AnEmptyTrajectoryStopsAndAResetEndsIt) {
-  send({point(2.0, {0.8, -0.8})});
+  // It stops where it is when the empty trajectory arrives, some time after
+  // it is sent: it must have passed where it was when sent, stop well short
+  // of the end, and stay.
+  send({point(4.0, {0.8, -0.8})});
   wait(1.0);
-  const double q1 = last_.position[0], q2 = last_.position[1];
-  ASSERT_GT(q1, 0.2) << "not under way";
+  const double q1 = last_.position[0];
+  ASSERT_GT(q1, 0.1) << "not under way";
   send({});
-  wait(2.0);
-  expectAt(q1, q2, 0.03, "did not stop where it was");
-  EXPECT_LT(last_.position[0], 0.7) << "went on to the old trajectory's end";
+  wait(1.5);
+  const double held1 = last_.position[0], held2 = last_.position[1];
+  EXPECT_GT(held1, q1 - 0.02) << "went back";
+  EXPECT_LT(held1, 0.7) << "went on to the old trajectory's end";
+  EXPECT_NEAR(held2, -held1, 0.05) << "the joints did not stop together";
+  wait(1.5);
+  std::printf("stopped at (%.5f, %.5f) rad, sent at %.5f; 1.5 s later (%.5f, %.5f)\n", held1, held2, q1,
+              last_.position[0], last_.position[1]);
+  expectAt(held1, held2, 0.01, "did not stay where it stopped");
 
   send({point(3.0, {0.8, 0.8})});
   wait(1.0);
