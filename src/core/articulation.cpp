@@ -77,6 +77,13 @@ LinkState baseLinkState(const ArticulationState& s) {
   return {s.X_WB.translation, s.X_WB.rotation, R * s.V_B.tail<3>(), R * s.V_B.head<3>()};
 }
 
+void setBaseLinkState(ArticulationState& s, const LinkState& base) {
+  s.X_WB = Pose{base.q_WL.normalized(), base.p_WL};
+  const Mat3 R_BW = s.X_WB.rotation.toRotationMatrix().transpose();
+  s.V_B.head<3>() = R_BW * base.w_W;  // the base twist, in its own axes
+  s.V_B.tail<3>() = R_BW * base.v_WL;
+}
+
 ArticulationState restState(const ArticulationModel& model, const Pose& X_WB) {
   ArticulationState state;
   state.X_WB = X_WB;

@@ -33,10 +33,8 @@ core::ArticulationState robotStart(const core::ArticulationModel& model, const c
                       model.name +
                       "' is fixed to the world (its root link is 'world'): it may be placed, not set moving");
   }
-  core::ArticulationState state = core::restState(model, core::Pose{initial.q_WL.normalized(), initial.p_WL});
-  const core::Mat3 R_BW = state.X_WB.rotation.toRotationMatrix().transpose();
-  state.V_B.head<3>() = R_BW * initial.w_W;  // the base twist, in its own axes
-  state.V_B.tail<3>() = R_BW * initial.v_WL;
+  core::ArticulationState state = core::restState(model);
+  core::setBaseLinkState(state, initial);
   startJoints(model, joints, limits, key, state);
   return state;
 }

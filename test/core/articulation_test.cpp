@@ -38,6 +38,28 @@ double relativeError(const Eigen::MatrixXd& got, const Eigen::MatrixXd& want) {
   return (got - want).cwiseAbs().maxCoeff() / std::max(1.0, want.cwiseAbs().maxCoeff());
 }
 
+// A base placed from its link's pose and twist in the world keeps its twist
+// in its own axes: a base turned a quarter about z, spinning about world x at
+// 1 rad/s and moving along world y at 2 m/s, spins about its own -y and moves
+// along its own -x; baseLinkState gives the world's back.
+TEST(ArticulationState, TheBaseIsSetFromItsLinkInTheWorld) {
+  LinkState base;
+  base.p_WL = Vec3(1.0, 2.0, 3.0);
+  base.q_WL = Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ()));
+  base.q_WL.coeffs() *= 2.0;  // not unit: normalised
+  base.w_W = Vec3(1.0, 0.0, 0.0);
+  base.v_WL = Vec3(0.0, 2.0, 0.0);
+  ArticulationState state;
+  setBaseLinkState(state, base);
+  EXPECT_NEAR(state.X_WB.rotation.norm(), 1.0, 1e-15);
+  EXPECT_LT((state.V_B.head<3>() - Vec3(0.0, -1.0, 0.0)).norm(), 1e-15);
+  EXPECT_LT((state.V_B.tail<3>() - Vec3(2.0, 0.0, 0.0)).norm(), 1e-15);
+  const LinkState back = baseLinkState(state);
+  EXPECT_EQ(back.p_WL, base.p_WL);
+  EXPECT_LT((back.w_W - base.w_W).norm(), 1e-15);
+  EXPECT_LT((back.v_WL - base.v_WL).norm(), 1e-15);
+}
+
 // A spatial inertia carried into the parent's frame equals Xᵀ I X with X
 // the parent-to-child transform of twists (the composite-body step, §11.3).
 TEST(SpatialInertia, ToParentIsXTransposeIX) {

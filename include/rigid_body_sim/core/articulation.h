@@ -109,6 +109,9 @@ ArticulationState restState(const ArticulationModel& model, const Pose& X_WB = {
 /// The base link's pose and twist in the world, as a free body's link is
 /// given (the state keeps the twist in the base's axes).
 LinkState baseLinkState(const ArticulationState& state);
+/// Places the base and sets its twist from its link's pose and twist in the
+/// world (baseLinkState's inverse; the orientation normalised).
+void setBaseLinkState(ArticulationState& state, const LinkState& base);
 
 /// The generalized velocity vector: [V_B (floating only); v].
 Eigen::VectorXd generalizedVelocity(const ArticulationModel& model, const ArticulationState& state);
