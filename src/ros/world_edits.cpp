@@ -1,6 +1,5 @@
 #include "rigid_body_sim/ros/world_edits.h"
 
-#include <algorithm>
 #include <chrono>
 #include <vector>
 
@@ -58,6 +57,34 @@ std::string WorldEdits::nameTaken(const std::string& name) const {
   return {};
 }
 
+std::string WorldEdits::frameOwner(const std::string& frame) const {
+  if (frame == settings_.world_frame) return "the world";
+  if (const auto body = ports_.directory().ownerOf(frame)) return "body '" + sim_.model().body(*body).name + "'";
+  for (const core::SceneRobot& robot : sim_.scene.robots()) {
+    for (const core::ArticulatedLink& link : robot.model.links) {
+      if (link.name == frame) return "robot '" + robot.name + "'";
+    }
+  }
+  return {};
+}
+
+std::optional<core::LinkState> WorldEdits::requestedStart(const SpawnBody::Request& req, std::string& why) const {
+  const auto X_WF = address_.pose(req.frame, why);
+  if (!X_WF) return std::nullopt;
+  core::LinkState link;
+  link.p_WL = *X_WF * fromPoint(req.pose.position);
+  link.q_WL = (X_WF->rotation * fromQuaternion(req.pose.orientation).normalized()).normalized();
+  link.v_WL = X_WF->rotation * fromVector3(req.twist.linear);
+  link.w_W = X_WF->rotation * fromVector3(req.twist.angular);
+  why = firstProblem(
+      {checkVector(link.p_WL, kMaxPosition, "pose.position (in the world)", "m"),
+       checkSpeed(link.v_WL, sim_.model().limits().max_linear_speed, "twist.linear", "limits.max_linear_speed", "m/s"),
+       checkSpeed(link.w_W, sim_.model().limits().max_angular_speed, "twist.angular", "limits.max_angular_speed",
+                  "rad/s")});
+  if (!why.empty()) return std::nullopt;
+  return link;
+}
+
 SpawnBody::Response WorldEdits::insertRobot(SpawnQueue::Spawn& spawn) {
   SpawnBody::Response res;
   res.success = false;
@@ -68,35 +95,16 @@ SpawnBody::Response WorldEdits::insertRobot(SpawnQueue::Spawn& spawn) {
   // Its links' frames are the URDF's names (robot_state_publisher's): none may be taken.
   for (std::size_t k = model.fixed_base ? 1 : 0; k < model.links.size(); ++k) {
     const std::string& frame = model.links[k].name;
-    std::string owner;
-    if (frame == settings_.world_frame) owner = "the world";
-    if (const auto body = ports_.directory().ownerOf(frame)) owner = "body '" + sim_.model().body(*body).name + "'";
-    for (const core::SceneRobot& robot : sim_.scene.robots()) {
-      for (const core::ArticulatedLink& link : robot.model.links) {
-        if (link.name == frame) owner = "robot '" + robot.name + "'";
-      }
-    }
-    if (!owner.empty()) {
+    if (const std::string owner = frameOwner(frame); !owner.empty()) {
       res.message = "name '" + req.name + "': the robot's link frame '" + frame + "' is a frame of " + owner +
                     " (robot_state_publisher names links as the URDF does: give each robot its own link names)";
       return res;
     }
   }
-  const auto X_WF = address_.pose(req.frame, res.message);
-  if (!X_WF) return res;
+  const auto base = requestedStart(req, res.message);
+  if (!base) return res;
   core::ArticulationState start = spawn.robot_start;
-  start.X_WB = core::Pose{(X_WF->rotation * fromQuaternion(req.pose.orientation).normalized()).normalized(),
-                          *X_WF * fromPoint(req.pose.position)};
-  const core::Vec3 v_W = X_WF->rotation * fromVector3(req.twist.linear);
-  const core::Vec3 w_W = X_WF->rotation * fromVector3(req.twist.angular);
-  res.message = firstProblem(
-      {checkVector(start.X_WB.translation, kMaxPosition, "pose.position (in the world)", "m"),
-       checkSpeed(v_W, sim_.model().limits().max_linear_speed, "twist.linear", "limits.max_linear_speed", "m/s"),
-       checkSpeed(w_W, sim_.model().limits().max_angular_speed, "twist.angular", "limits.max_angular_speed", "rad/s")});
-  if (!res.message.empty()) return res;
-  const core::Mat3 R_BW = start.X_WB.rotation.toRotationMatrix().transpose();
-  start.V_B.head<3>() = R_BW * w_W;  // the base twist, in its own axes
-  start.V_B.tail<3>() = R_BW * v_W;
+  core::setBaseLinkState(start, *base);
   try {
     sim_.addRobot(std::move(*spawn.robot), start);  // unchanged if it throws; reset puts it back here
   } catch (const std::exception& e) {
@@ -127,44 +135,17 @@ SpawnBody::Response WorldEdits::insert(SpawnQueue::Spawn& spawn) {
   res.message = nameTaken(req.name);
   if (!res.message.empty()) return res;
   for (const std::string& frame : new_frames) {
-    if (const auto owner = ports_.directory().ownerOf(frame)) {
-      res.message = "name '" + req.name + "': the new body's frame '" + frame + "' is a frame of body '" +
-                    sim_.model().body(*owner).name + "'";
+    if (const std::string owner = frameOwner(frame); !owner.empty()) {
+      res.message = "name '" + req.name + "': the new body's frame '" + frame + "' is a frame of " + owner;
       return res;
     }
   }
-  // The robots' links' frames (the URDF's, unprefixed) are taken too.
-  for (const core::SceneRobot& robot : sim_.scene.robots()) {
-    for (const core::ArticulatedLink& link : robot.model.links) {
-      if (std::find(new_frames.begin(), new_frames.end(), link.name) != new_frames.end()) {
-        res.message =
-            "name '" + req.name + "': the new body's frame '" + link.name + "' is a link of robot '" + robot.name + "'";
-        return res;
-      }
-    }
-  }
-  if (std::find(new_frames.begin(), new_frames.end(), settings_.world_frame) != new_frames.end()) {
-    res.message =
-        "name '" + req.name + "': the new body's frames include the world frame '" + settings_.world_frame + "'";
-    return res;
-  }
-  const auto X_WF = address_.pose(req.frame, res.message);
-  if (!X_WF) return res;
-  core::LinkState link;
-  link.p_WL = *X_WF * fromPoint(req.pose.position);
-  link.q_WL = (X_WF->rotation * fromQuaternion(req.pose.orientation).normalized()).normalized();
-  link.v_WL = X_WF->rotation * fromVector3(req.twist.linear);
-  link.w_W = X_WF->rotation * fromVector3(req.twist.angular);
-  res.message = firstProblem(
-      {checkVector(link.p_WL, kMaxPosition, "pose.position (in the world)", "m"),
-       checkSpeed(link.v_WL, sim_.model().limits().max_linear_speed, "twist.linear", "limits.max_linear_speed", "m/s"),
-       checkSpeed(link.w_W, sim_.model().limits().max_angular_speed, "twist.angular", "limits.max_angular_speed",
-                  "rad/s")});
-  if (!res.message.empty()) return res;
+  const auto link = requestedStart(req, res.message);
+  if (!link) return res;
   // Everything that may refuse runs before the world changes (the ports,
   // opened on the spawn thread, refused an IMU on no such link).
   try {
-    const core::BodyState start = core::bodyStateFromLink(body, link);
+    const core::BodyState start = core::bodyStateFromLink(body, *link);
     sim_.addBody(spawn.body, start);  // in place, unchanged if it throws; reset puts it back here
     ports_.add(std::move(*spawn.ports), body, start, time_.simTime());
   } catch (const std::exception& e) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "rigid_body_sim/DeleteBody.h"
@@ -58,6 +59,12 @@ class WorldEdits {
   SpawnBody::Response insertRobot(SpawnQueue::Spawn& spawn);
   /// "" if `name` names nothing in the world yet, else why not.
   std::string nameTaken(const std::string& name) const;
+  /// "" if tf frame `frame` is nobody's yet, else whose: "the world",
+  /// "body 'NAME'" or "robot 'NAME'" (a robot's links keep the URDF's names).
+  std::string frameOwner(const std::string& frame) const;
+  /// The request's pose and twist, given in its `frame`, as the link's in the
+  /// world; or nothing, and `why` (an unknown frame, a position or speed out of bounds).
+  std::optional<core::LinkState> requestedStart(const SpawnBody::Request& req, std::string& why) const;
 
   core::Simulation& sim_;
   PortRegistry& ports_;
