@@ -1,4 +1,6 @@
-// libFuzzer: any bytes as a URDF document, then the model of the body and
+// libFuzzer: any bytes as a URDF document (read as the default reads it,
+// repairing what the descriptions users have break: physics §2.1; seed
+// repaired_robot.urdf holds every class), then the model of the body and
 // a few steps; and the same bytes as a robot (the articulation loader:
 // refused, or a model that a few steps on the ground, alone and in a scene
 // with a box, leave finite, the guards undoing any step that would not).

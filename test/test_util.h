@@ -158,4 +158,11 @@ void expectThrowsWith(const std::function<void()>& fn, std::initializer_list<std
   }
 }
 
+/// Expects `text` (a message for users: a warning, a note) to contain every
+/// one of `parts`, in plain ASCII.
+inline void expectContains(const std::string& text, std::initializer_list<std::string> parts) {
+  for (const std::string& p : parts) EXPECT_NE(text.find(p), std::string::npos) << "'" << p << "' not in: " << text;
+  for (const unsigned char c : text) ASSERT_TRUE(c >= 0x20 && c < 0x7f) << "not plain ASCII: " << text;
+}
+
 }  // namespace rigid_body_sim::test

@@ -1,9 +1,12 @@
 // An articulation's checks and state helpers (docs/physics.md §11.1).
 #include "rigid_body_sim/core/articulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
+#include "rigid_body_sim/core/articulation_dynamics.h"
 #include "validate.h"
 
 namespace rigid_body_sim::core {
@@ -55,21 +58,76 @@ void checkJoint(const ArticulationModel& model, int i) {
 
 }  // namespace
 
+namespace {
+
+/// The first generalized velocity that moves no mass or inertia the earlier
+/// ones do not (a pivot of M's Cholesky factor at most 1e-10 of its
+/// diagonal), or −1 when M is positive definite.
+int singularDof(const Eigen::MatrixXd& M) {
+  const int n = static_cast<int>(M.rows());
+  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(n, n);
+  for (int k = 0; k < n; ++k) {
+    const double d = M(k, k) - L.row(k).head(k).squaredNorm();
+    if (!(d > 1e-10 * M(k, k))) return k;
+    L(k, k) = std::sqrt(d);
+    for (int i = k + 1; i < n; ++i) L(i, k) = (M(i, k) - L.row(i).head(k).dot(L.row(k).head(k))) / L(k, k);
+  }
+  return -1;
+}
+
+}  // namespace
+
 void checkArticulation(const ArticulationModel& model) {
   if (model.links.empty()) detail::fail("articulation links", "0", "an articulation needs a base link");
   if (model.links[0].parent != -1) detail::fail("link '" + model.links[0].name + "' parent", "", "the base has none");
+  std::vector<std::string> problems;
+  const auto check = [&](auto&& what) {
+    try {
+      what();
+    } catch (const std::invalid_argument& e) {
+      problems.emplace_back(e.what());
+    }
+  };
   for (int i = 0; i < static_cast<int>(model.links.size()); ++i) {
     const ArticulatedLink& link = model.links[i];
-    if (i > 0) checkJoint(model, i);
+    if (i > 0) check([&] { checkJoint(model, i); });
     const bool moves = i > 0 || !model.fixed_base;
     const std::string field = "link '" + link.name + "'";
     if (moves) {
-      detail::requirePositive(link.mass.mass, field + " mass", "kg (a moving link needs mass)");
-      validateInertia(link.mass.I_C_F, field + " inertia");
+      check([&] { detail::requireNonNegative(link.mass.mass, field + " mass", "kg"); });
+      check([&] {
+        if (link.mass.mass == 0.0 && !link.mass.I_C_F.isZero(0.0))
+          detail::fail(field + " mass", "0", "a massless link has no inertia either");
+      });
+      check([&] { validateInertia(link.mass.I_C_F, field + " inertia", /*allow_zero=*/true); });
     }
-    if (!link.mass.p_FC.allFinite())
-      detail::fail(field + " centre of mass", detail::str(link.mass.p_FC), "must be finite");
+    check([&] {
+      if (!link.mass.p_FC.allFinite())
+        detail::fail(field + " centre of mass", detail::str(link.mass.p_FC), "must be finite");
+    });
   }
+  if (problems.empty() && model.dofCount() > 0) {
+    const int dof = singularDof(massMatrix(model, kinematics(model, restState(model))));
+    if (dof >= 0) {
+      const bool base = !model.fixed_base && dof < 6;
+      const ArticulatedLink& link = model.links[base ? 0 : dof - (model.fixed_base ? 0 : 6) + 1];
+      problems.push_back((base ? "the floating base '" + link.name + "'" : "joint '" + link.joint + "'") +
+                         " moves no mass or inertia that the joints before it do not (a singular mass matrix): give "
+                         "link '" +
+                         link.name + "' or a link below it a mass and an inertia");
+    }
+  }
+  if (problems.empty()) return;
+  std::string all = problems.front();
+  for (std::size_t i = 1; i < problems.size(); ++i) all += "; " + problems[i];
+  throw std::invalid_argument(all);
+}
+
+std::string heldJointNote(const ArticulationModel& model, const std::string& name) {
+  for (const HeldJoint& held : model.held) {
+    if (held.name == name) return " (joint '" + name + "' is held: it moves only massless links)";
+  }
+  return "";
 }
 
 LinkState baseLinkState(const ArticulationState& s) {
@@ -84,11 +142,23 @@ void setBaseLinkState(ArticulationState& s, const LinkState& base) {
   s.V_B.tail<3>() = R_BW * base.v_WL;
 }
 
+double restPosition(const ArticulatedLink& link) {
+  const JointLimits& lim = link.limits;
+  return lim.lower <= lim.upper ? std::clamp(0.0, lim.lower, lim.upper) : 0.0;
+}
+
 ArticulationState restState(const ArticulationModel& model, const Pose& X_WB) {
   ArticulationState state;
   state.X_WB = X_WB;
   state.q = Eigen::VectorXd::Zero(model.jointCount());
   state.v = Eigen::VectorXd::Zero(model.jointCount());
+  for (int i = 1; i < static_cast<int>(model.links.size()); ++i) {
+    const ArticulatedLink& link = model.links[i];
+    const int leader = link.mimic.joint;
+    // A leader comes before a mimic only when it is its ancestor: take it from the link itself.
+    state.q(i - 1) =
+        leader > 0 ? link.mimic.multiplier * restPosition(model.links[leader]) + link.mimic.offset : restPosition(link);
+  }
   return state;
 }
 

@@ -38,6 +38,14 @@ ArticulationColliders articulationColliders(const ArticulationModel& model, cons
   return {Model(spec), std::move(links.link), self_collision};
 }
 
+State linkStates(const ArticulationColliders& colliders, const ArticulationModel& model,
+                 const ArticulationState& state) {
+  State links;
+  links.bodies.resize(colliders.bodies.bodyCount());
+  detail::setLinkStates(colliders.bodies, colliders.link, kinematics(model, state), 0, links.bodies);
+  return links;
+}
+
 namespace detail {
 
 namespace {

@@ -1,5 +1,7 @@
 #include "rigid_body_sim/core/diagnostics.h"
 
+#include <algorithm>
+
 namespace rigid_body_sim::core {
 
 double kineticEnergy(const BodyModel& body, const BodyState& s) {
@@ -17,6 +19,16 @@ double totalEnergy(const Model& model, const State& state) {
          potentialEnergy(model.body(i), state.bodies[i], model.gravity());
   }
   return e;
+}
+
+double sceneDepth(const Model& model, std::size_t body, const BodyState& s) {
+  double depth = 0.0;
+  const Mat3 R = s.q_WB.toRotationMatrix();
+  for (const ContactPoint& c : model.body(body).contact_points) {
+    const Vec3 p_W = s.p_WB + R * c.r_B;
+    for (const Sdf& shape : model.scene()) depth = std::max(depth, c.radius - shape.eval(p_W));
+  }
+  return depth;
 }
 
 Vec3 angularMomentumWorld(const BodyModel& body, const BodyState& s) {

@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "validate.h"
@@ -42,13 +43,23 @@ MassProperties combine(const std::vector<MassProperties>& parts) {
   return total;
 }
 
+namespace {
+
+/// The rounding a valid tensor may carry: bodies on the boundary (a thin
+/// plate has Izz = Ixx + Iyy exactly) must pass after a parallel-axis sum.
+double roundingTolerance(const Mat3& I) { return 1e-9 * I.cwiseAbs().maxCoeff(); }
+
+bool symmetric(const Mat3& I, double tol) { return (I - I.transpose()).cwiseAbs().maxCoeff() <= tol; }
+
+/// Ascending principal moments m that meet the triangle inequality (and so are ≥ 0).
+bool triangle(const Vec3& m, double tol) { return m(0) >= -tol && m(0) + m(1) >= m(2) - tol; }
+
+}  // namespace
+
 void validateInertia(const Mat3& I, const std::string& field, bool allow_zero) {
   if (!I.allFinite()) detail::fail(field, detail::str(I), "must be finite");
-  const double scale = I.cwiseAbs().maxCoeff();
-  // Relative tolerance for rounding: bodies on the boundary (a thin plate has
-  // Izz = Ixx + Iyy exactly) must pass after a parallel-axis sum.
-  const double tol = 1e-9 * scale;
-  if ((I - I.transpose()).cwiseAbs().maxCoeff() > tol) detail::fail(field, detail::str(I), "must be symmetric");
+  const double tol = roundingTolerance(I);
+  if (!symmetric(I, tol)) detail::fail(field, detail::str(I), "must be symmetric");
   const Eigen::SelfAdjointEigenSolver<Mat3> eig(I, Eigen::EigenvaluesOnly);
   const Vec3& m = eig.eigenvalues();  // ascending
   if (allow_zero ? m(0) < -tol : !(m(0) > tol)) {
@@ -56,11 +67,76 @@ void validateInertia(const Mat3& I, const std::string& field, bool allow_zero) {
                  std::string("must be positive ") + (allow_zero ? "semi-definite" : "definite") +
                      " (smallest principal moment " + detail::str(m(0)) + " kg*m^2)");
   }
-  if (m(0) + m(1) < m(2) - tol) {
+  if (!triangle(m, tol)) {
     detail::fail(field, detail::str(I),
                  "violates the triangle inequality of principal moments: " + detail::str(m(0)) + " + " +
                      detail::str(m(1)) + " < " + detail::str(m(2)) + " kg*m^2 (no mass distribution has it)");
   }
+}
+
+namespace {
+
+/// The point of the cone {m : mₐ + m_b ≥ m_c for every order} nearest to m
+/// (§2.1): the cone is three half-spaces through the origin, so the nearest
+/// point is m projected onto the span of one of its faces (none, one or
+/// two active constraints, or the apex); of those projections that lie in
+/// the cone, the nearest is the answer.
+Vec3 projectOntoTriangleCone(const Vec3& m) {
+  const Mat3 A = (Mat3() << 1, 1, -1, 1, -1, 1, -1, 1, 1).finished();  // rows: aᵢ·m ≥ 0
+  const double tol = 1e-12 * m.cwiseAbs().maxCoeff();
+  Vec3 best = Vec3::Zero();  // the apex: in the cone whatever m is
+  double best_distance = m.norm();
+  for (int set = 0; set < 7; ++set) {  // the subsets of the three constraints but all three
+    Eigen::Matrix<double, Eigen::Dynamic, 3> active(0, 3);
+    for (int i = 0; i < 3; ++i) {
+      if ((set >> i) & 1) {
+        active.conservativeResize(active.rows() + 1, Eigen::NoChange);
+        active.row(active.rows() - 1) = A.row(i);
+      }
+    }
+    Vec3 y = m;
+    if (active.rows() > 0) {
+      const Eigen::MatrixXd gram = active * active.transpose();
+      y -= active.transpose() * gram.ldlt().solve(active * m);
+    }
+    if ((A * y).minCoeff() < -tol) continue;
+    const double distance = (y - m).norm();
+    if (distance < best_distance) {
+      best = y;
+      best_distance = distance;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+InertiaRepair nearestValidInertia(const Mat3& I, const std::string& field) {
+  if (!I.allFinite()) detail::fail(field, detail::str(I), "must be finite");
+  InertiaRepair out;
+  out.I = I;
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(0.5 * (I + I.transpose()));
+  out.moments = eig.eigenvalues();
+  out.repaired = out.moments;
+  const double tol = roundingTolerance(I);
+  if (symmetric(I, tol) && triangle(out.moments, tol)) return out;
+  out.repaired = projectOntoTriangleCone(out.moments);
+  const Mat3& R = eig.eigenvectors();
+  out.I = R * out.repaired.asDiagonal() * R.transpose();
+  out.I = 0.5 * (out.I + out.I.transpose());
+  out.change = (out.I - I).norm();
+  out.changed = true;
+  return out;
+}
+
+Mat3 waterSphereInertia(double mass) {
+  constexpr double kWater = 1000.0;  // kg/m³
+  const double r = std::cbrt(3.0 * mass / (4.0 * M_PI * kWater));
+  return (0.4 * mass * r * r) * Mat3::Identity();
+}
+
+bool pointMass(double mass, const Mat3& I) {
+  return mass > 0.0 && I.cwiseAbs().maxCoeff() <= 1e-9 * waterSphereInertia(mass)(0, 0);
 }
 
 PrincipalAxes principalAxes(const Mat3& I) {

@@ -195,8 +195,12 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
   if (!root || root.IsNull()) return c;
   requireKnownKeys(root, "",
                    {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver",
-                    "limits", "bodies", "imu", "odom_noise", "cmd_vel", "controllers", "gazebo_ros_control"});
+                    "limits", "bodies", "imu", "odom_noise", "cmd_vel", "controllers", "gazebo_ros_control", "urdf"});
   parseSection(root, "", c.model);  // dt, gravity, gyroscopic
+  if (const YAML::Node urdf = root["urdf"]) {
+    requireKnownKeys(urdf, "urdf", {"repair"});
+    if (urdf["repair"]) c.urdf_repair = boolean(urdf["repair"], "urdf.repair");
+  }
   parseSection(root, "damping", c.model);
   if (root["initial"]) parseInitial(root["initial"], c.initial, c.initial_joints);
   if (root["scene"]) c.model.scene = parseScene(root["scene"], base_dir);

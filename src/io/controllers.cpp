@@ -40,7 +40,8 @@ int jointIndex(const core::ArticulationModel& model, const std::string& name, co
     if (model.links[j].joint == name) return j;
     names += (names.empty() ? "'" : ", '") + model.links[j].joint + "'";
   }
-  refuse(key, "robot '" + model.name + "' has no moving joint '" + name + "' (its joints: " + names + ")");
+  refuse(key, "robot '" + model.name + "' has no moving joint '" + name + "'" + core::heldJointNote(model, name) +
+                  " (its joints: " + names + ")");
 }
 
 }  // namespace

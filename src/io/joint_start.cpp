@@ -28,7 +28,10 @@ void startJoints(const core::ArticulationModel& model, const InitialJoints& init
   core::ArticulationState next = state;
   const auto find = [&](const std::string& map, const std::string& name, double value) {
     const int i = jointIndex(model, name);
-    if (i < 0) refuse(key + "." + map, name, value, "robot '" + model.name + "' has no moving joint of that name");
+    if (i < 0) {
+      refuse(key + "." + map, name, value,
+             "robot '" + model.name + "' has no moving joint of that name" + core::heldJointNote(model, name));
+    }
     if (model.links[i].mimic.joint > 0) {
       refuse(key + "." + map, name, value,
              "a mimic joint follows joint '" + model.links[model.links[i].mimic.joint].joint + "': set that one");

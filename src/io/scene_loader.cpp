@@ -20,26 +20,30 @@ namespace {
 using Described = std::variant<core::BodySpec, core::ArticulationModel>;
 
 /// A body, or a robot when the URDF has a moving joint.
-Described describe(const UrdfText& text) {
-  if (describesRobot(text.xml, text.source)) return loadArticulationString(text.xml, text.source, text.base_dir);
-  return loadUrdfString(text.xml, text.source, text.base_dir);
+Described describe(const UrdfText& text, const UrdfOptions& options) {
+  if (describesRobot(text.xml, text.source)) {
+    return loadArticulationString(text.xml, text.source, text.base_dir, options);
+  }
+  return loadUrdfString(text.xml, text.source, text.base_dir, options);
 }
 
 /// Each URDF of the bodies list read and parsed once (a world of 10,000
 /// boxes names one URDF 10,000 times).
 class Files {
  public:
-  Files(const SimConfig& config, const UrdfReader& read) : base_dir_(config.base_dir), read_(read) {}
+  Files(const SimConfig& config, const UrdfReader& read, std::vector<std::string>& notes)
+      : base_dir_(config.base_dir), read_(read), options_{config.urdf_repair, &notes} {}
   const Described& get(const BodyEntry& entry) {
     auto it = files_.find(entry.urdf);
     if (it != files_.end()) return it->second;
-    return files_.emplace(entry.urdf, describe(read_ ? read_(entry) : readUrdfFile(entry.urdf, base_dir_)))
+    return files_.emplace(entry.urdf, describe(read_ ? read_(entry) : readUrdfFile(entry.urdf, base_dir_), options_))
         .first->second;
   }
 
  private:
   std::string base_dir_;
   const UrdfReader& read_;
+  UrdfOptions options_;
   std::map<std::string, Described> files_;
 };
 
@@ -51,6 +55,21 @@ void refuseBodyDevices(const std::string& key, const std::string& robot, bool im
       throw ConfigError("config key '" + key + what + "': robot '" + robot +
                         "' does not read it yet (a body's sensor and driver, not a robot's)");
     }
+  }
+}
+
+/// The warnings for the scene's bodies and robots that start inside the
+/// static scene (insideSceneNote).
+void noteStartsInside(const core::Scene& scene, const core::SceneState& state, std::vector<std::string>& notes) {
+  const core::Model& model = scene.model();
+  for (std::size_t i = 0; i < scene.freeBodyCount(); ++i) {
+    const std::string note = insideSceneNote(model, state.bodies, i, 1, "body '" + model.body(i).name + "'");
+    if (!note.empty()) notes.push_back(note);
+  }
+  for (const core::SceneRobot& robot : scene.robots()) {
+    const std::string note = insideSceneNote(model, state.bodies, static_cast<std::size_t>(robot.first_body),
+                                             robot.link.size(), "robot '" + robot.name + "'");
+    if (!note.empty()) notes.push_back(note);
   }
 }
 
@@ -77,7 +96,8 @@ bool listsRobots(const SimConfig& config) {
 }
 
 SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
-  Files files(config, read);
+  std::vector<std::string> notes;
+  Files files(config, read, notes);
   core::ModelSpec spec = config.model;
   spec.bodies.clear();
   std::vector<core::Scene::RobotSpec> robots;
@@ -123,7 +143,8 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     free.bodies[i] = core::bodyStateFromLink(scene.model().body(i), body_starts[i]);
   }
   core::SceneState state = core::sceneState(scene, free, robot_starts);
-  return {std::move(scene), std::move(state), std::move(entry), std::move(controls)};
+  noteStartsInside(scene, state, notes);
+  return {std::move(scene), std::move(state), std::move(entry), std::move(controls), std::move(notes)};
 }
 
 }  // namespace rigid_body_sim::io
@@ -133,15 +154,17 @@ namespace rigid_body_sim::io {
 SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& single, const UrdfReader& read) {
   if (config.bodies_listed) return buildScene(config, read);
   if (!single) throw ConfigError("bodies: the config lists no bodies, and no single body was given");
-  Described described = describe(single());
+  std::vector<std::string> notes;
+  Described described = describe(single(), UrdfOptions{config.urdf_repair, &notes});
   if (auto* body = std::get_if<core::BodySpec>(&described)) {
     if (!config.controllers.empty()) {
       throw ConfigError("config key 'controllers': body '" + body->name + "' has no moving joints");
     }
     World world = loadWorld(config, [&] { return std::move(*body); });
+    notes.insert(notes.end(), world.notes.begin(), world.notes.end());
     core::Scene scene(std::move(world.model));
     core::SceneState state{std::move(world.state), {}};
-    return {std::move(scene), std::move(state), {0}, {}};
+    return {std::move(scene), std::move(state), {0}, {}, std::move(notes)};
   }
   core::ArticulationModel model = std::move(std::get<core::ArticulationModel>(described));
   checkRobotSettings(config, model.name);
@@ -154,7 +177,8 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
   const std::string name = model.name;
   core::Scene scene(spec, {{name, std::move(model)}});
   core::SceneState state = core::sceneState(scene, {}, {start});
-  return {std::move(scene), std::move(state), {-1}, {std::move(controls)}};
+  noteStartsInside(scene, state, notes);
+  return {std::move(scene), std::move(state), {-1}, {std::move(controls)}, std::move(notes)};
 }
 
 }  // namespace rigid_body_sim::io

@@ -20,8 +20,9 @@ namespace rigid_body_sim::io {
 
 using detail::Lumper;
 
-core::BodySpec loadUrdfString(const std::string& xml, const std::string& source, const std::string& base_dir) {
-  Lumper lumper(source, base_dir);
+core::BodySpec loadUrdfString(const std::string& xml, const std::string& source, const std::string& base_dir,
+                              const UrdfOptions& options) {
+  Lumper lumper(source, base_dir, options);
   const urdf::ModelInterfaceSharedPtr model = lumper.parse(xml);
   const urdf::LinkConstSharedPtr root = model->getRoot();
   // A robot is not a body: said first, whatever else its links lack (a
@@ -37,10 +38,10 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
 
   detail::LinkGroup group;
   lumper.collect(*root, group, /*allow_moving=*/false);
-  const core::MassProperties total = core::combine(group.parts);
-  if (!(total.mass > 0.0)) {
-    lumper.fail("the body rooted at link '" + root->name + "' has a total mass of 0 kg");
-  }
+  core::MassProperties total = core::combine(group.parts);
+  lumper.inertiaForPointMass(root->name, total);
+  if (!(total.mass > 0.0)) lumper.problem("the body rooted at link '" + root->name + "' has a total mass of 0 kg");
+  lumper.finish();
   core::BodySpec spec;
   spec.name = root->name;
   spec.link = root->name;
@@ -52,9 +53,9 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
   return spec;
 }
 
-core::BodySpec loadUrdfFile(const std::string& path) {
+core::BodySpec loadUrdfFile(const std::string& path, const UrdfOptions& options) {
   return loadUrdfString(readInput<UrdfError>(path, InputCaps::kUrdfBytes, "URDF"), path,
-                        std::filesystem::path(path).parent_path().string());
+                        std::filesystem::path(path).parent_path().string(), options);
 }
 
 }  // namespace rigid_body_sim::io

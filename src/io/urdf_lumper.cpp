@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "rigid_body_sim/io/input_bounds.h"
@@ -40,7 +41,93 @@ const char* jointTypeName(int type) {
   }
 }
 
-void Lumper::fail(const std::string& what) const { throw UrdfError(source_ + ": " + what); }
+namespace {
+
+/// "a, b and c" of up to `most` names, then "and N more".
+std::string nameList(const std::vector<std::string>& names, std::size_t most = 12) {
+  std::string out;
+  const std::size_t shown = std::min(names.size(), most);
+  for (std::size_t i = 0; i < shown; ++i) {
+    out += (i == 0 ? "" : (i + 1 == shown && shown == names.size() ? " and " : ", ")) + ("'" + names[i] + "'");
+  }
+  if (names.size() > shown) out += " and " + std::to_string(names.size() - shown) + " more";
+  return out;
+}
+
+/// The items, "; " between them.
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) out += (i == 0 ? "" : "; ") + items[i];
+  return out;
+}
+
+std::string count(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+}  // namespace
+
+void Lumper::fail(const std::string& what) const {
+  std::string all;
+  for (const std::string& p : problems_) all += p + "; ";
+  throw UrdfError(source_ + ": " + all + what);
+}
+
+void Lumper::finish() const {
+  if (!problems_.empty()) {
+    const std::string many = problems_.size() == 1 ? "" : std::to_string(problems_.size()) + " problems: ";
+    throw UrdfError(source_ + ": " + many + joined(problems_));
+  }
+  if (repairs_.empty() || options_.notes == nullptr) return;
+  std::map<Repair, std::vector<std::string>> by_kind;
+  for (const auto& [kind, what] : repairs_) {
+    std::vector<std::string>& list = by_kind[kind];
+    if (std::find(list.begin(), list.end(), what) == list.end()) list.push_back(what);
+  }
+  std::vector<std::string> parts;
+  for (const auto& [kind, what] : by_kind) {
+    const std::size_t n = what.size();
+    switch (kind) {
+      case Repair::kNoInertial:
+        parts.push_back(
+            count(n, "link without <inertial> is a massless frame", "links without <inertial> are massless frames") +
+            " (" + nameList(what) + ")");
+        break;
+      case Repair::kMassZero:
+        parts.push_back(count(n, "link of mass 0 is a massless frame", "links of mass 0 are massless frames") +
+                        ", the inertia given dropped (" + nameList(what) + ")");
+        break;
+      case Repair::kInertia:
+        parts.push_back(count(n, "inertia no body can have was", "inertias no body can have were") +
+                        " replaced by the nearest valid one (principal moments, kg*m^2): " + joined(what));
+        break;
+      case Repair::kPointMass:
+        parts.push_back(count(n, "link with mass but no inertia (a point mass) was",
+                              "links with mass but no inertia (point masses) were") +
+                        " given the inertia of a solid sphere of water of its mass: " + joined(what));
+        break;
+      case Repair::kMimicDropped:
+        parts.push_back(count(n, "<mimic> names", "<mimic>s name") + " no joint and " + (n == 1 ? "was" : "were") +
+                        " dropped, the joint moving on its own (Gazebo classic ignores <mimic>): " + joined(what));
+        break;
+      case Repair::kHeld:
+        parts.push_back(count(n, "joint moves", "joints move") + " only massless links and " + (n == 1 ? "is" : "are") +
+                        " held where it starts, as if fixed, and still reported in joint_states (Gazebo drops such a "
+                        "link, MuJoCo refuses it): " +
+                        joined(what));
+        break;
+      case Repair::kPackageSlashes:
+        parts.push_back(count(n, "mesh URI", "mesh URIs") + " with package:/// read as package:// (" +
+                        nameList(what, 3) + ")");
+        break;
+    }
+  }
+  std::string message = source_ +
+                        ": loaded with repairs, as Gazebo and KDL load it (urdf.repair: false refuses it "
+                        "instead; docs/physics.md 2.1): ";
+  for (std::size_t i = 0; i < parts.size(); ++i) message += (i == 0 ? "" : "; ") + parts[i];
+  options_.notes->push_back(message);
+}
 
 urdf::ModelInterfaceSharedPtr Lumper::parse(const std::string& xml) {
   if (xml.size() > InputCaps::kUrdfBytes) {
@@ -60,48 +147,101 @@ urdf::ModelInterfaceSharedPtr Lumper::parse(const std::string& xml) {
   return std::move(parsed.model);
 }
 
-core::MassProperties Lumper::part(const urdf::Link& link, const Pose& X_LK) const {
+core::MassProperties Lumper::part(const urdf::Link& link, const Pose& X_LK) {
   const std::string where = "link '" + link.name + "'";
   if (!link.inertial) {
-    fail(where +
-         " has no <inertial>: every link of the body needs a mass and an inertia "
-         "(a massless frame can say <mass value=\"0\"/> with zero inertia)");
+    if (repair()) {
+      repaired(Repair::kNoInertial, link.name);
+    } else {
+      problem(where +
+              " has no <inertial>: every link of the body needs a mass and an inertia (urdf.repair: true reads it "
+              "as a massless frame)");
+    }
+    return {};
   }
   const urdf::Inertial& in = *link.inertial;
   if (!std::isfinite(in.mass) || in.mass < 0.0) {
     std::ostringstream value;
     value << in.mass;
-    fail(where + ": <mass value> = " + value.str() + ": must be finite and >= 0 kg");
+    problem(where + ": <mass value> = " + value.str() + ": must be finite and >= 0 kg");
+    return {};
   }
   Mat3 I;
   I << in.ixx, in.ixy, in.ixz,  //
       in.ixy, in.iyy, in.iyz,   //
       in.ixz, in.iyz, in.izz;
-  try {
-    core::validateInertia(I, "<inertia>", /*allow_zero=*/true);
-  } catch (const std::invalid_argument& e) {
-    fail(where + ": " + e.what());
+  if (in.mass == 0.0) {
+    if (!I.allFinite() || I.isZero(0.0)) {
+      if (!I.allFinite()) problem(where + ": <inertia> must be finite");
+      return {};
+    }
+    if (!repair()) {
+      problem(where + ": mass is 0 kg but <inertia> is not zero (urdf.repair: true reads it as a massless frame)");
+    } else {
+      repaired(Repair::kMassZero, link.name);
+    }
+    return {};
   }
-  if (in.mass == 0.0 && !I.isZero(0.0)) fail(where + ": mass is 0 kg but <inertia> is not zero");
+  if (repair() && core::pointMass(in.mass, I)) {
+    I.setZero();  // rounding around nothing: a point mass, as inertiaForPointMass reads it
+  } else if (repair()) {
+    try {
+      const core::InertiaRepair fix = core::nearestValidInertia(I, "<inertia>");
+      if (fix.changed) {
+        std::ostringstream text;
+        text.precision(3);
+        const double largest = fix.moments.cwiseAbs().maxCoeff();
+        text << "'" << link.name << "' [" << fix.moments(0) << ", " << fix.moments(1) << ", " << fix.moments(2)
+             << "] -> [" << fix.repaired(0) << ", " << fix.repaired(1) << ", " << fix.repaired(2) << "], changed by "
+             << fix.change << " (" << 100.0 * fix.change / largest << "% of the largest)";
+        repaired(Repair::kInertia, text.str());
+        I = fix.I;
+      }
+    } catch (const std::invalid_argument& e) {
+      problem(where + ": " + e.what());
+      return {};
+    }
+  } else {
+    try {
+      core::validateInertia(I, "<inertia>", /*allow_zero=*/true);
+    } catch (const std::invalid_argument& e) {
+      problem(where + ": " + e.what() + " (urdf.repair: true replaces it by the nearest valid one)");
+      return {};
+    }
+  }
   // <inertial><origin> places the centre of mass and the inertia axes.
   const Pose X_LI = X_LK * toPose(in.origin);
   const Mat3 R = X_LI.rotation.toRotationMatrix();
   return {in.mass, X_LI.translation, R * I * R.transpose()};
 }
 
-void Lumper::collisions(const urdf::Link& link, const Pose& X_LK, std::vector<core::CollisionShape>& out) const {
+void Lumper::inertiaForPointMass(const std::string& name, core::MassProperties& mass) {
+  if (!repair() || !core::pointMass(mass.mass, mass.I_C_F)) return;
+  mass.I_C_F = core::waterSphereInertia(mass.mass);
+  std::ostringstream text;
+  text.precision(3);
+  text << "'" << name << "' " << mass.mass << " kg: " << mass.I_C_F(0, 0) << " kg*m^2 about each axis";
+  repaired(Repair::kPointMass, text.str());
+}
+
+void Lumper::collisions(const urdf::Link& link, const Pose& X_LK, std::vector<core::CollisionShape>& out) {
   for (std::size_t i = 0; i < link.collision_array.size(); ++i) {
     const urdf::Collision& col = *link.collision_array[i];
     const std::string where = "link '" + link.name + "' <collision> " + std::to_string(i);
-    if (!col.geometry) fail(where + " has no <geometry>");
+    if (!col.geometry) {
+      problem(where + " has no <geometry>");
+      continue;
+    }
     core::CollisionShape shape;
     shape.X_LS = X_LK * toPose(col.origin);
     shape.name = where;
+    bool ok = true;
     auto positive = [&](double x, const std::string& field) {
-      if (!std::isfinite(x) || !(x > 0.0)) {
+      if (ok && (!std::isfinite(x) || !(x > 0.0))) {
         std::ostringstream value;
         value << x;
-        fail(where + ": " + field + " = " + value.str() + ": must be finite and > 0 m");
+        problem(where + ": " + field + " = " + value.str() + ": must be finite and > 0 m");
+        ok = false;
       }
     };
     switch (col.geometry->type) {
@@ -135,24 +275,36 @@ void Lumper::collisions(const urdf::Link& link, const Pose& X_LK, std::vector<co
         const auto& mesh = static_cast<const urdf::Mesh&>(*col.geometry);
         shape.kind = core::CollisionShape::Kind::kPoints;
         const Vec3 scale(mesh.scale.x, mesh.scale.y, mesh.scale.z);
-        if (!scale.allFinite() || (scale.array() == 0.0).any())
-          fail(where + ": mesh scale must be finite and non-zero");
+        if (!scale.allFinite() || (scale.array() == 0.0).any()) {
+          problem(where + ": mesh scale must be finite and non-zero");
+          ok = false;
+          break;
+        }
+        std::string uri = mesh.filename;
+        const std::string slashes = "package:///";
+        if (const std::size_t name = uri.find_first_not_of('/', slashes.size());
+            repair() && uri.rfind(slashes, 0) == 0 && name != std::string::npos) {
+          repaired(Repair::kPackageSlashes, uri);
+          uri = "package://" + uri.substr(name);
+        }
         try {
-          shape.mesh = loadMesh(resolveMeshUri(mesh.filename, base_dir_), scale);
+          shape.mesh = loadMesh(resolveMeshUri(uri, base_dir_), scale);
         } catch (const MeshError& e) {
-          fail(where + ": " + e.what());
+          problem(where + ": " + e.what());
+          ok = false;
         }
         shape.name += " (" + mesh.filename + ")";
         break;
       }
       default:
-        fail(where + ": unsupported geometry type");
+        problem(where + ": unsupported geometry type");
+        ok = false;
     }
-    out.push_back(std::move(shape));
+    if (ok) out.push_back(std::move(shape));
   }
 }
 
-void Lumper::collect(const urdf::Link& root, LinkGroup& group, bool allow_moving, bool massless_root) const {
+void Lumper::collect(const urdf::Link& root, LinkGroup& group, bool allow_moving, bool massless_root) {
   std::vector<std::pair<const urdf::Link*, Pose>> todo{{&root, Pose{}}};
   while (!todo.empty()) {
     const auto [link, X_LK] = todo.back();

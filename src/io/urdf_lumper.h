@@ -2,7 +2,9 @@
 // and everything hanging from it by fixed joints is one group, its masses
 // lumped (docs/physics.md §2) and its <collision> elements posed in the
 // group's root link frame. Shared by the body loader (one group) and the
-// articulation loader (a group per moving link).
+// articulation loader (a group per moving link). It keeps what a load
+// repaired (§2.1) and every problem it met, so a URDF's problems are all
+// reported in one refusal and its repairs in one message.
 #pragma once
 
 #include <urdf_model/model.h>
@@ -13,6 +15,7 @@
 #include "rigid_body_sim/core/geometry.h"
 #include "rigid_body_sim/core/inertia.h"
 #include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/io/urdf_loader.h"
 #include "urdf_parse.h"
 
 namespace rigid_body_sim::io::detail {
@@ -38,35 +41,71 @@ struct LinkGroup {
   std::vector<MovingJoint> moving;  ///< the movable joints leaving it, in URDF order
 };
 
+/// What a load repaired, by kind, for the one message it gives.
+enum class Repair {
+  kNoInertial,     ///< a link without <inertial>: a massless frame (the link's name)
+  kMassZero,       ///< mass 0 with an inertia: a massless frame (the link's name)
+  kInertia,        ///< an inertia replaced by the nearest valid one (the link and the figures)
+  kPointMass,      ///< mass without inertia, given a water sphere's (the link and the figures)
+  kHeld,           ///< a moving joint that moves only massless links, held (the joint and where)
+  kMimicDropped,   ///< a <mimic> of no joint, dropped (the joint and the name it gave)
+  kPackageSlashes  ///< package:///NAME read as package://NAME (the URI)
+};
+
 class Lumper {
  public:
-  Lumper(std::string source, std::string base_dir) : source_(std::move(source)), base_dir_(std::move(base_dir)) {}
+  Lumper(std::string source, std::string base_dir, UrdfOptions options = {})
+      : source_(std::move(source)), base_dir_(std::move(base_dir)), options_(options) {}
 
   /// urdfdom's model of `xml`, read through parseUrdf's guards after the
   /// text's size and shape are checked; refused with UrdfError. Remembers
   /// which collisions were capsules. Its root link is never null.
   urdf::ModelInterfaceSharedPtr parse(const std::string& xml);
 
-  /// Throws UrdfError: the source, then `what`.
+  /// Throws UrdfError: the source, then `what`, after the problems met so far.
   [[noreturn]] void fail(const std::string& what) const;
 
-  /// Mass properties of `link` in L, given the pose of the link in L.
-  core::MassProperties part(const urdf::Link& link, const core::Pose& X_LK) const;
+  /// A problem that refuses the URDF but lets the reading go on, so that
+  /// finish() names all of them at once.
+  void problem(const std::string& what) { problems_.push_back(what); }
+
+  /// A repair the load made (only with options.repair), said by finish().
+  void repaired(Repair kind, const std::string& what) { repairs_.push_back({kind, what}); }
+
+  bool repair() const { return options_.repair; }
+
+  /// Throws UrdfError naming every problem, if there was one; else hands
+  /// the repairs, as one message, to options.notes.
+  void finish() const;
+
+  /// Mass properties of `link` in L, given the pose of the link in L. A
+  /// link without <inertial>, or of mass 0, is a massless frame (mass 0,
+  /// no inertia) when repairing; an inertia no body can have is replaced by
+  /// the nearest valid one (core::nearestValidInertia).
+  core::MassProperties part(const urdf::Link& link, const core::Pose& X_LK);
+
+  /// A rigid group `name` with mass but no inertia at all (a point mass,
+  /// which a moving rigid body cannot be) is given a water sphere's
+  /// (core::waterSphereInertia), when repairing.
+  void inertiaForPointMass(const std::string& name, core::MassProperties& mass);
 
   /// The link's <collision> elements as shapes posed in L.
-  void collisions(const urdf::Link& link, const core::Pose& X_LK, std::vector<core::CollisionShape>& out) const;
+  void collisions(const urdf::Link& link, const core::Pose& X_LK, std::vector<core::CollisionShape>& out);
 
   /// Adds `root` and, through fixed joints, everything below it, depth first
   /// in URDF order (with a stack of its own, so a long chain of links cannot
   /// overflow the call stack). A movable joint is refused when
   /// `allow_moving` is false, else listed in group.moving. `massless_root`:
   /// the root needs no <inertial> (the world).
-  void collect(const urdf::Link& root, LinkGroup& group, bool allow_moving, bool massless_root = false) const;
+  void collect(const urdf::Link& root, LinkGroup& group, bool allow_moving, bool massless_root = false);
 
  private:
   std::string source_;
   std::string base_dir_;
+  UrdfOptions options_;
   CapsuleSet capsules_;
+  std::vector<std::string> problems_;
+  std::vector<std::pair<Repair, std::string>> repairs_;
 };
 
 }  // namespace rigid_body_sim::io::detail

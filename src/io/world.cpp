@@ -3,6 +3,7 @@
 #include <map>
 #include <sstream>
 
+#include "rigid_body_sim/core/diagnostics.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 
@@ -42,6 +43,7 @@ World buildWorld(const SimConfig& config, const BodyLoader& load) {
   spec.bodies.reserve(config.bodies.size());
   // Each file is read and parsed once: a world of 10,000 boxes names one URDF 10,000 times.
   std::map<std::string, core::BodySpec> files;
+  std::vector<std::string> notes;
   for (std::size_t i = 0; i < config.bodies.size(); ++i) {
     if (!config.bodies[i].initial_joints.empty()) refuseJoints("bodies[" + std::to_string(i) + "].initial");
   }
@@ -52,7 +54,10 @@ World buildWorld(const SimConfig& config, const BodyLoader& load) {
     } else {
       auto file = files.find(entry.urdf);
       if (file == files.end()) {
-        file = files.emplace(entry.urdf, loadUrdfFile(resolveMeshUri(entry.urdf, config.base_dir))).first;
+        file = files
+                   .emplace(entry.urdf, loadUrdfFile(resolveMeshUri(entry.urdf, config.base_dir),
+                                                     UrdfOptions{config.urdf_repair, &notes}))
+                   .first;
       }
       body = file->second;
     }
@@ -61,11 +66,15 @@ World buildWorld(const SimConfig& config, const BodyLoader& load) {
     body.restitution = entry.restitution;
     spec.bodies.push_back(body);
   }
-  World world{core::Model(spec), {}};
+  World world{core::Model(spec), {}, std::move(notes)};
   world.state.bodies.reserve(config.bodies.size());
   for (std::size_t i = 0; i < config.bodies.size(); ++i) {
     world.state.bodies.push_back(
         startState(world.model, i, config.bodies[i].initial, "bodies[" + std::to_string(i) + "].initial"));
+  }
+  for (std::size_t i = 0; i < config.bodies.size(); ++i) {
+    const std::string note = insideSceneNote(world.model, world.state, i, 1, "body '" + world.model.body(i).name + "'");
+    if (!note.empty()) world.notes.push_back(note);
   }
   return world;
 }
@@ -74,8 +83,10 @@ World loadWorld(const SimConfig& config, const std::function<core::BodySpec()>& 
   if (config.bodies_listed) return buildWorld(config, load);
   if (!single_body) throw ConfigError("bodies: the config lists no bodies, and no single body was given");
   if (!config.initial_joints.empty()) refuseJoints("initial");
-  World world{buildModel(config, single_body()), {}};
+  World world{buildModel(config, single_body()), {}, {}};
   world.state.bodies = {startState(world.model, 0, config.initial, "initial")};
+  const std::string note = insideSceneNote(world.model, world.state, 0, 1, "body '" + world.model.body(0).name + "'");
+  if (!note.empty()) world.notes.push_back(note);
   return world;
 }
 
@@ -97,6 +108,27 @@ void checkStart(const core::LinkState& link, const core::SpeedLimits& limits, co
   if (link.w_W.stableNorm() > limits.max_angular_speed) {
     refuse("angular_velocity", link.w_W.stableNorm(), "rad/s", "limits.max_angular_speed", limits.max_angular_speed);
   }
+}
+
+std::string insideSceneNote(const core::Model& model, const core::State& state, std::size_t first, std::size_t count,
+                            const std::string& who) {
+  constexpr double kWarnDepth = 1e-3;  // m: a start touching the ground to rounding is no news
+  double deepest = 0.0;
+  std::size_t at = first;
+  for (std::size_t i = first; i < first + count; ++i) {
+    const double depth = core::sceneDepth(model, i, state.bodies[i]);
+    if (depth > deepest) {
+      deepest = depth;
+      at = i;
+    }
+  }
+  if (!(deepest > kWarnDepth)) return "";
+  std::ostringstream os;
+  os.precision(3);
+  os << who << " starts " << 1e3 * deepest << " mm inside the scene";
+  if (count > 1) os << " (its link '" << model.body(at).name << "')";
+  os << ": contacts push it out in the first steps, adding energy; start it clear of the scene";
+  return os.str();
 }
 
 std::string touchesNothing(const core::BodyModel& body) {

@@ -83,7 +83,10 @@ std::string configureJoints(const core::ArticulationModel& model, const core::Sp
     const std::string& name = names[k];
     const std::string at = "[" + std::to_string(k) + "]";
     const int j = linkOf(model, name);
-    if (j < 0) return "joint_names" + at + ": robot '" + model.name + "' has no moving joint '" + name + "'";
+    if (j < 0) {
+      return "joint_names" + at + ": robot '" + model.name + "' has no moving joint '" + name + "'" +
+             core::heldJointNote(model, name);
+    }
     const core::ArticulatedLink& link = model.links[j];
     if (link.mimic.joint >= 0) {
       return "joint_names" + at + ": joint '" + name + "' mimics '" + model.links[link.mimic.joint].joint +

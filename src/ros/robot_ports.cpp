@@ -22,6 +22,14 @@ sensor_msgs::JointState jointStateMessage(const core::ArticulationModel& robot, 
   msg.velocity.assign(state.v.data(), state.v.data() + n);
   msg.effort.assign(n, 0.0);
   if (effort.size() == n) msg.effort.assign(effort.data(), effort.data() + n);
+  // Joints that move only massless links, held where they started
+  // (physics §2.1): robot_state_publisher still needs them for their frames.
+  for (const core::HeldJoint& held : robot.held) {
+    msg.name.push_back(held.name);
+    msg.position.push_back(held.position);
+    msg.velocity.push_back(0.0);
+    msg.effort.push_back(0.0);
+  }
   return msg;
 }
 

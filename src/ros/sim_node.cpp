@@ -50,8 +50,10 @@ io::SceneSetup loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
   });
 }
 
-/// The simulation of `world`; its controllers go to `controls`.
+/// The simulation of `world`; its controllers go to `controls`, and what
+/// its loading repaired or warns of to the log, each message once.
 core::Simulation startOf(io::SceneSetup world, std::vector<io::RobotControls>& controls) {
+  for (const std::string& note : world.notes) ROS_WARN("sim_node: %s", note.c_str());
   controls = std::move(world.controls);
   return {std::move(world.scene), std::move(world.state)};
 }

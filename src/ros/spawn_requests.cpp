@@ -73,16 +73,25 @@ io::UrdfText readRequestedUrdf(const SpawnBody::Request& req, const ros::NodeHan
   }
 }
 
+/// An answer that added something says what its URDF's load repaired, as
+/// the log does.
+void tellRepairs(const std::vector<std::string>& notes, SpawnBody::Response& res) {
+  for (const std::string& note : notes) {
+    ROS_WARN("sim_node: ~spawn_body: %s", note.c_str());
+    if (res.success) res.message += (res.message.empty() ? "" : "; ") + note;
+  }
+}
+
 /// The robot a request's URDF describes, its joints set as joint_names says
 /// (the base where the loop puts it). Throws std::exception naming the field.
-void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf, const core::SpeedLimits& limits,
-                        SpawnQueue::Spawn& spawn) {
+void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf, const io::UrdfOptions& options,
+                        const core::SpeedLimits& limits, SpawnQueue::Spawn& spawn) {
   for (const auto& [field, given] : {std::pair<const char*, bool>{"imu", !req.imu.empty()},
                                      {"odom_noise", !req.odom_noise.empty()},
                                      {"cmd_vel", !req.cmd_vel.empty()}}) {
     if (given) throw std::invalid_argument(std::string(field) + ": a robot takes no devices yet");
   }
-  core::ArticulationModel model = io::loadArticulationString(urdf.xml, urdf.source, urdf.base_dir);
+  core::ArticulationModel model = io::loadArticulationString(urdf.xml, urdf.source, urdf.base_dir, options);
   model.name = req.name;
   if (model.fixed_base &&
       (fromVector3(req.twist.linear) != core::Vec3::Zero() || fromVector3(req.twist.angular) != core::Vec3::Zero())) {
@@ -108,18 +117,21 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
   res.message = checkSpawnRequest(req);
   if (!res.message.empty()) return true;
   SpawnQueue::Spawn spawn;
+  std::vector<std::string> notes;
+  const io::UrdfOptions options{params_.sim.urdf_repair, &notes};
   try {
     const io::UrdfText urdf = readRequestedUrdf(req, nh_, params_.sim.base_dir);
     if (io::describesRobot(urdf.xml, urdf.source)) {
-      loadRequestedRobot(req, urdf, spawn_limits_, spawn);
+      loadRequestedRobot(req, urdf, options, spawn_limits_, spawn);
       spawn.request = req;
       res = spawns_.submit(std::move(spawn), [] { return ros::ok(); });  // the loop adds it at its next tick
+      tellRepairs(notes, res);
       return true;
     }
     if (!req.joint_names.empty() || !req.joint_positions.empty()) {
       throw std::invalid_argument("joint_names: the URDF has no moving joints (a body, not a robot)");
     }
-    core::BodySpec spec = io::loadUrdfString(urdf.xml, urdf.source, urdf.base_dir);
+    core::BodySpec spec = io::loadUrdfString(urdf.xml, urdf.source, urdf.base_dir, options);
     spec.name = req.name;
     if (req.own_friction) spec.friction = req.friction;
     if (req.own_restitution) spec.restitution = req.restitution;
@@ -160,6 +172,7 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
   }
   spawn.request = req;
   res = spawns_.submit(std::move(spawn), [] { return ros::ok(); });  // the loop adds it at its next tick
+  tellRepairs(notes, res);
   return true;
 }
 

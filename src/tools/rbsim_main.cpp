@@ -29,6 +29,7 @@
 #include "rbsim_scene.h"
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/diagnostics.h"
+#include "rigid_body_sim/core/ranges.h"
 #include "rigid_body_sim/core/step.h"
 #include "rigid_body_sim/io/articulation_loader.h"
 #include "rigid_body_sim/io/config.h"
@@ -195,7 +196,26 @@ io::World loadWorld(const Args& args, const io::SimConfig& config, bool* world_c
     throw UsageError("--urdf and a config with a bodies list: give one or the other");
   }
   *world_config = !config.bodies.empty();
-  return io::loadWorld(config, [&] { return io::loadUrdfFile(args.urdf); });
+  std::vector<std::string> notes;
+  io::World world = io::loadWorld(config, [&] {
+    return io::loadUrdfFile(args.urdf, io::UrdfOptions{config.urdf_repair, &notes});
+  });
+  world.notes.insert(world.notes.end(), notes.begin(), notes.end());
+  return world;
+}
+
+/// What a load repaired or warns of, each message once on stderr.
+void warnAll(const std::vector<std::string>& notes) {
+  for (const std::string& note : notes) std::fprintf(stderr, "rbsim: warning: %s\n", note.c_str());
+}
+
+/// A --duration shorter than a step is a usage error before anything is
+/// loaded or warned of (a dt out of its range is the model's to refuse).
+void checkDuration(const Args& args, const io::SimConfig& config) {
+  const double dt = config.model.dt;
+  if (dt >= rigid_body_sim::core::ranges::kMinDt && dt <= rigid_body_sim::core::ranges::kMaxDt) {
+    rigid_body_sim::tools::stepCount(args.duration, dt);
+  }
 }
 
 int run(const Args& args) {
@@ -204,18 +224,25 @@ int run(const Args& args) {
     const std::string xml = io::readInput<io::UrdfError>(args.urdf, io::InputCaps::kUrdfBytes, "URDF");
     if (io::describesRobot(xml, args.urdf)) {
       const std::string dir = std::filesystem::path(args.urdf).parent_path().string();
-      return rigid_body_sim::tools::runRobot(readConfig(args), io::loadArticulationString(xml, args.urdf, dir),
-                                             options);
+      const io::SimConfig config = readConfig(args);
+      checkDuration(args, config);
+      std::vector<std::string> notes;
+      core::ArticulationModel robot =
+          io::loadArticulationString(xml, args.urdf, dir, io::UrdfOptions{config.urdf_repair, &notes});
+      warnAll(notes);
+      return rigid_body_sim::tools::runRobot(config, std::move(robot), options);
     }
   }
   bool world_config = false;
   std::optional<io::World> world;
   {
     const io::SimConfig config = readConfig(args);
+    checkDuration(args, config);
     if (args.urdf.empty() && !config.bodies.empty() && io::listsRobots(config)) {  // rbsim_scene.cpp
       return rigid_body_sim::tools::runScene(config, options);
     }
     world.emplace(loadWorld(args, config, &world_config));
+    warnAll(world->notes);
   }  // the config goes: its bodies list is a tenth of the memory of a world of 10,000 boxes
   const core::Model& model = world->model;
   core::State& state = world->state;

@@ -15,6 +15,7 @@
 #include "rigid_body_sim/core/articulation_dynamics.h"
 #include "rigid_body_sim/core/articulation_step.h"
 #include "rigid_body_sim/io/robot.h"
+#include "rigid_body_sim/io/world.h"
 
 namespace rigid_body_sim::tools {
 int runRobot(const io::SimConfig& config, core::ArticulationModel articulation, const RunOptions& options) {
@@ -31,6 +32,9 @@ int runRobot(const io::SimConfig& config, core::ArticulationModel articulation, 
                  "Gazebo\n",
                  model.name.c_str());
   }
+  const std::string inside = io::insideSceneNote(settings, core::linkStates(robot.colliders, model, state), 0,
+                                                 settings.bodyCount(), "robot '" + model.name + "'");
+  if (!inside.empty()) std::fprintf(stderr, "rbsim: warning: %s\n", inside.c_str());
   std::vector<std::string> joints;
   for (int i = 1; i <= model.jointCount(); ++i) joints.push_back(model.links[i].joint);
   const double energy_start = robotEnergy(model, state, g);

@@ -46,6 +46,7 @@ core::Vec3 sceneAngularMomentum(const core::Scene& scene, const core::SceneState
 
 int runScene(const io::SimConfig& config, const RunOptions& options) {
   io::SceneSetup setup = io::buildScene(config);
+  for (const std::string& note : setup.notes) std::fprintf(stderr, "rbsim: warning: %s\n", note.c_str());
   const core::Scene& scene = setup.scene;
   core::SceneState& state = setup.state;
   const core::Model& model = scene.model();

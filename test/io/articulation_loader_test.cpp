@@ -52,6 +52,15 @@ void expectRefused(const std::string& xml, std::initializer_list<std::string> pa
   expectThrowsWith<io::UrdfError>([&] { load(xml); }, parts);
 }
 
+/// Refused with urdf.repair: false (what the default repairs: urdf_repair_test).
+void expectRefusedStrictly(const std::string& xml, std::initializer_list<std::string> parts) {
+  expectThrowsWith<io::UrdfError>(
+      [&] {
+        io::loadArticulationString(xml, "robot.urdf", "", io::UrdfOptions{false, nullptr});
+      },
+      parts);
+}
+
 TEST(ArticulationLoader, APendulumOnTheWorldHasItsJointsFields) {
   const core::ArticulationModel model = load(pendulum(kPivot));
   EXPECT_EQ(model.name, "pendulum");
@@ -154,25 +163,27 @@ TEST(ArticulationLoader, RefusesWhatCannotBeSimulatedNamingTheJointOrLink) {
   expectRefused(pendulum("<axis xyz='0 1 0'/><limit lower='0' upper='1' effort='1' velocity='1'/>"
                          "<dynamics damping='-1'/>"),
                 {"joint 'pivot' dynamics damping"});
-  expectRefused(pendulum("<axis xyz='0 1 0'/><limit lower='0' upper='1' effort='1' velocity='1'/>"
-                         "<mimic joint='elbow'/>"),
-                {"joint 'pivot' <mimic joint> = 'elbow'", "no moving joint"});
+  expectRefusedStrictly(pendulum("<axis xyz='0 1 0'/><limit lower='0' upper='1' effort='1' velocity='1'/>"
+                                 "<mimic joint='elbow'/>"),
+                        {"joint 'pivot' <mimic joint> = 'elbow'", "no moving joint"});
   const std::string massless = "<robot name='r'>" + link("world", "") +
                                joint("pivot", "continuous", "world", "rod", "0 0 1", "<axis xyz='0 1 0'/>") +
                                link("rod",
                                     "<inertial><mass value='0'/><inertia ixx='0' iyy='0' izz='0' ixy='0' "
                                     "ixz='0' iyz='0'/></inertial>") +
                                "</robot>";
-  expectRefused(massless, {"link 'rod' mass", "a moving link needs mass"});
+  // Nothing with mass moves: strictly refused naming the joint; repaired, it is held and nothing moves.
+  expectRefusedStrictly(massless, {"joint 'pivot' moves only massless links"});
+  expectRefused(massless, {"robot 'r' has no revolute, continuous or prismatic joint that moves a mass"});
   const std::string no_inertial = "<robot name='r'>" + link("world", "") +
                                   joint("pivot", "continuous", "world", "rod", "0 0 1", "<axis xyz='0 1 0'/>") +
                                   link("rod", "") + "</robot>";
-  expectRefused(no_inertial, {"link 'rod' has no <inertial>"});
+  expectRefusedStrictly(no_inertial, {"link 'rod' has no <inertial>"});
   const std::string flat = "<robot name='r'>" + link("world", "") +
                            joint("pivot", "continuous", "world", "rod", "0 0 1", "<axis xyz='0 1 0'/>") +
                            link("rod", inertial(1.0, "0 0 0", "ixx='1' iyy='1' izz='3' ixy='0' ixz='0' iyz='0'")) +
                            "</robot>";
-  expectRefused(flat, {"link 'rod'", "triangle inequality"});
+  expectRefusedStrictly(flat, {"link 'rod'", "triangle inequality"});
   // Nothing moving: a body, not a robot (the fuzzer's find: a lone `world`).
   expectRefused("<robot name='arm'><link name='world'/></robot>", {"robot 'arm' has no revolute"});
   expectRefused("<robot name='box'>" + link("box", inertial(1.0)) + "</robot>", {"robot 'box'", "it is one body"});

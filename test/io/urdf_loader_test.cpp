@@ -32,8 +32,17 @@ std::string joint(const std::string& name, const std::string& type, const std::s
 
 core::BodySpec load(const std::string& xml) { return io::loadUrdfString(xml, "test.urdf"); }
 
+/// urdf.repair: false, as before repairs (the config key's strict reading).
+core::BodySpec loadStrict(const std::string& xml) {
+  return io::loadUrdfString(xml, "test.urdf", "", io::UrdfOptions{false, nullptr});
+}
+
 void expectRefused(const std::string& xml, std::initializer_list<std::string> parts) {
   expectThrowsWith<io::UrdfError>([&] { load(xml); }, parts);
+}
+
+void expectRefusedStrictly(const std::string& xml, std::initializer_list<std::string> parts) {
+  expectThrowsWith<io::UrdfError>([&] { loadStrict(xml); }, parts);
 }
 
 TEST(UrdfLoader, ShippedBoxHasItsMassAndInertia) {
@@ -121,23 +130,84 @@ TEST(UrdfLoader, RefusesAMovableJoint) {
   expectRefused(on_world, {"joint 'shoulder' is continuous", "a URDF with moving joints is a robot"});
 }
 
-TEST(UrdfLoader, RefusesALinkWithoutInertial) {
+TEST(UrdfLoader, ALinkWithoutInertialIsAMasslessFrameSaidOnce) {
   const std::string xml =
-      robot(link("base", inertial(1.0)) + link("sensor", "") + joint("mount", "fixed", "base", "sensor", "0 0 0.1"));
-  expectRefused(xml, {"link 'sensor' has no <inertial>"});
+      robot(link("base", inertial(1.0)) + link("sensor", "") + link("tool", "") +
+            joint("mount", "fixed", "base", "sensor", "0 0 0.1") + joint("tip", "fixed", "base", "tool", "0.2 0 0"));
+  std::vector<std::string> notes;
+  const core::BodySpec b = io::loadUrdfString(xml, "test.urdf", "", io::UrdfOptions{true, &notes});
+  // The same body as the URDF without the frames: they add no mass.
+  const core::BodySpec alone = load(robot(link("base", inertial(1.0))));
+  EXPECT_EQ(b.mass, alone.mass);
+  EXPECT_TRUE((b.p_LC.array() == alone.p_LC.array()).all());
+  EXPECT_TRUE((b.I_C_L.array() == alone.I_C_L.array()).all());
+  ASSERT_EQ(b.fixed_links.size(), 2u);  // still frames of the body, for tf
+  ASSERT_EQ(notes.size(), 1u);          // one message for the whole URDF
+  expectContains(notes[0], {"test.urdf", "2 links without <inertial> are massless frames", "'sensor' and 'tool'",
+                            "urdf.repair: false"});
+  expectRefusedStrictly(
+      xml, {"2 problems", "link 'sensor' has no <inertial>", "link 'tool' has no <inertial>", "urdf.repair: true"});
 }
 
-TEST(UrdfLoader, RefusesNonPhysicalInertia) {
-  expectRefused(robot(link("base", inertial(1.0, "", "ixx='1' iyy='1' izz='3' ixy='0' ixz='0' iyz='0'"))),
-                {"link 'base'", "<inertia> = (ixx=1, iyy=1, izz=3", "triangle inequality"});
-  expectRefused(robot(link("base", inertial(1.0, "", "ixx='1' iyy='-1' izz='1' ixy='0' ixz='0' iyz='0'"))),
-                {"link 'base'", "iyy=-1", "positive semi-definite"});
+TEST(UrdfLoader, AnInvalidInertiaIsReplacedByTheNearestValidOne) {
+  // PR2's sensor_mount_link, lumped into a body: the repair's closed form
+  // (core's NearestValidInertia tests) is what the body gets.
+  const std::string cad = robot(link("base", inertial(1.0)) +
+                                link("mount", inertial(1.0, "",
+                                                       "ixx='0.001' iyy='0.001' izz='0.01' ixy='0' ixz='0' "
+                                                       "iyz='0'")) +
+                                joint("fix", "fixed", "base", "mount", "0 0 0"));
+  std::vector<std::string> notes;
+  const core::BodySpec b = io::loadUrdfString(cad, "test.urdf", "", io::UrdfOptions{true, &notes});
+  const Mat3 repaired = (Vec3(0.011, 0.011, 0.022) / 3.0).asDiagonal();
+  EXPECT_LT((b.I_C_L - (Mat3(Vec3(0.1, 0.2, 0.25).asDiagonal()) + repaired)).norm(), 1e-15);
+  ASSERT_EQ(notes.size(), 1u);
+  expectContains(notes[0],
+                 {"1 inertia no body can have was replaced by the nearest valid one", "'mount'",
+                  "[0.001, 0.001, 0.01] -> [0.00367, 0.00367, 0.00733]", "changed by 0.00462", "46.2% of the largest"});
+  expectRefusedStrictly(robot(link("base", inertial(1.0, "", "ixx='1' iyy='1' izz='3' ixy='0' ixz='0' iyz='0'"))),
+                        {"link 'base'", "<inertia> = (ixx=1, iyy=1, izz=3", "triangle inequality"});
+  expectRefusedStrictly(robot(link("base", inertial(1.0, "", "ixx='1' iyy='-1' izz='1' ixy='0' ixz='0' iyz='0'"))),
+                        {"link 'base'", "iyy=-1", "positive semi-definite"});
+}
+
+TEST(UrdfLoader, MassZeroWithAnInertiaIsAMasslessFrame) {
+  std::vector<std::string> notes;
+  const core::BodySpec b = io::loadUrdfString(robot(link("base", inertial(1.0)) + link("antenna", inertial(0.0)) +
+                                                    joint("fix", "fixed", "base", "antenna", "0 0 0.3")),
+                                              "test.urdf", "", io::UrdfOptions{true, &notes});
+  EXPECT_EQ(b.mass, 1.0);
+  EXPECT_LT((b.I_C_L - Mat3(Vec3(0.1, 0.2, 0.25).asDiagonal())).norm(), 1e-16);  // the antenna's inertia dropped
+  ASSERT_EQ(notes.size(), 1u);
+  expectContains(notes[0], {"1 link of mass 0 is a massless frame", "'antenna'"});
 }
 
 TEST(UrdfLoader, RefusesZeroTotalMass) {
   const std::string zero = "ixx='0' iyy='0' izz='0' ixy='0' ixz='0' iyz='0'";
   expectRefused(robot(link("base", inertial(0.0, "", zero))), {"link 'base'", "total mass of 0 kg"});
-  expectRefused(robot(link("base", inertial(0.0))), {"link 'base': mass is 0 kg but <inertia> is not zero"});
+  expectRefused(robot(link("base", inertial(0.0))), {"link 'base'", "total mass of 0 kg"});
+  expectRefusedStrictly(robot(link("base", inertial(0.0))), {"link 'base': mass is 0 kg but <inertia> is not zero"});
+}
+
+TEST(UrdfLoader, APointMassIsGivenAWaterSpheresInertia) {
+  std::vector<std::string> notes;
+  const core::BodySpec b =
+      io::loadUrdfString(robot(link("bob", inertial(2.0, "", "ixx='0' iyy='0' izz='0' ixy='0' ixz='0' iyz='0'"))),
+                         "test.urdf", "", io::UrdfOptions{true, &notes});
+  EXPECT_TRUE((b.I_C_L.array() == core::waterSphereInertia(2.0).array()).all());
+  ASSERT_EQ(notes.size(), 1u);
+  expectContains(notes[0], {"point mass", "'bob' 2 kg"});
+}
+
+TEST(UrdfLoader, EveryProblemOfAUrdfIsNamedInOneRefusal) {
+  const std::string xml = robot(
+      link("base", inertial(1.0)) +
+      "<link name='a'><inertial><mass value='-1'/><inertia ixx='1' iyy='1' izz='1' "
+      "ixy='0' ixz='0' iyz='0'/></inertial></link>" +
+      "<link name='b'>" + inertial(1.0) + "<collision><geometry><box size='0 1 1'/></geometry></collision></link>" +
+      joint("ja", "fixed", "base", "a", "0 0 0") + joint("jb", "fixed", "base", "b", "0 0 0"));
+  expectRefused(xml,
+                {"test.urdf: 2 problems", "link 'a': <mass value> = -1", "link 'b' <collision> 0: box size x = 0"});
 }
 
 TEST(UrdfLoader, RefusesNonsenseAndMissingFiles) {

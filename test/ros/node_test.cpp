@@ -398,9 +398,11 @@ class BadUrdf : public ::testing::Test {};
 
 /// Starts sim_node in namespace `ns` with `urdf` as its robot_description;
 /// returns its exit code and everything it printed.
-std::pair<int, std::string> runNode(const std::string& ns, const std::string& urdf, const std::string& extra = "") {
+std::pair<int, std::string> runNode(const std::string& ns, const std::string& urdf, const std::string& extra = "",
+                                    int timeout_s = 30) {
   ros::param::set(ns + "/robot_description", urdf);
-  const std::string cmd = "timeout 30 " + std::string(RBS_SIM_NODE) + " __ns:=" + ns + " " + extra + " 2>&1";
+  const std::string cmd =
+      "timeout " + std::to_string(timeout_s) + " " + std::string(RBS_SIM_NODE) + " __ns:=" + ns + " " + extra + " 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");
   std::string out;
   char buf[512];
@@ -417,20 +419,16 @@ TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
   const struct {
     std::string name, urdf, expected;
   } cases[] = {
-      {"no_inertial", head + kCollision + "</link></robot>", "link 'base' has no <inertial>"},
+      {"no_inertial", head + kCollision + "</link></robot>", "link 'base' has a total mass of 0 kg"},
       {"zero_mass",
        head + "<inertial><mass value='0'/><inertia ixx='0' iyy='0' izz='0' ixy='0' ixz='0' iyz='0'/></inertial>" +
            kCollision + "</link></robot>",
        "total mass of 0 kg"},
-      {"bad_inertia",
-       head + "<inertial><mass value='1'/><inertia ixx='1' iyy='1' izz='3' ixy='0' ixz='0' iyz='0'/></inertial>" +
-           kCollision + "</link></robot>",
-       "triangle inequality"},
-      {"robot_massless_link",  // a robot (a moving joint) is read as one, and refused naming its link
+      {"robot_massless_link",  // a robot (a moving joint) is read as one: its only joint moves nothing
        head + "<inertial><mass value='1'/>" + kInertia + "</inertial>" + kCollision +
            "</link><link name='wheel'/><joint name='axle' type='continuous'><parent link='base'/>"
            "<child link='wheel'/><axis xyz='0 0 1'/></joint></robot>",
-       "link 'wheel' has no <inertial>"},
+       "robot 'r' has no revolute, continuous or prismatic joint that moves a mass"},
       {"mass_with_unit",
        head + "<inertial><mass value='1kg'/>" + kInertia + "</inertial>" + kCollision + "</link></robot>",
        "link 'base' <inertial><mass value=\"1kg\">: not a number"},
@@ -442,6 +440,22 @@ TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
     EXPECT_NE(out.find("FATAL"), std::string::npos) << c.name << ": " << out;
     EXPECT_NE(out.find(c.expected), std::string::npos) << c.name << ": " << out;
   }
+  // urdf.repair: false refuses what the default repairs, each naming its link.
+  const struct {
+    std::string name, urdf, expected;
+  } strict[] = {
+      {"strict_no_inertial", head + kCollision + "</link></robot>", "link 'base' has no <inertial>"},
+      {"strict_bad_inertia",
+       head + "<inertial><mass value='1'/><inertia ixx='1' iyy='1' izz='3' ixy='0' ixz='0' iyz='0'/></inertial>" +
+           kCollision + "</link></robot>",
+       "triangle inequality"},
+  };
+  for (const auto& c : strict) {
+    ros::param::set("/" + c.name + "/sim_node/urdf/repair", false);
+    const auto [code, out] = runNode("/" + c.name, c.urdf);
+    EXPECT_EQ(code, 1) << c.name << ": " << out;
+    EXPECT_NE(out.find(c.expected), std::string::npos) << c.name << ": " << out;
+  }
   // A bad parameter stops it too, naming the key.
   const std::string good =
       head + "<inertial><mass value='1'/>" + kInertia + "</inertial>" + kCollision + "</link></robot>";
@@ -449,6 +463,30 @@ TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
   const auto [code, out] = runNode("/bad_param", good);
   EXPECT_EQ(code, 1) << out;
   EXPECT_NE(out.find("dt = -0.001"), std::string::npos) << out;
+}
+
+TEST_F(BadUrdf, ARepairedUrdfStartsAndSaysWhatWasRepairedOnce) {
+  // PR2's sensor mount (0.001 + 0.001 < 0.01) and a frame without
+  // <inertial>: the node starts (and runs until the timeout ends it),
+  // having said both in one warning.
+  const std::string urdf =
+      "<robot name='r'><link name='base'><inertial><mass value='1'/><inertia ixx='0.001' iyy='0.001' izz='0.01' "
+      "ixy='0' ixz='0' iyz='0'/></inertial>" +
+      std::string(kCollision) +
+      "</link><link name='tool'/><joint name='j' type='fixed'><parent link='base'/><child link='tool'/></joint>"
+      "</robot>";
+  ros::param::set("/repaired/sim_node/initial/position", std::vector<double>{0.0, 0.0, 1.0});
+  const auto [code, out] = runNode("/repaired", urdf, "", 8);
+  EXPECT_EQ(code, 124) << out;  // still running when the timeout stopped it
+  EXPECT_EQ(out.find("FATAL"), std::string::npos) << out;
+  const std::size_t first = out.find("loaded with repairs");
+  ASSERT_NE(first, std::string::npos) << out;
+  EXPECT_EQ(out.find("loaded with repairs", first + 1), std::string::npos) << "said twice: " << out;
+  const std::string line = out.substr(first, out.find('\n', first) - first);
+  for (const char* part : {"1 link without <inertial> is a massless frame ('tool')",
+                           "'base' [0.001, 0.001, 0.01] -> [0.00367, 0.00367, 0.00733]"}) {
+    EXPECT_NE(line.find(part), std::string::npos) << part << " not in: " << line;
+  }
 }
 
 TEST_F(BadUrdf, BadDevicesStopTheNodeNamingTheKey) {

@@ -16,6 +16,7 @@
 
 #include "rigid_body_sim/core/setting_keys.h"
 #include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/ros/params.h"
 
 namespace {
@@ -36,13 +37,14 @@ std::string read(const std::string& path) {
 
 /// default.yaml's keys as "section.name" (or "name" at the top level), with
 /// their values. `initial` and `scene` are the start state and the scene,
-/// not settings; the devices are commented out there.
+/// not settings, and `urdf` how the loaders read a URDF (UrdfKey below);
+/// the devices are commented out there.
 std::map<std::string, YAML::Node> defaultYamlKeys() {
   const YAML::Node root = YAML::LoadFile(std::string(RBS_SOURCE_DIR) + "/config/default.yaml");
   std::map<std::string, YAML::Node> keys;
   for (const auto& entry : root) {
     const std::string name = entry.first.as<std::string>();
-    if (name == "initial" || name == "scene") continue;
+    if (name == "initial" || name == "scene" || name == "urdf") continue;
     if (entry.second.IsMap()) {
       for (const auto& inner : entry.second) keys[name + "." + inner.first.as<std::string>()] = inner.second;
     } else {
@@ -75,6 +77,17 @@ std::string text(double x) {
   os.precision(17);
   os << x;
   return os.str();
+}
+
+TEST(Settings, TheUrdfKeyIsTheLoadersDefault) {
+  const YAML::Node root = YAML::LoadFile(std::string(RBS_SOURCE_DIR) + "/config/default.yaml");
+  ASSERT_TRUE(root["urdf"].IsMap());
+  ASSERT_EQ(root["urdf"].size(), 1u);
+  EXPECT_EQ(root["urdf"]["repair"].as<bool>(), rigid_body_sim::io::SimConfig().urdf_repair);
+  EXPECT_EQ(root["urdf"]["repair"].as<bool>(), rigid_body_sim::io::UrdfOptions().repair);
+  EXPECT_FALSE(rigid_body_sim::io::parseConfig(YAML::Load("urdf: {repair: false}"), "").urdf_repair);
+  EXPECT_THROW(rigid_body_sim::io::parseConfig(YAML::Load("urdf: {repiar: false}"), ""),
+               rigid_body_sim::io::ConfigError);
 }
 
 TEST(Settings, EveryKeyOfTheDefaultConfigIsOneSettingWithItsDefault) {

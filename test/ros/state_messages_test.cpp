@@ -9,6 +9,7 @@
 
 #include "../test_util.h"
 #include "rigid_body_sim/io/articulation_loader.h"
+#include "rigid_body_sim/ros/robot_ports.h"
 #include "rigid_body_sim/ros/state_publisher.h"
 
 namespace rigid_body_sim::node {
@@ -103,6 +104,30 @@ TEST(StateMessages, BodyStatesCarryEachRobotsBase) {
     expectVector(msg.twists[1].angular, Vec3(0.0, 0.0, 0.5));
     EXPECT_FALSE(msg.asleep[1]);
   }
+}
+
+TEST(StateMessages, JointStatesCarryAHeldJointAtItsPosition) {
+  // A pendulum with a camera on a pan joint of its own and no <inertial>:
+  // the pan joint is held (physics §2.1), and robot_state_publisher still
+  // needs it to place the camera's frame.
+  const core::ArticulationModel model = io::loadArticulationString(
+      "<robot name='r'><link name='world'/><link name='rod'><inertial><origin xyz='0 0 -0.5'/><mass value='1'/>"
+      "<inertia ixx='0.1' iyy='0.1' izz='0.01' ixy='0' ixz='0' iyz='0'/></inertial></link><link name='camera'/>"
+      "<joint name='pivot' type='continuous'><parent link='world'/><child link='rod'/><axis xyz='0 1 0'/></joint>"
+      "<joint name='pan' type='revolute'><parent link='rod'/><child link='camera'/><axis xyz='0 0 1'/>"
+      "<limit lower='0.2' upper='1' effort='1' velocity='1'/></joint></robot>",
+      "test.urdf");
+  core::ArticulationState state = core::restState(model);
+  state.q(0) = 0.4;
+  state.v(0) = -1.5;
+  Eigen::VectorXd effort(1);
+  effort << 0.7;
+  const sensor_msgs::JointState msg = jointStateMessage(model, state, effort, ros::Time(3.0));
+  EXPECT_EQ(msg.name, (std::vector<std::string>{"pivot", "pan"}));
+  EXPECT_EQ(msg.position, (std::vector<double>{0.4, 0.2}));
+  EXPECT_EQ(msg.velocity, (std::vector<double>{-1.5, 0.0}));
+  EXPECT_EQ(msg.effort, (std::vector<double>{0.7, 0.0}));
+  EXPECT_EQ(msg.header.stamp, ros::Time(3.0));
 }
 
 TEST(StateMessages, OdometryCarriesTheReportsCovariancesOrTheExactOnes) {

@@ -202,7 +202,8 @@ TEST(Rbsim, BadInputIsOneLineAndExitCodeTwo) {
   // The URDF loader's refusals carry the link name through.
   const std::string bad = tempPath("bad.urdf");
   std::ofstream(bad) << "<robot name='r'><link name='base'/></robot>";
-  expectUsageError("--urdf " + bad + " --duration 1", "link 'base' has no <inertial>");
+  expectUsageError("--urdf " + bad + " --duration 1", "link 'base' has a total mass of 0 kg");
+  expectUsageError("--urdf " + bad + " --set urdf.repair=false --duration 1", "link 'base' has no <inertial>");
 }
 
 TEST(Rbsim, AbsurdMagnitudesAreRefusedNamingTheKey) {

@@ -55,12 +55,21 @@ struct ArticulatedLink {
   std::vector<FixedLink> fixed_links;     ///< the URDF links lumped into it, in URDF order
 };
 
+/// A URDF joint that moves no mass (only massless links hang from it): it
+/// is held at `position`, its links fixed links of the link it hangs from,
+/// and still reported with the joints (docs/physics.md §2.1).
+struct HeldJoint {
+  std::string name;       ///< its URDF name
+  double position = 0.0;  ///< rad or m: 0, or the limit nearest to it
+};
+
 /// The links in an order where every parent comes before its children; the
 /// base is link 0. Joint i is the joint of link i (i ≥ 1).
 struct ArticulationModel {
   std::string name;         ///< the robot's name (the URDF's <robot name>)
   bool fixed_base = false;  ///< true: the base stays where the state puts it (URDF root `world`)
   std::vector<ArticulatedLink> links;
+  std::vector<HeldJoint> held;  ///< joints that move no mass, in URDF order
 
   int jointCount() const { return static_cast<int>(links.size()) - 1; }
   /// Generalized velocities: the base twist (6, floating only), then one per joint.
@@ -69,12 +78,18 @@ struct ArticulationModel {
   int dofOf(int link) const { return (fixed_base ? 0 : 6) + link - 1; }
 };
 
-/// Throws std::invalid_argument naming the link or joint when the model
-/// cannot be simulated: a parent not before its child, a moving link with no
-/// mass or an inertia no body can have, an axis of zero length, lower > upper,
-/// a negative damping, friction or effort limit, a mimic of itself or of
-/// another mimic, or a non-finite number.
+/// Throws std::invalid_argument naming every link or joint at fault when
+/// the model cannot be simulated: a parent not before its child, a negative
+/// mass or an inertia no body can have, an axis of zero length, lower >
+/// upper, a negative damping, friction or effort limit, a mimic of itself or
+/// of another mimic, a non-finite number, or a joint that moves no mass or
+/// inertia in the rest pose (a singular mass matrix: a link may be massless
+/// only when what hangs from it moves with its joint).
 void checkArticulation(const ArticulationModel& model);
+
+/// " (joint 'NAME' is held: it moves only massless links)" when `name` is a
+/// held joint of `model`, else "": for the messages that refuse a joint name.
+std::string heldJointNote(const ArticulationModel& model, const std::string& name);
 
 /// An articulation's state. The base twist is in the base link's axes,
 /// [ω; v] with v the velocity of its origin, as a free body's ω is (§1).
@@ -103,7 +118,13 @@ struct ArticulationState {
   } carried;
 };
 
-/// The state at rest with every joint at 0 (the base at X_WB).
+/// Where a joint rests at the start: 0, or the limit nearest to 0 when its
+/// limits leave 0 out (arms whose zero is no legal pose, legs whose calves
+/// start folded: Gazebo snaps them there on the first step, §11.6).
+double restPosition(const ArticulatedLink& link);
+
+/// The state at rest with every joint at its restPosition, each mimic where
+/// its joint puts it (the base at X_WB).
 ArticulationState restState(const ArticulationModel& model, const Pose& X_WB = {});
 
 /// The base link's pose and twist in the world, as a free body's link is

@@ -37,4 +37,9 @@ LinkBodies linkBodies(const ArticulationModel& model, int collision_group);
 /// outside the model's ranges) throws std::invalid_argument naming it.
 ArticulationColliders articulationColliders(const ArticulationModel& model, const ModelSpec& settings);
 
+/// The links of `colliders` as body states, placed and moving as `state`
+/// puts them (each at its centre of mass, on its principal axes).
+State linkStates(const ArticulationColliders& colliders, const ArticulationModel& model,
+                 const ArticulationState& state);
+
 }  // namespace rigid_body_sim::core

@@ -35,6 +35,34 @@ MassProperties combine(const std::vector<MassProperties>& parts);
 /// `field` and the offending values.
 void validateInertia(const Mat3& I, const std::string& field, bool allow_zero = false);
 
+/// The physically valid inertia nearest to a tensor that is not one (a CAD
+/// export's rounding: principal moments 0.001, 0.001, 0.01, or −3.5e-8).
+struct InertiaRepair {
+  Mat3 I = Mat3::Zero();         ///< the nearest valid tensor (the input itself when it was valid)
+  Vec3 moments = Vec3::Zero();   ///< the input's principal moments, ascending (kg·m²)
+  Vec3 repaired = Vec3::Zero();  ///< the result's, in the same order (kg·m²)
+  double change = 0.0;           ///< ‖I − input‖ in the Frobenius norm (kg·m²)
+  bool changed = false;          ///< false: the input passed validateInertia(allow_zero = true)
+};
+
+/// The valid tensor nearest to a finite symmetric `I` in the Frobenius norm
+/// (docs/physics.md §2.1): same principal axes, the principal moments
+/// projected onto the cone of the triangle inequality (which also makes
+/// them ≥ 0). A tensor validateInertia accepts (allow_zero) comes back
+/// unchanged, bit for bit. Throws std::invalid_argument naming `field` for
+/// a tensor that is not finite.
+InertiaRepair nearestValidInertia(const Mat3& I, const std::string& field);
+
+/// The inertia about its centre of a solid sphere of water (1000 kg/m³)
+/// of mass m: (2/5) m r², r = (3m / 4πρ)^(1/3). What a part with mass but no
+/// inertia (a point mass, which a rigid body being simulated cannot be) is
+/// given (§2.1).
+Mat3 waterSphereInertia(double mass);
+
+/// Whether a part of mass m > 0 has, to rounding, no inertia at all: its
+/// largest principal moment below 1e-9 of waterSphereInertia's.
+bool pointMass(double mass, const Mat3& I);
+
 /// Principal axes: I = R diag(moments) Rᵀ with R a proper rotation. When I
 /// is already diagonal, R is exactly the identity (no eigen-solver rounding).
 struct PrincipalAxes {

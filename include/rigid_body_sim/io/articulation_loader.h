@@ -21,14 +21,18 @@ namespace rigid_body_sim::io {
 /// Links are numbered parents first, breadth first; siblings in urdfdom's
 /// order of their joints (by name).
 ///
-/// Refused with UrdfError naming the joint or link: a URDF without a moving
-/// joint (it is one body: loadUrdfString), whatever loadUrdfString
-/// refuses about a link, a floating or planar joint, an axis of zero
-/// length, lower > upper, a mimic of an unknown joint or of another mimic,
-/// a moving link (or floating base) without mass, an inertia no body can
-/// have.
+/// Links may be massless (KDL's reading) where what hangs from them has
+/// mass; with `options.repair` a joint that moves only massless links is
+/// held (core::HeldJoint), and links without <inertial> or with invalid
+/// inertias are repaired as UrdfOptions says, all said in one message.
+///
+/// Refused with UrdfError naming every joint or link at fault: a URDF
+/// without a moving joint (it is one body: loadUrdfString), whatever
+/// loadUrdfString refuses about a link, a floating or planar joint, an axis
+/// of zero length, lower > upper, a mimic of an unknown joint or of another
+/// mimic, a joint that moves no mass or inertia (core::checkArticulation).
 core::ArticulationModel loadArticulationString(const std::string& xml, const std::string& source,
-                                               const std::string& base_dir = "");
+                                               const std::string& base_dir = "", const UrdfOptions& options = {});
 
 /// Whether a URDF has a joint that is not fixed: a robot
 /// (loadArticulationString), not one body (loadUrdfString). A text urdfdom
@@ -36,6 +40,6 @@ core::ArticulationModel loadArticulationString(const std::string& xml, const std
 bool describesRobot(const std::string& xml, const std::string& source);
 
 /// Reads and loads a URDF file as an articulation.
-core::ArticulationModel loadArticulationFile(const std::string& path);
+core::ArticulationModel loadArticulationFile(const std::string& path, const UrdfOptions& options = {});
 
 }  // namespace rigid_body_sim::io

@@ -88,6 +88,9 @@ struct SimConfig {
   std::optional<core::OdomNoiseSettings> odom_noise;
   std::optional<core::DriverSettings> cmd_vel;  ///< the one body's velocity driver
   std::vector<ControllerEntry> controllers;     ///< the one robot's `controllers`
+  /// urdf.repair: read the URDFs as Gazebo and KDL do, repairing what a
+  /// strict reading refuses (io::UrdfOptions); false refuses it.
+  bool urdf_repair = true;
   /// The config file's folder (parseConfig's base_dir): package:// URDFs are
   /// also looked for above it, so a package's own worlds load without ROS.
   std::string base_dir;

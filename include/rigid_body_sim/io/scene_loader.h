@@ -22,6 +22,9 @@ struct SceneSetup {
   std::vector<int> entry;
   /// Per robot: its controllers (`controllers`, `bodies[i].controllers`).
   std::vector<RobotControls> controls;
+  /// What loading it repaired or warns of, one message per URDF or start,
+  /// for the caller to log once (io::UrdfOptions::notes).
+  std::vector<std::string> notes;
 };
 
 /// A URDF's text, where it came from (for messages) and the folder its

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/state.h"
@@ -15,12 +17,24 @@ namespace rigid_body_sim::io {
 struct World {
   core::Model model;
   core::State state;
+  /// What loading it repaired or warns of, one message per URDF or start,
+  /// for the caller to log once (io::UrdfOptions::notes).
+  std::vector<std::string> notes;
 };
 
 /// The warning for a body that touches nothing (it has no <collision>, as a
 /// URDF with only <visual>s: Gazebo keeps such a body and so does this
 /// project), or "" when it has collision geometry.
 std::string touchesNothing(const core::BodyModel& body);
+
+/// The warning for bodies first .. first + count − 1 of `model` (one body,
+/// or a robot's links) starting inside the static scene deeper than 1 mm,
+/// naming `who` ("body 'box'", "robot 'ur5'"), the depth and the deepest
+/// body; "" when they start clear of it. Contacts push such a start out in
+/// the first steps, which adds energy (Gazebo and MuJoCo do the same,
+/// silently).
+std::string insideSceneNote(const core::Model& model, const core::State& state, std::size_t first, std::size_t count,
+                            const std::string& who);
 
 /// Refuses (ConfigError naming `key`.position, .linear_velocity or
 /// .angular_velocity) a start farther than 1e6 m from the origin or faster

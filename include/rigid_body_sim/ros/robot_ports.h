@@ -34,7 +34,8 @@ struct RobotPorts {
 /// sensor_msgs/JointState of `state`: every moving joint of `robot` in its
 /// model's order (mimic joints too), positions as the step keeps them
 /// (continuous joints unwrapped, as gazebo_ros_control reports them),
-/// velocities, and `effort` (N·m or N, per joint; empty: zero).
+/// velocities, and `effort` (N·m or N, per joint; empty: zero); then each
+/// held joint (core::HeldJoint) at its position, at rest.
 sensor_msgs::JointState jointStateMessage(const core::ArticulationModel& robot, const core::ArticulationState& state,
                                           const Eigen::VectorXd& effort, const ros::Time& stamp);
 

@@ -1,0 +1,195 @@
+// The URDFs users have, loaded as Gazebo and KDL load them (docs/physics.md
+// §2.1): one test per class of description a strict reading refused,
+// each with a robot written here (the public descriptions these classes
+// come from are in bench/README.md, "Robots users have").
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../test_util.h"
+#include "rigid_body_sim/core/articulation_dynamics.h"
+#include "rigid_body_sim/core/articulation_step.h"
+#include "rigid_body_sim/io/articulation_loader.h"
+#include "rigid_body_sim/io/joint_start.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+using core::ArticulationModel;
+using core::ArticulationState;
+
+const Vec3 kG(0, 0, -9.81);
+
+std::string inertial(double mass, const std::string& xyz = "0 0 0",
+                     const std::string& inertia = "ixx='0.02' iyy='0.02' izz='0.001' ixy='0' ixz='0' iyz='0'") {
+  return "<inertial><origin xyz='" + xyz + "'/><mass value='" + std::to_string(mass) + "'/><inertia " + inertia +
+         "/></inertial>";
+}
+
+std::string link(const std::string& name, const std::string& inside = "") {
+  return "<link name='" + name + "'>" + inside + "</link>";
+}
+
+std::string joint(const std::string& name, const std::string& type, const std::string& parent, const std::string& child,
+                  const std::string& xyz, const std::string& inside = "<axis xyz='0 1 0'/>") {
+  return "<joint name='" + name + "' type='" + type + "'><parent link='" + parent + "'/><child link='" + child +
+         "'/><origin xyz='" + xyz + "'/>" + (type == "fixed" ? "" : inside) + "</joint>";
+}
+
+/// A double pendulum hanging from the world: rods of 1 kg, 0.5 m apart.
+std::string doublePendulum(const std::string& extra = "") {
+  return "<robot name='double'>" + link("world") + joint("shoulder", "continuous", "world", "upper", "0 0 2") +
+         link("upper", inertial(1.0, "0 0 -0.25")) + joint("elbow", "continuous", "upper", "lower", "0 0 -0.5") +
+         link("lower", inertial(1.0, "0 0 -0.25")) + extra + "</robot>";
+}
+
+ArticulationModel load(const std::string& xml, std::vector<std::string>* notes = nullptr, bool repair = true) {
+  return io::loadArticulationString(xml, "robot.urdf", "", io::UrdfOptions{repair, notes});
+}
+
+/// q and v after `steps` steps of 1 ms from the rest state with q(0) = 1 rad.
+ArticulationState swing(const ArticulationModel& model, int steps) {
+  ArticulationState state = core::restState(model);
+  state.q(0) = 1.0;
+  for (int n = 0; n < steps; ++n) core::stepArticulation(model, state, {}, kG, 1e-3);
+  return state;
+}
+
+double energy(const ArticulationModel& model, const ArticulationState& state) {
+  const core::ArticulationKinematics kin = core::kinematics(model, state);
+  return core::kineticEnergy(model, kin) + core::potentialEnergy(model, kin, kG);
+}
+
+TEST(MasslessFrames, MoveAsTheRobotWithoutThemBitForBit) {
+  // A tool frame fixed to the lower rod, a sensor on a joint of its own
+  // (nothing hangs from it but massless frames: held), both without
+  // <inertial>, as force_torque_sensor and camera frames come.
+  const std::string frames = joint("tool_mount", "fixed", "lower", "tool", "0 0 -0.5") + link("tool") +
+                             joint("pan", "revolute", "tool", "camera", "0 0 -0.1",
+                                   "<axis xyz='0 0 1'/><limit lower='0.3' upper='1' effort='1' velocity='1'/>") +
+                             link("camera") + joint("optical", "fixed", "camera", "optical_frame", "0.05 0 0") +
+                             link("optical_frame");
+  std::vector<std::string> notes;
+  const ArticulationModel with = load(doublePendulum(frames), &notes);
+  const ArticulationModel without = load(doublePendulum());
+  ASSERT_EQ(with.jointCount(), 2);
+  ASSERT_EQ(with.held.size(), 1u);
+  EXPECT_EQ(with.held[0].name, "pan");
+  EXPECT_EQ(with.held[0].position, 0.3);  // its rest position: the limit nearest 0
+  // The held link is a fixed frame of the lower rod, turned by 0.3 rad about z.
+  const core::FixedLink* camera = nullptr;
+  for (const core::FixedLink& f : with.links[2].fixed_links) camera = f.name == "camera" ? &f : camera;
+  ASSERT_NE(camera, nullptr);
+  EXPECT_EQ(camera->parent, "lower");
+  EXPECT_LT((camera->X_PK.translation - Vec3(0, 0, -0.6)).norm(), 1e-15);
+  EXPECT_NEAR(camera->X_PK.rotation.angularDistance(Quat(Eigen::AngleAxisd(0.3, Vec3::UnitZ()))), 0.0, 1e-15);
+  const ArticulationState a = swing(with, 3000), b = swing(without, 3000);
+  EXPECT_TRUE((a.q.array() == b.q.array()).all() && (a.v.array() == b.v.array()).all());
+  ASSERT_EQ(notes.size(), 1u);  // everything repaired, in one message
+  expectContains(
+      notes[0], {"robot.urdf", "3 links without <inertial> are massless frames", "'tool', 'camera' and 'optical_frame'",
+                 "1 joint moves only massless links", "'pan' at 0.3", "joint_states"});
+  // Set at the start, it is refused, saying why.
+  io::InitialJoints start;
+  start.positions = {{"pan", 0.5}};
+  expectThrowsWith<io::ConfigError>(
+      [&] {
+        ArticulationState s = core::restState(with);
+        io::startJoints(with, start, core::SpeedLimits{}, "initial", s);
+      },
+      {"initial.joint_positions.pan", "joint 'pan' is held: it moves only massless links"});
+  // Strictly, every one of them is refused, in one message.
+  expectThrowsWith<io::UrdfError>(
+      [&] { load(doublePendulum(frames), nullptr, false); },
+      {"link 'tool' has no <inertial>", "link 'camera' has no <inertial>", "joint 'pan' moves only massless links"});
+}
+
+TEST(MasslessFrames, AMasslessLinkBetweenTwoJointsIsAGimbal) {
+  // A spherical pendulum built as URDFs build it: two revolute joints, the
+  // link between them massless. KDL reads it so; it swings keeping energy.
+  const std::string gimbal = "<robot name='gimbal'>" + link("world") +
+                             joint("pitch", "continuous", "world", "ring", "0 0 2") + link("ring") +
+                             joint("roll", "continuous", "ring", "bob", "0 0 0", "<axis xyz='1 0 0'/>") +
+                             link("bob", inertial(2.0, "0 0 -0.8",
+                                                  "ixx='0.01' iyy='0.01' izz='0.01' ixy='0' ixz='0' "
+                                                  "iyz='0'")) +
+                             "</robot>";
+  const ArticulationModel model = load(gimbal);
+  ASSERT_EQ(model.jointCount(), 2);
+  EXPECT_EQ(model.links[1].mass.mass, 0.0);
+  ArticulationState state = core::restState(model);
+  state.q << 0.6, 0.4;
+  state.v << 0.0, 1.5;
+  const double start = energy(model, state);
+  double worst = 0.0;
+  for (int n = 0; n < 5000; ++n) {
+    ASSERT_TRUE(core::stepArticulation(model, state, {}, kG, 1e-3));
+    worst = std::max(worst, std::abs(energy(model, state) - start));
+  }
+  EXPECT_LT(worst, 2e-3 * std::abs(start));
+}
+
+TEST(MasslessFrames, AJointThatMovesNoMassOrInertiaIsRefusedNamingIt) {
+  // Two joints on one axis with a massless link between: the second moves
+  // nothing the first does not (the mass matrix is singular).
+  const std::string twice =
+      "<robot name='twice'>" + link("world") + joint("first", "continuous", "world", "a", "0 0 2") + link("a") +
+      joint("second", "continuous", "a", "b", "0 0 0") + link("b", inertial(1.0, "0 0 -0.5")) + "</robot>";
+  expectThrowsWith<io::UrdfError>([&] { load(twice); },
+                                  {"robot.urdf", "joint 'second' moves no mass or inertia", "singular mass matrix"});
+}
+
+TEST(PointMassLinks, AreGivenAWaterSpheresInertiaAndSwing) {
+  // icub's head: mass without inertia, on a joint whose axis passes through
+  // it (no moment about the axis: a singular mass matrix without the repair).
+  const std::string head = "<robot name='neck'>" + link("world") +
+                           joint("yaw", "continuous", "world", "head", "0 0 1", "<axis xyz='0 0 1'/>") +
+                           link("head", inertial(1.3, "0 0 0.1", "ixx='0' iyy='0' izz='0' ixy='0' ixz='0' iyz='0'")) +
+                           "</robot>";
+  std::vector<std::string> notes;
+  const ArticulationModel model = load(head, &notes);
+  EXPECT_TRUE((model.links[1].mass.I_C_F.array() == core::waterSphereInertia(1.3).array()).all());
+  ASSERT_EQ(notes.size(), 1u);
+  expectContains(notes[0], {"'head' 1.3 kg", "solid sphere of water"});
+  // Strictly, the point mass on its own axis moves nothing: refused.
+  expectThrowsWith<io::UrdfError>([&] { load(head, nullptr, false); }, {"joint 'yaw' moves no mass or inertia"});
+}
+
+TEST(MimicOfNoJoint, IsDroppedAndSaid) {
+  const std::string xml = doublePendulum().insert(doublePendulum().find("</joint>", doublePendulum().find("elbow")),
+                                                  "<mimic joint='index_q1'/>");
+  std::vector<std::string> notes;
+  const ArticulationModel model = load(xml, &notes);
+  EXPECT_EQ(model.links[2].mimic.joint, -1);
+  ASSERT_EQ(notes.size(), 1u);
+  expectContains(notes[0], {"1 <mimic> names no joint", "'elbow' -> 'index_q1'"});
+  expectThrowsWith<io::UrdfError>([&] { load(xml, nullptr, false); },
+                                  {"joint 'elbow' <mimic joint> = 'index_q1'", "no moving joint has that name"});
+}
+
+TEST(ZeroOutsideTheLimits, StartsAtTheNearestLimitWithoutAnEnergyJump) {
+  // Kinova's joint_2, limits [0.82, 5.46]: its zero is no legal pose. The
+  // rest state puts it at 0.82 and says so; held there against the limit by
+  // gravity, it gains nothing on the first step (it used to be snapped from
+  // 0 to the limit by the first step: 3.7 J became 7.2 J).
+  const std::string arm = "<robot name='arm'>" + link("world") +
+                          joint("joint_2", "revolute", "world", "rod", "0 0 2",
+                                "<axis xyz='0 1 0'/><limit lower='0.82' upper='5.46' effort='10' velocity='2'/>") +
+                          link("rod", inertial(1.5, "0 0 -0.5")) + "</robot>";
+  std::vector<std::string> notes;
+  const ArticulationModel model = load(arm, &notes);
+  ArticulationState state = core::restState(model);
+  EXPECT_EQ(state.q(0), 0.82);
+  ASSERT_EQ(notes.size(), 1u);
+  expectContains(notes[0], {"robot.urdf: 1 joint has its zero outside the limits", "'joint_2' 0 -> 0.82",
+                            "(limits [0.82, 5.46])"});
+  const double start = energy(model, state);
+  for (int n = 0; n < 1000; ++n) {
+    core::stepArticulation(model, state, {}, kG, 1e-3);
+    ASSERT_LE(energy(model, state), start + 1e-9) << "step " << n;
+    ASSERT_GE(state.q(0), 0.82 - 1e-6);
+  }
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
