@@ -344,4 +344,20 @@ TEST_F(Arm, SetModelConfigurationPlacesTheJointsAndTheControllersStay) {
       << unknown.response.status_message;
 }
 
+// launch/sim.launch as a user runs it on their own robot, with no config
+// (sim_launch.test, the arm): it used to stop with FATAL for every robot
+// fixed to the world, the box demo's spinning start refused.
+class SimLaunch : public rbs_test::RobotNode {};
+
+TEST_F(SimLaunch, RunsAWorldFixedRobotWithNoConfig) {
+  listen();
+  ASSERT_EQ(last_.name, (std::vector<std::string>{"shoulder", "elbow"}));
+  const double start = last_.header.stamp.toSec();
+  wait(1.0);
+  // It hangs from the world and falls from its horizontal start, finite.
+  EXPECT_GT(last_.header.stamp.toSec(), start + 0.99);
+  EXPECT_GT(last_.position[0], 0.1);  // about y: the upper arm, along x at the start, swings down
+  for (const double x : last_.position) EXPECT_TRUE(std::isfinite(x));
+}
+
 }  // namespace
