@@ -74,7 +74,8 @@ double updateRow(ContactRows& c, int r, double target, Eigen::VectorXd& u, Clamp
 }  // namespace
 
 double sweepContactRows(const SolverSettings& settings, ContactRows& c, Eigen::VectorXd& u) {
-  double largest = updateRow(c, 0, c.target, u, [](double l) { return std::max(l, 0.0); });
+  const double most = c.most;
+  double largest = updateRow(c, 0, c.target, u, [most](double l) { return std::clamp(l, 0.0, most); });
   const double limit = c.friction * c.impulse(0);
   if (c.block) {
     // Of the impulses on the disk |λ_T| ≤ μ λ_N, the one nearest in K's
@@ -145,6 +146,7 @@ void setBodyPoint(const Vec3& r_W, const Mat3& directions, double sign, Columns&
 
 void aimContact(const Model& bodies, const Contact& contact, double h, const Eigen::VectorXd& u, ContactRows& c) {
   c.friction = bodies.friction(contact.body, contact.other);
+  c.speed = std::max(bodies.limits().max_linear_speed, bodies.limits().max_angular_speed);
   c.separation = contact.separation;
   c.target = contact.separation > 0.0 ? -contact.separation / h : 0.0;
   // Restitution (§11.8): a contact arriving faster than the threshold
@@ -241,7 +243,8 @@ bool liftOutOfContacts(std::vector<ContactRows>& contacts, const Eigen::VectorXd
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     const double end = contacts[k].separation + h * contacts[k].velocity(u, 0);
     deep = deep || end < -slop;
-    lift[k] = std::max(-end - 0.5 * slop, 0.0) / h;
+    // No faster than a point may move: a lift is a velocity of the positions.
+    lift[k] = std::min(std::max(-end - 0.5 * slop, 0.0) / h, contacts[k].speed);
   }
   if (!deep) return false;
   pseudo.setZero(u.size());
@@ -249,8 +252,9 @@ bool liftOutOfContacts(std::vector<ContactRows>& contacts, const Eigen::VectorXd
   for (int sweep = 0; sweep < 200; ++sweep) {
     double largest = 0.0;
     for (std::size_t k = 0; k < contacts.size(); ++k) {
-      largest =
-          std::max(largest, updateRow(contacts[k], 0, lift[k], pseudo, [](double l) { return std::max(l, 0.0); }));
+      const double most = contacts[k].most;
+      largest = std::max(
+          largest, updateRow(contacts[k], 0, lift[k], pseudo, [most](double l) { return std::clamp(l, 0.0, most); }));
     }
     if (largest <= 1e-12) break;
   }

@@ -226,7 +226,13 @@ void finishArticulation(const ArticulationModel& model, const SpeedLimits& limit
     kinematics(model, state, kin);
     state.X_WB.translation += c_next - centreOfMass(model, kin);
   }
-  if (pseudo != nullptr) moveRobot(model, *pseudo, h, state);
+  if (pseudo != nullptr) {
+    // A lift is a velocity of the positions: no faster than the limits.
+    Eigen::VectorXd& lift = ws.lift;
+    lift = *pseudo;
+    limitSpeeds(model, limits, lift);
+    moveRobot(model, lift, h, state);
+  }
   ArticulationState::Carried& c = state.carried;
   c.valid = !limited;
   c.p = rhs.tail(nj);

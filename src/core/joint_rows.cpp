@@ -95,11 +95,14 @@ void solveRows(const SolverSettings& settings, const std::vector<CoordinateBlock
   }
   for (ContactRows& c : contacts) {
     c.K.setZero();
+    double moves = 0.0;  // the largest change of a coordinate per unit normal impulse
     for (int s = 0; s < c.sides; ++s) {
       RowSide& side = c.side[s];
       respond(blockAt(blocks, side.offset), side.J, side.response);
       c.K.noalias() += side.J.transpose() * side.response;
+      moves = std::max(moves, side.response.col(0).cwiseAbs().maxCoeff());
     }
+    c.most = moves > 0.0 ? 2.0 * c.speed / moves : std::numeric_limits<double>::infinity();
     c.impulse = c.warm_start;
     if (!c.warm_start.isZero(0.0)) c.apply(c.warm_start, u);
     const Eigen::Matrix2d tangent_k = c.K.bottomRightCorner<2, 2>();

@@ -7,6 +7,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 #include "rigid_body_sim/core/articulation.h"
@@ -74,6 +75,12 @@ struct ContactRows {
   double friction = 0.0;                        ///< μ of the pair
   double separation = 0.0;                      ///< m, as detected
   double target = 0.0;  ///< normal velocity aimed at (m/s): −separation/h if apart, e × the approach speed in an impact
+  /// The larger of the model's speed limits (m/s, rad/s), and the largest
+  /// normal impulse (N·s): what changes a coordinate of what the contact
+  /// moves by twice that (§11.7). Two robots overlapping where they cannot
+  /// part ask for an infinite impulse; Gauss-Seidel's grew to 1e16 N·s.
+  double speed = std::numeric_limits<double>::infinity();
+  double most = std::numeric_limits<double>::infinity();
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();            ///< λ_N, λ₁, λ₂ (N·s)
   Eigen::Vector3d warm_start = Eigen::Vector3d::Zero();         ///< where λ starts (the last step's), in the cone
   Vec3 tangent1_W = Vec3::UnitX(), tangent2_W = Vec3::UnitY();  ///< t₁, t₂ (n is the contact's)

@@ -180,8 +180,14 @@ void liftBodies(const Scene& scene, const RobotSolve& solve, double h, SceneStat
   for (std::size_t i = 0; i < scene.freeBodyCount(); ++i) {
     if (solve.body_offset[i] < 0) continue;
     BodyState& s = state.bodies.bodies[i];
-    s.p_WB += h * solve.pseudo.segment<3>(solve.body_offset[i]);
-    const Vec3 turn = h * solve.pseudo.segment<3>(solve.body_offset[i] + 3);
+    // A lift is a velocity of the positions: no faster than the limits.
+    const auto capped = [](const Vec3& v, double most) {
+      const double speed = v.stableNorm();
+      return speed > most ? Vec3(v * (most / speed)) : v;
+    };
+    const SpeedLimits& limits = scene.model().limits();
+    s.p_WB += h * capped(solve.pseudo.segment<3>(solve.body_offset[i]), limits.max_linear_speed);
+    const Vec3 turn = h * capped(solve.pseudo.segment<3>(solve.body_offset[i] + 3), limits.max_angular_speed);
     const double angle = turn.norm();
     if (angle > 0.0) s.q_WB = (Quat(Eigen::AngleAxisd(angle, turn / angle)) * s.q_WB).normalized();
   }

@@ -34,7 +34,7 @@ struct ArticulationWorkspace {
   DynamicsScratch dynamics;
   Eigen::MatrixXd A;
   Eigen::LLT<Eigen::MatrixXd> llt;
-  Eigen::VectorXd u, p, force, bias, predicted, next, corrected, rhs, gradient;
+  Eigen::VectorXd u, p, force, bias, predicted, next, corrected, rhs, gradient, lift;
   std::vector<Vec6> wrench_L;  ///< the loads' wrenches and impulses / h together
   ArticulationState start;
   /// The links as bodies, and the detection's workspace: after a step with
