@@ -108,26 +108,17 @@ class Child {
 
 const char* kInertia = "<inertia ixx='0.016' iyy='0.016' izz='0.016' ixy='0' ixz='0' iyz='0'/>";
 
-/// A sphere of radius 0.2 m as an OBJ of about 100,000 triangles: in a world
-/// of two, each body's distance grid takes seconds to build.
-void writeBigMesh(const std::filesystem::path& path) {
+/// A 0.2 m cube as an OBJ: at the finest grid a mesh may have (256 cells a
+/// side, 17 million samples), its distance grid takes a second or more to
+/// build (a 100,000-triangle sphere took seconds before the grid was built
+/// through a tree, and takes 0.1 s now).
+void writeCube(const std::filesystem::path& path) {
   std::ofstream obj(path);
-  const int rings = 200, segments = 250;
-  for (int i = 0; i <= rings; ++i) {
-    const double theta = M_PI * i / rings;
-    for (int j = 0; j < segments; ++j) {
-      const double phi = 2 * M_PI * j / segments;
-      obj << "v " << 0.2 * std::sin(theta) * std::cos(phi) << ' ' << 0.2 * std::sin(theta) * std::sin(phi) << ' '
-          << 0.2 * std::cos(theta) << '\n';
-    }
-  }
-  for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < segments; ++j) {
-      const int a = i * segments + j + 1, b = i * segments + (j + 1) % segments + 1;
-      const int c = a + segments, d = b + segments;
-      if (i > 0) obj << "f " << a << ' ' << c << ' ' << b << '\n';
-      if (i < rings - 1) obj << "f " << b << ' ' << c << ' ' << d << '\n';
-    }
+  for (int i = 0; i < 8; ++i)
+    obj << "v " << (i & 1 ? 0.1 : -0.1) << ' ' << (i & 2 ? 0.1 : -0.1) << ' ' << (i & 4 ? 0.1 : -0.1) << '\n';
+  for (const char* f :
+       {"1 3 2", "2 3 4", "5 6 7", "6 8 7", "1 2 5", "2 6 5", "3 7 4", "4 7 8", "1 5 3", "3 5 7", "2 4 6", "4 8 6"}) {
+    obj << "f " << f << '\n';
   }
 }
 
@@ -147,14 +138,18 @@ TEST(StartUp, SigintWhileLoadingEndsTheNodeAtOnce) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("rbs_startup_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
-  writeBigMesh(dir / "ball.obj");
-  std::ofstream(dir / "ball.urdf") << "<robot name='ball'><link name='base'><inertial><mass value='1'/>" << kInertia
-                                   << "</inertial><collision><geometry><mesh filename='" << (dir / "ball.obj").string()
-                                   << "'/></geometry></collision></link></robot>";
+  // Four bodies of four URDFs, each its own grid to build: seconds in all.
+  writeCube(dir / "cube.obj");
   XmlRpc::XmlRpcValue bodies;
-  bodies[0] = body("a", (dir / "ball.urdf").string(), 0.0);
-  bodies[1] = body("b", (dir / "ball.urdf").string(), 1.0);
+  for (int i = 0; i < 4; ++i) {
+    const std::string urdf = (dir / ("cube" + std::to_string(i) + ".urdf")).string();
+    std::ofstream(urdf) << "<robot name='cube'><link name='base'><inertial><mass value='1'/>" << kInertia
+                        << "</inertial><collision><geometry><mesh filename='" << (dir / "cube.obj").string()
+                        << "'/></geometry></collision></link></robot>";
+    bodies[i] = body(std::string(1, static_cast<char>('a' + i)), urdf, 1.0 * i);
+  }
   ros::param::set("/loading/sim_node/bodies", bodies);
+  ros::param::set("/loading/sim_node/solver/mesh_grid_resolution", 256);
   Child node("/loading");
   ASSERT_TRUE(node.waitFor("loading the world", 30.0)) << node.output();
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // inside the load (seconds long)
