@@ -19,6 +19,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/guard.cpp
   ${RBS_SOURCE_ROOT}/src/core/imu.cpp
   ${RBS_SOURCE_ROOT}/src/core/inertia.cpp
+  ${RBS_SOURCE_ROOT}/src/core/shape_mass.cpp
   ${RBS_SOURCE_ROOT}/src/core/integration.cpp
   ${RBS_SOURCE_ROOT}/src/core/joint_rows.cpp
   ${RBS_SOURCE_ROOT}/src/core/island.cpp

@@ -111,7 +111,7 @@ Vec3 projectOntoTriangleCone(const Vec3& m) {
 
 }  // namespace
 
-InertiaRepair nearestValidInertia(const Mat3& I, const std::string& field) {
+InertiaRepair nearestValidInertia(const Mat3& I, const std::string& field, double least) {
   if (!I.allFinite()) detail::fail(field, detail::str(I), "must be finite");
   InertiaRepair out;
   out.I = I;
@@ -119,8 +119,10 @@ InertiaRepair nearestValidInertia(const Mat3& I, const std::string& field) {
   out.moments = eig.eigenvalues();
   out.repaired = out.moments;
   const double tol = roundingTolerance(I);
-  if (symmetric(I, tol) && triangle(out.moments, tol)) return out;
-  out.repaired = projectOntoTriangleCone(out.moments);
+  const bool valid = symmetric(I, tol) && triangle(out.moments, tol);
+  if (valid && out.moments(0) >= least * out.moments(2)) return out;
+  out.repaired = valid ? out.moments : projectOntoTriangleCone(out.moments);
+  out.repaired = out.repaired.cwiseMax(least * out.repaired.maxCoeff());
   const Mat3& R = eig.eigenvectors();
   out.I = R * out.repaired.asDiagonal() * R.transpose();
   out.I = 0.5 * (out.I + out.I.transpose());

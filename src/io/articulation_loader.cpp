@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "rigid_body_sim/core/shape_mass.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "urdf_lumper.h"
 
@@ -86,6 +87,23 @@ core::Pose jointPose(const ArticulatedLink& link, double q) {
     motion.rotation = core::Quat(Eigen::AngleAxisd(q, link.axis_J));
   }
   return link.X_PJ * motion;
+}
+
+/// A moving link with no mass but collision shapes is given the mass of
+/// its shapes filled with water (§2.1), as MuJoCo's compiler gives a body
+/// without an inertial its geoms' at its default density; with repair off,
+/// it stays massless.
+void massFromShapes(core::ArticulationModel& model, detail::Lumper& lumper) {
+  for (std::size_t i = 0; i < model.links.size(); ++i) {
+    ArticulatedLink& link = model.links[i];
+    const bool moves = i > 0 || !model.fixed_base;
+    if (!moves || link.mass.mass != 0.0 || link.collision.empty() || !lumper.repair()) continue;
+    link.mass = core::shapesMassProperties(link.collision, core::kWaterDensity);
+    std::ostringstream text;
+    text.precision(3);
+    text << "'" << link.name << "' " << link.mass.mass << " kg";
+    lumper.repaired(detail::Repair::kShapeMass, text.str());
+  }
 }
 
 /// Holds every moving link from which only massless links hang (§2.1): its
@@ -213,10 +231,28 @@ core::ArticulationModel loadArticulationString(const std::string& xml, const std
                      "': no moving joint has that name (urdf.repair: true drops the <mimic>)");
     }
   }
+  massFromShapes(model, lumper);
   holdMassless(model, lumper);
+  // A floating base with no mass lumped into it cannot float (its joints
+  // would turn it for nothing): Bullet reads a base of mass 0 as fixed, and
+  // so does the loader, where the start puts it.
+  if (!model.fixed_base && model.links[0].mass.mass == 0.0) {
+    if (lumper.repair()) {
+      model.fixed_base = true;
+      lumper.repaired(detail::Repair::kFixedBase, "the base '" + model.links[0].name +
+                                                      "' has no mass and is fixed to the world where the start puts "
+                                                      "it, as Bullet reads a base of mass 0");
+    } else {
+      lumper.problem("the base '" + model.links[0].name +
+                     "' has no mass: a floating base needs one (urdf.repair: true fixes it to the world)");
+    }
+  }
   if (model.links.size() == 1) {
-    lumper.problem("robot '" + model.name +
-                   "' has no revolute, continuous or prismatic joint that moves a mass: " + "it is one body");
+    lumper.problem(!model.held.empty() && model.links[0].mass.mass == 0.0 && model.links[0].collision.empty()
+                       ? "robot '" + model.name +
+                             "' has no mass anywhere and no <collision> to give it one: a drawing, nothing to simulate"
+                       : "robot '" + model.name +
+                             "' has no revolute, continuous or prismatic joint that moves a mass: it is one body");
   }
   lumper.finish();
   try {

@@ -106,6 +106,11 @@ void Lumper::finish() const {
                               "links with mass but no inertia (point masses) were") +
                         " given the inertia of a solid sphere of water of its mass: " + joined(what));
         break;
+      case Repair::kShapeMass:
+        parts.push_back(count(n, "moving link without mass was given the mass of its",
+                              "moving links without mass were given the mass of their") +
+                        " collision shapes filled with water, as MuJoCo's compiler does (" + joined(what) + ")");
+        break;
       case Repair::kMimicDropped:
         parts.push_back(count(n, "<mimic> names", "<mimic>s name") + " no joint and " + (n == 1 ? "was" : "were") +
                         " dropped, the joint moving on its own (Gazebo classic ignores <mimic>): " + joined(what));
@@ -115,6 +120,13 @@ void Lumper::finish() const {
                         " held where it starts, as if fixed, and still reported in joint_states (Gazebo drops such a "
                         "link, MuJoCo refuses it): " +
                         joined(what));
+        break;
+      case Repair::kEmptyCollision:
+        parts.push_back(count(n, "<collision> of size 0 has", "<collision>s of size 0 have") + " no volume and " +
+                        (n == 1 ? "was" : "were") + " dropped: " + joined(what));
+        break;
+      case Repair::kFixedBase:
+        parts.push_back(what.front());
         break;
       case Repair::kPackageSlashes:
         parts.push_back(count(n, "mesh URI", "mesh URIs") + " with package:/// read as package:// (" +
@@ -186,7 +198,8 @@ core::MassProperties Lumper::part(const urdf::Link& link, const Pose& X_LK) {
     I.setZero();  // rounding around nothing: a point mass, as inertiaForPointMass reads it
   } else if (repair()) {
     try {
-      const core::InertiaRepair fix = core::nearestValidInertia(I, "<inertia>");
+      // No repaired moment below 1e-6 of the largest: a link a body can be.
+      const core::InertiaRepair fix = core::nearestValidInertia(I, "<inertia>", 1e-6);
       if (fix.changed) {
         std::ostringstream text;
         text.precision(3);
@@ -237,10 +250,16 @@ void Lumper::collisions(const urdf::Link& link, const Pose& X_LK, std::vector<co
     shape.name = where;
     bool ok = true;
     auto positive = [&](double x, const std::string& field) {
-      if (ok && (!std::isfinite(x) || !(x > 0.0))) {
+      if (!ok) return;
+      if (x == 0.0 && repair()) {  // a placeholder: no volume, nothing to touch
+        repaired(Repair::kEmptyCollision,
+                 "'" + link.name + "' <collision> " + std::to_string(i) + " (" + field + " 0)");
+        ok = false;
+      } else if (!std::isfinite(x) || !(x > 0.0)) {
         std::ostringstream value;
         value << x;
-        problem(where + ": " + field + " = " + value.str() + ": must be finite and > 0 m");
+        problem(where + ": " + field + " = " + value.str() + ": must be finite and > 0 m" +
+                (x == 0.0 ? " (urdf.repair: true drops such a <collision>)" : ""));
         ok = false;
       }
     };

@@ -43,13 +43,16 @@ struct LinkGroup {
 
 /// What a load repaired, by kind, for the one message it gives.
 enum class Repair {
-  kNoInertial,     ///< a link without <inertial>: a massless frame (the link's name)
-  kMassZero,       ///< mass 0 with an inertia: a massless frame (the link's name)
-  kInertia,        ///< an inertia replaced by the nearest valid one (the link and the figures)
-  kPointMass,      ///< mass without inertia, given a water sphere's (the link and the figures)
-  kHeld,           ///< a moving joint that moves only massless links, held (the joint and where)
-  kMimicDropped,   ///< a <mimic> of no joint, dropped (the joint and the name it gave)
-  kPackageSlashes  ///< package:///NAME read as package://NAME (the URI)
+  kNoInertial,      ///< a link without <inertial>: a massless frame (the link's name)
+  kMassZero,        ///< mass 0 with an inertia: a massless frame (the link's name)
+  kInertia,         ///< an inertia replaced by the nearest valid one (the link and the figures)
+  kPointMass,       ///< mass without inertia, given a water sphere's (the link and the figures)
+  kShapeMass,       ///< a moving link without mass, given its collision shapes' full of water (the link, the mass)
+  kHeld,            ///< a moving joint that moves only massless links, held (the joint and where)
+  kMimicDropped,    ///< a <mimic> of no joint, dropped (the joint and the name it gave)
+  kEmptyCollision,  ///< a <collision> of size 0, dropped (the link, index and field)
+  kFixedBase,       ///< a floating base without mass, fixed to the world (the whole sentence)
+  kPackageSlashes   ///< package:///NAME read as package://NAME (the URI)
 };
 
 class Lumper {

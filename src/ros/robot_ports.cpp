@@ -50,7 +50,7 @@ void checkRobotFrames(const core::Scene& scene, const std::string& world_frame,
   for (const core::SceneRobot& robot : scene.robots()) {
     for (std::size_t k = 0; k < robot.model.links.size(); ++k) {
       const std::string& link = robot.model.links[k].name;
-      if (k == 0 && robot.model.fixed_base) continue;  // `world`: the root robot_state_publisher starts from
+      if (k == 0 && link == "world") continue;  // the root robot_state_publisher starts from
       const std::string who = "robot '" + robot.name + "'";
       if (link == world_frame) {
         throw io::ConfigError(who + ": its link '" + link + "' is named as ~world_frame; tf would publish " + link +
@@ -80,7 +80,9 @@ void RobotPublisher::addRobot(const core::SceneRobot& robot, const std::string& 
   RobotPorts p;
   p.name = robot.name;
   p.prefix = prefix;
-  p.base_frame = robot.model.fixed_base ? "" : robot.model.links[0].name;
+  // The node places every base but the URDF's own `world` (a base fixed
+  // because it has no mass is placed where the start put it).
+  p.base_frame = robot.model.links[0].name == "world" ? "" : robot.model.links[0].name;
   p.joint_states = CountedPublisher::advertise<sensor_msgs::JointState>(nh_, p.prefix + "joint_states", 10);
   p.every = std::max(1LL, std::llround(1.0 / (hz * dt_)));
   robots_.push_back(std::move(p));

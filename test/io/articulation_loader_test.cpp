@@ -174,7 +174,7 @@ TEST(ArticulationLoader, RefusesWhatCannotBeSimulatedNamingTheJointOrLink) {
                                "</robot>";
   // Nothing with mass moves: strictly refused naming the joint; repaired, it is held and nothing moves.
   expectRefusedStrictly(massless, {"joint 'pivot' moves only massless links"});
-  expectRefused(massless, {"robot 'r' has no revolute, continuous or prismatic joint that moves a mass"});
+  expectRefused(massless, {"robot 'r' has no mass anywhere and no <collision> to give it one"});
   const std::string no_inertial = "<robot name='r'>" + link("world", "") +
                                   joint("pivot", "continuous", "world", "rod", "0 0 1", "<axis xyz='0 1 0'/>") +
                                   link("rod", "") + "</robot>";

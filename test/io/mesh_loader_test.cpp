@@ -169,8 +169,21 @@ TEST(UrdfCollision, BadGeometryIsRefusedNamingTheLink) {
       <inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>)";
   expectThrowsWith<io::UrdfError>(
       [&] {
-        io::loadUrdfString(head + R"(<collision><geometry><sphere radius="0"/></geometry></collision></link></robot>)",
-                           "t");
+        io::loadUrdfString(
+            head + R"(<collision><geometry><sphere radius="-0.1"/></geometry></collision></link></robot>)", "t");
+      },
+      {"link 'base' <collision> 0", "sphere radius = -0.1"});
+  // A size of 0 is a placeholder: dropped, and said (strictly, refused).
+  std::vector<std::string> notes;
+  const std::string zero = head + R"(<collision><geometry><sphere radius="0"/></geometry></collision></link></robot>)";
+  EXPECT_TRUE(io::loadUrdfString(zero, "t", "", io::UrdfOptions{true, &notes}).collision.empty());
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("1 <collision> of size 0 has no volume and was dropped: 'base' <collision> 0"),
+            std::string::npos)
+      << notes[0];
+  expectThrowsWith<io::UrdfError>(
+      [&] {
+        io::loadUrdfString(zero, "t", "", io::UrdfOptions{false, nullptr});
       },
       {"link 'base' <collision> 0", "sphere radius = 0"});
   expectThrowsWith<io::UrdfError>(

@@ -204,10 +204,10 @@ TEST(UrdfLoader, EveryProblemOfAUrdfIsNamedInOneRefusal) {
       link("base", inertial(1.0)) +
       "<link name='a'><inertial><mass value='-1'/><inertia ixx='1' iyy='1' izz='1' "
       "ixy='0' ixz='0' iyz='0'/></inertial></link>" +
-      "<link name='b'>" + inertial(1.0) + "<collision><geometry><box size='0 1 1'/></geometry></collision></link>" +
+      "<link name='b'>" + inertial(1.0) + "<collision><geometry><box size='-1 1 1'/></geometry></collision></link>" +
       joint("ja", "fixed", "base", "a", "0 0 0") + joint("jb", "fixed", "base", "b", "0 0 0"));
   expectRefused(xml,
-                {"test.urdf: 2 problems", "link 'a': <mass value> = -1", "link 'b' <collision> 0: box size x = 0"});
+                {"test.urdf: 2 problems", "link 'a': <mass value> = -1", "link 'b' <collision> 0: box size x = -1"});
 }
 
 TEST(UrdfLoader, RefusesNonsenseAndMissingFiles) {

@@ -155,6 +155,62 @@ TEST(PointMassLinks, AreGivenAWaterSpheresInertiaAndSwing) {
   expectThrowsWith<io::UrdfError>([&] { load(head, nullptr, false); }, {"joint 'yaw' moves no mass or inertia"});
 }
 
+TEST(MovingLinksWithoutMass, AreGivenTheirShapesFullOfWater) {
+  // A kinematic description: the rod has a <collision> but no <inertial>.
+  // MuJoCo's compiler gives such a body its geoms' mass at 1000 kg/m³; so
+  // does the loader: a 0.04 × 0.04 × 0.5 m box of water, 0.8 kg.
+  const std::string rod = "<robot name='kinematic'>" + link("world") +
+                          joint("pivot", "continuous", "world", "rod", "0 0 2") +
+                          link("rod",
+                               "<collision><origin xyz='0 0 -0.25'/><geometry><box size='0.04 0.04 0.5'/>"
+                               "</geometry></collision>") +
+                          "</robot>";
+  std::vector<std::string> notes;
+  const ArticulationModel model = load(rod, &notes);
+  const core::MassProperties& m = model.links[1].mass;
+  EXPECT_NEAR(m.mass, 0.8, 1e-12);
+  EXPECT_LT((m.p_FC - Vec3(0, 0, -0.25)).norm(), 1e-15);
+  EXPECT_LT((m.I_C_F - boxInertia(0.8, Vec3(0.02, 0.02, 0.25))).norm(), 1e-15);
+  ASSERT_EQ(notes.size(), 1u);
+  expectContains(notes[0], {"1 moving link without mass was given the mass of its collision shapes filled with water",
+                            "'rod' 0.8 kg"});
+  expectThrowsWith<io::UrdfError>([&] { load(rod, nullptr, false); }, {"link 'rod' has no <inertial>"});
+}
+
+TEST(MasslessFloatingBase, IsFixedToTheWorldAsBulletReadsIt) {
+  // pybullet_data's kuka_iiwa: a base of mass 0 (Bullet's static base)
+  // under a massive arm. It cannot float: it is fixed where the start puts it.
+  const std::string arm =
+      "<robot name='iiwa'><link name='link_0'><inertial><mass value='0'/><inertia ixx='0.05' "
+      "iyy='0.06' izz='0.03' ixy='0' ixz='0' iyz='0'/></inertial></link>" +
+      joint("joint_1", "revolute", "link_0", "link_1", "0 0 0.1575",
+            "<axis xyz='0 0 1'/><limit lower='-2.9' upper='2.9' effort='300' velocity='10'/>") +
+      link("link_1", inertial(4.0, "0 -0.03 0.12")) + "</robot>";
+  std::vector<std::string> notes;
+  const ArticulationModel model = load(arm, &notes);
+  EXPECT_TRUE(model.fixed_base);
+  EXPECT_EQ(model.links[0].name, "link_0");
+  ASSERT_EQ(notes.size(), 1u);
+  expectContains(notes[0], {"the base 'link_0' has no mass and is fixed to the world", "Bullet"});
+  expectThrowsWith<io::UrdfError>([&] { load(arm, nullptr, false); }, {"the base 'link_0' has no mass"});
+}
+
+TEST(NearlySingularInertia, IsRaisedToAMillionthOfItsLargestMoment) {
+  // Valid (a thin rod) but too thin for a body: the least moment is raised.
+  const std::string rod = "<robot name='thin'>" + link("world") +
+                          joint("pivot", "continuous", "world", "rod", "0 0 2") +
+                          link("rod", inertial(1.0, "0 0 -0.25",
+                                               "ixx='1e-13' iyy='0.02' izz='0.02' ixy='0' ixz='0' "
+                                               "iyz='0'")) +
+                          "</robot>";
+  std::vector<std::string> notes;
+  const ArticulationModel model = load(rod, &notes);
+  EXPECT_NEAR(model.links[1].mass.I_C_F(0, 0), 2e-8, 1e-20);
+  EXPECT_EQ(model.links[1].mass.I_C_F(1, 1), 0.02);
+  ASSERT_EQ(notes.size(), 1u);
+  expectContains(notes[0], {"'rod' [1e-13, 0.02, 0.02] -> [2e-08, 0.02, 0.02]"});
+}
+
 TEST(MimicOfNoJoint, IsDroppedAndSaid) {
   const std::string xml = doublePendulum().insert(doublePendulum().find("</joint>", doublePendulum().find("elbow")),
                                                   "<mimic joint='index_q1'/>");

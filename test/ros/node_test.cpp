@@ -419,10 +419,12 @@ TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
   const struct {
     std::string name, urdf, expected;
   } cases[] = {
-      {"no_inertial", head + kCollision + "</link></robot>", "link 'base' has a total mass of 0 kg"},
+      // Neither a mass nor a <collision> to fill with one (with a <collision>
+      // it is given the shape's mass of water: ARepairedUrdfStarts... below).
+      {"no_inertial", head + "</link></robot>", "link 'base' has a total mass of 0 kg"},
       {"zero_mass",
        head + "<inertial><mass value='0'/><inertia ixx='0' iyy='0' izz='0' ixy='0' ixz='0' iyz='0'/></inertial>" +
-           kCollision + "</link></robot>",
+           "</link></robot>",
        "total mass of 0 kg"},
       {"robot_massless_link",  // a robot (a moving joint) is read as one: its only joint moves nothing
        head + "<inertial><mass value='1'/>" + kInertia + "</inertial>" + kCollision +

@@ -49,9 +49,12 @@ struct InertiaRepair {
 /// (docs/physics.md §2.1): same principal axes, the principal moments
 /// projected onto the cone of the triangle inequality (which also makes
 /// them ≥ 0). A tensor validateInertia accepts (allow_zero) comes back
-/// unchanged, bit for bit. Throws std::invalid_argument naming `field` for
-/// a tensor that is not finite.
-InertiaRepair nearestValidInertia(const Mat3& I, const std::string& field);
+/// unchanged, bit for bit, unless a moment is below `least` × the largest:
+/// such a moment is raised to it, in a valid tensor or a repaired one
+/// (raising the smallest keeps the inequality), so that a body can be made
+/// of it (0: the exact projection, which may leave a moment of 0). Throws std::invalid_argument naming `field` for a
+/// tensor that is not finite.
+InertiaRepair nearestValidInertia(const Mat3& I, const std::string& field, double least = 0.0);
 
 /// The inertia about its centre of a solid sphere of water (1000 kg/m³)
 /// of mass m: (2/5) m r², r = (3m / 4πρ)^(1/3). What a part with mass but no
