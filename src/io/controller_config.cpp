@@ -25,61 +25,79 @@ core::PidGains parseGains(const YAML::Node& node, const std::string& path) {
   return g;
 }
 
+/// One controller of the map at `path`: `name` → `body`.
+ControllerEntry parseController(const YAML::Node& name, const YAML::Node& body, const std::string& path) {
+  ControllerEntry c;
+  c.name = text(name, path);
+  c.key = join(path, c.name);
+  if (!body.IsMap()) fail(c.key, "expected a map {type, joint or joints, pid or gains}");
+  // A JointTrajectoryController's keys that belong to its action and state topics (control_msgs,
+  // not in Debian 12): refused by name rather than read halfway.
+  for (const char* key : {"constraints", "state_publish_rate", "action_monitor_rate", "stop_trajectory_duration",
+                          "allow_partial_joints_goal", "velocity_ff"}) {
+    if (body[key]) {
+      fail(join(c.key, key),
+           "is not read here: the trajectory controller runs its command topic only "
+           "(control_msgs' action and state are not in Debian 12); remove it");
+    }
+  }
+  requireKnownKeys(body, c.key, {"type", "joint", "joints", "pid", "gains", "publish_rate"});
+  if (!body["type"]) fail(join(c.key, "type"), "every controller needs a type (as ros_controllers names it)");
+  c.type = text(body["type"], join(c.key, "type"));
+  if (body["joint"] && body["joints"]) fail(c.key, "give joint (one) or joints (a group), not both");
+  if (body["joint"]) c.joints = {text(body["joint"], join(c.key, "joint"))};
+  if (body["joints"]) {
+    c.joint_list = true;
+    const YAML::Node& list = body["joints"];
+    if (!list.IsSequence()) fail(join(c.key, "joints"), "expected a list of joint names");
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      c.joints.push_back(text(list[k], join(c.key, "joints") + "[" + std::to_string(k) + "]"));
+    }
+  }
+  c.gains.assign(c.joints.size(), std::nullopt);
+  if (body["pid"]) {
+    if (c.joints.size() != 1)
+      fail(join(c.key, "pid"), "is for a one-joint controller; a group takes gains: {JOINT: {p, i, d}}");
+    c.gains[0] = parseGains(body["pid"], join(c.key, "pid"));
+  }
+  if (body["gains"]) {
+    const YAML::Node& gains = body["gains"];
+    if (!gains.IsMap()) fail(join(c.key, "gains"), "expected a map from joint name to {p, i, d, i_clamp}");
+    for (const auto& g : gains) {
+      const std::string joint = text(g.first, join(c.key, "gains"));
+      std::size_t k = 0;
+      while (k < c.joints.size() && c.joints[k] != joint) ++k;
+      if (k == c.joints.size()) fail(join(join(c.key, "gains"), joint), "is not one of the controller's joints");
+      c.gains[k] = parseGains(g.second, join(join(c.key, "gains"), joint));
+    }
+  }
+  if (body["publish_rate"]) c.publish_rate = positiveNumber(body["publish_rate"], join(c.key, "publish_rate"));
+  return c;
+}
+
 }  // namespace
 
 std::vector<ControllerEntry> parseControllers(const YAML::Node& node, const std::string& path) {
   if (!node.IsMap()) fail(path, "expected a map from controller name to {type, joint or joints, pid or gains}");
   std::vector<ControllerEntry> out;
+  std::vector<std::string> problems;  // every controller's, said at once
   for (const auto& item : node) {
-    ControllerEntry c;
-    c.name = text(item.first, path);
-    c.key = join(path, c.name);
-    const YAML::Node& body = item.second;
-    if (!body.IsMap()) fail(c.key, "expected a map {type, joint or joints, pid or gains}");
-    // A JointTrajectoryController's keys that belong to its action and state topics (control_msgs,
-    // not in Debian 12): refused by name rather than read halfway.
-    for (const char* key : {"constraints", "state_publish_rate", "action_monitor_rate", "stop_trajectory_duration",
-                            "allow_partial_joints_goal", "velocity_ff"}) {
-      if (body[key]) {
-        fail(join(c.key, key),
-             "is not read here: the trajectory controller runs its command topic only "
-             "(control_msgs' action and state are not in Debian 12); remove it");
-      }
+    try {
+      out.push_back(parseController(item.first, item.second, path));
+    } catch (const ConfigError& e) {
+      problems.emplace_back(e.what());
     }
-    requireKnownKeys(body, c.key, {"type", "joint", "joints", "pid", "gains", "publish_rate"});
-    if (!body["type"]) fail(join(c.key, "type"), "every controller needs a type (as ros_controllers names it)");
-    c.type = text(body["type"], join(c.key, "type"));
-    if (body["joint"] && body["joints"]) fail(c.key, "give joint (one) or joints (a group), not both");
-    if (body["joint"]) c.joints = {text(body["joint"], join(c.key, "joint"))};
-    if (body["joints"]) {
-      c.joint_list = true;
-      const YAML::Node& list = body["joints"];
-      if (!list.IsSequence()) fail(join(c.key, "joints"), "expected a list of joint names");
-      for (std::size_t k = 0; k < list.size(); ++k) {
-        c.joints.push_back(text(list[k], join(c.key, "joints") + "[" + std::to_string(k) + "]"));
-      }
-    }
-    c.gains.assign(c.joints.size(), std::nullopt);
-    if (body["pid"]) {
-      if (c.joints.size() != 1)
-        fail(join(c.key, "pid"), "is for a one-joint controller; a group takes gains: {JOINT: {p, i, d}}");
-      c.gains[0] = parseGains(body["pid"], join(c.key, "pid"));
-    }
-    if (body["gains"]) {
-      const YAML::Node& gains = body["gains"];
-      if (!gains.IsMap()) fail(join(c.key, "gains"), "expected a map from joint name to {p, i, d, i_clamp}");
-      for (const auto& g : gains) {
-        const std::string joint = text(g.first, join(c.key, "gains"));
-        std::size_t k = 0;
-        while (k < c.joints.size() && c.joints[k] != joint) ++k;
-        if (k == c.joints.size()) fail(join(join(c.key, "gains"), joint), "is not one of the controller's joints");
-        c.gains[k] = parseGains(g.second, join(join(c.key, "gains"), joint));
-      }
-    }
-    if (body["publish_rate"]) c.publish_rate = positiveNumber(body["publish_rate"], join(c.key, "publish_rate"));
-    out.push_back(std::move(c));
   }
+  throwProblems(problems);
   return out;
+}
+
+void throwProblems(const std::vector<std::string>& problems) {
+  if (problems.empty()) return;
+  if (problems.size() == 1) throw ConfigError(problems.front());
+  std::string all = std::to_string(problems.size()) + " problems: ";
+  for (std::size_t i = 0; i < problems.size(); ++i) all += (i == 0 ? "" : "; ") + problems[i];
+  throw ConfigError(all);
 }
 
 void applyPidGains(const YAML::Node& node, const std::string& path, std::vector<ControllerEntry>& entries) {

@@ -14,9 +14,13 @@ namespace rigid_body_sim::io {
 
 /// The map at `path`: controller name → {type, joint | joints, pid |
 /// gains, publish_rate}. Every key is read or refused (ConfigError naming
-/// it); the type and the joints are checked against the robot later
-/// (io/controllers.h).
+/// it, every controller's problems in one); the type and the joints are
+/// checked against the robot later (io/controllers.h).
 std::vector<ControllerEntry> parseControllers(const YAML::Node& node, const std::string& path);
+
+/// Throws one ConfigError saying every one of `problems` ("N problems: a;
+/// b"), when there is one.
+void throwProblems(const std::vector<std::string>& problems);
 
 /// gazebo_ros_control's map at `path` ({pid_gains: {JOINT: {p, i, d,
 /// i_clamp}}}): each joint's gains go to the position_controllers or

@@ -3,6 +3,8 @@
 
 #include <stdexcept>
 
+#include "controller_config.h"
+
 namespace rigid_body_sim::io {
 namespace {
 
@@ -52,49 +54,66 @@ std::vector<std::string> controllerTypes() {
   return out;
 }
 
+namespace {
+
+/// One controller of `entries` for `model`, into `out` and `specs`; each
+/// refusal a ConfigError naming its key.
+void addController(const ControllerEntry& e, const core::ArticulationModel& model, RobotControls& out,
+                   std::vector<core::JointControllerSpec>& specs) {
+  const std::string type_key = e.key + ".type";
+  if (e.type == kJointState) {
+    if (!e.joints.empty()) refuse(e.key, "a JointStateController takes no joints (it reports them all)");
+    out.joint_state_rate = e.publish_rate.value_or(50.0);  // ros_controllers' examples' rate
+    return;
+  }
+  const TypeInfo* info = nullptr;
+  for (const TypeInfo& t : kTypes) {
+    if (e.type == t.name) info = &t;
+  }
+  if (info == nullptr) {
+    std::string known;
+    for (const std::string& t : controllerTypes()) known += (known.empty() ? "" : ", ") + t;
+    refuse(type_key, "'" + e.type + "' is not a controller type this project runs; the types: " + known);
+  }
+  if (e.publish_rate) refuse(e.key + ".publish_rate", "is a JointStateController's key");
+  if (e.joints.empty() || info->group != e.joint_list) {
+    refuse(e.key, "'" + e.type + "' takes " + (info->group ? "joints: [NAME, ...]" : "joint: NAME"));
+  }
+  core::JointControllerSpec spec;
+  spec.name = e.name;
+  spec.mode = info->mode;
+  for (std::size_t k = 0; k < e.joints.size(); ++k) {
+    const std::string key = e.key + (info->group ? ".joints[" + std::to_string(k) + "]" : ".joint");
+    spec.joints.push_back(jointIndex(model, e.joints[k], key));
+    if (info->mode == core::ControlMode::kEffort) continue;
+    if (!e.gains[k]) {
+      const bool interface_pid =
+          e.type.rfind("position_controllers/", 0) == 0 || e.type.rfind("velocity_controllers/", 0) == 0;
+      refuse(e.key + (info->group ? ".gains." + e.joints[k] : ".pid"),
+             "'" + e.type + "' acts here through a PID on effort (never by setting the joint, as Gazebo's " +
+                 "position interface does): give its gains {p, i, d, i_clamp}" +
+                 (interface_pid ? " (here, or as gazebo_ros_control: {pid_gains: {" + e.joints[k] + ": ...}})" : ""));
+    }
+    spec.gains.push_back(*e.gains[k]);
+  }
+  specs.push_back(std::move(spec));
+  out.group.push_back(info->group ? 1 : 0);
+}
+
+}  // namespace
+
 RobotControls buildControls(const std::vector<ControllerEntry>& entries, const core::ArticulationModel& model) {
   RobotControls out;
   std::vector<core::JointControllerSpec> specs;
+  std::vector<std::string> problems;  // every controller's, said at once
   for (const ControllerEntry& e : entries) {
-    const std::string type_key = e.key + ".type";
-    if (e.type == kJointState) {
-      if (!e.joints.empty()) refuse(e.key, "a JointStateController takes no joints (it reports them all)");
-      out.joint_state_rate = e.publish_rate.value_or(50.0);  // ros_controllers' examples' rate
-      continue;
+    try {
+      addController(e, model, out, specs);
+    } catch (const ConfigError& error) {
+      problems.emplace_back(error.what());
     }
-    const TypeInfo* info = nullptr;
-    for (const TypeInfo& t : kTypes) {
-      if (e.type == t.name) info = &t;
-    }
-    if (info == nullptr) {
-      std::string known;
-      for (const std::string& t : controllerTypes()) known += (known.empty() ? "" : ", ") + t;
-      refuse(type_key, "'" + e.type + "' is not a controller type this project runs; the types: " + known);
-    }
-    if (e.publish_rate) refuse(e.key + ".publish_rate", "is a JointStateController's key");
-    if (e.joints.empty() || info->group != e.joint_list) {
-      refuse(e.key, "'" + e.type + "' takes " + (info->group ? "joints: [NAME, ...]" : "joint: NAME"));
-    }
-    core::JointControllerSpec spec;
-    spec.name = e.name;
-    spec.mode = info->mode;
-    for (std::size_t k = 0; k < e.joints.size(); ++k) {
-      const std::string key = e.key + (info->group ? ".joints[" + std::to_string(k) + "]" : ".joint");
-      spec.joints.push_back(jointIndex(model, e.joints[k], key));
-      if (info->mode == core::ControlMode::kEffort) continue;
-      if (!e.gains[k]) {
-        const bool interface_pid =
-            e.type.rfind("position_controllers/", 0) == 0 || e.type.rfind("velocity_controllers/", 0) == 0;
-        refuse(e.key + (info->group ? ".gains." + e.joints[k] : ".pid"),
-               "'" + e.type + "' acts here through a PID on effort (never by setting the joint, as Gazebo's " +
-                   "position interface does): give its gains {p, i, d, i_clamp}" +
-                   (interface_pid ? " (here, or as gazebo_ros_control: {pid_gains: {" + e.joints[k] + ": ...}})" : ""));
-      }
-      spec.gains.push_back(*e.gains[k]);
-    }
-    specs.push_back(std::move(spec));
-    out.group.push_back(info->group ? 1 : 0);
   }
+  throwProblems(problems);
   try {
     out.controllers = core::JointControllers(model, std::move(specs));
   } catch (const std::invalid_argument& err) {  // its message names the controller

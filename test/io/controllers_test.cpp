@@ -182,6 +182,25 @@ TEST(Controllers, RefusalsNameTheKey) {
   }
 }
 
+TEST(Controllers, EveryControllersProblemIsNamedInOneRefusal) {
+  // Two controllers wrong in their YAML (an unknown key, a negative gain),
+  // and, once they are read, two wrong for the robot (an unknown joint, no
+  // gains): each pair in one refusal, so a user fixes them in one launch.
+  const std::string parse = refusal(
+      "controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow, antiwindup: true},"
+      " b: {type: effort_controllers/JointPositionController, joint: shoulder, pid: {p: -1}}}");
+  for (const char* part : {"2 problems", "antiwindup", "'controllers.b.pid.p'"}) {
+    EXPECT_NE(parse.find(part), std::string::npos) << part << " not in: " << parse;
+  }
+  const std::string build = refusal(
+      "controllers: {a: {type: effort_controllers/JointEffortController, joint: wrist},"
+      " b: {type: position_controllers/JointPositionController, joint: shoulder}}");
+  for (const char* part : {"2 problems", "'controllers.a.joint': robot 'arm2' has no moving joint 'wrist'",
+                           "'controllers.b.pid': 'position_controllers/JointPositionController' acts here"}) {
+    EXPECT_NE(build.find(part), std::string::npos) << part << " not in: " << build;
+  }
+}
+
 TEST(Controllers, ABodyTakesNoneAndARobotEntryItsOwn) {
   const std::string box = kUrdf + "box.urdf", arm = kUrdf + "arm2.urdf";
   try {
