@@ -28,7 +28,7 @@ void SimNode::stepOnce() {
   }
   commands_->loadsFor(sim_, t, robot_loads_);  // the robots' controllers, from the state before the step
   sim_.step(loads_, robot_loads_);
-  if (!workspace_.speed_limited.empty() || !workspace_.diverged.empty()) reportStep();
+  reportStep();
   ++steps_;
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
   sampleSensors();
@@ -54,6 +54,26 @@ void SimNode::publishBodies() {
 }
 
 void SimNode::reportStep() {
+  // Robots, as bodies (physics §11.7): a runaway held by the limits, a step
+  // the guard undid.
+  const core::SceneWorkspace& scene = sim_.scene_workspace;
+  for (std::size_t r = 0; r < scene.robot_diverged.size() && r < sim_.scene.robots().size(); ++r) {
+    const std::string& name = sim_.scene.robots()[r].name;
+    if (scene.robot_diverged[r]) {
+      sim_.joint_efforts.clear(r, -1);
+      ROS_WARN(
+          "sim_node: robot '%s' stopped being finite at t = %s; it is back where the step began, at rest, and its "
+          "timed joint efforts are cleared",
+          name.c_str(), now().c_str());
+    }
+    if (r < scene.robots.size() && scene.robots[r].speed_limited && robots_speed_limited_.insert(name).second) {
+      ROS_WARN(
+          "sim_node: robot '%s' reached the speed limits at t = %s (limits.max_linear_speed %g m/s, "
+          "limits.max_angular_speed %g rad/s): its joints and base are held to them (said once per robot)",
+          name.c_str(), now().c_str(), model_.limits().max_linear_speed, model_.limits().max_angular_speed);
+    }
+  }
+  if (workspace_.speed_limited.empty() && workspace_.diverged.empty()) return;
   for (const core::Divergence& d : workspace_.diverged) {
     // Its loads made it diverge, or will again: they go with it.
     schedule_.clear(d.body);

@@ -491,6 +491,29 @@ TEST_F(BadUrdf, ARepairedUrdfStartsAndSaysWhatWasRepairedOnce) {
   }
 }
 
+TEST_F(BadUrdf, ARobotHeldByTheSpeedLimitsIsSaidOnce) {
+  // The rod pendulum released from 1.5 rad swings at up to 7.7 rad/s
+  // (ω² = 2 m g l_c (1 − cos q₀) / I, I = 1/12 + 1/16 kg m² about the
+  // pivot); with limits.max_angular_speed 5 rad/s the limits hold it, as a
+  // body's, and the node says so once (it said nothing of robots before).
+  // urdf/pendulum.urdf: a 0.5 m, 1 kg rod hanging from a pivot 1 m up, about y.
+  const std::string pendulum =
+      "<robot name='pendulum'><link name='world'/><joint name='pivot' type='continuous'><parent link='world'/>"
+      "<child link='rod'/><origin xyz='0 0 1'/><axis xyz='0 1 0'/></joint><link name='rod'><inertial>"
+      "<origin xyz='0 0 -0.25'/><mass value='1'/><inertia ixx='0.0208333' iyy='0.0208333' izz='1e-5' ixy='0' "
+      "ixz='0' iyz='0'/></inertial></link></robot>";
+  ros::param::set("/limited/sim_node/limits/max_angular_speed", 5.0);
+  ros::param::set("/limited/sim_node/initial/joint_positions/pivot", 1.5);
+  ros::param::set("/limited/sim_node/realtime_factor", 0.0);  // as fast as it goes
+  const auto [code, out] = runNode("/limited", pendulum, "", 8);
+  EXPECT_EQ(code, 124) << out;  // still running when the timeout stopped it
+  EXPECT_EQ(out.find("FATAL"), std::string::npos) << out;
+  const std::string said = "robot 'pendulum' reached the speed limits";
+  const std::size_t first = out.find(said);
+  ASSERT_NE(first, std::string::npos) << out;
+  EXPECT_EQ(out.find(said, first + 1), std::string::npos) << "said twice:\n" << out;
+}
+
 TEST_F(BadUrdf, BadDevicesStopTheNodeNamingTheKey) {
   // A body's imu, odom_noise and cmd_vel (issue 15): a zero rate, a negative
   // sigma, a sensor frame that is the body's own, an unknown link to mount

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -74,8 +75,9 @@ class SimNode {
   /// stamp() for messages: "S.NNNNNNNNN s".
   std::string now() const { return time_.text(); }
   void stepOnce();
-  /// Says what the step reported: bodies the speed limits held (once each),
-  /// bodies the guard put back (their wrenches cleared).
+  /// Says what the step reported: bodies and robots the speed limits held
+  /// (once each), bodies the guard put back (their wrenches cleared) and
+  /// robots it put back (their timed joint efforts cleared).
   void reportStep();
   /// tf and odometry now (StatePublisher::state), then the markers if due;
   /// and every robot's joint states.
@@ -166,6 +168,7 @@ class SimNode {
   const double dt_ = model_.dt();                           ///< for the spawn thread (no edit changes it)
   const core::SpeedLimits spawn_limits_ = model_.limits();  ///< for the spawn thread (no edit changes them)
 
+  std::set<std::string> robots_speed_limited_;  ///< the robots reportStep has said so of
   bool paused_ = false;
   bool use_sim_time_ = false;
   NodeTime time_;                   ///< the steps since start and the one clock
