@@ -33,6 +33,13 @@ sensor_msgs::JointState jointStateMessage(const core::ArticulationModel& robot, 
   return msg;
 }
 
+std::string placedBase(const core::ArticulationModel& robot) {
+  // Every base but the URDF's own `world`, where robot_state_publisher
+  // roots the tree (a base fixed because it has no mass is placed where the
+  // start put it: nobody else puts it on tf).
+  return robot.links[0].name == "world" ? "" : robot.links[0].name;
+}
+
 geometry_msgs::TransformStamped baseTransform(const core::ArticulationState& state, const RobotPorts& ports,
                                               const std::string& world_frame, const ros::Time& stamp) {
   geometry_msgs::TransformStamped tf;
@@ -80,9 +87,7 @@ void RobotPublisher::addRobot(const core::SceneRobot& robot, const std::string& 
   RobotPorts p;
   p.name = robot.name;
   p.prefix = prefix;
-  // The node places every base but the URDF's own `world` (a base fixed
-  // because it has no mass is placed where the start put it).
-  p.base_frame = robot.model.links[0].name == "world" ? "" : robot.model.links[0].name;
+  p.base_frame = placedBase(robot.model);
   p.joint_states = CountedPublisher::advertise<sensor_msgs::JointState>(nh_, p.prefix + "joint_states", 10);
   p.every = std::max(1LL, std::llround(1.0 / (hz * dt_)));
   robots_.push_back(std::move(p));

@@ -130,6 +130,23 @@ TEST(StateMessages, JointStatesCarryAHeldJointAtItsPosition) {
   EXPECT_EQ(msg.header.stamp, ros::Time(3.0));
 }
 
+TEST(StateMessages, EveryBaseButTheWorldIsPlacedOnTf) {
+  // A floating base, a root named `world`, and a base fixed because it has
+  // no mass (pybullet_data's arms): the last is placed by the node too, or
+  // no one would put it on tf.
+  const std::string urdf = std::string(RBS_SOURCE_DIR) + "/urdf/";
+  EXPECT_EQ(placedBase(io::loadArticulationFile(urdf + "diff_drive.urdf")), "base_link");
+  EXPECT_EQ(placedBase(io::loadArticulationFile(urdf + "pendulum.urdf")), "");
+  const core::ArticulationModel fixed = io::loadArticulationString(
+      "<robot name='iiwa'><link name='link_0'><inertial><mass value='0'/><inertia ixx='0.05' iyy='0.06' izz='0.03' "
+      "ixy='0' ixz='0' iyz='0'/></inertial></link><joint name='joint_1' type='continuous'><parent link='link_0'/>"
+      "<child link='link_1'/><axis xyz='0 0 1'/></joint><link name='link_1'><inertial><origin xyz='0 -0.03 0.12'/>"
+      "<mass value='4'/><inertia ixx='0.1' iyy='0.09' izz='0.02' ixy='0' ixz='0' iyz='0'/></inertial></link></robot>",
+      "iiwa.urdf");
+  ASSERT_TRUE(fixed.fixed_base);
+  EXPECT_EQ(placedBase(fixed), "link_0");
+}
+
 TEST(StateMessages, OdometryCarriesTheReportsCovariancesOrTheExactOnes) {
   core::OdomReport r;
   r.v_L = Vec3(0.5, 0, 0);

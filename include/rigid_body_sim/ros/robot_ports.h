@@ -39,6 +39,10 @@ struct RobotPorts {
 sensor_msgs::JointState jointStateMessage(const core::ArticulationModel& robot, const core::ArticulationState& state,
                                           const Eigen::VectorXd& effort, const ros::Time& stamp);
 
+/// The base frame the node puts on tf for `robot` (world_frame -> it):
+/// its base link's, or "" for a URDF rooted at `world`.
+std::string placedBase(const core::ArticulationModel& robot);
+
 /// The transform `world_frame` -> `ports.base_frame` of `state`'s base.
 geometry_msgs::TransformStamped baseTransform(const core::ArticulationState& state, const RobotPorts& ports,
                                               const std::string& world_frame, const ros::Time& stamp);
