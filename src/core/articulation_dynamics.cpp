@@ -8,18 +8,6 @@ namespace rigid_body_sim::core {
 
 namespace {
 
-/// The child link's placement in its parent at joint position q (§11.2):
-/// the joint frame, then a rotation about or a slide along the axis.
-Placement jointPlacement(const ArticulatedLink& link, double q) {
-  Placement X = Placement::of(link.X_PJ);
-  if (link.type == JointType::Prismatic) {
-    X.p_PC += X.R_PC * (q * link.axis_J);
-  } else {
-    X.R_PC = X.R_PC * Eigen::AngleAxisd(q, link.axis_J).toRotationMatrix();
-  }
-  return X;
-}
-
 Vec6 motionAxis(const ArticulatedLink& link) {
   Vec6 S = Vec6::Zero();
   if (link.type == JointType::Prismatic) {
@@ -31,6 +19,16 @@ Vec6 motionAxis(const ArticulatedLink& link) {
 }
 
 }  // namespace
+
+Placement jointPlacement(const ArticulatedLink& link, double q) {
+  Placement X = Placement::of(link.X_PJ);
+  if (link.type == JointType::Prismatic) {
+    X.p_PC += X.R_PC * (q * link.axis_J);
+  } else {
+    X.R_PC = X.R_PC * Eigen::AngleAxisd(q, link.axis_J).toRotationMatrix();
+  }
+  return X;
+}
 
 ArticulationKinematics kinematics(const ArticulationModel& model, const ArticulationState& state) {
   ArticulationKinematics kin;

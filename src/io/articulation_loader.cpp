@@ -10,7 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "rigid_body_sim/core/shape_mass.h"
+#include "rigid_body_sim/core/articulation_dynamics.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "urdf_lumper.h"
 
@@ -80,13 +80,8 @@ void readJoint(detail::Lumper& lumper, const detail::MovingJoint& moving, Articu
 
 /// The child link's frame in its parent's at joint position q.
 core::Pose jointPose(const ArticulatedLink& link, double q) {
-  core::Pose motion;
-  if (link.type == JointType::Prismatic) {
-    motion.translation = q * link.axis_J;
-  } else {
-    motion.rotation = core::Quat(Eigen::AngleAxisd(q, link.axis_J));
-  }
-  return link.X_PJ * motion;
+  const core::Placement X = core::jointPlacement(link, q);
+  return {core::Quat(X.R_PC).normalized(), X.p_PC};
 }
 
 /// A moving link with no mass but collision shapes is given the mass of
@@ -96,13 +91,7 @@ core::Pose jointPose(const ArticulatedLink& link, double q) {
 void massFromShapes(core::ArticulationModel& model, detail::Lumper& lumper) {
   for (std::size_t i = 0; i < model.links.size(); ++i) {
     ArticulatedLink& link = model.links[i];
-    const bool moves = i > 0 || !model.fixed_base;
-    if (!moves || link.mass.mass != 0.0 || link.collision.empty() || !lumper.repair()) continue;
-    link.mass = core::shapesMassProperties(link.collision, core::kWaterDensity);
-    std::ostringstream text;
-    text.precision(3);
-    text << "'" << link.name << "' " << link.mass.mass << " kg";
-    lumper.repaired(detail::Repair::kShapeMass, text.str());
+    if (i > 0 || !model.fixed_base) lumper.massFromShapes(link.name, link.collision, link.mass);
   }
 }
 

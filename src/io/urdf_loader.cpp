@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "rigid_body_sim/core/inertia.h"
-#include "rigid_body_sim/core/shape_mass.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/orientation.h"
@@ -40,14 +39,7 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
   detail::LinkGroup group;
   lumper.collect(*root, group, /*allow_moving=*/false);
   core::MassProperties total = core::combine(group.parts);
-  if (total.mass == 0.0 && !group.shapes.empty() && lumper.repair()) {
-    // No mass anywhere but shapes: their mass, filled with water (§2.1).
-    total = core::shapesMassProperties(group.shapes, core::kWaterDensity);
-    std::ostringstream text;
-    text.precision(3);
-    text << "'" << root->name << "' " << total.mass << " kg";
-    lumper.repaired(detail::Repair::kShapeMass, text.str());
-  }
+  lumper.massFromShapes(root->name, group.shapes, total);  // no mass anywhere but shapes: theirs
   lumper.inertiaForPointMass(root->name, total);
   if (!(total.mass > 0.0)) lumper.problem("the body rooted at link '" + root->name + "' has a total mass of 0 kg");
   lumper.finish();

@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "rigid_body_sim/core/shape_mass.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/orientation.h"
@@ -235,6 +236,16 @@ void Lumper::inertiaForPointMass(const std::string& name, core::MassProperties& 
   text.precision(3);
   text << "'" << name << "' " << mass.mass << " kg: " << mass.I_C_F(0, 0) << " kg*m^2 about each axis";
   repaired(Repair::kPointMass, text.str());
+}
+
+void Lumper::massFromShapes(const std::string& name, const std::vector<core::CollisionShape>& shapes,
+                            core::MassProperties& mass) {
+  if (!repair() || mass.mass != 0.0 || shapes.empty()) return;
+  mass = core::shapesMassProperties(shapes, core::kWaterDensity);
+  std::ostringstream text;
+  text.precision(3);
+  text << "'" << name << "' " << mass.mass << " kg";
+  repaired(Repair::kShapeMass, text.str());
 }
 
 void Lumper::collisions(const urdf::Link& link, const Pose& X_LK, std::vector<core::CollisionShape>& out) {

@@ -92,6 +92,11 @@ class Lumper {
   /// (core::waterSphereInertia), when repairing.
   void inertiaForPointMass(const std::string& name, core::MassProperties& mass);
 
+  /// A rigid group `name` without mass but with `shapes` is given their
+  /// mass filled with water (core::shapesMassProperties), when repairing.
+  void massFromShapes(const std::string& name, const std::vector<core::CollisionShape>& shapes,
+                      core::MassProperties& mass);
+
   /// The link's <collision> elements as shapes posed in L.
   void collisions(const urdf::Link& link, const core::Pose& X_LK, std::vector<core::CollisionShape>& out);
 

@@ -66,6 +66,11 @@ struct SceneRun {
   const BodyState& body(int i) const { return state.bodies.bodies[i]; }
 };
 
+/// Bit for bit the same pose and velocity.
+bool sameBits(const BodyState& a, const BodyState& b) {
+  return a.p_WB == b.p_WB && a.v_WB == b.v_WB && a.q_WB.coeffs() == b.q_WB.coeffs() && a.w_B == b.w_B;
+}
+
 LinkState at(const Vec3& p) {
   LinkState X;
   X.p_WL = p;
@@ -303,8 +308,7 @@ TEST(Scene, FreeIslandsStepAsOnTheirOwn) {
     step(alone, state, {}, &ws);
     const BodyState& a = run.body(0);
     const BodyState& b = state.bodies[0];
-    ASSERT_TRUE(a.p_WB == b.p_WB && a.v_WB == b.v_WB && a.q_WB.coeffs() == b.q_WB.coeffs() && a.w_B == b.w_B)
-        << "step " << i;
+    ASSERT_TRUE(sameBits(a, b)) << "step " << i;
   }
   EXPECT_TRUE(state.bodies[0].asleep);  // it came to rest and slept, in both
   EXPECT_TRUE(run.body(0).asleep);
@@ -350,8 +354,8 @@ TEST(Scene, OverlappingRobotsStayBoundedAndMoveNothingTheyDoNotTouch) {
     step(alone, state, {}, &ws);
     const BodyState& a = run.body(0);
     const BodyState& b = state.bodies[0];
-    ASSERT_TRUE(a.p_WB == b.p_WB && a.v_WB == b.v_WB && a.q_WB.coeffs() == b.q_WB.coeffs() && a.w_B == b.w_B)
-        << "step " << i << ": the box at " << a.p_WB.transpose() << ", alone at " << b.p_WB.transpose();
+    ASSERT_TRUE(sameBits(a, b)) << "step " << i << ": the box at " << a.p_WB.transpose() << ", alone at "
+                                << b.p_WB.transpose();
     for (const ArticulationState& r : run.state.robots) {
       ASSERT_TRUE(r.q.allFinite()) << "step " << i;
       ASSERT_LE(r.v.cwiseAbs().maxCoeff(), limits.max_angular_speed) << "step " << i;

@@ -20,6 +20,10 @@ struct ArticulationKinematics {
   std::vector<SpatialInertia> I_L;  ///< each link's inertia about its origin, its axes
 };
 
+/// The child link's placement in its parent at joint position q (§11.2):
+/// the joint frame, then a rotation about or a slide along the axis.
+Placement jointPlacement(const ArticulatedLink& link, double q);
+
 /// Placements, twists and joint axes for a state.
 ArticulationKinematics kinematics(const ArticulationModel& model, const ArticulationState& state);
 /// The same into `kin`, reusing its memory.
