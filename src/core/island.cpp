@@ -31,7 +31,7 @@ void groupContactsByIsland(const Model& model, const State& state, Workspace& ws
   const std::vector<int>& root = sc.island_root;
   std::vector<int>& next = sc.island_of;  // per root: where its island's next contact goes
   next.assign(model.bodyCount(), 0);
-  for (const Contact& c : ws.contacts) ++next[root[c.body]];
+  for (const Contact& c : ws.contacts) ++next[islandOf(state, root, c)];
   sc.island_starts.clear();
   int at = 0;
   for (int& slot : next) {
@@ -43,7 +43,7 @@ void groupContactsByIsland(const Model& model, const State& state, Workspace& ws
   sc.island_starts.push_back(at);
   sc.island_contacts.resize(ws.contacts.size());
   for (std::size_t k = 0; k < ws.contacts.size(); ++k) {
-    sc.island_contacts[next[root[ws.contacts[k].body]]++] = static_cast<int>(k);
+    sc.island_contacts[next[islandOf(state, root, ws.contacts[k])]++] = static_cast<int>(k);
   }
 }
 

@@ -17,6 +17,14 @@ namespace rigid_body_sim::core {
 /// body index of its island.
 void findIslands(const Model& model, const State& state, Workspace& ws);
 
+/// The island of a contact, once findIslands has run: its awake body's (a
+/// sleeper's own points against an awake body make contacts whose `body` is
+/// the sleeper; the contact moves only the awake one).
+inline int islandOf(const State& state, const std::vector<int>& island_root, const Contact& c) {
+  const bool sleeper_first = c.other >= 0 && state.bodies[c.body].asleep;
+  return island_root[sleeper_first ? c.other : c.body];
+}
+
 /// findIslands, then the contacts sorted into islands: the scratch's
 /// island_contacts (contact indices, island by island in root order, each
 /// island in contact order) and island_starts (offsets, one past the end last).

@@ -1,6 +1,7 @@
 // The position correction after the impulse solve (docs/physics.md §5.8):
 // nonlinear Gauss-Seidel on positions, as Box2D does.
 #include "box_pair.h"
+#include "island.h"
 #include "rigid_body_sim/core/contact.h"
 #include "round_contact.h"
 #include "scratch.h"
@@ -21,13 +22,14 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
   needs.assign(model.bodyCount(), 0);
   bool any = false;
   for (const Contact& c : ws.contacts) {
-    if (c.predicted_separation <= -model.solver().correction_trigger * slop) needs[sc.island_root[c.body]] = any = true;
+    if (c.predicted_separation <= -model.solver().correction_trigger * slop)
+      needs[islandOf(state, sc.island_root, c)] = any = true;
   }
   if (!any) return;
   std::vector<int>& todo = sc.correct_contacts;  // in contact order
   todo.clear();
   for (std::size_t k = 0; k < ws.contacts.size(); ++k) {
-    if (needs[sc.island_root[ws.contacts[k].body]]) todo.push_back(static_cast<int>(k));
+    if (needs[islandOf(state, sc.island_root, ws.contacts[k])]) todo.push_back(static_cast<int>(k));
   }
   for (int sweep = 0; sweep < model.solver().position_iterations; ++sweep) {
     double deepest = 0.0;

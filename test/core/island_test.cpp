@@ -61,5 +61,22 @@ TEST(Islands, ContactsAreGroupedIslandByIslandInContactOrder) {
   EXPECT_EQ(ws.scratch->island_starts, (std::vector<int>{0, 2, 4}));
 }
 
+// A sleeper's own points against an awake body's solid make contacts whose
+// `body` is the sleeper. Such a contact moves only the awake body, so it
+// belongs to that body's island: filed under the sleeper, it formed an island
+// of its own, which another core could solve while this one solved the awake
+// body's other contacts, both changing its velocity (a race, and results
+// that depended on the thread count).
+TEST(Islands, AContactOfASleeperGoesWithTheAwakeBodyItTouches) {
+  const core::Model model = boxes(3);
+  core::State s = core::restState(model);
+  s.bodies[2].asleep = true;
+  core::Workspace ws;
+  ws.contacts = {contact(0, -1, 0), contact(1, -1, 0), contact(2, 0)};
+  core::groupContactsByIsland(model, s, ws);
+  EXPECT_EQ(ws.scratch->island_contacts, (std::vector<int>{0, 2, 1}));
+  EXPECT_EQ(ws.scratch->island_starts, (std::vector<int>{0, 2, 3}));
+}
+
 }  // namespace
 }  // namespace rigid_body_sim::test
