@@ -13,6 +13,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/contact_regions.cpp
   ${RBS_SOURCE_ROOT}/src/core/contact_report.cpp
   ${RBS_SOURCE_ROOT}/src/core/contact_solver.cpp
+  ${RBS_SOURCE_ROOT}/src/core/stiff_body.cpp
   ${RBS_SOURCE_ROOT}/src/core/detection.cpp
   ${RBS_SOURCE_ROOT}/src/core/diagnostics.cpp
   ${RBS_SOURCE_ROOT}/src/core/fixed_point.cpp

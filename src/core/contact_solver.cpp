@@ -10,6 +10,7 @@
 #include "rigid_body_sim/core/contact.h"
 #include "scratch.h"
 #include "solver_contact.h"
+#include "stiff_body.h"
 
 namespace rigid_body_sim::core {
 namespace {
@@ -166,9 +167,14 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
     }
   }
   // Then projected Gauss-Seidel over every contact: no penetration, Coulomb
-  // friction; a speculative contact may close its gap, no more.
+  // friction; a speculative contact may close its gap, no more. A stiff
+  // body alone against the ground (a heavy body with a small inertia) has
+  // its normal impulses solved together before each sweep (stiff_body.h).
+  const int stiff = detail::stiffBody(settings, sc.inverse_inertias, begin, end);
+  if (stiff >= 0) sc.stiff[stiff] = 1;      // the island's own body: no other part writes it
   double recent[4] = {0.0, 0.0, 0.0, 0.0};  // the last four sweeps' largest changes
   for (int sweep = 0; sweep < cs.iterations; ++sweep) {
+    if (stiff >= 0) detail::solveStiffBodyNormals(settings, sc.inverse_inertias[stiff], stiff, begin, end, vel);
     double largest = 0.0;
     for (SolverContact* c = begin; c != end; ++c) {
       largest = std::max(largest, sweepContact(settings, *c, c->normal_impulse, c->tangent_impulse,
@@ -216,6 +222,7 @@ void solveIsland(const Model& model, int first, int last, double h, const State&
     sc.pressed_pairs.clear();
   }
   groupContactsByIsland(model, state, ws);
+  sc.stiff.assign(model.bodyCount(), 0);
   const int islands = static_cast<int>(sc.island_starts.size()) - 1;
   const int parts = islands > 1 ? detail::partsFor(ws, ws.contacts.size()) : 1;
   sc.solver_contacts.resize(ws.contacts.size());

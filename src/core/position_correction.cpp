@@ -5,6 +5,7 @@
 #include "rigid_body_sim/core/contact.h"
 #include "round_contact.h"
 #include "scratch.h"
+#include "stiff_body.h"
 
 namespace rigid_body_sim::core {
 
@@ -30,6 +31,20 @@ void correctPositions(const Model& model, State& state, Workspace& ws) {
   todo.clear();
   for (std::size_t k = 0; k < ws.contacts.size(); ++k) {
     if (needs[islandOf(state, sc.island_root, ws.contacts[k])]) todo.push_back(static_cast<int>(k));
+  }
+  // A stiff body (a heavy body with a small inertia, alone on the ground):
+  // its contacts together first, as its impulses were (stiff_body.h).
+  if (sc.stiff.size() == state.bodies.size()) {
+    std::vector<int>& own = sc.stiff_contacts;
+    for (std::size_t i = 0; i < sc.stiff.size(); ++i) {
+      if (!sc.stiff[i]) continue;
+      const int body = static_cast<int>(i);
+      own.clear();
+      for (const int k : todo) {
+        if (ws.contacts[k].body == body || ws.contacts[k].other == body) own.push_back(k);
+      }
+      detail::correctStiffBody(model.body(i), state.bodies[i], body, ws.contacts, own, slop, 1e-3 * slop);
+    }
   }
   for (int sweep = 0; sweep < model.solver().position_iterations; ++sweep) {
     double deepest = 0.0;

@@ -56,6 +56,9 @@ struct FixedPoint {
 struct StepScratch {
   /// Per body: touched the scene or another body this step (only bodies in contact may sleep).
   std::vector<char> in_contact;
+  /// Per body: solved as a stiff body this step (stiff_body.h), so corrected as one.
+  std::vector<char> stiff;
+  std::vector<int> stiff_contacts;  ///< position stage: the contacts of one stiff body
   /// Impulse solver: the contacts island by island (see island_starts).
   std::vector<SolverContact> solver_contacts;
   /// Impulse solver: the velocities of the bodies in contact, side by side.
