@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "round_contact.h"
+
 namespace rigid_body_sim::core {
 
 double kineticEnergy(const BodyModel& body, const BodyState& s) {
@@ -23,10 +25,20 @@ double totalEnergy(const Model& model, const State& state) {
 
 double sceneDepth(const Model& model, std::size_t body, const BodyState& s) {
   double depth = 0.0;
+  const BodyModel& b = model.body(body);
   const Mat3 R = s.q_WB.toRotationMatrix();
-  for (const ContactPoint& c : model.body(body).contact_points) {
-    const Vec3 p_W = s.p_WB + R * c.r_B;
-    for (const Sdf& shape : model.scene()) depth = std::max(depth, c.radius - shape.eval(p_W));
+  for (const ContactPoint& c : b.contact_points) {
+    for (const Sdf& shape : model.scene()) {
+      if (c.round < 0) {
+        depth = std::max(depth, c.radius - shape.eval(s.p_WB + R * c.r_B));
+        continue;
+      }
+      // A rim or side (a cylinder's, a capsule's): at its deepest point, as detection measures it.
+      detail::RoundHit hit;
+      if (detail::roundOnSdf(b.round[c.round], c.phase, shape, R, s.p_WB, hit)) {
+        depth = std::max(depth, c.radius - hit.phi);
+      }
+    }
   }
   return depth;
 }

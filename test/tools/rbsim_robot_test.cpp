@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,39 @@ TEST(Rbsim, AFourWheeledBaseRollsAtOmegaR) {
   }
   EXPECT_NEAR(seq(j["final"]["position"])[2], 0.1, 1e-4);
   EXPECT_LT(j["max_penetration"].as<double>(), 1e-4);
+}
+
+// A floating robot started in the ground (issue 44): the four-wheeled base
+// at its zero pose, z = 0, its wheels (radius 0.1 m) 100 mm deep. rbsim says
+// so with the depth, and the position stage lifts it out without giving it
+// speed: no velocity at any step, at rest on its wheels, its energy up by
+// the lift's M g Δz and no more (M = 5 + 4 × 0.5 kg).
+TEST(Rbsim, AFloatingRobotStartedInTheGroundIsWarnedAndLiftedWithoutSpeed) {
+  const std::string csv = tempPath("lifted.csv");
+  const Result r = rbsim("--urdf " + std::string(RBS_SOURCE_DIR) +
+                         "/urdf/four_wheeler.urdf --duration 1 --every 1 --csv " + csv + " --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("robot 'four_wheeler' starts 100 mm inside the scene"), std::string::npos) << r.err;
+  const YAML::Node j = YAML::Load(r.out);
+  EXPECT_TRUE(j["at_rest"].as<bool>());
+  const double lifted = seq(j["final"]["position"])[2];
+  EXPECT_NEAR(lifted, 0.1, 2e-4);  // on its wheels, less the position slop
+  const double mass = 7.0, g = 9.81;
+  EXPECT_NEAR(j["energy"]["end"].as<double>() - j["energy"]["start"].as<double>(), mass * g * lifted, 1e-6);
+  std::istringstream rows(slurp(csv));
+  std::string line;
+  std::getline(rows, line);  // t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz, then each wheel's position and velocity
+  int count = 0;
+  while (std::getline(rows, line)) {
+    std::vector<double> x;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) x.push_back(std::stod(cell));
+    ASSERT_EQ(x.size(), 22u) << line;
+    for (int k = 8; k < 14; ++k) EXPECT_LT(std::abs(x[k]), 1e-9) << line;      // the base's twist
+    for (int k = 15; k < 22; k += 2) EXPECT_LT(std::abs(x[k]), 1e-9) << line;  // the wheels' speeds
+    ++count;
+  }
+  EXPECT_EQ(count, 1001);
 }
 
 TEST(Rbsim, RefusesARobotsBadStart) {

@@ -17,8 +17,9 @@ double totalEnergy(const Model& model, const State& state);
 
 /// How deep `body` lies inside the static scene in state `s`: the largest
 /// r − φ(p) over its contact points (radius r, the scene's signed distance
-/// φ at its centre), or 0 when it is clear of it (m). What a start inside
-/// the ground is warned with.
+/// φ at its centre; a rim's or side's at its deepest point, as detection
+/// measures it), or 0 when it is clear of it (m). What a start inside the
+/// ground is warned with.
 double sceneDepth(const Model& model, std::size_t body, const BodyState& s);
 
 /// Angular momentum about the centre of mass, world frame: R_WB I_B w_B (kg·m²/s).
