@@ -7,6 +7,10 @@ export PATH=/usr/bin:/bin:$PATH
 RBS_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 RBS_WS=${RBS_WS:-$RBS_ROOT/.ws}
 RBS_BUILD_TYPE=${RBS_BUILD_TYPE:-Release}
+# Warnings are errors in every build of a workspace (demo, tests, benches):
+# a flag that differed between demo.sh and test.sh made the second rebuild
+# everything (600 s) in the same workspace. sanitize.sh's own workspaces set OFF.
+RBS_WERROR=${RBS_WERROR:-ON}
 RBS_PYFLAGS="-DPYTHON_EXECUTABLE=/usr/bin/python3"
 export ROS_HOME=${ROS_HOME:-$RBS_WS/ros_home}
 export ROS_HOSTNAME=${ROS_HOSTNAME:-localhost}
@@ -98,9 +102,9 @@ rbs_link_sources() {
 
 # Builds into .ws/ (catkin_make, $RBS_BUILD_TYPE); extra arguments are
 # catkin_make targets, e.g. `tests`. The array RBS_CMAKE_ARGS: more CMake
-# arguments (scripts/sanitize.sh passes its flags through it). RBS_WERROR=ON makes the project's
-# warnings errors (the tests and CI set it); compile_commands.json is kept
-# for clang-tidy.
+# arguments (scripts/sanitize.sh passes its flags through it). RBS_WERROR (ON
+# unless set, see above) makes the project's warnings errors; compile_commands.json
+# is kept for clang-tidy.
 rbs_build() {
   rbs_link_sources
   # catkin writes the devel space's Python folder into the environment

