@@ -35,6 +35,15 @@ done
 [ "$docs_ok" -eq 1 ] || exit 1
 echo "lint: docs: README.md, bench/README.md within their lengths; ARCHITECTURE.md names every source unit" >&2
 
+# What the code says to users (logs, service answers, stderr) is plain
+# ASCII: ROS 1's logs print other bytes as '???'. Comments may use any.
+mapfile -t code < <(git ls-files 'src/*.h' 'src/*.cpp' 'include/*.h')
+if grep -nP '^(?!\s*(//|\*|/\*)).*"[^"]*[^\x00-\x7F][^"]*"' "${code[@]}"; then
+  echo "lint: a string literal above is not plain ASCII: ROS logs would print it as ???" >&2
+  exit 1
+fi
+echo "lint: strings: plain ASCII in ${#code[@]} sources" >&2
+
 # The translation units of the change under src/: changed .cpp files, and
 # the .cpp beside a changed header (its checks run through HeaderFilterRegex).
 base=${RBS_LINT_BASE:-HEAD~1}

@@ -68,7 +68,7 @@ JointControllers::JointControllers(const ArticulationModel& model, std::vector<J
       }
       owner_[j] = static_cast<int>(c);
       if (pid && !validGains(spec.gains[k])) {
-        fail(spec, "joint '" + link.joint + "': PID gains p, i, d, i_clamp must be finite and ≥ 0");
+        fail(spec, "joint '" + link.joint + "': PID gains p, i, d, i_clamp must be finite and >= 0");
       }
       pids.emplace_back(pid ? spec.gains[k] : PidGains{});
       target.push_back(0.0);

@@ -50,7 +50,7 @@ std::string JointTrajectory::check(const std::vector<TrajectoryPoint>& points, s
   for (std::size_t i = 0; i < points.size(); ++i) {
     const TrajectoryPoint& p = points[i];
     const std::string at = "points[" + std::to_string(i) + "]";
-    if (!(std::isfinite(p.time) && p.time >= 0.0)) return at + ".time_from_start must be finite and ≥ 0";
+    if (!(std::isfinite(p.time) && p.time >= 0.0)) return at + ".time_from_start must be finite and >= 0";
     if (i > 0 && !(p.time > points[i - 1].time)) return at + ".time_from_start must be after the point before's";
     if (p.position.size() != joints) {
       return at + ".positions has " + std::to_string(p.position.size()) + " values for " + std::to_string(joints) +

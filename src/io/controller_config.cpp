@@ -20,7 +20,7 @@ core::PidGains parseGains(const YAML::Node& node, const std::string& path) {
        {std::pair<const char*, double*>{"p", &g.p}, {"i", &g.i}, {"d", &g.d}, {"i_clamp", &g.i_clamp}}) {
     if (!node[key]) continue;
     *field = number(node[key], join(path, key));
-    if (*field < 0.0) fail(join(path, key), "must be ≥ 0");
+    if (*field < 0.0) fail(join(path, key), "must be >= 0");
   }
   return g;
 }

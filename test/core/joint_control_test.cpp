@@ -159,7 +159,7 @@ TEST(JointControllers, RefusesWhatItCannotDrive) {
   refused({{"a", ControlMode::kEffort, {1}, {}}, {"b", ControlMode::kEffort, {1}, {}}},
           "controller 'b': joint 'elbow' is already controller 'a''s");
   refused({{"a", ControlMode::kPosition, {1}, {}}}, "controller 'a': needs PID gains");
-  refused({{"a", ControlMode::kVelocity, {1}, {{-1.0, 0.0, 0.0, 0.0}}}}, "must be finite and ≥ 0");
+  refused({{"a", ControlMode::kVelocity, {1}, {{-1.0, 0.0, 0.0, 0.0}}}}, "must be finite and >= 0");
   refused({{"a", ControlMode::kEffort, {0}, {}}}, "joint index 0");
   refused({{"a", ControlMode::kEffort, {}, {}}}, "names no joint");
   ArticulationModel gripper = test::twoBars();

@@ -132,7 +132,7 @@ TEST(JointTrajectory, CheckNamesTheProblem) {
     std::string expected;
   } cases[] = {
       {{at(1.0, {0.0, 0.0}), at(1.0, {1.0, 1.0})}, "points[1].time_from_start must be after the point before's"},
-      {{at(-1.0, {0.0, 0.0})}, "points[0].time_from_start must be finite and ≥ 0"},
+      {{at(-1.0, {0.0, 0.0})}, "points[0].time_from_start must be finite and >= 0"},
       {{at(nan, {0.0, 0.0})}, "points[0].time_from_start must be finite"},
       {{at(1.0, {0.0})}, "points[0].positions has 1 values for 2 joints"},
       {{at(1.0, {0.0, 0.0}, {1.0})}, "points[0].velocities has 1 values for 2 joints"},
