@@ -97,7 +97,8 @@ void LoadRequests::onWrench(const std::string& name, const geometry_msgs::Wrench
   if (why.empty()) why = checkVector(force, kMaxForce, "force", "N");
   if (why.empty()) why = checkVector(torque, kMaxTorque, "torque", "N*m");
   if (!why.empty()) {
-    ROS_WARN_THROTTLE(1.0, "sim_node: wrench for '%s' ignored: %s", sim_.model().body(body).name.c_str(), why.c_str());
+    ROS_WARN_THROTTLE(kWarnPeriod, "sim_node: wrench for '%s' ignored: %s", sim_.model().body(body).name.c_str(),
+                      why.c_str());
     return;
   }
   const double timeout = settings_.wrench_timeout > 0.0 ? settings_.wrench_timeout : core::WrenchSchedule::kForever;
@@ -111,7 +112,7 @@ void LoadRequests::onCmdVel(const std::string& name, const geometry_msgs::Twist:
   BodyPorts& p = ports_[*found];
   const Vec3 v = fromVector3(msg->linear), w = fromVector3(msg->angular);
   if (!v.allFinite() || !w.allFinite()) {
-    ROS_WARN_THROTTLE(1.0, "sim_node: cmd_vel for '%s' ignored: not finite", name.c_str());
+    ROS_WARN_THROTTLE(kWarnPeriod, "sim_node: cmd_vel for '%s' ignored: not finite", name.c_str());
     return;
   }
   if (p.driver->command(v, w, time_.simTime()) && !p.clipped) {

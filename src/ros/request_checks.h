@@ -26,6 +26,9 @@ inline constexpr double kMaxImpulse = 1e5;   // N·s and N·m·s
 inline constexpr double kMaxPosition = 1e6;  // m, also for points of application
 inline constexpr int kMaxSteps = 1000000;    // per ~step call
 inline constexpr double kMaxLeadTime = 1e6;  // s, how far ahead a start_time may be
+/// s: a warning about a command or message (a flood of bad ones) is logged at
+/// most this often, per place that logs it (ROS_WARN_THROTTLE, on the node's clock).
+inline constexpr double kWarnPeriod = 1.0;
 
 /// "" if v is finite and |v| ≤ limit, else why not.
 inline std::string checkVector(const Vec3& v, double limit, const std::string& what, const std::string& unit) {

@@ -64,8 +64,10 @@ void RobotCommands::command(std::size_t r, std::size_t c, const std::vector<doub
   const core::JointControllerSpec& spec = controllers.specs()[c];
   std::vector<core::Clipped> clipped;
   if (!controllers.command(c, values, clipped)) {
-    ROS_WARN("sim_node: robot '%s': controller '%s': a command of %zu values, %zu expected and each finite: dropped",
-             robot_names_[r].c_str(), spec.name.c_str(), values.size(), spec.joints.size());
+    ROS_WARN_THROTTLE(kWarnPeriod,
+                      "sim_node: robot '%s': controller '%s': a command of %zu values, %zu expected and each finite: "
+                      "dropped",
+                      robot_names_[r].c_str(), spec.name.c_str(), values.size(), spec.joints.size());
     return;
   }
   warnClipped(r, "controller '" + spec.name + "'", clipped);
@@ -75,7 +77,8 @@ void RobotCommands::jointCommand(std::size_t r, const sensor_msgs::JointState& m
   core::JointControllers& controllers = controls_[r].controllers;
   const std::size_t n = msg.name.size();
   const auto drop = [&](const std::string& why) {
-    ROS_WARN("sim_node: robot '%s': joint_command dropped: %s", robot_names_[r].c_str(), why.c_str());
+    ROS_WARN_THROTTLE(kWarnPeriod, "sim_node: robot '%s': joint_command dropped: %s", robot_names_[r].c_str(),
+                      why.c_str());
   };
   for (const auto& [field, values] : {std::pair<const char*, const std::vector<double>*>{"position", &msg.position},
                                       {"velocity", &msg.velocity},
@@ -127,8 +130,8 @@ void RobotCommands::trajectory(std::size_t r, std::size_t c, const trajectory_ms
   core::JointControllers& controllers = controls_[r].controllers;
   const core::JointControllerSpec& spec = controllers.specs()[c];
   const auto drop = [&](const std::string& why) {
-    ROS_WARN("sim_node: robot '%s': controller '%s': trajectory dropped: %s", robot_names_[r].c_str(),
-             spec.name.c_str(), why.c_str());
+    ROS_WARN_THROTTLE(kWarnPeriod, "sim_node: robot '%s': controller '%s': trajectory dropped: %s",
+                      robot_names_[r].c_str(), spec.name.c_str(), why.c_str());
   };
   // Each of the controller's joints named once: where each is in the message.
   const std::size_t n = spec.joints.size();
@@ -179,8 +182,9 @@ void RobotCommands::trajectory(std::size_t r, std::size_t c, const trajectory_ms
   // A first point at 0 from "now" is where the joints are meant to be already: dropped quietly (ros_controllers).
   const bool quiet = dropped == 1 && msg.header.stamp.isZero() && msg.points.front().time_from_start.isZero();
   if (dropped > 0 && !quiet) {
-    ROS_WARN("sim_node: robot '%s': controller '%s': the first %d of %zu points are past (now %s): dropped",
-             robot_names_[r].c_str(), spec.name.c_str(), dropped, msg.points.size(), time_.text().c_str());
+    ROS_WARN_THROTTLE(kWarnPeriod,
+                      "sim_node: robot '%s': controller '%s': the first %d of %zu points are past (now %s): dropped",
+                      robot_names_[r].c_str(), spec.name.c_str(), dropped, msg.points.size(), time_.text().c_str());
   }
   warnClipped(r, "controller '" + spec.name + "'", clipped);
 }
