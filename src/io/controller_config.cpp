@@ -1,8 +1,10 @@
 // A robot's `controllers` map: controller_config.h.
 #include "controller_config.h"
 
+#include <sstream>
 #include <utility>
 
+#include "rigid_body_sim/core/ranges.h"
 #include "yaml_fields.h"
 
 namespace rigid_body_sim::io {
@@ -11,10 +13,13 @@ using namespace yaml_fields;
 
 namespace {
 
-/// control_toolbox's gains at `path`: p, i, d, i_clamp (each ≥ 0, 0 if not given).
+/// control_toolbox's gains at `path`: p, i, d, i_clamp (each ≥ 0; p must be
+/// given, as control_toolbox's Pid refuses gains without it; the others are
+/// 0 if not given).
 core::PidGains parseGains(const YAML::Node& node, const std::string& path) {
   if (!node.IsMap()) fail(path, "expected a map {p, i, d, i_clamp}");
   requireKnownKeys(node, path, {"p", "i", "d", "i_clamp"});
+  if (!node["p"]) fail(join(path, "p"), "is missing: control_toolbox's Pid needs p (i, d and i_clamp default to 0)");
   core::PidGains g;
   for (const auto& [key, field] :
        {std::pair<const char*, double*>{"p", &g.p}, {"i", &g.i}, {"d", &g.d}, {"i_clamp", &g.i_clamp}}) {
@@ -71,7 +76,16 @@ ControllerEntry parseController(const YAML::Node& name, const YAML::Node& body, 
       c.gains[k] = parseGains(g.second, join(join(c.key, "gains"), joint));
     }
   }
-  if (body["publish_rate"]) c.publish_rate = positiveNumber(body["publish_rate"], join(c.key, "publish_rate"));
+  if (body["publish_rate"]) {
+    const std::string key = join(c.key, "publish_rate");
+    c.publish_rate = number(body["publish_rate"], key);
+    if (!(c.publish_rate >= core::ranges::kMinRate && c.publish_rate <= core::ranges::kMaxPublishRate)) {
+      std::ostringstream why;
+      why << "must be within [" << core::ranges::kMinRate << ", " << core::ranges::kMaxPublishRate << "] Hz, got "
+          << show(body["publish_rate"]);
+      fail(key, why.str());
+    }
+  }
   return c;
 }
 

@@ -55,7 +55,7 @@ std::vector<NodeParamKey> makeKeys() {
   return {
       number("rate", "Hz", 1.0, kMaxRate, [](NodeSettings& n) { return &n.rate; }),
       realtime,
-      number("publish_rate", "Hz", core::ranges::kMinRate, kMaxRate, [](NodeSettings& n) { return &n.publish_rate; }),
+      number("publish_rate", "Hz", core::ranges::kMinRate, core::ranges::kMaxPublishRate, [](NodeSettings& n) { return &n.publish_rate; }),
       text("world_frame"),
       timeout,
       number("covariance", "", 0.0, 1e6, [](NodeSettings& n) { return &n.covariance; }),
@@ -187,6 +187,10 @@ NodeParams readParams(const ros::NodeHandle& private_nh) {
       throw io::ConfigError("parameter '~config_file': expected a file path");
     }
     n.config_file = static_cast<std::string>(all["config_file"]);
+    // The file roslaunch's <rosparam> loaded, read once more as rbsim reads
+    // it, for what the parameter server cannot show: a key given twice
+    // (PyYAML keeps the last silently) and aliases. Refused naming the line.
+    io::loadYamlFile(n.config_file);
   }
   // Everything else is a simulation key: the same parser as rbsim's config.
   // A `bodies` list goes over an entry at a time, each let go once read: as

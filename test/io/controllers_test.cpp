@@ -175,6 +175,17 @@ TEST(Controllers, RefusalsNameTheKey) {
       {"controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow, publish_rate: 10}}",
        "'controllers.a.publish_rate'"},
       {"controllers: {a: {joint: elbow}}", "'controllers.a.type'"},
+      // Both started silently through roslaunch (issue 45): gains without p
+      // (control_toolbox refuses them), and a rate that published every step.
+      {"controllers: {a: {type: effort_controllers/JointPositionController, joint: elbow, pid: {i: 1, d: 2}}}",
+       "'controllers.a.pid.p': is missing: control_toolbox's Pid needs p"},
+      {"controllers: {a: {type: effort_controllers/JointGroupPositionController, joints: [elbow],"
+       " gains: {elbow: {d: 1}}}}",
+       "'controllers.a.gains.elbow.p': is missing"},
+      {"controllers: {j: {type: joint_state_controller/JointStateController, publish_rate: 1e300}}",
+       "'controllers.j.publish_rate': must be within [0.01, 10000] Hz, got 1e300"},
+      {"controllers: {j: {type: joint_state_controller/JointStateController, publish_rate: 0}}",
+       "'controllers.j.publish_rate': must be within"},
   };
   for (const auto& c : cases) {
     const std::string message = refusal(c.yaml);

@@ -541,6 +541,37 @@ TEST_F(BadUrdf, BadDevicesStopTheNodeNamingTheKey) {
   }
 }
 
+// The config file sim.launch loads with <rosparam> (~config_file) is read
+// once more as rbsim reads it: the parameter server cannot show a key given
+// twice (PyYAML kept the last: {p: 1, p: 2} ran with p = 2) or an alias.
+TEST_F(BadUrdf, TheConfigFileIsReadAsRbsimReadsIt) {
+  const std::string good = "<robot name='r'><link name='base'><inertial><mass value='1'/>" + std::string(kInertia) +
+                           "</inertial>" + kCollision + "</link></robot>";
+  const struct {
+    std::string ns, yaml, expected;
+  } cases[] = {
+      {"/twice", "dt: 0.001\nrealtime_factor: 1.0\ndt: 0.002\n", "line 3: key 'dt' appears twice in one map"},
+      {"/alias", "gravity: &g [0, 0, -9.81]\nimu: {rate: 100}\nodom_noise: {position: *g}\n",
+       "anchors and aliases are refused"},
+  };
+  for (const auto& c : cases) {
+    const std::string path = ::testing::TempDir() + "rbs_config" + c.ns.substr(1) + ".yaml";
+    std::ofstream(path) << c.yaml;
+    ros::param::set(c.ns + "/sim_node/config_file", path);
+    const auto [code, out] = runNode(c.ns, good);
+    EXPECT_EQ(code, 1) << c.ns << ": " << out;
+    EXPECT_NE(out.find(c.expected), std::string::npos) << c.ns << ": " << out;
+    EXPECT_NE(out.find(path), std::string::npos) << c.ns << ": " << out;
+  }
+  // The same file written once, as roslaunch would load it, starts.
+  const std::string path = ::testing::TempDir() + "rbs_config_once.yaml";
+  std::ofstream(path) << "dt: 0.001\n";
+  ros::param::set("/once/sim_node/config_file", path);
+  ros::param::set("/once/sim_node/dt", 0.001);
+  const auto [code, out] = runNode("/once", good, "", 3);
+  EXPECT_EQ(code, 124) << "ran until the timeout: " << out;  // timeout(1)'s code
+}
+
 TEST_F(BadUrdf, TimingParametersOutOfRangeStopTheNodeNamingTheKey) {
   // Each was accepted: 1e-9 Hz slept 30 years between ticks (no service, no
   // SIGINT), 1e-300 and 1e300 spun at full CPU, wrench_timeout -1 silently

@@ -19,6 +19,9 @@ constexpr double kMaxDecayRate = 1e6;  ///< m/s and rad/s: SpeedLimits may be se
 /// 100 s of sim time. A slower one is a typo (1e-300 Hz overflowed the step
 /// counter that paces it, and sampled at every step).
 constexpr double kMinRate = 0.01;
+/// Hz, the fastest the node publishes a topic (~publish_rate, a controller's
+/// publish_rate): 1e300 was taken, and published at every step.
+constexpr double kMaxPublishRate = 1e4;
 constexpr double kMaxDuration = 1e6;  ///< s: the sleep time, and the node's durations (11 days)
 
 // -- a body
