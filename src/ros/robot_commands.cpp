@@ -213,6 +213,10 @@ void RobotCommands::loadsFor(const core::Simulation& sim, double t, std::vector<
       effort(j - 1) = std::clamp(effort(j - 1), -model.links[j].limits.effort, model.links[j].limits.effort);
     }
     loads[r].effort = effort;
+    for (const std::string& trouble :
+         watch_.observe(r, robot_names_[r], model, controls_[r].controllers, sim.robots[r], effort, dt)) {
+      ROS_WARN("sim_node: %s", trouble.c_str());
+    }
   }
 }
 
@@ -223,6 +227,7 @@ void RobotCommands::restart(const core::Simulation& sim) {
 void RobotCommands::restart(const core::Simulation& sim, std::size_t r) {
   controls_.at(r).controllers.restart(sim.robots[r]);
   applied_[r].resize(0);
+  watch_.restart(r);
 }
 
 }  // namespace rigid_body_sim::node

@@ -20,6 +20,7 @@
 #include "rigid_body_sim/core/articulation_step.h"
 #include "rigid_body_sim/core/simulation.h"
 #include "rigid_body_sim/io/controllers.h"
+#include "rigid_body_sim/ros/controller_watch.h"
 #include "rigid_body_sim/ros/sim_clock.h"
 
 namespace rigid_body_sim::node {
@@ -85,6 +86,7 @@ class RobotCommands {
   std::vector<std::vector<std::string>> joint_names_;  ///< per robot, per link
   std::vector<Eigen::VectorXd> applied_;
   std::set<std::pair<std::string, std::string>> warned_;  ///< (robot/joint, limit) clipped once
+  ControllerWatch watch_;                                 ///< saturated or pressing controllers, said once
   std::vector<ros::Subscriber> subscribers_;
 };
 
