@@ -24,6 +24,7 @@ LinkBodies linkBodies(const ArticulationModel& model, int collision_group) {
     b.I_C_L = l.mass.I_C_F;
     b.collision = l.collision;
     b.collision_group = collision_group;
+    b.friction = l.surface_friction;
     out.bodies.push_back(b);
     out.link.push_back(i);
   }

@@ -19,8 +19,8 @@ namespace {
 SceneRobot robotLinks(Scene::RobotSpec& r, int group, int first_body, std::vector<BodySpec>& bodies) {
   LinkBodies links = linkBodies(r.model, group);
   for (BodySpec& b : links.bodies) {
-    b.name = r.name + "/" + b.name;  // two robots of one URDF have links of one name
-    b.friction = r.friction;
+    b.name = r.name + "/" + b.name;            // two robots of one URDF have links of one name
+    if (!b.friction) b.friction = r.friction;  // a link's own surface first (linkBodies)
     b.restitution = r.restitution;
   }
   SceneRobot robot;

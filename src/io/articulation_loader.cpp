@@ -30,6 +30,7 @@ ArticulatedLink lumpedLink(detail::Lumper& lumper, const urdf::Link& link, bool 
   if (!is_world) lumper.inertiaForPointMass(link.name, out.mass);
   out.collision = std::move(group.shapes);
   out.fixed_links = std::move(group.frames);
+  out.surface_friction = lumper.surfaceFriction(link.name);
   return out;
 }
 

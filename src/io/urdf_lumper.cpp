@@ -156,6 +156,7 @@ urdf::ModelInterfaceSharedPtr Lumper::parse(const std::string& xml) {
     fail(e.what());
   }
   capsules_ = std::move(parsed.capsules);
+  surface_friction_ = std::move(parsed.surface_friction);
   if (!parsed.model->getRoot()) fail("no root link");
   return std::move(parsed.model);
 }

@@ -9,6 +9,8 @@
 
 #include <urdf_model/model.h>
 
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,6 +67,13 @@ class Lumper {
   /// which collisions were capsules. Its root link is never null.
   urdf::ModelInterfaceSharedPtr parse(const std::string& xml);
 
+  /// The friction coefficient `link`'s Gazebo markup gives its surfaces
+  /// (`<gazebo reference="LINK"><mu1>`), if any (after parse()).
+  std::optional<double> surfaceFriction(const std::string& link) const {
+    const auto it = surface_friction_.find(link);
+    return it == surface_friction_.end() ? std::nullopt : std::optional<double>(it->second);
+  }
+
   /// Throws UrdfError: the source, then `what`, after the problems met so far.
   [[noreturn]] void fail(const std::string& what) const;
 
@@ -112,6 +121,7 @@ class Lumper {
   std::string base_dir_;
   UrdfOptions options_;
   CapsuleSet capsules_;
+  std::map<std::string, double> surface_friction_;
   std::vector<std::string> problems_;
   std::vector<std::pair<Repair, std::string>> repairs_;
 };

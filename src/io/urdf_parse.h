@@ -7,6 +7,7 @@
 
 #include <urdf_world/types.h>
 
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -19,12 +20,16 @@ using CapsuleSet = std::set<std::pair<std::string, std::size_t>>;
 struct ParsedUrdf {
   urdf::ModelInterfaceSharedPtr model;  ///< never null
   CapsuleSet capsules;                  ///< read as cylinders by urdfdom
+  /// Per link: the friction coefficient of its `<gazebo reference="LINK">`
+  /// markup (`<mu1>`, `<mu2>`: the smaller of those given), which urdfdom skips.
+  std::map<std::string, double> surface_friction;
 };
 
 /// urdfdom's model of `xml`. Throws std::invalid_argument, one line that
 /// starts with the first cause: two joints giving a link a parent, joints
 /// that form a cycle (naming the joint), or anything urdfdom could not read
-/// (naming the link and element, and urdfdom's own words on the attribute).
+/// (naming the link and element, and urdfdom's own words on the attribute),
+/// or a `<gazebo reference><mu1>` or `<mu2>` that is not a number in [0, 10].
 ParsedUrdf parseUrdf(const std::string& xml);
 
 }  // namespace rigid_body_sim::io::detail

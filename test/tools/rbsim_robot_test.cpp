@@ -89,6 +89,43 @@ TEST(Rbsim, AFloatingRobotStartedInTheGroundIsWarnedAndLiftedWithoutSpeed) {
   EXPECT_EQ(count, 1001);
 }
 
+// A link's surface from its Gazebo markup (issue 45): a sled (a 1 kg box,
+// 0.4 × 0.2 × 0.1 m, with a flag on a vertical axis, so a robot) whose
+// base says <mu1>0.2</mu1><mu2>0.3</mu2> slides v²/(2 μ g) with μ = 0.2 (the
+// smaller, against the ground's 0.5 by the min rule), not 0.5's distance;
+// a <mu1> that is not a coefficient is refused naming the element.
+TEST(Rbsim, ALinksGazeboFrictionIsItsSurfaces) {
+  const auto sled = [](const std::string& markup) {
+    const std::string path = tempPath("sled.urdf");
+    std::ofstream(path) << "<robot name='sled'><link name='base'><inertial><mass value='1'/>"
+                           "<inertia ixx='0.00417' iyy='0.01417' izz='0.01667' ixy='0' ixz='0' iyz='0'/></inertial>"
+                           "<collision><geometry><box size='0.4 0.2 0.1'/></geometry></collision></link>"
+                           "<link name='flag'><inertial><mass value='0.01'/>"
+                           "<inertia ixx='1e-5' iyy='1e-5' izz='1e-5' ixy='0' ixz='0' iyz='0'/></inertial></link>"
+                           "<joint name='mast' type='continuous'><parent link='base'/><child link='flag'/>"
+                           "<axis xyz='0 0 1'/></joint>"
+                        << markup << "</robot>";
+    return rbsim("--urdf " + path +
+                 " --set initial.position=[0,0,0.05] --set initial.linear_velocity=[2,0,0] --duration 2 --quiet");
+  };
+  const double g = 9.81, v = 2.0;
+  for (const auto& [markup, mu] :
+       {std::pair<std::string, double>{"<gazebo reference='base'><mu1>0.2</mu1><mu2>0.3</mu2></gazebo>", 0.2},
+        {"", 0.5}}) {
+    const Result r = sled(markup);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const YAML::Node j = YAML::Load(r.out);
+    const double slid = seq(j["final"]["position"])[0];
+    EXPECT_NEAR(slid, v * v / (2.0 * mu * g), 0.02 * v * v / (2.0 * mu * g)) << "mu " << mu;
+  }
+  const Result bad = sled("<gazebo reference='base'><mu1>slippery</mu1></gazebo>");
+  EXPECT_EQ(bad.code, 2) << bad.err;
+  EXPECT_NE(bad.err.find("<gazebo reference=\"base\"> <mu1> = 'slippery': a friction coefficient must be a number "
+                         "in [0, 10]"),
+            std::string::npos)
+      << bad.err;
+}
+
 TEST(Rbsim, RefusesARobotsBadStart) {
   const std::string pendulum = " --urdf " + std::string(RBS_SOURCE_DIR) + "/urdf/pendulum.urdf --duration 1";
   expectUsageError(pendulum + " --set initial.linear_velocity=[1,0,0]",

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,9 @@ struct ArticulatedLink {
   MassProperties mass;                    ///< in the link frame
   std::vector<CollisionShape> collision;  ///< its <collision> elements, posed in its frame
   std::vector<FixedLink> fixed_links;     ///< the URDF links lumped into it, in URDF order
+  /// μ of its surfaces (a URDF's `<gazebo reference="LINK"><mu1>`); unset:
+  /// the robot's (its config entry's `contact.friction`, or the scene's).
+  std::optional<double> surface_friction;
 };
 
 /// A URDF joint that moves no mass (only massless links hang from it): it
