@@ -26,6 +26,13 @@ std::size_t JointEffortSchedule::clear(std::size_t robot, int joint) {
   return before - entries_.size();
 }
 
+void JointEffortSchedule::removeRobot(std::size_t robot) {
+  clear(robot, -1);
+  for (Entry& e : entries_) {
+    if (e.robot > robot) --e.robot;
+  }
+}
+
 void JointEffortSchedule::dropFinished(double t) {
   entries_.erase(std::remove_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.end <= t; }),
                  entries_.end());

@@ -111,6 +111,22 @@ void Scene::removeBody(std::size_t i) {
   for (SceneRobot& robot : robots_) --robot.first_body;
 }
 
+void Scene::removeRobot(std::size_t r) {
+  if (r >= robots_.size()) {
+    throw std::invalid_argument("robot " + std::to_string(r) + ": no such robot (" + std::to_string(robots_.size()) +
+                                " in the scene)");
+  }
+  const auto first = static_cast<std::ptrdiff_t>(robots_[r].first_body);
+  const auto count = static_cast<std::ptrdiff_t>(robots_[r].link.size());
+  for (std::ptrdiff_t k = count - 1; k >= 0; --k) model_.removeBody(static_cast<std::size_t>(first + k));
+  robot_of_.erase(robot_of_.begin() + first, robot_of_.begin() + first + count);
+  for (int& owner : robot_of_) {
+    if (owner > static_cast<int>(r)) --owner;
+  }
+  for (std::size_t s = r + 1; s < robots_.size(); ++s) robots_[s].first_body -= static_cast<int>(count);
+  robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r));
+}
+
 void placeRobot(const Scene& scene, std::size_t r, const ArticulationState& now, State& bodies) {
   ArticulationKinematics kin;
   kinematics(scene.robots().at(r).model, now, kin);

@@ -75,6 +75,42 @@ std::size_t Simulation::removeBody(int i) {
   return schedule.removeBody(i);
 }
 
+void Simulation::removeRobot(std::size_t r) {
+  if (r >= robots.size()) {
+    throw std::invalid_argument("robot " + std::to_string(r) + ": no robot (" + std::to_string(robots.size()) +
+                                " in the world)");
+  }
+  const int first = scene.robots()[r].first_body;
+  const int count = static_cast<int>(scene.robots()[r].link.size());
+  removeBodies(scene.model(), state, first, count);  // wakes what may touch a link
+  removeBodies(scene.model(), initial, first, count);
+  scene.removeRobot(r);
+  for (int i = first + count - 1; i >= first; --i) {
+    contacts.removeBody(i);
+    schedule.removeBody(i);
+  }
+  robots.erase(robots.begin() + static_cast<std::ptrdiff_t>(r));
+  initial_robots.erase(initial_robots.begin() + static_cast<std::ptrdiff_t>(r));
+  joint_efforts.removeRobot(r);
+  // A sleeping robot sleeps as its links do: one of them woken wakes it.
+  for (std::size_t s = 0; s < robots.size(); ++s) {
+    const SceneRobot& robot = scene.robots()[s];
+    for (std::size_t k = 0; k < robot.link.size(); ++k) {
+      if (robots[s].asleep && !state.bodies[robot.first_body + k].asleep) {
+        robots[s].asleep = false;
+        robots[s].still_time = 0.0;
+      }
+    }
+  }
+  if (scene_workspace.robots.size() > r) {
+    scene_workspace.robots.erase(scene_workspace.robots.begin() + static_cast<std::ptrdiff_t>(r));
+  }
+  if (scene_workspace.robot_diverged.size() > r) {
+    scene_workspace.robot_diverged.erase(scene_workspace.robot_diverged.begin() + static_cast<std::ptrdiff_t>(r));
+  }
+  workspace = workspace.forEditedModel();
+}
+
 void Simulation::place(int i, const BodyState& now) {
   state.bodies.at(static_cast<std::size_t>(i)) = now;
   state.bodies[i].asleep = false;

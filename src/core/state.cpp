@@ -36,31 +36,37 @@ void wakeAll(State& state) {
   }
 }
 
-void removeBody(const Model& model, State& state, int i) {
+void removeBody(const Model& model, State& state, int i) { removeBodies(model, state, i, 1); }
+
+void removeBodies(const Model& model, State& state, int first, int count) {
+  const int end = first + count;
+  const auto gone = [&](int j) { return j >= first && j < end; };
   const auto wake = [&](int j) {
     state.bodies[j].asleep = false;
     state.bodies[j].still_time = 0.0;
   };
-  const double reach = model.body(i).bound_radius + SolverSettings::kWakeReach;  // m
-  for (std::size_t j = 0; j < state.bodies.size(); ++j) {
-    const double gap = (state.bodies[j].p_WB - state.bodies[i].p_WB).norm() - model.body(j).bound_radius;
-    if (static_cast<int>(j) != i && gap <= reach) wake(static_cast<int>(j));
+  for (int i = first; i < end; ++i) {
+    const double reach = model.body(i).bound_radius + SolverSettings::kWakeReach;  // m
+    for (std::size_t j = 0; j < state.bodies.size(); ++j) {
+      const double gap = (state.bodies[j].p_WB - state.bodies[i].p_WB).norm() - model.body(j).bound_radius;
+      if (!gone(static_cast<int>(j)) && gap <= reach) wake(static_cast<int>(j));
+    }
   }
   std::vector<ContactImpulse>& impulses = state.contact_impulses;
   std::vector<ContactImpulse> kept;
   kept.reserve(impulses.size());
   for (ContactImpulse c : impulses) {
-    if (c.body == i || c.other == i) {
-      const int partner = c.body == i ? c.other : c.body;
-      if (partner >= 0) wake(partner);
+    if (gone(c.body) || gone(c.other)) {
+      const int partner = gone(c.body) ? c.other : c.body;
+      if (partner >= 0 && !gone(partner)) wake(partner);
       continue;
     }
-    if (c.body > i) --c.body;  // a monotone renaming: the list stays sorted by key
-    if (c.other > i) --c.other;
+    if (c.body >= end) c.body -= count;  // a monotone renaming: the list stays sorted by key
+    if (c.other >= end) c.other -= count;
     kept.push_back(c);
   }
   impulses = std::move(kept);
-  state.bodies.erase(state.bodies.begin() + i);
+  state.bodies.erase(state.bodies.begin() + first, state.bodies.begin() + end);
 }
 
 void insertBody(State& state, int i, const BodyState& start) {

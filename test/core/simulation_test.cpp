@@ -187,6 +187,50 @@ TEST(Simulation, ARobotAddedGoesLastAndStepsAsOneMadeWithIt) {
   EXPECT_EQ(sim.robots[1].q, robots[1].q);
 }
 
+// A robot deleted goes from every table at once: its links, its state and
+// start, its timed joint efforts; the later robot's links and efforts move
+// down with it. From then on the world steps bit for bit as one made without
+// it (the robot's timed effort still on the robot it was given to), a reset
+// puts the robot left where it started, and no robot r refuses, changing nothing.
+TEST(Simulation, ARobotRemovedLeavesTheWorldAsOneMadeWithoutIt) {
+  const Pose there{Quat::Identity(), Vec3(-3.0, 0.0, 0.0)};
+  Scene both(World::spec({"a"}), {{"arm", pendulum(1.5)}, {"low", pendulum(0.3)}});
+  Scene alone(World::spec({"a"}), {{"low", pendulum(0.3)}});
+  const World one({"a"});
+  const ArticulationState low = restState(alone.robots()[0].model, there);
+  Simulation sim(both, sceneState(both, one.start.bodies, {one.start.robots[0], low}));
+  Simulation without(alone, sceneState(alone, one.start.bodies, {low}));
+  sim.joint_efforts.add(1, 1, 2.0, 0.0, 0.2);  // on "low"'s hinge, for 0.2 s
+  without.joint_efforts.add(0, 1, 2.0, 0.0, 0.2);
+
+  EXPECT_THROW(sim.removeRobot(2), std::invalid_argument);
+  ASSERT_EQ(sim.robots.size(), 2u);
+  ASSERT_EQ(sim.model().bodyCount(), 3u);
+  sim.removeRobot(0);
+  ASSERT_EQ(sim.scene.robots().size(), 1u);
+  ASSERT_EQ(sim.model().bodyCount(), 2u);
+  EXPECT_EQ(sim.model().body(1).name, "low/bar");
+  EXPECT_EQ(sim.scene.robots()[0].first_body, 1);
+  EXPECT_EQ(sim.scene.robotOf(1), 0);
+  const auto loads = [](const Simulation& s) {
+    std::vector<ArticulationLoads> l(1);
+    l[0].effort = Eigen::VectorXd::Zero(1);
+    s.joint_efforts.addEfforts(0, s.state.time, kH, l[0].effort);
+    return l;
+  };
+  for (int n = 0; n < 600; ++n) {
+    sim.step({}, loads(sim));
+    without.step({}, loads(without));
+  }
+  EXPECT_GT(std::abs(sim.robots[0].q[0] - low.q[0]), 0.1);  // it moved
+  for (std::size_t i = 0; i < 2; ++i) expectSameBody(sim.state.bodies[i], without.state.bodies[i]);
+  EXPECT_EQ(sim.robots[0].q, without.robots[0].q);
+  EXPECT_EQ(sim.robots[0].v, without.robots[0].v);
+  sim.reset(1.0);
+  EXPECT_EQ(sim.robots[0].q, low.q);
+  expectSameBody(sim.state.bodies[1], without.initial.bodies[1]);
+}
+
 TEST(Simulation, ResetPutsTheRobotsBack) {
   World w({"a"});
   Simulation sim(w.scene, w.start);

@@ -22,6 +22,8 @@ class JointEffortSchedule {
   void addEfforts(std::size_t robot, double t, double h, Eigen::VectorXd& effort) const;
   /// Removes robot r's efforts on `joint` (every joint for −1); returns how many.
   std::size_t clear(std::size_t robot, int joint);
+  /// Robot r left the world: its entries go, the later robots' move down by one.
+  void removeRobot(std::size_t robot);
   /// Removes every entry.
   void clearAll() { entries_.clear(); }
   /// Drops the entries that ended by t.

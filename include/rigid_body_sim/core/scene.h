@@ -62,6 +62,10 @@ class Scene {
   /// Takes free body i out (Model::removeBody); the links after it move
   /// down by one. Throws std::invalid_argument for a link or no body.
   void removeBody(std::size_t i);
+  /// Takes robot r out, its links with it (the later robots' links move
+  /// down); the later robots move down by one. Throws
+  /// std::invalid_argument for no such robot.
+  void removeRobot(std::size_t r);
   /// The settings `tuning` gives (Model::retuned: throws and changes nothing
   /// when a check refuses them).
   void retune(const Tuning& tuning) { model_ = model_.retuned(tuning); }

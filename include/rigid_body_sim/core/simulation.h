@@ -65,6 +65,12 @@ struct Simulation {
   /// the later bodies' indices move down by one everywhere. Returns how many
   /// timed wrenches (WrenchSchedule::add) went with it.
   std::size_t removeBody(int i);
+  /// Takes robot r out of every table at once, as removeBody takes a body:
+  /// its links (their contacts, their wrenches and those in their axes),
+  /// its state, start and timed joint efforts; what may touch its links
+  /// wakes, robots too; the later robots and links move down. Throws
+  /// std::invalid_argument for no such robot, and then nothing has changed.
+  void removeRobot(std::size_t r);
 
   /// Puts body i at `now` (a user's set_state): every contact's warm start
   /// goes, since nothing carries over to a new pose, and the body is awake

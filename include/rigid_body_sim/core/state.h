@@ -101,6 +101,10 @@ BodyState bodyStateFromLink(const BodyModel& body, const LinkState& link);
 /// every body that may touch it wakes (within both bounding radii plus 1 cm
 /// of it, or holding a contact impulse with it): what rested on it falls.
 void removeBody(const Model& model, State& state, int i);
+/// removeBody() for bodies first .. first + count − 1 at once (a robot's
+/// links): what may touch any of them wakes, the later bodies move down by
+/// `count`.
+void removeBodies(const Model& model, State& state, int first, int count);
 /// Puts `start` in as body i, as Model::insertBody(i) puts a body in: the
 /// bodies from i on move up by one in the contact impulses (their warm
 /// starts kept). Nothing wakes: the new body's contacts wake what it hits.
