@@ -123,4 +123,19 @@ RobotControls buildControls(const std::vector<ControllerEntry>& entries, const c
   return out;
 }
 
+RobotControls controlsOf(const YAML::Node& node, const std::string& path, const core::ArticulationModel& model,
+                         bool in_namespace) {
+  if (!in_namespace) return buildControls(parseControllers(node, path), model);
+  if (!node.IsMap()) throw ConfigError("'" + path + "': expected a namespace (a map of parameters)");
+  YAML::Node controllers(YAML::NodeType::Map);
+  for (const auto& item : node) {
+    if (item.second.IsMap() && item.second["type"]) controllers[item.first] = item.second;
+  }
+  std::vector<ControllerEntry> entries = parseControllers(controllers, path);
+  if (const YAML::Node gazebo = node["gazebo_ros_control"]) {
+    applyPidGains(gazebo, path + ".gazebo_ros_control", entries);
+  }
+  return buildControls(entries, model);
+}
+
 }  // namespace rigid_body_sim::io

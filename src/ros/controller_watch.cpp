@@ -55,4 +55,16 @@ void ControllerWatch::restart(std::size_t r) {
   }
 }
 
+void ControllerWatch::removeRobot(std::size_t r) {
+  if (r < saturated_.size()) {
+    saturated_.erase(saturated_.begin() + static_cast<std::ptrdiff_t>(r));
+    pressed_.erase(pressed_.begin() + static_cast<std::ptrdiff_t>(r));
+  }
+  std::set<std::pair<std::size_t, int>> said;
+  for (const auto& [robot, joint] : said_) {
+    if (robot != r) said.insert({robot > r ? robot - 1 : robot, joint});
+  }
+  said_ = std::move(said);
+}
+
 }  // namespace rigid_body_sim::node

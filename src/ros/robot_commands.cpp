@@ -13,50 +13,77 @@ namespace rigid_body_sim::node {
 
 RobotCommands::RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotControls> controls,
                              const core::Simulation& sim, const NodeTime& time, bool several)
-    : sim_(sim), time_(time), controls_(std::move(controls)) {
-  ros::NodeHandle handle(nh);
+    : sim_(sim), time_(time), nh_(nh) {
   const std::vector<core::SceneRobot>& robots = sim.scene.robots();
-  controls_.resize(robots.size());
-  applied_.resize(robots.size());
+  controls.resize(robots.size());
   for (std::size_t r = 0; r < robots.size(); ++r) {
-    nameJoints(robots[r]);
-    const std::string prefix = several ? robots[r].name + "/" : "";
-    const std::vector<core::JointControllerSpec>& specs = controls_[r].controllers.specs();
-    for (std::size_t c = 0; c < specs.size(); ++c) {
-      const std::string topic = prefix + specs[c].name + "/command";
-      if (specs[c].mode == core::ControlMode::kTrajectory) {
-        subscribers_.push_back(handle.subscribe<trajectory_msgs::JointTrajectory>(
-            topic, 10, [this, r, c](const trajectory_msgs::JointTrajectory::ConstPtr& m) { trajectory(r, c, *m); }));
-      } else if (controls_[r].group[c] != 0) {
-        subscribers_.push_back(handle.subscribe<std_msgs::Float64MultiArray>(
-            topic, 10, [this, r, c](const std_msgs::Float64MultiArray::ConstPtr& m) { command(r, c, m->data); }));
-      } else {
-        subscribers_.push_back(handle.subscribe<std_msgs::Float64>(
-            topic, 10, [this, r, c](const std_msgs::Float64::ConstPtr& m) { command(r, c, {m->data}); }));
-      }
-      ROS_INFO("sim_node: robot '%s': controller '%s' on %s", robots[r].name.c_str(), specs[c].name.c_str(),
-               handle.resolveName(topic).c_str());
-    }
-    if (!specs.empty()) {
-      subscribers_.push_back(handle.subscribe<sensor_msgs::JointState>(
-          prefix + "joint_command", 10,
-          [this, r](const sensor_msgs::JointState::ConstPtr& m) { jointCommand(r, *m); }));
-    }
+    addRobot(sim, r, several ? robots[r].name + "/" : "", std::move(controls[r]));
   }
-  restart(sim);
 }
 
-void RobotCommands::nameJoints(const core::SceneRobot& robot) {
+void RobotCommands::addRobot(const core::Simulation& sim, std::size_t r, const std::string& prefix,
+                             io::RobotControls controls) {
+  const core::SceneRobot& robot = sim.scene.robots().at(r);
   robot_names_.push_back(robot.name);
   std::vector<std::string> joints;
   for (const core::ArticulatedLink& link : robot.model.links) joints.push_back(link.joint);
   joint_names_.push_back(std::move(joints));
+  controls_.push_back(std::move(controls));
+  applied_.emplace_back();
+  subscribers_.push_back(subscribe(r, prefix));
+  restart(sim, r);
 }
 
-void RobotCommands::addRobot(const core::Simulation& sim, std::size_t r) {
-  nameJoints(sim.scene.robots().at(r));
-  controls_.emplace_back();
-  applied_.emplace_back();
+std::vector<ros::Subscriber> RobotCommands::subscribe(std::size_t r, const std::string& prefix) {
+  // The callbacks find their robot by name: a robot deleted before moves the later ones down.
+  const std::string& name = robot_names_[r];
+  const auto at = [this, name](const auto& then) {
+    const auto it = std::find(robot_names_.begin(), robot_names_.end(), name);
+    if (it != robot_names_.end()) then(static_cast<std::size_t>(it - robot_names_.begin()));
+  };
+  std::vector<ros::Subscriber> subscribers;
+  const std::vector<core::JointControllerSpec>& specs = controls_[r].controllers.specs();
+  for (std::size_t c = 0; c < specs.size(); ++c) {
+    const std::string topic = prefix + specs[c].name + "/command";
+    if (specs[c].mode == core::ControlMode::kTrajectory) {
+      subscribers.push_back(nh_.subscribe<trajectory_msgs::JointTrajectory>(
+          topic, 10, [this, at, c](const trajectory_msgs::JointTrajectory::ConstPtr& m) {
+            at([&](std::size_t k) { trajectory(k, c, *m); });
+          }));
+    } else if (controls_[r].group[c] != 0) {
+      subscribers.push_back(nh_.subscribe<std_msgs::Float64MultiArray>(
+          topic, 10, [this, at, c](const std_msgs::Float64MultiArray::ConstPtr& m) {
+            at([&](std::size_t k) { command(k, c, m->data); });
+          }));
+    } else {
+      subscribers.push_back(
+          nh_.subscribe<std_msgs::Float64>(topic, 10, [this, at, c](const std_msgs::Float64::ConstPtr& m) {
+            at([&](std::size_t k) { command(k, c, {m->data}); });
+          }));
+    }
+    ROS_INFO("sim_node: robot '%s': controller '%s' on %s", name.c_str(), specs[c].name.c_str(),
+             nh_.resolveName(topic).c_str());
+  }
+  if (!specs.empty()) {
+    subscribers.push_back(nh_.subscribe<sensor_msgs::JointState>(
+        prefix + "joint_command", 10,
+        [this, at](const sensor_msgs::JointState::ConstPtr& m) { at([&](std::size_t k) { jointCommand(k, *m); }); }));
+  }
+  return subscribers;
+}
+
+void RobotCommands::removeRobot(std::size_t r) {
+  const std::string name = robot_names_.at(r);
+  const auto erase = [r](auto& per_robot) { per_robot.erase(per_robot.begin() + static_cast<std::ptrdiff_t>(r)); };
+  erase(subscribers_);  // its topics unsubscribed
+  erase(controls_);
+  erase(robot_names_);
+  erase(joint_names_);
+  erase(applied_);
+  watch_.removeRobot(r);
+  for (auto it = warned_.begin(); it != warned_.end();) {
+    it = it->first.rfind(name + "/", 0) == 0 ? warned_.erase(it) : std::next(it);
+  }
 }
 
 void RobotCommands::command(std::size_t r, std::size_t c, const std::vector<double>& values) {

@@ -50,24 +50,45 @@ geometry_msgs::TransformStamped baseTransform(const core::ArticulationState& sta
   return tf;
 }
 
-void checkRobotFrames(const core::Scene& scene, const std::string& world_frame,
+std::string framePrefix(const ros::NodeHandle& nh, const std::string& robot) {
+  std::string key, prefix;
+  try {
+    if (!ros::NodeHandle(nh, robot).searchParam("tf_prefix", key) || !nh.getParam(key, prefix)) return "";
+  } catch (const ros::InvalidNameException&) {
+    return "";  // a robot named as no namespace can be: robot_state_publisher cannot run in it
+  }
+  while (!prefix.empty() && prefix.front() == '/') prefix.erase(0, 1);  // as tf::resolve
+  return prefix.empty() ? "" : prefix + "/";
+}
+
+std::vector<std::string> robotFrames(const core::ArticulationModel& robot, const std::string& frame_prefix) {
+  std::vector<std::string> frames;
+  for (std::size_t k = 0; k < robot.links.size(); ++k) {
+    const std::string& link = robot.links[k].name;
+    if (k == 0 && link == "world") continue;  // the root robot_state_publisher starts from
+    frames.push_back(frame_prefix + link);
+  }
+  return frames;
+}
+
+void checkRobotFrames(const std::vector<RobotPorts>& robots, const std::string& world_frame,
                       const std::vector<std::string>& body_frames) {
   std::map<std::string, std::string> owner;  // frame -> who has it
   for (const std::string& frame : body_frames) owner.emplace(frame, "a body");
-  for (const core::SceneRobot& robot : scene.robots()) {
-    for (std::size_t k = 0; k < robot.model.links.size(); ++k) {
-      const std::string& link = robot.model.links[k].name;
-      if (k == 0 && link == "world") continue;  // the root robot_state_publisher starts from
+  for (const RobotPorts& robot : robots) {
+    for (const std::string& frame : robot.frames) {
       const std::string who = "robot '" + robot.name + "'";
-      if (link == world_frame) {
-        throw io::ConfigError(who + ": its link '" + link + "' is named as ~world_frame; tf would publish " + link +
-                              " -> " + link + " (name the world frame otherwise)");
+      if (frame == world_frame) {
+        throw io::ConfigError(who + ": its link frame '" + frame + "' is named as ~world_frame; tf would publish " +
+                              frame + " -> " + frame + " (name the world frame otherwise)");
       }
-      const auto [it, added] = owner.emplace(link, who);
+      const auto [it, added] = owner.emplace(frame, who);
       if (!added) {
-        throw io::ConfigError(who + ": its link '" + link + "' is also a frame of " + it->second +
-                              "; robot_state_publisher names a robot's frames as its URDF does, so tf would mix "
-                              "them up (give each robot's URDF its own link names, as a xacro prefix does)");
+        throw io::ConfigError(who + ": its link frame '" + frame + "' is also a frame of " + it->second +
+                              "; robot_state_publisher names a robot's frames as its URDF does, after its "
+                              "tf_prefix, so tf would mix them up (set the parameter " +
+                              robot.name + "/tf_prefix, as for robot_state_publisher in namespace " + robot.name +
+                              ", or give each robot's URDF its own link names)");
       }
     }
   }
@@ -79,15 +100,19 @@ RobotPublisher::RobotPublisher(const ros::NodeHandle& nh, const core::Scene& sce
     : nh_(nh), world_frame_(std::move(world_frame)), dt_(dt) {
   for (const core::SceneRobot& robot : scene.robots()) {
     const double hz = rate(robots_.size()) > 0.0 ? rate(robots_.size()) : publish_rate;
-    addRobot(robot, several ? robot.name + "/" : "", hz);
+    addRobot(robot, several ? robot.name + "/" : "", hz, framePrefix(nh_, robot.name));
   }
 }
 
-void RobotPublisher::addRobot(const core::SceneRobot& robot, const std::string& prefix, double hz) {
+void RobotPublisher::addRobot(const core::SceneRobot& robot, const std::string& prefix, double hz,
+                              const std::string& frame_prefix) {
   RobotPorts p;
   p.name = robot.name;
   p.prefix = prefix;
-  p.base_frame = placedBase(robot.model);
+  p.frame_prefix = frame_prefix;
+  p.frames = robotFrames(robot.model, frame_prefix);
+  const std::string base = placedBase(robot.model);
+  p.base_frame = base.empty() ? "" : frame_prefix + base;
   p.joint_states = CountedPublisher::advertise<sensor_msgs::JointState>(nh_, p.prefix + "joint_states", 10);
   p.every = std::max(1LL, std::llround(1.0 / (hz * dt_)));
   robots_.push_back(std::move(p));

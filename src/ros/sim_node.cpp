@@ -121,7 +121,6 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     if (const std::string warning = io::touchesNothing(body); !warning.empty())
       ROS_WARN("sim_node: %s", warning.c_str());
   }
-  checkRobotFrames(sim_.scene, settings_.world_frame, ports_.frames());
   for (const core::SceneRobot& robot : sim_.scene.robots()) {
     ROS_INFO("sim_node: robot '%s', %d moving joints, %s base", robot.name.c_str(), robot.model.jointCount(),
              robot.model.fixed_base ? "a world-fixed" : "a floating");
@@ -146,6 +145,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   commands_.emplace(nh_, std::move(start_controls_), sim_, time_, several);
   robot_publisher_.emplace(nh_, sim_.scene, several, settings_.world_frame, model_.dt(), settings_.publish_rate,
                            [this](std::size_t r) { return commands_->jointStateRate(r); });
+  checkRobotFrames(robot_publisher_->robots(), settings_.world_frame, ports_.frames());
   services_ = {
       pnh_.advertiseService("apply_wrench", &LoadRequests::applyWrench, &load_requests_),
       pnh_.advertiseService("apply_impulse", &LoadRequests::applyImpulse, &load_requests_),
@@ -183,10 +183,19 @@ void SimNode::afterSpawn() {
   publisher_->fixedFrames(model_, ports_, stamp(), last);
 }
 
-void SimNode::afterRobotSpawn(const std::string& prefix) {
+void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   const std::size_t r = sim_.scene.robots().size() - 1;
-  robot_publisher_->addRobot(sim_.scene.robots()[r], prefix, settings_.publish_rate);
-  commands_->addRobot(sim_, r);
+  const std::string prefix = spawn.request.name + "/";
+  io::RobotControls& controls = spawn.controls;
+  const double hz = controls.joint_state_rate > 0.0 ? controls.joint_state_rate : settings_.publish_rate;
+  robot_publisher_->addRobot(sim_.scene.robots()[r], prefix, hz, spawn.frame_prefix);
+  commands_->addRobot(sim_, r, prefix, std::move(controls));
+}
+
+void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {
+  robot_publisher_->removeRobot(r);
+  commands_->removeRobot(r);
+  robots_speed_limited_.erase(name);
 }
 
 void SimNode::afterDelete(const std::string& name) {

@@ -17,6 +17,8 @@
 #include "rigid_body_sim/io/world.h"
 #include "rigid_body_sim/ros/conversions.h"
 #include "rigid_body_sim/ros/joint_requests.h"
+#include "rigid_body_sim/ros/params.h"
+#include "rigid_body_sim/ros/robot_ports.h"
 #include "rigid_body_sim/ros/sim_node.h"
 
 namespace rigid_body_sim::node {
@@ -82,10 +84,30 @@ void tellRepairs(const std::vector<std::string>& notes, SpawnBody::Response& res
   }
 }
 
+/// The controllers of robot `model` the request gives: its `controllers`
+/// YAML, else those loaded under the robot's name (resolved on `nh`), as a
+/// Gazebo user loads them for gazebo_ros_control. Throws std::exception
+/// starting with the field or the parameter.
+io::RobotControls requestedControls(const SpawnBody::Request& req, const ros::NodeHandle& nh,
+                                    const core::ArticulationModel& model) {
+  try {
+    if (!req.controllers.empty()) {
+      return io::controlsOf(io::loadYamlText(req.controllers, "controllers"), "controllers", model, false);
+    }
+    XmlRpc::XmlRpcValue params;
+    if (!nh.getParam(req.name, params) || params.getType() != XmlRpc::XmlRpcValue::TypeStruct) return {};
+    return io::controlsOf(toYaml(params), nh.resolveName(req.name), model, true);
+  } catch (const io::ConfigError& e) {
+    if (!req.controllers.empty()) throw std::invalid_argument("controllers: " + std::string(e.what()));
+    throw std::invalid_argument("controllers (the parameters under '" + nh.resolveName(req.name) + "'): " + e.what());
+  }
+}
+
 /// The robot a request's URDF describes, its joints set as joint_names says
-/// (the base where the loop puts it). Throws std::exception naming the field.
+/// (the base where the loop puts it), its controllers. Throws std::exception
+/// naming the field.
 void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf, const io::UrdfOptions& options,
-                        const core::SpeedLimits& limits, SpawnQueue::Spawn& spawn) {
+                        const core::SpeedLimits& limits, const ros::NodeHandle& nh, SpawnQueue::Spawn& spawn) {
   for (const auto& [field, given] : {std::pair<const char*, bool>{"imu", !req.imu.empty()},
                                      {"odom_noise", !req.odom_noise.empty()},
                                      {"cmd_vel", !req.cmd_vel.empty()}}) {
@@ -102,6 +124,8 @@ void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf,
   const std::string problem =
       configureJoints(model, limits, req.joint_names, req.joint_positions, {}, spawn.robot_start);
   if (!problem.empty()) throw std::invalid_argument(problem);
+  spawn.controls = requestedControls(req, nh, model);
+  spawn.frame_prefix = framePrefix(nh, req.name);
   core::Scene::RobotSpec robot{req.name, std::move(model)};
   if (req.own_friction) robot.friction = req.friction;
   if (req.own_restitution) robot.restitution = req.restitution;
@@ -122,7 +146,7 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
   try {
     const io::UrdfText urdf = readRequestedUrdf(req, nh_, params_.sim.base_dir);
     if (io::describesRobot(urdf.xml, urdf.source)) {
-      loadRequestedRobot(req, urdf, options, spawn_limits_, spawn);
+      loadRequestedRobot(req, urdf, options, spawn_limits_, nh_, spawn);
       spawn.request = req;
       res = spawns_.submit(std::move(spawn), [] { return ros::ok(); });  // the loop adds it at its next tick
       tellRepairs(notes, res);
@@ -130,6 +154,9 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
     }
     if (!req.joint_names.empty() || !req.joint_positions.empty()) {
       throw std::invalid_argument("joint_names: the URDF has no moving joints (a body, not a robot)");
+    }
+    if (!req.controllers.empty()) {
+      throw std::invalid_argument("controllers: the URDF has no moving joints (a body, not a robot)");
     }
     core::BodySpec spec = io::loadUrdfString(urdf.xml, urdf.source, urdf.base_dir, options);
     spec.name = req.name;

@@ -1,5 +1,6 @@
 #include "rigid_body_sim/ros/world_edits.h"
 
+#include <algorithm>
 #include <chrono>
 #include <vector>
 
@@ -14,6 +15,13 @@ bool WorldEdits::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res)
   if (req.name.empty()) {
     res.message = "name is empty: give the name of the body to delete";
     return true;
+  }
+  const std::vector<core::SceneRobot>& robots = sim_.scene.robots();
+  for (std::size_t r = 0; r < robots.size(); ++r) {
+    if (robots[r].name == req.name) {
+      deleteRobot(r, res);
+      return true;
+    }
   }
   std::string why;
   const auto found = address_.body(req.name, why);
@@ -38,6 +46,23 @@ bool WorldEdits::deleteBody(DeleteBody::Request& req, DeleteBody::Response& res)
   return true;
 }
 
+void WorldEdits::deleteRobot(std::size_t r, DeleteBody::Response& res) {
+  const std::string name = sim_.scene.robots()[r].name;
+  const auto start = std::chrono::steady_clock::now();
+  // Its links, state, start and timed efforts; what its links touched wakes.
+  sim_.removeRobot(r);
+  hooks_.robot_removed(r, name);  // its topics and controllers
+  if (settings_.report_timing) {
+    pacer_.recordDelete(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  res.success = true;
+  res.message = "robot '" + name + "' deleted at t = " + time_.text() +
+                " (its joint_states, controllers and timed joint efforts went with it); " +
+                std::to_string(sim_.scene.robots().size()) + " robots and " + std::to_string(sim_.freeBodyCount()) +
+                " bodies left";
+  ROS_INFO("sim_node: %s", res.message.c_str());
+}
+
 void WorldEdits::insertQueued(SpawnQueue& queue) {
   queue.drain([this](SpawnQueue::Spawn& spawn) {
     const auto start = std::chrono::steady_clock::now();
@@ -60,9 +85,10 @@ std::string WorldEdits::nameTaken(const std::string& name) const {
 std::string WorldEdits::frameOwner(const std::string& frame) const {
   if (frame == settings_.world_frame) return "the world";
   if (const auto body = ports_.directory().ownerOf(frame)) return "body '" + sim_.model().body(*body).name + "'";
-  for (const core::SceneRobot& robot : sim_.scene.robots()) {
-    for (const core::ArticulatedLink& link : robot.model.links) {
-      if (link.name == frame) return "robot '" + robot.name + "'";
+  if (!robots_) return {};
+  for (const RobotPorts& robot : robots_->robots()) {
+    if (std::find(robot.frames.begin(), robot.frames.end(), frame) != robot.frames.end()) {
+      return "robot '" + robot.name + "'";
     }
   }
   return {};
@@ -92,12 +118,13 @@ SpawnBody::Response WorldEdits::insertRobot(SpawnQueue::Spawn& spawn) {
   res.message = nameTaken(req.name);
   if (!res.message.empty()) return res;
   const core::ArticulationModel& model = spawn.robot->model;
-  // Its links' frames are the URDF's names (robot_state_publisher's): none may be taken.
-  for (std::size_t k = model.fixed_base ? 1 : 0; k < model.links.size(); ++k) {
-    const std::string& frame = model.links[k].name;
+  // Its links' frames are the URDF's names after its tf_prefix (robot_state_publisher's): none may be taken.
+  for (const std::string& frame : robotFrames(model, spawn.frame_prefix)) {
     if (const std::string owner = frameOwner(frame); !owner.empty()) {
       res.message = "name '" + req.name + "': the robot's link frame '" + frame + "' is a frame of " + owner +
-                    " (robot_state_publisher names links as the URDF does: give each robot its own link names)";
+                    " (robot_state_publisher names links as the URDF does, after the tf_prefix it finds: set " +
+                    req.name + "/tf_prefix, as for robot_state_publisher in namespace " + req.name +
+                    ", or give each robot its own link names)";
       return res;
     }
   }
@@ -111,11 +138,17 @@ SpawnBody::Response WorldEdits::insertRobot(SpawnQueue::Spawn& spawn) {
     res.message = e.what();
     return res;
   }
-  hooks_.robot_added(req.name + "/");
+  std::string controllers;
+  for (const core::JointControllerSpec& c : spawn.controls.controllers.specs()) {
+    controllers += (controllers.empty() ? "" : ", ") + c.name;
+  }
+  controllers = controllers.empty() ? " (no controllers: apply_joint_effort drives it)"
+                                    : ", controllers " + controllers + " on '" + req.name + "/CONTROLLER/command'";
+  hooks_.robot_added(spawn);
   res.success = true;
   res.message = "robot '" + req.name + "' added at t = " + time_.text() + ": " +
                 std::to_string(sim_.scene.robots().back().model.jointCount()) + " moving joints, '" + req.name +
-                "/joint_states' (no controllers: apply_joint_effort drives it)";
+                "/joint_states'" + controllers;
   ROS_INFO("sim_node: %s", res.message.c_str());
   return res;
 }

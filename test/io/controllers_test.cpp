@@ -140,6 +140,40 @@ gazebo_ros_control:
   }
 }
 
+// A spawned robot's namespace as `rosparam load FILE /NAME` fills it for
+// gazebo_ros_control: every map with a type is a controller, its
+// gazebo_ros_control map gives pid_gains, other parameters are not read;
+// a controller's problem is refused as the config's, under the namespace.
+TEST(Controllers, ARobotsNamespaceGivesTheMapsWithATypeAndTheirPidGains) {
+  const core::ArticulationModel arm = io::loadArticulationFile(kUrdf + "arm2.urdf");
+  const io::RobotControls c = io::controlsOf(YAML::Load(R"(
+robot_description: "<robot name='x'/>"
+tf_prefix: left
+joint_state_controller: {type: joint_state_controller/JointStateController, publish_rate: 40}
+shoulder: {type: position_controllers/JointPositionController, joint: shoulder}
+elbow: {type: effort_controllers/JointEffortController, joint: elbow}
+some_node: {rate: 3}
+gazebo_ros_control: {pid_gains: {shoulder: {p: 50.0, d: 2.0}}}
+)"),
+                                             "/arm", arm, true);
+  EXPECT_EQ(c.joint_state_rate, 40.0);
+  ASSERT_EQ(c.controllers.specs().size(), 2u);
+  EXPECT_EQ(c.controllers.specs()[0].name, "shoulder");
+  EXPECT_EQ(c.controllers.specs()[0].gains[0].p, 50.0);
+  EXPECT_EQ(c.controllers.specs()[1].mode, core::ControlMode::kEffort);
+  // Nothing with a type: no controllers, and nothing refused.
+  EXPECT_TRUE(io::controlsOf(YAML::Load("{robot_description: x}"), "/arm", arm, true).controllers.specs().empty());
+  try {
+    io::controlsOf(YAML::Load("{a: {type: effort_controllers/JointPositionController, joint: elbow}}"), "/arm", arm,
+                   true);
+    ADD_FAILURE() << "a position controller without gains was taken";
+  } catch (const io::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("'/arm.a.pid'"), std::string::npos) << e.what();
+  }
+  // The request's map is the config's `controllers`: every entry must be one.
+  EXPECT_THROW(io::controlsOf(YAML::Load("{tf_prefix: left}"), "controllers", arm, false), io::ConfigError);
+}
+
 TEST(Controllers, RefusalsNameTheKey) {
   const struct {
     std::string yaml, expected;

@@ -69,6 +69,28 @@ TEST(ControllerWatch, TransientsAndJointsNoControllerOwnsAreNotSaid) {
   EXPECT_TRUE(run(watch, arm, Eigen::Vector2d(0.0, 20.0), 900).empty());
 }
 
+// A robot deleted is forgotten: the robot after it, now at its index, keeps
+// what was said of it, and a robot spawned in the freed place is watched afresh.
+TEST(ControllerWatch, ARobotDeletedIsForgottenAndTheLaterOnesMoveDown) {
+  const Arm arm;
+  node::ControllerWatch watch;
+  const auto saturate = [&](std::size_t r) {
+    std::vector<std::string> said;
+    for (int k = 0; k < 1100; ++k) {
+      for (std::string& s :
+           watch.observe(r, "arm2", arm.model, arm.controls.controllers, arm.state, Eigen::Vector2d(0.0, 20.0), kDt)) {
+        said.push_back(std::move(s));
+      }
+    }
+    return said.size();
+  };
+  EXPECT_EQ(saturate(0), 1u);
+  EXPECT_EQ(saturate(1), 1u);
+  watch.removeRobot(0);
+  EXPECT_EQ(saturate(0), 0u);  // robot 1, now 0: said already
+  EXPECT_EQ(saturate(1), 1u);  // a new robot
+}
+
 TEST(ControllerWatch, PressingHardAgainstALimitIsSaid) {
   Arm arm;
   arm.state.q(1) = 2.5;  // the elbow at its upper limit

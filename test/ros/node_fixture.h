@@ -41,7 +41,6 @@ inline bool plainAscii(const std::string& text) {
   return true;
 }
 
-/// Waits (wall time) until `done` or `seconds` pass, spinning callbacks.
 /// Whether the master lists `topic` as published by someone.
 inline bool advertised(const std::string& topic) {
   ros::master::V_TopicInfo topics;
@@ -52,6 +51,22 @@ inline bool advertised(const std::string& topic) {
   return false;
 }
 
+/// Whether the master lists node `node` as a subscriber of `topic`.
+inline bool subscribes(const std::string& node, const std::string& topic) {
+  XmlRpc::XmlRpcValue args, result, payload;
+  args[0] = ros::this_node::getName();
+  if (!ros::master::execute("getSystemState", args, result, payload, true)) return false;
+  XmlRpc::XmlRpcValue& subscribers = payload[1];  // [[topic, [node, ...]], ...]
+  for (int i = 0; i < subscribers.size(); ++i) {
+    if (static_cast<std::string>(subscribers[i][0]) != topic) continue;
+    for (int k = 0; k < subscribers[i][1].size(); ++k) {
+      if (static_cast<std::string>(subscribers[i][1][k]) == node) return true;
+    }
+  }
+  return false;
+}
+
+/// Waits (wall time) until `done` or `seconds` pass, spinning callbacks.
 inline bool spinUntil(const std::function<bool()>& done, double seconds) {
   const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
   while (ros::ok() && ros::WallTime::now() < end) {

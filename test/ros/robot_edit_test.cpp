@@ -3,10 +3,14 @@
 // joint_states go on; a name a robot has is refused; the body is deleted
 // again. A robot spawned with its joints set (spawn_model's -J) publishes
 // NAME/joint_states from there and swings; one whose links' frames another
-// robot has is refused.
+// robot has is refused. A robot spawned with its controllers (from its
+// namespace, as a Gazebo user loads them, or from the request) is driven by
+// them, and deleted with its topics. Two copies of one URDF run side by side
+// under their tf_prefixes (two_copies.test).
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/JointState.h>
+#include <std_msgs/Float64.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +22,8 @@
 #include "rigid_body_sim/GetJointProperties.h"
 #include "rigid_body_sim/SpawnBody.h"
 #include "robot_fixture.h"
+#include "tf2_ros/buffer.h"
+#include "tf2_ros/transform_listener.h"
 
 namespace rbs_test {
 namespace {
@@ -82,6 +88,89 @@ TEST_F(ArmEdits, ABodySpawnsBesideTheArmAndIsDeleted) {
   EXPECT_GT(last_.header.stamp.toSec(), stamp);
 }
 
+// urdf/pendulum.urdf spawned as a Gazebo user spawns a robot with
+// controllers (rosparam load FILE /pend2, then spawn_model): its position
+// controller drives it to the commanded angle and its joint_state_controller
+// sets its joint_states' rate. Deleted, every topic of it goes (its
+// joint_states, its controller's command, its joint_command) and its joints
+// with it, while the arm runs on; spawned again, with its controllers given
+// in the request this time, it is driven again; deleted again.
+TEST_F(ArmEdits, ARobotSpawnsWithItsControllersIsDrivenAndIsDeleted) {
+  ros::param::set("/pend2/joint_state_controller/type", std::string("joint_state_controller/JointStateController"));
+  ros::param::set("/pend2/joint_state_controller/publish_rate", 50.0);
+  ros::param::set("/pend2/pivot_controller/type", std::string("effort_controllers/JointPositionController"));
+  ros::param::set("/pend2/pivot_controller/joint", std::string("pivot"));
+  ros::param::set("/pend2/pivot_controller/pid/p", 200.0);
+  ros::param::set("/pend2/pivot_controller/pid/i", 100.0);
+  ros::param::set("/pend2/pivot_controller/pid/d", 5.0);
+  ros::param::set("/pend2/robot_description", std::string("not read: not a controller"));
+  std::vector<sensor_msgs::JointState> received;
+  ros::Subscriber states = nh_.subscribe<sensor_msgs::JointState>(
+      "/pend2/joint_states", 100, [&](const sensor_msgs::JointState::ConstPtr& m) { received.push_back(*m); });
+  ros::Publisher target = nh_.advertise<std_msgs::Float64>("/pend2/pivot_controller/command", 1, true);
+  SpawnBody s;
+  s.request.name = "pend2";
+  s.request.urdf_file = "package://rigid_body_sim/urdf/pendulum.urdf";
+  s.request.pose.position.x = -2.0;
+  s.request.pose.orientation.w = 1.0;
+  const auto drivenTo = [&](double angle) {
+    std_msgs::Float64 command;
+    command.data = angle;
+    target.publish(command);
+    received.clear();
+    EXPECT_TRUE(spinUntil([&] { return received.size() > 150; }, 60.0)) << "no joint_states from pend2";  // 3 s
+    if (received.size() < 2) return;
+    const sensor_msgs::JointState& last = received.back();
+    ASSERT_EQ(last.position.size(), 1u);
+    EXPECT_NEAR(last.position[0], angle, 0.02) << "the controller did not drive the pivot there";
+    const double period = (last.header.stamp - received[received.size() - 2].header.stamp).toSec();
+    EXPECT_NEAR(period, 0.02, 1e-6) << "not the joint_state_controller's 50 Hz";
+  };
+  const auto deleted = [&] {
+    rigid_body_sim::DeleteBody d;
+    d.request.name = "pend2";
+    d = call("delete_body", d);
+    EXPECT_TRUE(d.response.success) << d.response.message;
+    EXPECT_NE(d.response.message.find("robot 'pend2' deleted"), std::string::npos) << d.response.message;
+    EXPECT_TRUE(spinUntil(
+        [&] {
+          return !advertised("/pend2/joint_states") && !subscribes("/sim_node", "/pend2/pivot_controller/command") &&
+                 !subscribes("/sim_node", "/pend2/joint_command");
+        },
+        10.0))
+        << "a topic of the deleted robot is still open";
+    rigid_body_sim::GetJointProperties p;
+    p.request.joint_name = "pend2/pivot";
+    EXPECT_FALSE(call("get_joint_properties", p).response.success);
+    const double stamp = last_.header.stamp.toSec();
+    wait(0.2);
+    EXPECT_GT(last_.header.stamp.toSec(), stamp) << "the arm stopped";
+  };
+
+  const SpawnBody::Response added = call("spawn_body", s).response;
+  ASSERT_TRUE(added.success) << added.message;
+  EXPECT_NE(added.message.find("controllers pivot_controller on 'pend2/CONTROLLER/command'"), std::string::npos)
+      << added.message;
+  drivenTo(0.6);
+  deleted();
+
+  s.request.controllers =
+      "{pivot_controller: {type: effort_controllers/JointPositionController, joint: pivot,"
+      " pid: {p: 200, i: 100, d: 5}},"
+      " joint_state_controller: {type: joint_state_controller/JointStateController, publish_rate: 50}}";
+  ros::param::del("/pend2");
+  const SpawnBody::Response again = call("spawn_body", s).response;
+  ASSERT_TRUE(again.success) << again.message;
+  drivenTo(-0.4);
+  deleted();
+
+  s.request.controllers = "{pivot_controller: {type: effort_controllers/JointPositionController, joint: pivot}}";
+  const SpawnBody::Response no_gains = call("spawn_body", s).response;
+  EXPECT_FALSE(no_gains.success);
+  EXPECT_NE(no_gains.message.find("controllers: "), std::string::npos) << no_gains.message;
+  EXPECT_NE(no_gains.message.find("pivot_controller.pid"), std::string::npos) << no_gains.message;
+}
+
 // urdf/pendulum.urdf spawned with its pivot at 0.5 rad (spawn_model's -J):
 // pend/joint_states starts there, the rod swings under gravity, ~body_states
 // has it; a position past a joint's limit or an unknown joint is refused;
@@ -137,6 +226,69 @@ TEST_F(ArmEdits, ARobotSpawnsWithItsJointsSet) {
   ASSERT_TRUE(trigger("reset"));
   EXPECT_DOUBLE_EQ(pivot(), 0.5) << "a reset did not put it back where it was spawned";
   ASSERT_TRUE(trigger("unpause"));
+}
+
+// urdf/four_wheeler.urdf spawned twice, as car_a and car_b, each with its
+// tf_prefix set as robot_state_publisher reads it (two_copies.test runs one
+// in each namespace): tf carries both, 2 m apart, the node placing each base
+// and robot_state_publisher each wheel. A copy without a tf_prefix comes in
+// once with the URDF's own names; a second such copy is refused naming the
+// frame and the parameter, and comes in once it has one. A deleted copy's
+// base is no longer on tf, while the other's goes on.
+TEST(TwoCopies, OneUrdfRunsTwiceUnderTheTfPrefixes) {
+  ros::NodeHandle nh;
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  ASSERT_TRUE(ros::service::waitForService("/sim_node/spawn_body", 30000));
+  ros::ServiceClient spawner = nh.serviceClient<SpawnBody>("/sim_node/spawn_body");
+  ros::ServiceClient deleter = nh.serviceClient<rigid_body_sim::DeleteBody>("/sim_node/delete_body");
+  const auto spawn = [&](const std::string& name, double x) {
+    SpawnBody s;
+    s.request.name = name;
+    s.request.urdf_file = "package://rigid_body_sim/urdf/four_wheeler.urdf";
+    s.request.pose.position.x = x;
+    s.request.pose.position.y = 3.0;  // clear of the box
+    s.request.pose.position.z = 0.1;
+    s.request.pose.orientation.w = 1.0;
+    EXPECT_TRUE(spawner.call(s));
+    return s.response;
+  };
+  const auto where = [&](const std::string& frame) {
+    geometry_msgs::TransformStamped t;
+    EXPECT_TRUE(spinUntil([&] { return buffer.canTransform("world", frame, ros::Time(0)); }, 20.0)) << frame;
+    if (buffer.canTransform("world", frame, ros::Time(0))) t = buffer.lookupTransform("world", frame, ros::Time(0));
+    return t;
+  };
+  for (const auto& [name, x] : {std::pair<std::string, double>{"car_a", 0.0}, {"car_b", 2.0}}) {
+    const SpawnBody::Response added = spawn(name, x);
+    ASSERT_TRUE(added.success) << added.message;
+  }
+  const geometry_msgs::TransformStamped a = where("car_a/front_left_wheel"), b = where("car_b/front_left_wheel");
+  EXPECT_NEAR(b.transform.translation.x - a.transform.translation.x, 2.0, 0.01);
+  EXPECT_NEAR(a.transform.translation.y, 3.25, 0.01);  // the wheel 0.25 m left of the chassis
+  EXPECT_NEAR(b.transform.translation.y, 3.25, 0.01);
+
+  ASSERT_TRUE(spawn("car_c", 4.0).success);  // no tf_prefix: the URDF's names, nobody's yet
+  // Its base, which the node places (no robot_state_publisher runs for it).
+  where("chassis");
+  const SpawnBody::Response twice = spawn("car_d", 6.0);
+  EXPECT_FALSE(twice.success);
+  EXPECT_NE(twice.message.find("the robot's link frame 'chassis' is a frame of robot 'car_c'"), std::string::npos)
+      << twice.message;
+  EXPECT_NE(twice.message.find("set car_d/tf_prefix"), std::string::npos) << twice.message;
+  ros::param::set("/car_d/tf_prefix", std::string("car_d"));
+  const SpawnBody::Response prefixed = spawn("car_d", 6.0);
+  EXPECT_TRUE(prefixed.success) << prefixed.message;
+
+  rigid_body_sim::DeleteBody d;
+  d.request.name = "car_a";
+  ASSERT_TRUE(deleter.call(d));
+  ASSERT_TRUE(d.response.success) << d.response.message;
+  ros::WallDuration(0.3).sleep();  // what was on its way before the delete
+  const ros::Time gone = where("car_a/chassis").header.stamp, on = where("car_b/chassis").header.stamp;
+  ros::WallDuration(1.0).sleep();
+  EXPECT_EQ(where("car_a/chassis").header.stamp, gone) << "the deleted copy's base is still on tf";
+  EXPECT_GT(where("car_b/chassis").header.stamp, on) << "the other copy's base stopped";
 }
 
 }  // namespace

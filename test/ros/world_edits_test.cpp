@@ -25,15 +25,18 @@ struct Edits : test::PartsWorld {
   NodeTime time{1e-3, false};
   Pacer pacer;
   std::vector<std::string> told;
+  std::optional<RobotPublisher> robots;
   WorldEdits edits{
       sim,
       ports,
+      robots,
       address,
       settings,
       time,
       pacer,
       {[this] { told.push_back("added"); }, [this](const std::string& n) { told.push_back("removed " + n); },
-       [this](const std::string& prefix) { told.push_back("robot added " + prefix); }}};
+       [this](SpawnQueue::Spawn& s) { told.push_back("robot added " + s.request.name); },
+       [this](std::size_t, const std::string& n) { told.push_back("robot removed " + n); }}};
 
   /// A spawn of a box named `name` at `z` m above the origin of `frame`, as the spawn thread hands it over.
   SpawnQueue::Spawn spawn(const std::string& name, double z, const std::string& frame) {

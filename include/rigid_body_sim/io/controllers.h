@@ -33,4 +33,16 @@ std::vector<std::string> controllerTypes();
 /// a group): they act through a PID on effort, never by setting the joint.
 RobotControls buildControls(const std::vector<ControllerEntry>& entries, const core::ArticulationModel& model);
 
+/// A robot's controllers given apart from a config (~spawn_body), for
+/// `model`, read and checked as the config's are (every problem in one
+/// ConfigError naming the keys under `path`). `node` is a map as the
+/// config's `controllers` key, or, `in_namespace`, the robot's namespace
+/// as a Gazebo user fills it (`rosparam load FILE /NAME`, which
+/// gazebo_ros_control and controller_manager read): each of its maps
+/// with a `type` key is a controller (as the spawner finds them by name),
+/// its `gazebo_ros_control` map gives pid_gains, and the rest (the
+/// robot_description, other nodes' parameters) is not this node's to read.
+RobotControls controlsOf(const YAML::Node& node, const std::string& path, const core::ArticulationModel& model,
+                         bool in_namespace);
+
 }  // namespace rigid_body_sim::io

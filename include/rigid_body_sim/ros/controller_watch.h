@@ -33,6 +33,9 @@ class ControllerWatch {
 
   /// The robot was put back (reset, a new configuration): its times start over.
   void restart(std::size_t r);
+  /// Robot r was deleted: what was said of it is forgotten (a robot spawned
+  /// again is watched afresh), the later robots move down by one.
+  void removeRobot(std::size_t r);
 
  private:
   std::vector<std::vector<double>> saturated_;  ///< s, per robot and joint (a link index)

@@ -37,9 +37,13 @@ class RobotCommands {
   RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotControls> controls, const core::Simulation& sim,
                 const NodeTime& time, bool several);
 
-  /// Robot r of `sim`, added to the world (~spawn_body): no controllers,
-  /// so no topics; its efforts are the timed ones (apply_joint_effort).
-  void addRobot(const core::Simulation& sim, std::size_t r);
+  /// Robot r of `sim`, added to the world (~spawn_body), with `controls`:
+  /// their topics under `prefix`, the position and trajectory controllers
+  /// holding the joints where they are.
+  void addRobot(const core::Simulation& sim, std::size_t r, const std::string& prefix, io::RobotControls controls);
+  /// Robot r deleted (~delete_body): its topics unsubscribed, its
+  /// controllers gone; the later robots move down by one.
+  void removeRobot(std::size_t r);
 
   /// Each robot's loads for the step [t, t + dt) from `sim`'s state: its
   /// controllers' efforts and the timed ones (apply_joint_effort) added,
@@ -74,20 +78,22 @@ class RobotCommands {
   void trajectory(std::size_t r, std::size_t c, const trajectory_msgs::JointTrajectory& msg);
 
  private:
-  /// Keeps `robot`'s name and its joints' (for messages and joint_command).
-  void nameJoints(const core::SceneRobot& robot);
+  /// Robot r's controllers' command topics and its joint_command, under `prefix`.
+  std::vector<ros::Subscriber> subscribe(std::size_t r, const std::string& prefix);
   /// Warns once per joint and limit of the commands `source` had clipped.
   void warnClipped(std::size_t r, const std::string& source, const std::vector<core::Clipped>& clipped);
 
   const core::Simulation& sim_;
   const NodeTime& time_;
+  ros::NodeHandle nh_;
+  // Per robot, in the world's order of robots.
   std::vector<io::RobotControls> controls_;
   std::vector<std::string> robot_names_;
   std::vector<std::vector<std::string>> joint_names_;  ///< per robot, per link
   std::vector<Eigen::VectorXd> applied_;
   std::set<std::pair<std::string, std::string>> warned_;  ///< (robot/joint, limit) clipped once
   ControllerWatch watch_;                                 ///< saturated or pressing controllers, said once
-  std::vector<ros::Subscriber> subscribers_;
+  std::vector<std::vector<ros::Subscriber>> subscribers_;
 };
 
 }  // namespace rigid_body_sim::node

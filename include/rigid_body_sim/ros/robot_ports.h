@@ -23,8 +23,11 @@ namespace rigid_body_sim::node {
 struct RobotPorts {
   std::string name;    ///< the robot's (its entry's, or its URDF's alone)
   std::string prefix;  ///< its topics' ("" alone, "NAME/" in a world)
-  /// Its base link's frame, named as in the URDF (robot_state_publisher
-  /// names the other links so), or "" for a robot fixed to the world (the
+  /// Its links' tf frames: the URDF's names after its tf_prefix ("" or
+  /// "PREFIX/"), as robot_state_publisher names them (framePrefix).
+  std::string frame_prefix;
+  std::vector<std::string> frames;  ///< every link's but a `world` root's
+  /// Its base link's frame, or "" for a robot fixed to the world (the
   /// URDF's root is then `world`, and robot_state_publisher roots it there).
   std::string base_frame;
   CountedPublisher joint_states;
@@ -47,11 +50,23 @@ std::string placedBase(const core::ArticulationModel& robot);
 geometry_msgs::TransformStamped baseTransform(const core::ArticulationState& state, const RobotPorts& ports,
                                               const std::string& world_frame, const ros::Time& stamp);
 
-/// Refuses (io::ConfigError) robots whose frames tf would confuse: a link
-/// of two robots with one name (robot_state_publisher publishes URDF names
-/// as they are: give each robot's URDF its own, as with a xacro prefix), or
-/// a robot's link named as the world frame or as one of `body_frames`.
-void checkRobotFrames(const core::Scene& scene, const std::string& world_frame,
+/// The tf_prefix of robot `robot`'s frames, "" or "PREFIX/": the
+/// `tf_prefix` parameter robot_state_publisher (1.15, as in Melodic) finds
+/// searching up from the robot's namespace (/NAME/tf_prefix, then
+/// /tf_prefix), which is how ROS 1 runs two copies of one URDF, and what
+/// Gazebo's ROS plugins read: each robot in its namespace, its frames
+/// PREFIX/LINK.
+std::string framePrefix(const ros::NodeHandle& nh, const std::string& robot);
+
+/// The tf frames of `robot`'s links after `frame_prefix` ("" or "PREFIX/"),
+/// but a `world` root's (robot_state_publisher's root, the world itself).
+std::vector<std::string> robotFrames(const core::ArticulationModel& robot, const std::string& frame_prefix);
+
+/// Refuses (io::ConfigError) robots whose frames tf would confuse: a frame
+/// of two robots (robot_state_publisher publishes the URDF's names after
+/// the robot's tf_prefix: give each robot its own), or a robot's frame
+/// named as the world frame or as one of `body_frames`.
+void checkRobotFrames(const std::vector<RobotPorts>& robots, const std::string& world_frame,
                       const std::vector<std::string>& body_frames);
 
 class RobotPublisher {
@@ -63,8 +78,11 @@ class RobotPublisher {
                  double publish_rate, const std::function<double(std::size_t)>& rate);
 
   /// A robot added to the world (~spawn_body): its joint_states under
-  /// `prefix`, at `hz` Hz of sim time.
-  void addRobot(const core::SceneRobot& robot, const std::string& prefix, double hz);
+  /// `prefix`, at `hz` Hz of sim time, its frames after `frame_prefix`.
+  void addRobot(const core::SceneRobot& robot, const std::string& prefix, double hz, const std::string& frame_prefix);
+  /// Robot r deleted (~delete_body): its joint_states unadvertised, its
+  /// base no longer on tf; the later robots move down by one.
+  void removeRobot(std::size_t r) { robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r)); }
 
   /// Robot r's joint states (efforts `applied[r]`) and floating base,
   /// stamped `now`: every robot, or with `steps` ≥ 0 those due at that step.

@@ -99,8 +99,10 @@ class SimNode {
   void afterSpawn();
   /// After the body named `name` was deleted: the markers and fixed frames without it.
   void afterDelete(const std::string& name);
-  /// After a robot was added last: its joint_states under `prefix`, its efforts.
-  void afterRobotSpawn(const std::string& prefix);
+  /// After the robot of `spawn` was added last: its joint_states and controllers under its name.
+  void afterRobotSpawn(SpawnQueue::Spawn& spawn);
+  /// After robot r, named `name`, was deleted: its joint_states and controllers go.
+  void afterRobotDelete(std::size_t r, const std::string& name);
 
   // Live tuning (reconfigure.cpp): the dynamic_reconfigure server ~physics.
   void startReconfigure();
@@ -140,12 +142,14 @@ class SimNode {
   /// Spawned bodies in, ~delete_body's out, between steps.
   WorldEdits world_edits_{sim_,
                           ports_,
+                          robot_publisher_,
                           address_,
                           params_.node,
                           time_,
                           pacer_,
                           {[this] { afterSpawn(); }, [this](const std::string& name) { afterDelete(name); },
-                           [this](const std::string& prefix) { afterRobotSpawn(prefix); }}};
+                           [this](SpawnQueue::Spawn& spawn) { afterRobotSpawn(spawn); },
+                           [this](std::size_t r, const std::string& name) { afterRobotDelete(r, name); }}};
   /// get_state, set_state, reset: each published at once, a reset re-paced.
   StateRequests state_requests_{
       sim_,

@@ -16,6 +16,7 @@
 #include "rigid_body_sim/SpawnBody.h"
 #include "rigid_body_sim/core/model.h"
 #include "rigid_body_sim/core/scene.h"
+#include "rigid_body_sim/io/controllers.h"
 #include "rigid_body_sim/ros/body_ports.h"
 
 namespace rigid_body_sim::node {
@@ -31,6 +32,8 @@ class SpawnQueue {
     /// joint_names set them (the base placed by the loop).
     std::optional<core::Scene::RobotSpec> robot;
     core::ArticulationState robot_start;
+    io::RobotControls controls;  ///< the robot's, read and checked on the spawn thread
+    std::string frame_prefix;    ///< its frames' tf_prefix, "" or "PREFIX/" (framePrefix)
   };
   /// Adds a spawn to the world, or says why not (loop thread).
   using Insert = std::function<SpawnBody::Response(Spawn&)>;
