@@ -111,15 +111,15 @@ void solveRows(const SolverSettings& settings, const std::vector<CoordinateBlock
     c.eigen.ready = false;
     c.nu = 0.0;
   }
-  // Sweeps until no row changes a velocity by more than 1e-12 (rad/s or
-  // m/s, relative to the fastest joint), at most 200; or until they stall
-  // below the free bodies' tolerance: friction whose limit moves with the
-  // normal impulse can cycle there instead of converging (the free bodies'
-  // stall rule, §5.5: a sweep that takes off more than stall_ratio of what
-  // the sweep four before took).
-  const double tolerance = 1e-12 * std::max(1.0, u.cwiseAbs().maxCoeff());
+  // Sweeps until no row changes a velocity by more than the joint-space
+  // tolerance (relative to the fastest joint), at most joint_space_sweeps;
+  // or until they stall below the free bodies' tolerance: friction whose
+  // limit moves with the normal impulse can cycle there instead of
+  // converging (the free bodies' stall rule, §5.5: a sweep that takes off
+  // more than stall_ratio of what the sweep four before took).
+  const double tolerance = settings.joint_space_tolerance * std::max(1.0, u.cwiseAbs().maxCoeff());
   double recent[4] = {kInfinity, kInfinity, kInfinity, kInfinity};
-  for (int sweep = 0; sweep < 200 && !(rows.empty() && contacts.empty()); ++sweep) {
+  for (int sweep = 0; sweep < settings.joint_space_sweeps && !(rows.empty() && contacts.empty()); ++sweep) {
     double largest = 0.0;
     for (JointRow& row : rows) {
       const double next = std::clamp(row.impulse + row.mass * (row.target - rowVelocity(row, u)), row.lower, row.upper);

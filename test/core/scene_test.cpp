@@ -113,6 +113,61 @@ TEST(Scene, PusherShovesABox) {
   EXPECT_NEAR(push / kH, m * a, 1e-6);
 }
 
+// Two lanes of one scene: a 2 kg pusher on a prismatic joint (a robot) and
+// a 2 kg free body, each frictionless and pushed with 20 N, shove a 1 kg
+// box along a floor with μ = 0.5. Each box moves as its closed form says,
+// a = (F − μ m g) / (M + m), whichever pushed it: a box behaves alike
+// touched by a robot or by a body, to the free solve's velocity tolerance
+// (1e-7 m/s; after 0.5 s the two boxes differ by 2.5e-9 m/s, the robot's
+// lane, solved to 1e-12, matching the closed form to 1e-14). Then each
+// pusher, at 1 m/s, strikes a box at rest in zero gravity, restitution 0.5:
+// each box leaves at (1 + e) M / (M + m) times the speed.
+TEST(Scene, ABoxPushedByARobotMovesAsOnePushedByABody) {
+  const double M = 2.0, m = 1.0, F = 20.0, mu = 0.5;
+  const ArticulationModel pusher = slider(Vec3::UnitX(), Vec3(0.0, 0.0, 0.1), Vec3(0.1, 0.3, 0.1), M);
+  BodySpec body_pusher = test::boxBody(Vec3(0.05, 0.15, 0.1), M);
+  body_pusher.name = "body_pusher";
+  body_pusher.friction = 0.0;
+  const BodySpec box = test::boxBody(Vec3(0.1, 0.1, 0.1), m);
+  BodySpec other_box = box;
+  other_box.name = "other_box";
+  Scene::RobotSpec robot{"pusher", pusher};
+  robot.friction = 0.0;
+  const auto lanes = [&](const ModelSpec& spec, const Vec3& v_pusher) {
+    ArticulationState start = restState(pusher);
+    start.v(0) = v_pusher.x();
+    LinkState body_start = at(Vec3(0.0, 2.0, 0.1));
+    body_start.v_WL = v_pusher;
+    return SceneRun(spec, {robot}, {at(Vec3(0.15, 0.0, 0.1)), body_start, at(Vec3(0.15, 2.0, 0.1))}, {start});
+  };
+  {
+    SceneRun run = lanes(settings({box, body_pusher, other_box}, mu, true), Vec3::Zero());
+    run.loads.robots.resize(1);
+    run.loads.robots[0].effort = Eigen::VectorXd::Constant(1, F);
+    run.loads.bodies.resize(3);
+    run.loads.bodies[1].force_W = Vec3(F, 0.0, 0.0);
+    const int n = 500;
+    run.steps(n);
+    const double v = (F - mu * m * kG) / (M + m) * n * kH;
+    const double tolerance = run.scene.model().solver().velocity_tolerance;  // m/s
+    EXPECT_NEAR(run.body(0).v_WB.x(), v, tolerance) << "the box the robot pushed";
+    EXPECT_NEAR(run.body(2).v_WB.x(), v, tolerance) << "the box the body pushed";
+    EXPECT_NEAR(run.body(0).p_WB.x(), run.body(2).p_WB.x(), tolerance * n * kH);
+  }
+  {
+    ModelSpec spec = settings({box, body_pusher, other_box}, mu, false);
+    spec.gravity_W = Vec3::Zero();
+    spec.contact.restitution = 0.5;
+    SceneRun run = lanes(spec, Vec3(1.0, 0.0, 0.0));
+    run.state.bodies.bodies[0].p_WB.x() = 0.2;  // 5 cm ahead: the pushers arrive at 1 m/s
+    run.state.bodies.bodies[2].p_WB.x() = 0.2;
+    run.steps(200);
+    const double v_box = (1.0 + 0.5) * M / (M + m);
+    EXPECT_NEAR(run.body(0).v_WB.x(), v_box, 1e-6) << "the box the robot struck";
+    EXPECT_NEAR(run.body(2).v_WB.x(), v_box, 1e-6) << "the box the body struck";
+  }
+}
+
 // A 1 kg box on a 2 kg platform that slides along x (μ = 0.5 between them),
 // driven by an effort: below μ g (M + m) the box rides along, a = F/(M + m);
 // above, it slips, its acceleration μ g, the platform's (F − μ m g)/M.

@@ -146,6 +146,16 @@ struct SolverSettings {
   double friction_newton_tolerance = 1e-10;
   double isotropy_tolerance = 1e-12;
 
+  // -- the solve of the islands that hold a robot (§11.9), in joint space
+  /// Its sweeps stop once none changes a velocity by more than this
+  /// fraction of the fastest coordinate (rad/s or m/s, taken as at least
+  /// 1), at most `joint_space_sweeps` of them, or when they stall (the rule
+  /// above, below velocity_tolerance). Tighter than the free bodies': the
+  /// robots' closed forms hold to 1e-9 m/s (scene_test); a box behaves
+  /// alike pushed by a robot or by a body to velocity_tolerance.
+  double joint_space_tolerance = 1e-12;
+  int joint_space_sweeps = 200;
+
   // -- position correction (§5.8)
   /// Gauss-Seidel sweeps on positions. Key position_iterations.
   int position_iterations = 4;
