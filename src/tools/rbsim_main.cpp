@@ -25,7 +25,6 @@
 #include "rbsim_loop.h"
 #include "rbsim_output.h"
 #include "rbsim_report.h"
-#include "rbsim_robot.h"
 #include "rbsim_scene.h"
 #include "rigid_body_sim/core/contact.h"
 #include "rigid_body_sim/core/diagnostics.h"
@@ -220,17 +219,14 @@ void checkDuration(const Args& args, const io::SimConfig& config) {
 
 int run(const Args& args) {
   const rigid_body_sim::tools::RunOptions options{args.duration, args.csv, args.every, args.quiet};
-  if (!args.urdf.empty()) {  // a URDF with moving joints is a robot: rbsim_robot.cpp
+  if (!args.urdf.empty()) {  // a URDF with moving joints is a robot: a scene of one (rbsim_scene.cpp)
     const std::string xml = io::readInput<io::UrdfError>(args.urdf, io::InputCaps::kUrdfBytes, "URDF");
     if (io::describesRobot(xml, args.urdf)) {
       const std::string dir = std::filesystem::path(args.urdf).parent_path().string();
       const io::SimConfig config = readConfig(args);
       checkDuration(args, config);
-      std::vector<std::string> notes;
-      core::ArticulationModel robot =
-          io::loadArticulationString(xml, args.urdf, dir, io::UrdfOptions{config.urdf_repair, &notes});
-      warnAll(notes);
-      return rigid_body_sim::tools::runRobot(config, std::move(robot), options);
+      const auto urdf = [&] { return io::UrdfText{xml, args.urdf, dir}; };
+      return rigid_body_sim::tools::runScene(io::loadScene(config, urdf), options);
     }
   }
   bool world_config = false;
@@ -239,7 +235,7 @@ int run(const Args& args) {
     const io::SimConfig config = readConfig(args);
     checkDuration(args, config);
     if (args.urdf.empty() && !config.bodies.empty() && io::listsRobots(config)) {  // rbsim_scene.cpp
-      return rigid_body_sim::tools::runScene(config, options);
+      return rigid_body_sim::tools::runScene(io::buildScene(config), options);
     }
     world.emplace(loadWorld(args, config, &world_config));
     warnAll(world->notes);

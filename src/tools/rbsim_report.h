@@ -1,7 +1,6 @@
 // What rbsim reports of a run besides the states: energies, momenta, rest,
 // joints, and the steps' warnings. Shared by the world's run
-// (rbsim_main.cpp), a robot's (rbsim_robot.cpp) and a scene's
-// (rbsim_scene.cpp).
+// (rbsim_main.cpp) and a scene's, robots and all (rbsim_scene.cpp).
 #pragma once
 
 #include <cstddef>

@@ -44,8 +44,7 @@ core::Vec3 sceneAngularMomentum(const core::Scene& scene, const core::SceneState
 
 }  // namespace
 
-int runScene(const io::SimConfig& config, const RunOptions& options) {
-  io::SceneSetup setup = io::buildScene(config);
+int runScene(io::SceneSetup setup, const RunOptions& options) {
   for (const std::string& note : setup.notes) std::fprintf(stderr, "rbsim: warning: %s\n", note.c_str());
   const core::Scene& scene = setup.scene;
   core::SceneState& state = setup.state;
@@ -71,16 +70,24 @@ int runScene(const io::SimConfig& config, const RunOptions& options) {
   const double energy_start = sceneEnergy(scene, state);
   const core::Vec3 momentum_start = sceneAngularMomentum(scene, state);
 
-  // The CSV's joint columns: every robot's, ROBOT/JOINT.
+  // The CSV's joint columns: every robot's, ROBOT/JOINT (a robot alone's, JOINT).
+  const bool alone = setup.entry.size() == 1 && setup.entry[0] < 0;
   std::vector<std::string> joints;
   std::vector<int> first_joint;
   for (const core::SceneRobot& robot : robots) {
     first_joint.push_back(static_cast<int>(joints.size()));
-    for (int i = 1; i <= robot.model.jointCount(); ++i) joints.push_back(robot.name + "/" + robot.model.links[i].joint);
+    for (int i = 1; i <= robot.model.jointCount(); ++i) {
+      joints.push_back((alone ? "" : robot.name + "/") + robot.model.links[i].joint);
+    }
   }
   std::unique_ptr<CsvWriter> csv;
-  if (!options.csv.empty()) csv = std::make_unique<CsvWriter>(options.csv, true, joints);
+  if (!options.csv.empty()) csv = std::make_unique<CsvWriter>(options.csv, !alone, joints);
   const auto write_rows = [&](long long done) {
+    if (alone) {
+      const core::ArticulationState& s = state.robots[0];
+      csv->row(done * dt, core::baseLinkState(s), s.q, s.v);
+      return;
+    }
     for (const int e : setup.entry) {
       if (e >= 0) {
         csv->row(done * dt, model.body(e).name, core::linkState(model.body(e), state.bodies.bodies[e]));
@@ -157,6 +164,7 @@ int runScene(const io::SimConfig& config, const RunOptions& options) {
     resting += rest;
     entries.push_back(entry);
   }
+  if (alone) out["final"] = entries[0]["final"];  // as a body given alone has it
   out["at_rest"] = all_rest;
   out["speed_limited"] = limited_json;
   if (csv) csv->finish();

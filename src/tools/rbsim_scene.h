@@ -1,17 +1,28 @@
-// rbsim's run of a world whose bodies list holds robots: a scene of free
-// bodies and robots stepped together (docs/physics.md §11.9).
+// rbsim's run of a world of bodies and robots, or of one robot: a scene
+// stepped as the node steps it (docs/physics.md §11.9).
 #pragma once
 
-#include "rbsim_robot.h"
-#include "rigid_body_sim/io/config.h"
+#include <string>
+
+#include "rigid_body_sim/io/scene_loader.h"
 
 namespace rigid_body_sim::tools {
 
-/// Runs the config's bodies list as a scene (io::buildScene) and prints the
-/// JSON line: the world's members, each entry of `bodies` in the config's
-/// order, a robot's base link as its `final` with final.joints.NAME.position
-/// and .velocity. The CSV has a row per body and robot, and a position and
-/// a velocity column per robot joint (ROBOT/JOINT), filled on its robot's row.
-int runScene(const io::SimConfig& config, const RunOptions& options);
+/// What the command line asks of a run.
+struct RunOptions {
+  double duration = 0.0;  ///< s
+  std::string csv;        ///< "" for none
+  long long every = 1;    ///< one CSV row every this many steps
+  bool quiet = false;
+};
+
+/// Runs `setup` (io::buildScene for a config's bodies list, io::loadScene
+/// for one robot given alone) and prints the JSON line: the world's
+/// members, each entry of `bodies` in the config's order, a robot's base
+/// link as its `final` with final.joints.NAME.position and .velocity. The
+/// CSV has a row per body and robot, and a position and a velocity column
+/// per robot joint (ROBOT/JOINT), filled on its robot's row; a robot alone
+/// has no name column and its joints' own names.
+int runScene(io::SceneSetup setup, const RunOptions& options);
 
 }  // namespace rigid_body_sim::tools

@@ -1,7 +1,8 @@
 // Joint controllers through effort (docs/physics.md §11.10): control_toolbox's
 // PID arithmetic, a pendulum held at its target against gravity by the
 // effort gravity needs, a wheel spun up as the discrete first-order law
-// says, limits, refusals and the restart a reset makes.
+// says, limits, refusals and the restart a reset makes; each robot stepped
+// as the node steps it (stepScene).
 #include "rigid_body_sim/core/joint_control.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 
 #include "articulation_models.h"
 #include "rigid_body_sim/core/articulation_step.h"
+#include "rigid_body_sim/core/scene.h"
 
 namespace rigid_body_sim::core {
 namespace {
@@ -50,6 +52,25 @@ ArticulationModel pendulum(double effort_limit) {
   return model;
 }
 
+/// `model` alone in a scene with gravity `g` and no ground, stepped as the
+/// node and rbsim step a robot (stepScene).
+struct Alone {
+  Scene scene;
+  SceneState state;
+  SceneWorkspace ws;
+
+  Alone(const ArticulationModel& model, const Vec3& g)
+      : scene(spec(g), {{"robot", model}}), state(sceneState(scene, {}, {restState(model)})) {}
+  static ModelSpec spec(const Vec3& g) {
+    ModelSpec s;
+    s.dt = kH;
+    s.gravity_W = g;
+    return s;
+  }
+  ArticulationState& robot() { return state.robots[0]; }
+  void step(const ArticulationLoads& loads) { stepScene(scene, state, {{}, {loads}}, ws); }
+};
+
 JointControllerSpec positionController(double p, double i, double d, double i_clamp) {
   return {"hinge_position", ControlMode::kPosition, {1}, {{p, i, d, i_clamp}}};
 }
@@ -57,7 +78,8 @@ JointControllerSpec positionController(double p, double i, double d, double i_cl
 TEST(JointControllers, PositionPidHoldsAPendulumWithTheEffortGravityNeeds) {
   const ArticulationModel model = pendulum(20.0);
   JointControllers ctl(model, {positionController(100.0, 200.0, 10.0, 10.0)});
-  ArticulationState s = restState(model);
+  Alone run(model, Vec3(0.0, 0.0, -kG));
+  ArticulationState& s = run.robot();
   ctl.restart(s);
   std::vector<Clipped> clipped;
   ASSERT_TRUE(ctl.command(0, {0.6}, clipped));
@@ -65,7 +87,7 @@ TEST(JointControllers, PositionPidHoldsAPendulumWithTheEffortGravityNeeds) {
   ArticulationLoads loads;
   for (int n = 0; n < 20000; ++n) {
     ctl.efforts(s, n * kH, kH, loads.effort);
-    stepArticulation(model, s, loads, Vec3(0.0, 0.0, -kG), kH);
+    run.step(loads);
   }
   EXPECT_NEAR(s.q(0), 0.6, 1e-6);  // the integral took the steady error away
   EXPECT_NEAR(s.v(0), 0.0, 1e-6);
@@ -77,7 +99,8 @@ TEST(JointControllers, EffortsStayWithinTheLimit) {
   ArticulationModel model = pendulum(1.5);  // below m g l sin 0.6 = 2.77 N·m: it cannot get there
   model.links[1].damping = 0.5;             // N·m·s/rad: it settles where the held effort leaves it
   JointControllers ctl(model, {positionController(1000.0, 0.0, 0.0, 0.0)});
-  ArticulationState s = restState(model);
+  Alone run(model, Vec3(0.0, 0.0, -kG));
+  ArticulationState& s = run.robot();
   ctl.restart(s);
   std::vector<Clipped> clipped;
   ASSERT_TRUE(ctl.command(0, {0.6}, clipped));
@@ -86,7 +109,7 @@ TEST(JointControllers, EffortsStayWithinTheLimit) {
   for (int n = 0; n < 20000; ++n) {
     ctl.efforts(s, n * kH, kH, loads.effort);
     most = std::max(most, std::abs(loads.effort(0)));
-    stepArticulation(model, s, loads, Vec3(0.0, 0.0, -kG), kH);
+    run.step(loads);
   }
   EXPECT_EQ(most, 1.5);
   // It hangs where 1.5 N·m holds it: m g l sin q = 1.5.
@@ -104,13 +127,14 @@ TEST(JointControllers, VelocityPidSpinsAWheelUpAsTheFirstOrderLaw) {
   model.links[1].limits.effort = 100.0;
   checkArticulation(model);
   JointControllers ctl(model, {{"axle_velocity", ControlMode::kVelocity, {1}, {{p, 0.0, 0.0, 0.0}}}});
-  ArticulationState s = restState(model);
+  Alone run(model, Vec3(0.0, 0.0, -kG));
+  ArticulationState& s = run.robot();
   std::vector<Clipped> clipped;
   ASSERT_TRUE(ctl.command(0, {omega}, clipped));
   ArticulationLoads loads;
   for (int n = 1; n <= 200; ++n) {
     ctl.efforts(s, n * kH, kH, loads.effort);
-    stepArticulation(model, s, loads, Vec3(0.0, 0.0, -kG), kH);
+    run.step(loads);
     ASSERT_NEAR(s.v(0), omega * (1.0 - std::pow(1.0 - kH * p / I, n)), 1e-12) << n;
   }
 }
@@ -198,13 +222,14 @@ TEST(JointControllers, OneJointOfAGroupIsSetAlone) {
 TEST(JointControllers, RestartHoldsTheJointsWhereTheyAre) {
   const ArticulationModel model = pendulum(20.0);
   JointControllers ctl(model, {positionController(100.0, 200.0, 10.0, 10.0)});
-  ArticulationState s = restState(model);
+  Alone run(model, Vec3(0.0, 0.0, 0.0));
+  ArticulationState& s = run.robot();
   std::vector<Clipped> clipped;
   ASSERT_TRUE(ctl.command(0, {0.6}, clipped));
   ArticulationLoads loads;
   for (int n = 0; n < 3000; ++n) {
     ctl.efforts(s, n * kH, kH, loads.effort);
-    stepArticulation(model, s, loads, Vec3(0.0, 0.0, 0.0), kH);  // no gravity: at rest means no effort
+    run.step(loads);  // no gravity: at rest means no effort
   }
   ArticulationState put = restState(model);
   put.q(0) = -0.4;
@@ -219,7 +244,8 @@ TEST(JointControllers, RestartHoldsTheJointsWhereTheyAre) {
 TEST(JointControllers, ATrajectoryReachesItsPointsAtTheirTimes) {
   const ArticulationModel model = pendulum(20.0);
   JointControllers ctl(model, {{"arm", ControlMode::kTrajectory, {1}, {{400.0, 400.0, 40.0, 10.0}}}});
-  ArticulationState s = restState(model);
+  Alone run(model, Vec3(0.0, 0.0, -kG));
+  ArticulationState& s = run.robot();
   ctl.restart(s);
   std::vector<Clipped> clipped;
   int dropped = -1;
@@ -231,7 +257,7 @@ TEST(JointControllers, ATrajectoryReachesItsPointsAtTheirTimes) {
   for (int n = 0; n < 6000; ++n) {
     if (n % 1000 == 0 && n > 0 && n <= 3000) reached.push_back(s.q(0));
     ctl.efforts(s, n * kH, kH, loads.effort);
-    stepArticulation(model, s, loads, Vec3(0.0, 0.0, -kG), kH);
+    run.step(loads);
   }
   reached.push_back(s.q(0));
   ASSERT_EQ(reached.size(), 4u);
