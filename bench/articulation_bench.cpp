@@ -29,9 +29,9 @@
 #include <utility>
 #include <vector>
 
-#include "rigid_body_sim/core/articulation_dynamics.h"
-#include "rigid_body_sim/core/articulation_step.h"
-#include "rigid_body_sim/core/scene.h"
+#include "rigid_body_sim/core/articulations/articulation_dynamics.h"
+#include "rigid_body_sim/core/articulations/articulation_step.h"
+#include "rigid_body_sim/core/articulations/scene.h"
 #include "rigid_body_sim/io/articulation_loader.h"
 
 #ifdef RBS_WITH_MUJOCO

@@ -14,7 +14,7 @@
 #include <random>
 #include <string>
 
-#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/core/step/step.h"
 
 namespace rigid_body_sim::bench {
 

@@ -13,7 +13,7 @@
 #include <memory>
 #include <vector>
 
-#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/core/step/step.h"
 
 namespace rigid_body_sim::bench {
 

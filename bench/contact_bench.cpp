@@ -18,7 +18,7 @@
 #include <fstream>
 #include <string>
 
-#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/core/step/step.h"
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/io/world.h"
@@ -34,7 +34,7 @@ const char* kBoxUrdf = R"(<robot name="box"><link name="base_link">
 
 struct Run {
   double deepest = 0.0, first_impact = -1.0, last_moving = 0.0;
-  std::size_t repeated = 0;  ///< steps found to be a fixed point (the fixed-point cache, src/core/fixed_point.h)
+  std::size_t repeated = 0;  ///< steps found to be a fixed point (the fixed-point cache, src/core/step/fixed_point.h)
 };
 
 Run simulate(const core::Model& model, core::State s, int steps, bool skip_fixed_points) {

@@ -1,7 +1,7 @@
 // One core step of one body (Google Benchmark). Run through bench/run.sh.
 #include <benchmark/benchmark.h>
 
-#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/core/step/step.h"
 
 namespace {
 

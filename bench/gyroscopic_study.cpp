@@ -15,8 +15,8 @@
 #include <functional>
 #include <memory>
 
-#include "rigid_body_sim/core/diagnostics.h"
-#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/core/step/diagnostics.h"
+#include "rigid_body_sim/core/step/step.h"
 
 namespace {
 

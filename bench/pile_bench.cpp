@@ -22,7 +22,7 @@
 #include <string>
 
 #include "box_grid.h"
-#include "rigid_body_sim/core/diagnostics.h"
+#include "rigid_body_sim/core/step/diagnostics.h"
 
 using namespace rigid_body_sim::core;
 

@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "rigid_body_sim/core/model.h"
-#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/core/bodies/model.h"
+#include "rigid_body_sim/core/step/step.h"
 
 namespace rigid_body_sim::fuzz {
 

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "fuzz_model.h"
-#include "rigid_body_sim/core/articulation_step.h"
-#include "rigid_body_sim/core/scene.h"
+#include "rigid_body_sim/core/articulations/articulation_step.h"
+#include "rigid_body_sim/core/articulations/scene.h"
 #include "rigid_body_sim/io/articulation_loader.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 

@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "rigid_body_sim/core/model.h"
-#include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/core/bodies/model.h"
+#include "rigid_body_sim/core/bodies/state.h"
 
 namespace rigid_body_sim::test {
 

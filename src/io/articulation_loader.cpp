@@ -10,7 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "rigid_body_sim/core/articulation_dynamics.h"
+#include "rigid_body_sim/core/articulations/articulation_dynamics.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "urdf_lumper.h"
 

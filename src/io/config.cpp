@@ -11,7 +11,7 @@
 
 #include "controller_config.h"
 #include "device_config.h"
-#include "rigid_body_sim/core/setting_keys.h"
+#include "rigid_body_sim/core/bodies/setting_keys.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/orientation.h"
@@ -47,7 +47,7 @@ core::CombineRule combineRule(const YAML::Node& node, const std::string& key) {
   fail(key, "unknown rule '" + r + "' (min, max, average, multiply, geometric)");
 }
 
-/// One setting's value into its ModelSpec field (core/setting_keys.h). Its
+/// One setting's value into its ModelSpec field (core/bodies/setting_keys.h). Its
 /// range is checked once, by the model built from it; a count is checked
 /// whole here, before it becomes an int.
 void parseSetting(const core::SettingKey& k, const YAML::Node& node, core::ModelSpec& m) {

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <utility>
 
-#include "rigid_body_sim/core/ranges.h"
+#include "rigid_body_sim/core/bodies/ranges.h"
 #include "yaml_fields.h"
 
 namespace rigid_body_sim::io {

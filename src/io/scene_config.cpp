@@ -7,9 +7,9 @@
 #include <sstream>
 #include <string>
 
-#include "rigid_body_sim/core/ranges.h"
-#include "rigid_body_sim/core/sdf_grid.h"
-#include "rigid_body_sim/core/settings.h"
+#include "rigid_body_sim/core/bodies/ranges.h"
+#include "rigid_body_sim/core/bodies/sdf_grid.h"
+#include "rigid_body_sim/core/bodies/settings.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "yaml_fields.h"
 

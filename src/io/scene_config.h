@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/sdf.h"
+#include "rigid_body_sim/core/bodies/sdf.h"
 
 namespace rigid_body_sim::io {
 

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <vector>
 
-#include "rigid_body_sim/core/inertia.h"
+#include "rigid_body_sim/core/bodies/inertia.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/orientation.h"

@@ -6,7 +6,7 @@
 #include <map>
 #include <sstream>
 
-#include "rigid_body_sim/core/shape_mass.h"
+#include "rigid_body_sim/core/bodies/shape_mass.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/orientation.h"

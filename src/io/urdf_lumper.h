@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/geometry.h"
-#include "rigid_body_sim/core/inertia.h"
-#include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/bodies/geometry.h"
+#include "rigid_body_sim/core/bodies/inertia.h"
+#include "rigid_body_sim/core/bodies/model.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "urdf_parse.h"
 

@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "rigid_body_sim/core/ranges.h"
+#include "rigid_body_sim/core/bodies/ranges.h"
 
 namespace rigid_body_sim::io::detail {
 namespace {

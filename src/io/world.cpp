@@ -3,7 +3,7 @@
 #include <map>
 #include <sstream>
 
-#include "rigid_body_sim/core/diagnostics.h"
+#include "rigid_body_sim/core/step/diagnostics.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 

@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include "rigid_body_sim/core/types.h"
+#include "rigid_body_sim/core/bodies/types.h"
 
 namespace rigid_body_sim::io::yaml_fields {
 

@@ -3,7 +3,7 @@
 // (core::ContactLedger).
 #include <algorithm>
 
-#include "rigid_body_sim/core/contact_report.h"
+#include "rigid_body_sim/core/contacts/contact_report.h"
 #include "rigid_body_sim/ros/conversions.h"
 #include "rigid_body_sim/ros/state_publisher.h"
 

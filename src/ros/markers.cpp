@@ -4,7 +4,7 @@
 #include <array>
 #include <utility>
 
-#include "rigid_body_sim/core/sdf_surface.h"
+#include "rigid_body_sim/core/bodies/sdf_surface.h"
 #include "rigid_body_sim/ros/conversions.h"
 
 namespace rigid_body_sim::node {

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-#include "rigid_body_sim/core/types.h"
+#include "rigid_body_sim/core/bodies/types.h"
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/ros/sim_clock.h"
 

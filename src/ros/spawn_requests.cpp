@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "request_checks.h"
-#include "rigid_body_sim/core/ranges.h"
+#include "rigid_body_sim/core/bodies/ranges.h"
 #include "rigid_body_sim/io/articulation_loader.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/scene_loader.h"

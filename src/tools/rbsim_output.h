@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/core/bodies/state.h"
 
 namespace rigid_body_sim::tools {
 

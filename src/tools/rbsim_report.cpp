@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "rigid_body_sim/core/articulation_dynamics.h"
-#include "rigid_body_sim/core/diagnostics.h"
+#include "rigid_body_sim/core/articulations/articulation_dynamics.h"
+#include "rigid_body_sim/core/step/diagnostics.h"
 
 namespace rigid_body_sim::tools {
 

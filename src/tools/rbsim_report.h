@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "rbsim_output.h"
-#include "rigid_body_sim/core/articulation.h"
-#include "rigid_body_sim/core/model.h"
-#include "rigid_body_sim/core/state.h"
-#include "rigid_body_sim/core/workspace.h"
+#include "rigid_body_sim/core/articulations/articulation.h"
+#include "rigid_body_sim/core/bodies/model.h"
+#include "rigid_body_sim/core/bodies/state.h"
+#include "rigid_body_sim/core/step/workspace.h"
 
 namespace rigid_body_sim::tools {
 

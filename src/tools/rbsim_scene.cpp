@@ -12,8 +12,8 @@
 #include "rbsim_loop.h"
 #include "rbsim_output.h"
 #include "rbsim_report.h"
-#include "rigid_body_sim/core/contact.h"
-#include "rigid_body_sim/core/diagnostics.h"
+#include "rigid_body_sim/core/contacts/contact.h"
+#include "rigid_body_sim/core/step/diagnostics.h"
 #include "rigid_body_sim/io/scene_loader.h"
 #include "rigid_body_sim/io/world.h"
 

@@ -2,4 +2,4 @@
 // path: it must fail on the ROS header (see cmake/ros_free.cmake).
 #include <ros/time.h>
 
-#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/core/step/step.h"

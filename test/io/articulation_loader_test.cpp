@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "../test_util.h"
-#include "rigid_body_sim/core/articulation_step.h"
+#include "rigid_body_sim/core/articulations/articulation_step.h"
 
 namespace rigid_body_sim::test {
 namespace {

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "../test_util.h"
-#include "rigid_body_sim/core/step.h"
-#include "rigid_body_sim/core/workspace.h"
+#include "rigid_body_sim/core/step/step.h"
+#include "rigid_body_sim/core/step/workspace.h"
 #include "rigid_body_sim/io/world.h"
 
 namespace rigid_body_sim::test {

@@ -13,8 +13,8 @@
 
 #include "../scratch_dir.h"
 #include "../test_util.h"
-#include "rigid_body_sim/core/contact.h"
-#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/core/contacts/contact.h"
+#include "rigid_body_sim/core/step/step.h"
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/urdf_loader.h"

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "../test_util.h"
-#include "rigid_body_sim/core/step.h"
+#include "rigid_body_sim/core/step/step.h"
 #include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::test {

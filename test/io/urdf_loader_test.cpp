@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "../test_util.h"
-#include "rigid_body_sim/core/inertia.h"
-#include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/core/bodies/inertia.h"
+#include "rigid_body_sim/core/bodies/state.h"
 #include "rigid_body_sim/io/input_bounds.h"
 
 namespace rigid_body_sim::test {

@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "../test_util.h"
-#include "rigid_body_sim/core/articulation_dynamics.h"
-#include "rigid_body_sim/core/articulation_step.h"
+#include "rigid_body_sim/core/articulations/articulation_dynamics.h"
+#include "rigid_body_sim/core/articulations/articulation_step.h"
 #include "rigid_body_sim/io/articulation_loader.h"
 #include "rigid_body_sim/io/joint_start.h"
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "../test_util.h"
-#include "rigid_body_sim/core/simulation.h"
+#include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/ros/addressing.h"
 #include "rigid_body_sim/ros/body_ports.h"
 

@@ -29,7 +29,7 @@
 #include "rigid_body_sim/GetState.h"
 #include "rigid_body_sim/SetState.h"
 #include "rigid_body_sim/Step.h"
-#include "rigid_body_sim/core/sdf.h"
+#include "rigid_body_sim/core/bodies/sdf.h"
 
 namespace {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/setting_keys.h"
+#include "rigid_body_sim/core/bodies/setting_keys.h"
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/ros/params.h"

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "rigid_body_sim/core/articulation.h"
+#include "rigid_body_sim/core/articulations/articulation.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 
 namespace rigid_body_sim::io {

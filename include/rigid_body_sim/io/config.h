@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/imu.h"
-#include "rigid_body_sim/core/joint_control.h"
-#include "rigid_body_sim/core/model.h"
-#include "rigid_body_sim/core/odom_noise.h"
-#include "rigid_body_sim/core/state.h"
-#include "rigid_body_sim/core/velocity_driver.h"
+#include "rigid_body_sim/core/bodies/model.h"
+#include "rigid_body_sim/core/bodies/state.h"
+#include "rigid_body_sim/core/controllers/joint_control.h"
+#include "rigid_body_sim/core/devices/imu.h"
+#include "rigid_body_sim/core/devices/odom_noise.h"
+#include "rigid_body_sim/core/devices/velocity_driver.h"
 
 namespace rigid_body_sim::io {
 

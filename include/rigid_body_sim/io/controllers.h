@@ -1,12 +1,12 @@
 // A robot's controllers from its config's `controllers` map: each type as
 // ros_controllers names it turned into the core's joint controllers
-// (core/joint_control.h), which act through effort only. ROS-free.
+// (core/controllers/joint_control.h), which act through effort only. ROS-free.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/joint_control.h"
+#include "rigid_body_sim/core/controllers/joint_control.h"
 #include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::io {

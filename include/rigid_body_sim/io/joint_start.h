@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "rigid_body_sim/core/articulation.h"
-#include "rigid_body_sim/core/settings.h"
+#include "rigid_body_sim/core/articulations/articulation.h"
+#include "rigid_body_sim/core/bodies/settings.h"
 #include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::io {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/collision.h"
+#include "rigid_body_sim/core/bodies/collision.h"
 
 namespace rigid_body_sim::io {
 

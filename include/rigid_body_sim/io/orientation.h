@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "rigid_body_sim/core/types.h"
+#include "rigid_body_sim/core/bodies/types.h"
 
 namespace rigid_body_sim::io {
 

@@ -3,8 +3,8 @@
 // way to a robot; ROS-free.
 #pragma once
 
-#include "rigid_body_sim/core/articulation.h"
-#include "rigid_body_sim/core/articulation_contacts.h"
+#include "rigid_body_sim/core/articulations/articulation.h"
+#include "rigid_body_sim/core/articulations/articulation_contacts.h"
 #include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::io {

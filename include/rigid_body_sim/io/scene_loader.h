@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/scene.h"
+#include "rigid_body_sim/core/articulations/scene.h"
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/io/controllers.h"
 

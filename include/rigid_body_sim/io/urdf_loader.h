@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/model.h"
+#include "rigid_body_sim/core/bodies/model.h"
 
 namespace rigid_body_sim::io {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/model.h"
-#include "rigid_body_sim/core/state.h"
+#include "rigid_body_sim/core/bodies/model.h"
+#include "rigid_body_sim/core/bodies/state.h"
 #include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::io {

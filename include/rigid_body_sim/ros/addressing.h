@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "rigid_body_sim/core/simulation.h"
+#include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/ros/body_ports.h"
 
 namespace rigid_body_sim::node {

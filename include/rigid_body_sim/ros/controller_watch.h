@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "rigid_body_sim/core/articulation.h"
-#include "rigid_body_sim/core/joint_control.h"
+#include "rigid_body_sim/core/articulations/articulation.h"
+#include "rigid_body_sim/core/controllers/joint_control.h"
 
 namespace rigid_body_sim::node {
 

@@ -9,7 +9,7 @@
 #include <geometry_msgs/Transform.h>
 #include <geometry_msgs/Vector3.h>
 
-#include "rigid_body_sim/core/types.h"
+#include "rigid_body_sim/core/bodies/types.h"
 
 namespace rigid_body_sim::node {
 

@@ -14,7 +14,7 @@
 #include "rigid_body_sim/ClearJointForces.h"
 #include "rigid_body_sim/GetJointProperties.h"
 #include "rigid_body_sim/SetModelConfiguration.h"
-#include "rigid_body_sim/core/simulation.h"
+#include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/ros/sim_clock.h"
 
 namespace rigid_body_sim::node {

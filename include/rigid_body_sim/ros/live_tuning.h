@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "rigid_body_sim/PhysicsConfig.h"
-#include "rigid_body_sim/core/simulation.h"
+#include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/ros/params.h"
 
 namespace rigid_body_sim::node {

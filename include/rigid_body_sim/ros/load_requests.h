@@ -13,7 +13,7 @@
 #include "rigid_body_sim/ApplyImpulse.h"
 #include "rigid_body_sim/ApplyWrench.h"
 #include "rigid_body_sim/ClearWrenches.h"
-#include "rigid_body_sim/core/simulation.h"
+#include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/ros/addressing.h"
 #include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/params.h"

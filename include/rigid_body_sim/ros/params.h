@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "rigid_body_sim/core/ranges.h"
+#include "rigid_body_sim/core/bodies/ranges.h"
 #include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::node {

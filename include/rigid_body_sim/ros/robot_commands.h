@@ -4,7 +4,7 @@
 // trajectory controller), the robot's `joint_command` (an Isaac
 // Sim style sensor_msgs/JointState, joints by name), the efforts they give
 // every step, and their restart when a robot is put somewhere. The control itself is the
-// core's (core/joint_control.h), through effort only.
+// core's (core/controllers/joint_control.h), through effort only.
 #pragma once
 
 #include <ros/ros.h>
@@ -17,8 +17,8 @@
 #include <utility>
 #include <vector>
 
-#include "rigid_body_sim/core/articulation_step.h"
-#include "rigid_body_sim/core/simulation.h"
+#include "rigid_body_sim/core/articulations/articulation_step.h"
+#include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/io/controllers.h"
 #include "rigid_body_sim/ros/controller_watch.h"
 #include "rigid_body_sim/ros/sim_clock.h"

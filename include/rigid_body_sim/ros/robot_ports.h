@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "rigid_body_sim/core/simulation.h"
+#include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
 
 namespace rigid_body_sim::node {

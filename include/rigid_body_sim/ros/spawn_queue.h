@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "rigid_body_sim/SpawnBody.h"
-#include "rigid_body_sim/core/model.h"
-#include "rigid_body_sim/core/scene.h"
+#include "rigid_body_sim/core/articulations/scene.h"
+#include "rigid_body_sim/core/bodies/model.h"
 #include "rigid_body_sim/io/controllers.h"
 #include "rigid_body_sim/ros/body_ports.h"
 

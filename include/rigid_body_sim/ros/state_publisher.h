@@ -19,9 +19,9 @@
 
 #include "rigid_body_sim/BodyStates.h"
 #include "rigid_body_sim/Contacts.h"
-#include "rigid_body_sim/core/contact_report.h"
-#include "rigid_body_sim/core/odom_noise.h"
-#include "rigid_body_sim/core/simulation.h"
+#include "rigid_body_sim/core/contacts/contact_report.h"
+#include "rigid_body_sim/core/devices/odom_noise.h"
+#include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
 #include "rigid_body_sim/ros/params.h"

@@ -12,7 +12,7 @@
 #include "rigid_body_sim/BodyState.h"
 #include "rigid_body_sim/GetState.h"
 #include "rigid_body_sim/SetState.h"
-#include "rigid_body_sim/core/simulation.h"
+#include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/ros/addressing.h"
 #include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/sim_clock.h"

@@ -12,7 +12,7 @@
 
 #include "rigid_body_sim/DeleteBody.h"
 #include "rigid_body_sim/SpawnBody.h"
-#include "rigid_body_sim/core/simulation.h"
+#include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/ros/addressing.h"
 #include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/pacer.h"

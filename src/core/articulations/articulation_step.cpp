@@ -1,0 +1,371 @@
+// One step of an articulation on its own: docs/physics.md §11.5.
+#include "rigid_body_sim/core/articulations/articulation_step.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "articulation_phases.h"
+#include "joint_rows.h"
+#include "rigid_body_sim/core/articulations/articulation_dynamics.h"
+
+namespace rigid_body_sim::core {
+
+namespace {
+
+/// The symplectic corrector's fixed-point passes (§11.5): at most this
+/// many, each at least halving the change of the last, to this tolerance
+/// relative to the fastest coordinate; else the prediction stands.
+/// Where the passes stall at the solve's rounding, a change below the
+/// looser tolerance counts as converged.
+constexpr int kCorrectorPasses = 8;
+constexpr double kCorrectorContraction = 0.5;
+constexpr double kCorrectorTolerance = 1e-12;
+constexpr double kCorrectorRounding = 1e-9;
+/// After a step whose passes did not contract, this many steps go straight
+/// to the prediction (a long, light chain rarely contracts: the passes
+/// would double its step's cost for nothing).
+constexpr int kPredictOnlySteps = 3;
+
+bool samePose(const Pose& a, const Pose& b) {
+  return a.translation == b.translation && a.rotation.coeffs() == b.rotation.coeffs();
+}
+
+/// Whether the state is bit for bit the one the last step left.
+bool carriedStillHolds(const ArticulationState& state) {
+  const ArticulationState::Carried& c = state.carried;
+  return c.valid && c.q.size() == state.q.size() && c.q == state.q && c.v == state.v && c.V_B == state.V_B &&
+         samePose(c.X_WB, state.X_WB);
+}
+
+}  // namespace
+
+Pose advanceBase(const Pose& X_WB, const Vec6& V_B, double h) {
+  Pose X = X_WB;
+  X.translation += X_WB.rotation * (h * V_B.tail<3>());
+  const Vec3 turn = h * V_B.head<3>();
+  const double angle = turn.norm();
+  if (angle > 0.0) X.rotation = (X_WB.rotation * Quat(Eigen::AngleAxisd(angle, turn / angle))).normalized();
+  return X;
+}
+
+namespace {
+
+bool finite(const ArticulationState& s) {
+  return s.q.allFinite() && s.v.allFinite() && s.V_B.allFinite() && s.X_WB.translation.allFinite() &&
+         s.X_WB.rotation.coeffs().allFinite();
+}
+
+/// Slows what is faster than the limits; returns whether anything was.
+bool limitSpeeds(const ArticulationModel& model, const SpeedLimits& limits, Eigen::VectorXd& u) {
+  bool limited = false;
+  const auto cap = [&limited](auto&& v, double most) {
+    const double speed = v.stableNorm();  // |3e305| squared would overflow
+    if (speed > most) {
+      v *= most / speed;
+      limited = true;
+    }
+  };
+  if (!model.fixed_base) {
+    cap(u.segment<3>(0), limits.max_angular_speed);
+    cap(u.segment<3>(3), limits.max_linear_speed);
+  }
+  for (int i = 1; i <= model.jointCount(); ++i) {
+    const bool slides = model.links[i].type == JointType::Prismatic;
+    cap(u.segment<1>(model.dofOf(i)), slides ? limits.max_linear_speed : limits.max_angular_speed);
+  }
+  return limited;
+}
+
+}  // namespace
+
+namespace detail {
+
+void predictArticulation(const ArticulationModel& model, const ArticulationState& state, const ArticulationLoads& loads,
+                         const Vec3& g_W, double h, ArticulationWorkspace& ws) {
+  ArticulationKinematics& kin = ws.kin;
+  kinematics(model, state, kin);
+  const int base = model.fixed_base ? 0 : 6;
+  const int nj = model.jointCount();
+  // A = M + h D: joint damping taken at the new velocity.
+  Eigen::MatrixXd& A = ws.A;
+  massMatrix(model, kin, ws.dynamics, A);
+  Eigen::VectorXd& u = ws.u;
+  u = generalizedVelocity(model, state);
+  // The momenta at the start: carried from the last step, or from the velocities.
+  Eigen::VectorXd& p_joints = ws.p;
+  Vec6& H_W = ws.H_W;
+  H_W.setZero();
+  int& predict_only = ws.predict_only;
+  predict_only = 0;
+  if (carriedStillHolds(state)) {
+    p_joints = state.carried.p;
+    H_W = state.carried.H_W;
+    predict_only = state.carried.predict_only;
+  } else {
+    ws.rhs.noalias() = A * u;
+    p_joints = ws.rhs.tail(nj);
+    if (base) H_W = kin.X_WL[0].forceToParent(ws.rhs.head<6>());
+  }
+  for (int i = 1; i <= nj; ++i) A(model.dofOf(i), model.dofOf(i)) += h * model.links[i].damping;
+  ws.llt.compute(A);
+  const Eigen::LLT<Eigen::MatrixXd>& llt = ws.llt;
+  // The generalized forces at rest: gravity, the wrenches on the links and
+  // the efforts, each clipped to its joint's limit.
+  Eigen::VectorXd& force = ws.force;
+  const std::vector<Vec6>* wrench_L = &loads.wrench_L;
+  if (!loads.impulse_L.empty()) {  // an impulse acts as impulse / h over the step
+    ws.wrench_L.assign(model.links.size(), Vec6::Zero());
+    for (std::size_t i = 0; i < model.links.size(); ++i) {
+      ws.wrench_L[i] = loads.impulse_L[i] / h;
+      if (!loads.wrench_L.empty()) ws.wrench_L[i] += loads.wrench_L[i];
+    }
+    wrench_L = &ws.wrench_L;
+  }
+  biasForces(model, kin, g_W, *wrench_L, false, ws.dynamics, force);
+  force = -force;
+  if (loads.effort.size() > 0) {
+    for (int i = 1; i <= nj; ++i) {
+      const double limit = model.links[i].limits.effort;
+      force(model.dofOf(i)) += std::clamp(loads.effort(i - 1), -limit, limit);
+    }
+  }
+  // The base: the whole articulation's momentum changes by the impulse of the
+  // loads on it, exactly; its rows of M u⁺ are that, in the base's axes now.
+  Eigen::VectorXd& rhs = ws.rhs;
+  rhs.resize(model.dofCount());
+  if (base) {
+    H_W += h * kin.X_WL[0].forceToParent(force.head<6>());
+    rhs.head<6>() = kin.X_WL[0].forceToChild(H_W);
+  }
+  // The joints: symplectic Euler, p⁺ = p + h (τ + ∂T/∂q(q, u⁺)), implicit in
+  // u⁺ through ∂T/∂q. Predicted by the semi-implicit step in velocities
+  // (O(h²) from it), then corrected by fixed-point passes; where they do
+  // not contract (a fast or long, light chain), the prediction stands.
+  Eigen::VectorXd& predicted = ws.predicted;
+  biasForces(model, kin, Vec3::Zero(), {}, true, ws.dynamics, ws.bias);
+  predicted = h * (force - ws.bias);
+  for (int i = 1; i <= nj; ++i) predicted(model.dofOf(i)) -= h * model.links[i].damping * u(model.dofOf(i));
+  llt.solveInPlace(predicted);
+  predicted += u;
+  Eigen::VectorXd& u_next = ws.next;
+  u_next = predicted;
+  Eigen::VectorXd& corrected = ws.corrected;
+  double last_change = std::numeric_limits<double>::infinity();
+  bool converged = false;
+  const int passes = predict_only > 0 ? 0 : kCorrectorPasses;
+  for (int pass = 0; pass < passes && !converged; ++pass) {
+    setTwists(model, u_next, kin);
+    kineticEnergyGradient(model, kin, ws.dynamics, ws.gradient);
+    rhs.tail(nj) = p_joints + h * (force.tail(nj) + ws.gradient.tail(nj));
+    corrected = rhs;
+    llt.solveInPlace(corrected);
+    const double change = (corrected - u_next).cwiseAbs().maxCoeff();
+    const double scale = 1.0 + corrected.cwiseAbs().maxCoeff();
+    if (!(change <= kCorrectorContraction * last_change)) {
+      converged = last_change <= kCorrectorRounding * scale;
+      break;
+    }
+    u_next.swap(corrected);
+    last_change = change;
+    converged = change <= kCorrectorTolerance * scale;
+  }
+  if (predict_only > 0) {
+    --predict_only;
+  } else if (!converged) {
+    predict_only = kPredictOnlySteps;
+  }
+  if (!converged) {
+    // The prediction, its base twist put right so that the base's rows
+    // still hold the whole momentum exactly (a 6 × 6 solve).
+    u_next = predicted;
+    if (base) {
+      const Vec6 joints_part = A.bottomLeftCorner(nj, 6).transpose() * predicted.tail(nj);
+      u_next.head<6>() = A.topLeftCorner<6, 6>().llt().solve(rhs.head<6>() - joints_part);
+    }
+    rhs.tail(nj).noalias() = A.bottomRows(nj) * u_next;
+  }
+}
+
+void finishArticulation(const ArticulationModel& model, const SpeedLimits& limits, double h,
+                        const Eigen::VectorXd* impulse, const Eigen::VectorXd* pseudo, ArticulationState& state,
+                        ArticulationWorkspace& ws) {
+  const int base = model.fixed_base ? 0 : 6;
+  const int nj = model.jointCount();
+  ArticulationKinematics& kin = ws.kin;
+  Eigen::VectorXd& u_next = ws.next;
+  Eigen::VectorXd& rhs = ws.rhs;
+  Vec6& H_W = ws.H_W;
+  // The rows' impulses: the joints' act on the joints only, so the whole
+  // articulation's momentum changes by the contacts' alone.
+  if (impulse != nullptr) {
+    rhs.tail(nj) += impulse->tail(nj);
+    if (base) H_W += kin.X_WL[0].forceToParent(impulse->head<6>());
+  }
+  for (int i = 1; i <= nj; ++i) rhs(model.dofOf(i)) -= h * model.links[i].damping * u_next(model.dofOf(i));
+  // Slowed to the limits, the velocities no longer carry the momenta: the
+  // next step takes them from the velocities.
+  const bool limited = limitSpeeds(model, limits, u_next);
+  ws.speed_limited = limited;
+  setGeneralizedVelocity(model, u_next, state);
+  state.q += h * state.v;
+  // A joint stays within its limits: what the solve's tolerance leaves, or a
+  // joint set beyond one, is put back (the positions only).
+  for (int i = 1; i <= nj; ++i) {
+    state.q(i - 1) = std::clamp(state.q(i - 1), model.links[i].limits.lower, model.links[i].limits.upper);
+  }
+  if (base) {
+    // The centre of mass moves by h P⁺/m exactly, as a free body's does
+    // (§3): the base's new place is shifted by what the joints' and the
+    // base's first-order moves miss, O(h²).
+    const Vec3 c_next = centreOfMass(model, kin) + h * H_W.tail<3>() / totalMass(model);
+    state.X_WB = advanceBase(state.X_WB, state.V_B, h);
+    kinematics(model, state, kin);
+    state.X_WB.translation += c_next - centreOfMass(model, kin);
+  }
+  if (pseudo != nullptr) {
+    // A lift is a velocity of the positions: no faster than the limits.
+    Eigen::VectorXd& lift = ws.lift;
+    lift = *pseudo;
+    limitSpeeds(model, limits, lift);
+    moveRobot(model, lift, h, state);
+  }
+  ArticulationState::Carried& c = state.carried;
+  c.valid = !limited;
+  c.p = rhs.tail(nj);
+  c.H_W = H_W;
+  c.q = state.q;
+  c.v = state.v;
+  c.V_B = state.V_B;
+  c.X_WB = state.X_WB;
+  c.predict_only = ws.predict_only;
+}
+
+}  // namespace detail
+
+namespace {
+
+/// The step itself; stepArticulation checks its inputs and guards its result.
+/// The joints' limits, friction and mimics (§11.6), and the links' contacts
+/// with the scene (§11.8), at the twists the step would give them: one
+/// impulse solve between the prediction and the positions.
+void advance(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads, const Vec3& g_W,
+             double h, const SpeedLimits& limits, const ArticulationColliders* colliders, ArticulationWorkspace& ws) {
+  detail::predictArticulation(model, state, loads, g_W, h, ws);
+  Eigen::VectorXd& u_next = ws.next;
+  std::vector<detail::JointRow> rows;
+  detail::buildJointRows(model, state, u_next, h, 0, rows);
+  std::vector<detail::ContactRows> contacts;
+  if (colliders != nullptr) {
+    // The last step's impulses, for the warm start: the detection replaces its contacts.
+    ws.last_impulses.clear();
+    for (const Contact& c : ws.detection.contacts)
+      ws.last_impulses.push_back({c.key(), c.normal_impulse, c.tangent_impulse_W});
+    setTwists(model, u_next, ws.kin);
+    detail::findContactRows(model, *colliders, ws.kin, u_next, h, ws.links, ws.detection, contacts);
+    detail::warmStart(ws.last_impulses, ws.detection.contacts, contacts);
+  }
+  if (rows.empty() && contacts.empty()) {
+    detail::finishArticulation(model, limits, h, nullptr, nullptr, state, ws);
+    return;
+  }
+  const std::vector<detail::CoordinateBlock> blocks{{0, model.dofCount(), &ws.llt}};
+  Eigen::VectorXd impulse = Eigen::VectorXd::Zero(model.dofCount());
+  detail::solveRows(colliders != nullptr ? colliders->bodies.solver() : SolverSettings(), blocks, rows, contacts,
+                    u_next, impulse);
+  detail::reportContactImpulses(contacts, ws.detection.contacts);
+  Eigen::VectorXd pseudo;
+  const bool lift = !contacts.empty() &&
+                    detail::liftOutOfContacts(contacts, u_next, h, colliders->bodies.contact().position_slop, pseudo);
+  detail::finishArticulation(model, limits, h, &impulse, lift ? &pseudo : nullptr, state, ws);
+}
+
+}  // namespace
+
+namespace detail {
+
+bool loaded(const ArticulationLoads& loads) {
+  const bool effort = loads.effort.size() > 0 && (loads.effort.array() != 0.0).any();
+  const auto any = [](const std::vector<Vec6>& ws) {
+    return std::any_of(ws.begin(), ws.end(), [](const Vec6& w) { return (w.array() != 0.0).any(); });
+  };
+  return effort || any(loads.wrench_L) || any(loads.impulse_L);
+}
+
+bool updateStillTime(const ArticulationModel& model, const SleepSettings& sleep, bool touching, double h,
+                     ArticulationState& state) {
+  bool still = sleep.enabled && touching && state.V_B.head<3>().norm() < sleep.angular_velocity &&
+               state.V_B.tail<3>().norm() < sleep.linear_velocity;
+  for (int i = 1; i <= model.jointCount() && still; ++i) {
+    const bool slides = model.links[i].type == JointType::Prismatic;
+    still = std::abs(state.v(i - 1)) < (slides ? sleep.linear_velocity : sleep.angular_velocity);
+  }
+  state.still_time = still ? state.still_time + h : 0.0;
+  return still && state.still_time >= sleep.time;
+}
+
+void fallAsleep(ArticulationState& state) {
+  state.asleep = true;
+  state.v.setZero();
+  state.V_B.setZero();
+  state.carried = {};
+}
+
+void checkLoads(const ArticulationModel& model, const ArticulationLoads& loads) {
+  const auto sized = [](long size, long wanted, const char* what) {
+    if (size != 0 && size != wanted) {
+      throw std::invalid_argument(std::string("articulation loads: ") + what + " has " + std::to_string(size) +
+                                  " entries, the model " + std::to_string(wanted));
+    }
+  };
+  sized(loads.effort.size(), model.jointCount(), "effort");
+  sized(static_cast<long>(loads.wrench_L.size()), static_cast<long>(model.links.size()), "wrench_L");
+  sized(static_cast<long>(loads.impulse_L.size()), static_cast<long>(model.links.size()), "impulse_L");
+}
+
+bool guardArticulation(const ArticulationModel& model, const ArticulationState& start, ArticulationState& state) {
+  if (finite(state)) return true;
+  // Undone: where the step began, at rest, nothing carried (§11.7).
+  if (start.q.allFinite() && start.X_WB.translation.allFinite() && start.X_WB.rotation.coeffs().allFinite()) {
+    state.q = start.q;
+    state.X_WB = start.X_WB;
+  } else {
+    state = restState(model);
+  }
+  state.v.setZero();
+  state.V_B.setZero();
+  state.carried = {};
+  return false;
+}
+
+}  // namespace detail
+
+bool stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
+                      const Vec3& g_W, double h, const SpeedLimits& limits, ArticulationWorkspace* workspace,
+                      const ArticulationColliders* colliders) {
+  detail::checkLoads(model, loads);
+  if (model.dofCount() == 0) return true;  // a base on the world and no joint: nothing moves
+  if (state.asleep) {
+    if (!detail::loaded(loads)) return true;  // it stays exactly where it is
+    state.asleep = false;
+    state.still_time = 0.0;
+  }
+  ArticulationWorkspace local;
+  ArticulationWorkspace& ws = workspace != nullptr ? *workspace : local;
+  ws.start.X_WB = state.X_WB;
+  ws.start.q = state.q;  // the positions only: the guard puts back no velocity
+  advance(model, state, loads, g_W, h, limits, colliders, ws);
+  if (!detail::guardArticulation(model, ws.start, state)) return false;
+  // Sleep (§11.8), as a body's (§6): touching something, every joint and
+  // the base slower than the sleep speeds for `sleep.time`.
+  const bool touching = !ws.detection.contacts.empty();
+  if (colliders != nullptr && detail::updateStillTime(model, colliders->bodies.sleep(), touching, h, state)) {
+    detail::fallAsleep(state);
+  }
+  return true;
+}
+
+}  // namespace rigid_body_sim::core
