@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "rigid_body_sim/core/bodies/ranges.h"
 #include "rigid_body_sim/core/bodies/shape_mass.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
@@ -60,6 +61,13 @@ std::string joined(const std::vector<std::string>& items) {
   std::string out;
   for (std::size_t i = 0; i < items.size(); ++i) out += (i == 0 ? "" : "; ") + items[i];
   return out;
+}
+
+/// The largest friction coefficient, as text ("10").
+std::string maxFriction() {
+  std::ostringstream os;
+  os << core::ranges::kMaxFriction;
+  return os.str();
 }
 
 std::string count(std::size_t n, const char* one, const char* many) {
@@ -133,6 +141,11 @@ void Lumper::finish() const {
         parts.push_back(count(n, "mesh URI", "mesh URIs") + " with package:/// read as package:// (" +
                         nameList(what, 3) + ")");
         break;
+      case Repair::kFrictionCapped:
+        parts.push_back(count(n, "friction coefficient", "friction coefficients") + " of Gazebo markup above " +
+                        maxFriction() + " (a Gazebo user's 'never slip') read as " + maxFriction() +
+                        ", the largest here: " + joined(what));
+        break;
     }
   }
   std::string message = source_ +
@@ -157,6 +170,14 @@ urdf::ModelInterfaceSharedPtr Lumper::parse(const std::string& xml) {
   }
   capsules_ = std::move(parsed.capsules);
   surface_friction_ = std::move(parsed.surface_friction);
+  for (const std::string& above : parsed.friction_above) {
+    if (repair()) {
+      repaired(Repair::kFrictionCapped, above);
+    } else {
+      this->problem(above + " is above " + maxFriction() +
+                    ", the largest friction coefficient (urdf.repair: true reads it as that)");
+    }
+  }
   if (!parsed.model->getRoot()) fail("no root link");
   return std::move(parsed.model);
 }

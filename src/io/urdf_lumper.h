@@ -54,7 +54,8 @@ enum class Repair {
   kMimicDropped,    ///< a <mimic> of no joint, dropped (the joint and the name it gave)
   kEmptyCollision,  ///< a <collision> of size 0, dropped (the link, index and field)
   kFixedBase,       ///< a floating base without mass, fixed to the world (the whole sentence)
-  kPackageSlashes   ///< package:///NAME read as package://NAME (the URI)
+  kPackageSlashes,  ///< package:///NAME read as package://NAME (the URI)
+  kFrictionCapped  ///< a <gazebo reference><mu1> or <mu2> above the largest friction, read as it (the link, tag, value)
 };
 
 class Lumper {

@@ -202,25 +202,27 @@ class ParserErrors : public console_bridge::OutputHandler {
 /// The `<gazebo reference="LINK"><mu1>` and `<mu2>` of `robot` (Gazebo's ODE
 /// friction along two directions; one coefficient here, the smaller), or
 /// the first problem with them.
-std::string gazeboFriction(const TiXmlElement& robot, std::map<std::string, double>& friction) {
+std::string gazeboFriction(const TiXmlElement& robot, ParsedUrdf& out) {
   for (const TiXmlElement* g = robot.FirstChildElement("gazebo"); g; g = g->NextSiblingElement("gazebo")) {
     const char* reference = g->Attribute("reference");
     if (reference == nullptr) continue;  // the robot's own markup (plugins)
     for (const char* tag : {"mu1", "mu2"}) {
       const TiXmlElement* e = g->FirstChildElement(tag);
       if (e == nullptr) continue;
-      const char* text = e->GetText();
+      // Gazebo's URDF reader takes a value attribute first (PR2's, Husky's <mu1 value="100.0"/>), else the text.
+      const char* text = e->Attribute("value") != nullptr ? e->Attribute("value") : e->GetText();
       char* end = nullptr;
-      const double mu = text != nullptr ? std::strtod(text, &end) : std::nan("");
+      double mu = text != nullptr ? std::strtod(text, &end) : std::nan("");
       const bool read =
           text != nullptr && end != text && std::string(end).find_first_not_of(" \t\r\n") == std::string::npos;
-      if (!read || !(mu >= 0.0 && mu <= core::ranges::kMaxFriction)) {
-        std::ostringstream os;
-        os << "<gazebo reference=\"" << reference << "\"> <" << tag << "> = '" << (text != nullptr ? text : "")
-           << "': a friction coefficient must be a number in [0, " << core::ranges::kMaxFriction << "]";
-        return os.str();
+      std::ostringstream what;
+      what << "<gazebo reference=\"" << reference << "\"> <" << tag << "> = '" << (text != nullptr ? text : "") << "'";
+      if (!read || !(mu >= 0.0)) return what.str() + ": a friction coefficient must be a number >= 0";
+      if (mu > core::ranges::kMaxFriction) {
+        out.friction_above.push_back(what.str());
+        mu = core::ranges::kMaxFriction;
       }
-      const auto [at, fresh] = friction.emplace(reference, mu);
+      const auto [at, fresh] = out.surface_friction.emplace(reference, mu);
       if (!fresh) at->second = std::min(at->second, mu);
     }
   }
@@ -245,7 +247,7 @@ ParsedUrdf parseUrdf(const std::string& xml) {
     for (const TiXmlElement* e = robot->FirstChildElement(); e && problem.empty(); e = e->NextSiblingElement()) {
       if (std::string(e->Value()) == "link" || std::string(e->Value()) == "joint") problem = numberProblem(*e);
     }
-    if (problem.empty()) problem = gazeboFriction(*robot, out.surface_friction);
+    if (problem.empty()) problem = gazeboFriction(*robot, out);
     if (!problem.empty()) throw std::invalid_argument(problem);
     if (xml.find("capsule") != std::string::npos && capsulesAsCylinders(*robot, out.capsules)) {
       TiXmlPrinter printer;

@@ -11,6 +11,7 @@
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace rigid_body_sim::io::detail {
 
@@ -21,15 +22,19 @@ struct ParsedUrdf {
   urdf::ModelInterfaceSharedPtr model;  ///< never null
   CapsuleSet capsules;                  ///< read as cylinders by urdfdom
   /// Per link: the friction coefficient of its `<gazebo reference="LINK">`
-  /// markup (`<mu1>`, `<mu2>`: the smaller of those given), which urdfdom skips.
+  /// markup (`<mu1>`, `<mu2>`: the smaller of those given, each as its
+  /// text or its `value` attribute, as Gazebo's URDF reader takes them; one
+  /// above core::ranges::kMaxFriction as that), which urdfdom skips.
   std::map<std::string, double> surface_friction;
+  /// Those read as kMaxFriction: "<gazebo reference=\"LINK\"> <mu1> = V".
+  std::vector<std::string> friction_above;
 };
 
 /// urdfdom's model of `xml`. Throws std::invalid_argument, one line that
 /// starts with the first cause: two joints giving a link a parent, joints
 /// that form a cycle (naming the joint), or anything urdfdom could not read
 /// (naming the link and element, and urdfdom's own words on the attribute),
-/// or a `<gazebo reference><mu1>` or `<mu2>` that is not a number in [0, 10].
+/// or a `<gazebo reference><mu1>` or `<mu2>` that is not a number ≥ 0.
 ParsedUrdf parseUrdf(const std::string& xml);
 
 }  // namespace rigid_body_sim::io::detail

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "../test_util.h"
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
@@ -221,6 +222,25 @@ TEST(MimicOfNoJoint, IsDroppedAndSaid) {
   expectContains(notes[0], {"1 <mimic> names no joint", "'elbow' -> 'index_q1'"});
   expectThrowsWith<io::UrdfError>([&] { load(xml, nullptr, false); },
                                   {"joint 'elbow' <mimic joint> = 'index_q1'", "no moving joint has that name"});
+}
+
+// Gazebo markup's "never slip" (PR2's <mu1 value="100.0"/>, turtlebot3's
+// 10000, tiago's 1e15): read as the largest coefficient, 10, and said; the
+// smaller of mu1 and mu2 is the link's; refused when not repairing.
+TEST(FrictionAboveTheLargest, IsReadAsItAndSaid) {
+  const std::string xml = doublePendulum(
+      "<gazebo reference='upper'><mu1 value='100.0'/><mu2 value='1e15'/></gazebo>"
+      "<gazebo reference='lower'><mu1>0.7</mu1><mu2>1e4</mu2></gazebo>");
+  std::vector<std::string> notes;
+  const ArticulationModel model = load(xml, &notes);
+  EXPECT_EQ(model.links[1].surface_friction, std::optional<double>(10.0));
+  EXPECT_EQ(model.links[2].surface_friction, std::optional<double>(0.7));
+  ASSERT_EQ(notes.size(), 1u);
+  expectContains(notes[0],
+                 {"3 friction coefficients of Gazebo markup above 10", "<gazebo reference=\"upper\"> <mu1> = '100.0'",
+                  "<mu2> = '1e15'", "<gazebo reference=\"lower\"> <mu2> = '1e4'"});
+  expectThrowsWith<io::UrdfError>([&] { load(xml, nullptr, false); },
+                                  {"<gazebo reference=\"upper\"> <mu1> = '100.0' is above 10", "urdf.repair: true"});
 }
 
 TEST(ZeroOutsideTheLimits, StartsAtTheNearestLimitWithoutAnEnergyJump) {
