@@ -81,7 +81,8 @@ void StatePublisher::contacts(const core::Simulation& sim, const ros::Time& now)
   header.frame_id = settings_.world_frame;
   const Contacts msg = contactsMessage(
       sim.model(),
-      core::contactPairs(sim.model(), sim.state, sim.contacts.touchingNow(sim.state, sim.workspace.contacts)), header);
+      core::contactPairs(sim.model(), sim.state, sim.contacts.touchingNow(sim.state, sim.workspace.bodies.contacts)),
+      header);
   if (listed) contacts_pub_.publish(msg);
   if (drawn) contact_markers_pub_.publish(contactMarkers(msg));
 }

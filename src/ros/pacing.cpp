@@ -56,7 +56,7 @@ void SimNode::publishBodies() {
 void SimNode::reportStep() {
   // Robots, as bodies (physics §11.7): a runaway held by the limits, a step
   // the guard undid.
-  const core::SceneWorkspace& scene = sim_.scene_workspace;
+  const core::SceneWorkspace& scene = sim_.workspace;
   for (std::size_t r = 0; r < scene.robot_diverged.size() && r < sim_.scene.robots().size(); ++r) {
     const std::string& name = sim_.scene.robots()[r].name;
     if (scene.robot_diverged[r]) {

@@ -127,7 +127,7 @@ class SimNode {
   core::Simulation sim_;
   const core::Model& model_ = sim_.model();
   core::State& state_ = sim_.state;
-  core::Workspace& workspace_ = sim_.workspace;
+  core::Workspace& workspace_ = sim_.workspace.bodies;
   core::WrenchSchedule& schedule_ = sim_.schedule;
   core::Loads loads_;
   std::vector<core::ArticulationLoads> robot_loads_;  ///< per robot, its controllers' efforts

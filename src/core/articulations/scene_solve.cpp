@@ -9,8 +9,10 @@
 
 namespace rigid_body_sim::core::detail {
 
-void takeRobotContacts(const Scene& scene, const State& state, SceneWorkspace& ws) {
-  const std::size_t n = scene.model().bodyCount();
+void takeRobotContacts(const World& world, WorldState& world_state, WorldWorkspace& ws) {
+  if (world.robots().empty()) return;
+  const State& state = world_state.bodies;
+  const std::size_t n = world.model().bodyCount();
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
   const auto find = [&](int x) {
@@ -22,7 +24,7 @@ void takeRobotContacts(const Scene& scene, const State& state, SceneWorkspace& w
     b = find(b);
     if (a != b) parent[std::max(a, b)] = std::min(a, b);
   };
-  for (const SceneRobot& robot : scene.robots()) {
+  for (const SceneRobot& robot : world.robots()) {
     for (std::size_t k = 1; k < robot.link.size(); ++k) unite(robot.first_body, robot.first_body + static_cast<int>(k));
   }
   std::vector<Contact>& all = ws.bodies.contacts;
@@ -34,7 +36,7 @@ void takeRobotContacts(const Scene& scene, const State& state, SceneWorkspace& w
   // A sleeping robot's links are sleepers: their contacts are the free
   // bodies' (ground to them) unless an awake robot's island holds them.
   std::vector<char> holds_robot(n, 0);
-  for (std::size_t i = scene.freeBodyCount(); i < n; ++i) {
+  for (std::size_t i = world.freeBodyCount(); i < n; ++i) {
     if (!state.bodies[i].asleep) holds_robot[ws.scratch->island_root[i]] = 1;
   }
   ws.scratch->robot_contacts.clear();
@@ -55,6 +57,10 @@ void takeRobotContacts(const Scene& scene, const State& state, SceneWorkspace& w
     in_contact[c.body] = 1;
     if (c.other >= 0) in_contact[c.other] = 1;
   }
+  // The free solve rewrites the state's impulses: the robots' warm start
+  // keeps the last step's. The free stages leave the links alone.
+  ws.scratch->last_impulses = state.contact_impulses;
+  for (std::size_t i = world.freeBodyCount(); i < n; ++i) world_state.bodies.bodies[i].asleep = true;
 }
 
 namespace {
@@ -74,9 +80,9 @@ void addBodyBlock(const Model& model, const BodyState& s, int body, RobotSolve& 
 /// One side of a contact's rows for `body`: its robot's block (a second
 /// link of the same robot adds to the same side) or its own; none for a
 /// robot without dofs or a sleeper.
-void addSide(const Scene& scene, const SceneWorkspace& ws, const RobotSolve& solve, int body, const Vec3& x_W,
+void addSide(const World& world, const WorldWorkspace& ws, const RobotSolve& solve, int body, const Vec3& x_W,
              const Vec3& arm_W, const Mat3& directions, double sign, ContactRows& c) {
-  const int r = scene.robotOf(static_cast<std::size_t>(body));
+  const int r = world.robotOf(static_cast<std::size_t>(body));
   const int offset = r >= 0 ? solve.robot_offset[r] : solve.body_offset[body];
   if (offset < 0) return;
   if (r < 0) {
@@ -85,7 +91,7 @@ void addSide(const Scene& scene, const SceneWorkspace& ws, const RobotSolve& sol
     ++c.sides;
     return;
   }
-  const SceneRobot& robot = scene.robots()[r];
+  const SceneRobot& robot = world.robots()[r];
   int s = 0;
   while (s < c.sides && c.side[s].offset != offset) ++s;
   if (s == c.sides) {
@@ -99,9 +105,11 @@ void addSide(const Scene& scene, const SceneWorkspace& ws, const RobotSolve& sol
 
 }  // namespace
 
-void solveRobotIslands(const Scene& scene, SceneState& state, double h, SceneWorkspace& ws, RobotSolve& solve) {
-  const Model& model = scene.model();
-  const std::vector<SceneRobot>& robots = scene.robots();
+void solveRobotIslands(const World& world, WorldState& state, double h, WorldWorkspace& ws) {
+  if (world.robots().empty()) return;
+  RobotSolve& solve = ws.scratch->solve;
+  const Model& model = world.model();
+  const std::vector<SceneRobot>& robots = world.robots();
   std::vector<BodyState>& bodies = state.bodies.bodies;
   // The blocks: the robots, then the free bodies in contact order.
   solve.blocks.clear();
@@ -116,15 +124,15 @@ void solveRobotIslands(const Scene& scene, SceneState& state, double h, SceneWor
     offset += n;
   }
   for (const Contact& c : ws.scratch->robot_contacts) {
-    if (scene.robotOf(c.body) < 0) addBodyBlock(model, bodies[c.body], c.body, solve, offset);
-    if (c.other >= 0 && scene.robotOf(c.other) < 0) addBodyBlock(model, bodies[c.other], c.other, solve, offset);
+    if (world.robotOf(c.body) < 0) addBodyBlock(model, bodies[c.body], c.body, solve, offset);
+    if (c.other >= 0 && world.robotOf(c.other) < 0) addBodyBlock(model, bodies[c.other], c.other, solve, offset);
   }
   solve.u.resize(offset);
   for (std::size_t r = 0; r < robots.size(); ++r) {
     if (solve.robot_offset[r] >= 0)
       solve.u.segment(solve.robot_offset[r], robots[r].model.dofCount()) = ws.robots[r].next;
   }
-  for (std::size_t i = 0; i < scene.freeBodyCount(); ++i) {
+  for (std::size_t i = 0; i < world.freeBodyCount(); ++i) {
     if (solve.body_offset[i] < 0) continue;
     solve.u.segment<3>(solve.body_offset[i]) = bodies[i].v_WB;
     solve.u.segment<3>(solve.body_offset[i] + 3) = bodies[i].q_WB * bodies[i].w_B;
@@ -146,8 +154,8 @@ void solveRobotIslands(const Scene& scene, SceneState& state, double h, SceneWor
     c.warm_start.setZero();
     const Mat3 directions = detail::frameContact(contact, c);
     const Vec3 x_W = bodies[contact.body].p_WB + contact.r_W;
-    addSide(scene, ws, solve, contact.body, x_W, contact.r_W, directions, 1.0, c);
-    if (contact.other >= 0) addSide(scene, ws, solve, contact.other, x_W, contact.r_other_W, directions, -1.0, c);
+    addSide(world, ws, solve, contact.body, x_W, contact.r_W, directions, 1.0, c);
+    if (contact.other >= 0) addSide(world, ws, solve, contact.other, x_W, contact.r_other_W, directions, -1.0, c);
     if (c.sides == 0) continue;  // between things that do not move this step
     detail::aimContact(model, contact, h, solve.u, c);
     c.contact = static_cast<int>(k);
@@ -167,7 +175,7 @@ void solveRobotIslands(const Scene& scene, SceneState& state, double h, SceneWor
     if (solve.robot_offset[r] >= 0)
       ws.robots[r].next = solve.u.segment(solve.robot_offset[r], robots[r].model.dofCount());
   }
-  for (std::size_t i = 0; i < scene.freeBodyCount(); ++i) {
+  for (std::size_t i = 0; i < world.freeBodyCount(); ++i) {
     if (solve.body_offset[i] < 0) continue;
     BodyState& s = bodies[i];
     s.v_WB = solve.u.segment<3>(solve.body_offset[i]);
@@ -176,8 +184,10 @@ void solveRobotIslands(const Scene& scene, SceneState& state, double h, SceneWor
   }
 }
 
-void liftBodies(const Scene& scene, const RobotSolve& solve, double h, SceneState& state) {
-  for (std::size_t i = 0; i < scene.freeBodyCount(); ++i) {
+void liftBodies(const World& world, const WorldWorkspace& ws, double h, WorldState& state) {
+  if (world.robots().empty() || !ws.scratch->solve.lift) return;
+  const RobotSolve& solve = ws.scratch->solve;
+  for (std::size_t i = 0; i < world.freeBodyCount(); ++i) {
     if (solve.body_offset[i] < 0) continue;
     BodyState& s = state.bodies.bodies[i];
     // A lift is a velocity of the positions: no faster than the limits.
@@ -185,7 +195,7 @@ void liftBodies(const Scene& scene, const RobotSolve& solve, double h, SceneStat
       const double speed = v.stableNorm();
       return speed > most ? Vec3(v * (most / speed)) : v;
     };
-    const SpeedLimits& limits = scene.model().limits();
+    const SpeedLimits& limits = world.model().limits();
     s.p_WB += h * capped(solve.pseudo.segment<3>(solve.body_offset[i]), limits.max_linear_speed);
     const Vec3 turn = h * capped(solve.pseudo.segment<3>(solve.body_offset[i] + 3), limits.max_angular_speed);
     const double angle = turn.norm();

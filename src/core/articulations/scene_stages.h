@@ -1,7 +1,8 @@
-// The stages of a scene's step (private to the core), docs/physics.md §11.9:
-// stepScene (scene_step.cpp) lists them with the free bodies' stages and the
-// robots' two halves; the islands that hold a robot and their one solve are
-// scene_solve.cpp, their sleep and waking scene_sleep.cpp.
+// The robots' stages of the one step (private to the core), docs/physics.md
+// §11.9: step.cpp lists them among the free bodies' stages. The robots' two
+// halves and their bookkeeping are scene_step.cpp; the islands that hold a
+// robot and their one solve scene_solve.cpp, their sleep and waking
+// scene_sleep.cpp. Each does nothing in a world without robots.
 #pragma once
 
 #include <Eigen/Core>
@@ -10,6 +11,7 @@
 
 #include "joint_rows.h"
 #include "rigid_body_sim/core/articulations/scene.h"
+#include "step/world.h"
 
 namespace rigid_body_sim::core::detail {
 
@@ -30,6 +32,7 @@ struct SceneScratch {
   std::vector<Contact> robot_contacts;        ///< the contacts the robots' solve takes, during a step
   std::vector<ContactImpulse> last_impulses;  ///< the last step's, for the robots' warm start, during a step
   std::vector<int> island_root;               ///< per body: its island's smallest body, during a step
+  std::vector<char> woken;                    ///< per robot: woken in this step, during a step
   RobotSolve solve;
 };
 
@@ -37,55 +40,83 @@ struct SceneScratch {
 // core tests, which link its objects, call them).
 #pragma GCC visibility push(hidden)
 
-/// Robot r's loads (none when the scene's loads give none).
-const ArticulationLoads& robotLoads(const SceneLoads& loads, std::size_t r);
+/// Throws std::invalid_argument when the state or the loads do not fit the
+/// world (a state per body and per robot; loads per free body, per body
+/// with the links' zero, or none; per robot, or none).
+void checkWorld(const World& world, const WorldState& state, const WorldLoads& loads);
+
+/// Robot r's loads (none when the world's loads give none).
+const ArticulationLoads& robotLoads(const WorldLoads& loads, std::size_t r);
 
 /// Robot r's links as bodies where it is now, moving as it does; a
 /// sleeping robot's as sleepers.
-void placeLinks(const Scene& scene, std::size_t r, SceneState& state, SceneWorkspace& ws);
+void placeLinks(const World& world, std::size_t r, WorldState& state, WorldWorkspace& ws);
 
 /// Robot r's first half (awake, with dofs): its velocity without rows, its
 /// links placed moving at it (for the speculative margins); else its links
 /// placed where it is.
-void predictRobot(const Scene& scene, std::size_t r, const ArticulationLoads& loads, double h, SceneState& state,
-                  SceneWorkspace& ws);
+void predictRobot(const World& world, std::size_t r, const ArticulationLoads& loads, double h, WorldState& state,
+                  WorldWorkspace& ws);
+
+// ---- The robots' stages, in the order step.cpp lists them.
+
+/// Every robot's first half (predictRobot); a sleeping robot under a load
+/// wakes first (in scratch->woken), one without stays put as a sleeper.
+void predictRobots(const World& world, const WorldLoads& loads, double h, WorldState& state, WorldWorkspace& ws);
+
+/// Drops the detection's contacts between links joined by a joint (they
+/// meet at it, and never touch).
+void dropJoinedLinks(const World& world, Workspace& ws);
+
+/// A sleeping robot whose link the detection woke (something came at it)
+/// wakes, and takes its first half now. A robot woken this step (by that or
+/// by a load, scratch->woken) wakes the sleeping bodies its links touch: they
+/// slept as one island, and a robot pressing on a sleeper it rested against
+/// would not come at it fast enough to wake it (the free bodies' rule).
+void wakeHitRobots(const World& world, const WorldLoads& loads, double h, WorldState& state, WorldWorkspace& ws);
 
 /// Moves the contacts of the islands that hold an awake robot (bodies
 /// joined by contacts between awake bodies, a robot's links joined to each
-/// other) out of ws.bodies.contacts into ws.robot_contacts; both stay
-/// sorted by key. Keeps each body's island in ws.island_root. The free
-/// bodies' stages then see only the other islands' contacts.
-void takeRobotContacts(const Scene& scene, const State& state, SceneWorkspace& ws);
+/// other) out of ws.bodies.contacts into scratch->robot_contacts; both stay
+/// sorted by key. Keeps each body's island in scratch->island_root, and the
+/// last step's impulses in scratch->last_impulses. The free bodies' stages
+/// then see only the other islands' contacts, and no link: the links are
+/// marked asleep until the robots place them again (placeAllLinks).
+void takeRobotContacts(const World& world, WorldState& state, WorldWorkspace& ws);
 
 /// The one solve of the islands that hold a robot: every awake robot's
 /// joint rows and every contact of those islands, warm started; the
 /// velocities back (the robots' ws.next, the bodies' v and ω), the
-/// impulses into ws.robot_contacts, and the position correction's pseudo
-/// velocity in `solve`.
-void solveRobotIslands(const Scene& scene, SceneState& state, double h, SceneWorkspace& ws, RobotSolve& solve);
+/// impulses into scratch->robot_contacts, and the position correction's
+/// pseudo velocity in scratch->solve.
+void solveRobotIslands(const World& world, WorldState& state, double h, WorldWorkspace& ws);
 
 /// The free bodies of the robots' islands moved by the position
 /// correction's pseudo velocity (their velocities kept).
-void liftBodies(const Scene& scene, const RobotSolve& solve, double h, SceneState& state);
+void liftBodies(const World& world, const WorldWorkspace& ws, double h, WorldState& state);
+
+/// Every awake robot's second half: its momenta from the solve's impulses,
+/// its positions, the speed limits and the guard (ws.robot_diverged).
+void finishRobots(const World& world, double h, WorldState& state, WorldWorkspace& ws);
+
+/// Sleep for the islands that hold a robot (§6, §11.9): every robot in it
+/// touching, slower than the sleep speeds for the sleep time, and every
+/// awake free body in it still as long: all of them fall asleep.
+void sleepRobotIslands(const World& world, double h, WorldState& state, WorldWorkspace& ws);
+
+/// Every robot's links placed where it now is (placeLinks), for readers and
+/// the next step.
+void placeAllLinks(const World& world, WorldState& state, WorldWorkspace& ws);
+
+/// The robots' contacts merged back among the others (sorted by key), and
+/// every contact's impulses kept in the state for the next step's warm start.
+void recordRobotContacts(const World& world, WorldState& state, WorldWorkspace& ws);
 
 /// Awake, its still time restarted.
 inline void wakeRobot(ArticulationState& rs) {
   rs.asleep = false;
   rs.still_time = 0.0;
 }
-
-/// A sleeping robot whose link the detection woke (something came at it)
-/// wakes, and takes its first half now. A robot woken this step (by that or
-/// by a load, `woken`) wakes the sleeping bodies its links touch: they
-/// slept as one island, and a robot pressing on a sleeper it rested against
-/// would not come at it fast enough to wake it (the free bodies' rule).
-void wakeHitRobots(const Scene& scene, const SceneLoads& loads, double h, std::vector<char>& woken, SceneState& state,
-                   SceneWorkspace& ws);
-
-/// Sleep for the islands that hold a robot (§6, §11.9): every robot in it
-/// touching, slower than the sleep speeds for the sleep time, and every
-/// awake free body in it still as long: all of them fall asleep.
-void sleepRobotIslands(const Scene& scene, double h, SceneState& state, SceneWorkspace& ws);
 
 #pragma GCC visibility pop
 

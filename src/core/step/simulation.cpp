@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "rigid_body_sim/core/step/step.h"
+#include "world.h"
 
 namespace rigid_body_sim::core {
 
@@ -19,25 +19,9 @@ Simulation::Simulation(Scene scene_in, SceneState state_in)
       initial_robots(robots) {}
 
 void Simulation::step(const Loads& loads, const std::vector<ArticulationLoads>& robot_loads) {
-  if (scene.robots().empty()) {
-    if (!robot_loads.empty()) throw std::invalid_argument("Simulation::step: robot loads, and no robot");
-    core::step(scene.model(), state, loads, &workspace);
-    return;
-  }
-  // stepScene works on a SceneState and a SceneWorkspace: ours are moved
-  // in for the step and back after it, also when it throws.
-  SceneState now{std::move(state), std::move(robots)};
-  std::swap(scene_workspace.bodies, workspace);
-  struct Back {
-    Simulation& sim;
-    SceneState& now;
-    ~Back() {
-      sim.state = std::move(now.bodies);
-      sim.robots = std::move(now.robots);
-      std::swap(sim.scene_workspace.bodies, sim.workspace);
-    }
-  } back{*this, now};
-  stepScene(scene, now, SceneLoads{loads, robot_loads}, scene_workspace);
+  detail::WorldState now{state, robots};
+  detail::WorldWorkspace memory{workspace.bodies, workspace.robots, workspace.robot_diverged, workspace.scratch.get()};
+  detail::stepWorld(detail::World(scene), now, detail::WorldLoads{loads, robot_loads}, memory);
 }
 
 void Simulation::addBody(const PreparedBody& body, const BodyState& start) {
@@ -47,7 +31,7 @@ void Simulation::addBody(const PreparedBody& body, const BodyState& start) {
   insertBody(initial, i, start);
   contacts.insertBody(i);
   schedule.insertBody(i);
-  workspace = workspace.forEditedModel();  // its caches assumed the old model
+  workspace.bodies = workspace.bodies.forEditedModel();  // its caches assumed the old model
 }
 
 void Simulation::addRobot(Scene::RobotSpec robot, const ArticulationState& start) {
@@ -59,7 +43,7 @@ void Simulation::addRobot(Scene::RobotSpec robot, const ArticulationState& start
   initial.bodies.resize(model().bodyCount());
   core::placeRobot(scene, r, start, state);
   core::placeRobot(scene, r, start, initial);
-  workspace = workspace.forEditedModel();
+  workspace.bodies = workspace.bodies.forEditedModel();
 }
 
 std::size_t Simulation::removeBody(int i) {
@@ -71,7 +55,7 @@ std::size_t Simulation::removeBody(int i) {
   core::removeBody(scene.model(), initial, i);  // reads the model with body i still in it
   scene.removeBody(static_cast<std::size_t>(i));
   contacts.removeBody(i);
-  workspace = workspace.forEditedModel();
+  workspace.bodies = workspace.bodies.forEditedModel();
   return schedule.removeBody(i);
 }
 
@@ -102,13 +86,11 @@ void Simulation::removeRobot(std::size_t r) {
       }
     }
   }
-  if (scene_workspace.robots.size() > r) {
-    scene_workspace.robots.erase(scene_workspace.robots.begin() + static_cast<std::ptrdiff_t>(r));
+  if (workspace.robots.size() > r) workspace.robots.erase(workspace.robots.begin() + static_cast<std::ptrdiff_t>(r));
+  if (workspace.robot_diverged.size() > r) {
+    workspace.robot_diverged.erase(workspace.robot_diverged.begin() + static_cast<std::ptrdiff_t>(r));
   }
-  if (scene_workspace.robot_diverged.size() > r) {
-    scene_workspace.robot_diverged.erase(scene_workspace.robot_diverged.begin() + static_cast<std::ptrdiff_t>(r));
-  }
-  workspace = workspace.forEditedModel();
+  workspace.bodies = workspace.bodies.forEditedModel();
 }
 
 void Simulation::place(int i, const BodyState& now) {
@@ -130,7 +112,7 @@ void Simulation::placeRobot(std::size_t r, const ArticulationState& now) {
 
 void Simulation::retune(const Tuning& tuning) {
   scene.retune(tuning);
-  workspace = workspace.forEditedModel();  // the fixed-point cache assumed the old settings
+  workspace.bodies = workspace.bodies.forEditedModel();  // the fixed-point cache assumed the old settings
   wakeAll(state);
   for (ArticulationState& robot : robots) {
     robot.asleep = false;

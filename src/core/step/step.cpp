@@ -1,68 +1,118 @@
-// The simulator loop: advance() is the list of the stages of one step, one
-// line per stage, in the order of docs/physics.md §4; each stage lives in the
-// file named beside it.
+// The simulator loop, one for every world: advance() is the list of the
+// stages of one step, one line per stage, in the order of docs/physics.md §4
+// and §11.9; each stage lives in the file named beside it. The robots'
+// stages do nothing in a world of free bodies alone, which then steps bit
+// for bit as it did before robots existed.
 #include "rigid_body_sim/core/step/step.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 
+#include "articulations/scene_stages.h"
 #include "barrier.h"
 #include "fixed_point.h"
 #include "guard.h"
 #include "integration.h"
 #include "rigid_body_sim/core/step/shape_matching.h"
 #include "sleep.h"
+#include "world.h"
 
 namespace rigid_body_sim::core {
+namespace detail {
 namespace {
 
-/// One step of length h of every awake body. Returns whether the impulse
-/// solve ran (its islands are then in the workspace, for sleep and the
-/// fixed-point cache).
-bool advance(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
+/// One step of length h of every awake body and robot. Returns whether the
+/// free bodies' impulse solve ran (its islands are then in the workspace,
+/// for sleep and the fixed-point cache).
+bool advance(const World& world, WorldState& state, const WorldLoads& loads, double h, WorldWorkspace& ws) {
+  const Model& model = world.model();
+  State& bodies = state.bodies;
+  Workspace& bw = ws.bodies;
   // The stages, as a table:
   // clang-format off
-  detectContacts(model, state, h, ws);                             // §5.1    detection.cpp (wakes sleepers hit)
-  integrateVelocities(model, state, loads, h, ws);                 // §5.2–4  integration.cpp: forces, v and ω, damping, limits
-  const bool impulse = solveContactImpulses(model, state, h, ws);  // §5.5    contact_solver.cpp (then the limits)
-  integratePositions(model, state, h, ws);                         // §5.6–7  integration.cpp: gyroscopic, x and q, guard
-  if (impulse) correctPositions(model, state, ws);                 // §5.8    position_correction.cpp
-  sleepIslands(model, state, ws, impulse);                         // §6      sleep.cpp
+  predictRobots(world, loads, h, state, ws);                       // §11.5   scene_step.cpp: the robots' first halves
+  detectContacts(model, bodies, h, bw);                            // §5.1    detection.cpp (wakes sleepers hit)
+  dropJoinedLinks(world, bw);                                      // §11.8   scene_step.cpp
+  wakeHitRobots(world, loads, h, state, ws);                       // §11.9   scene_sleep.cpp
+  takeRobotContacts(world, state, ws);                             // §11.9   scene_solve.cpp: the robots' islands apart
+  integrateVelocities(model, bodies, loads.bodies, h, bw);         // §5.2–4  integration.cpp: forces, v and ω, damping, limits
+  const bool impulse = solveContactImpulses(model, bodies, h, bw); // §5.5    contact_solver.cpp (then the limits)
+  solveRobotIslands(world, state, h, ws);                          // §11.9   scene_solve.cpp: joints and contacts, one solve
+  integratePositions(model, bodies, h, bw);                        // §5.6–7  integration.cpp: gyroscopic, x and q, guard
+  liftBodies(world, ws, h, state);                                 // §11.8   scene_solve.cpp: split impulse, the bodies
+  if (impulse) correctPositions(model, bodies, bw);                // §5.8    position_correction.cpp
+  sleepIslands(model, bodies, bw, impulse);                        // §6      sleep.cpp
+  finishRobots(world, h, state, ws);                               // §11.5–7 scene_step.cpp: momenta, positions, guard
+  sleepRobotIslands(world, h, state, ws);                          // §11.9   scene_sleep.cpp
+  placeAllLinks(world, state, ws);                                 // §11.9   scene_step.cpp: for readers and the next step
+  recordRobotContacts(world, state, ws);                           // §11.9   scene_step.cpp: every contact, for the warm start
   // clang-format on
   return impulse;
 }
 
+/// advance() for a world of free bodies, in the shape the log barrier's step
+/// control repeats (it takes no robots).
+bool advanceBodies(const Model& model, State& state, const Loads& loads, double h, Workspace& ws) {
+  std::vector<ArticulationState> no_robots;
+  std::vector<ArticulationLoads> no_loads;
+  std::vector<ArticulationWorkspace> no_memory;
+  std::vector<char> no_flags;
+  WorldState now{state, no_robots};
+  WorldWorkspace memory{ws, no_memory, no_flags, nullptr};
+  return advance(World(model), now, WorldLoads{loads, no_loads}, h, memory);
+}
+
 }  // namespace
+
+void stepWorld(const World& world, WorldState& state, const WorldLoads& loads, WorldWorkspace& ws) {
+  checkWorld(world, state, loads);
+  const Model& model = world.model();
+  Workspace& bw = ws.bodies;
+  const double h = model.dt();
+  wakeLoadedBodies(state.bodies, loads.bodies);
+  if (!bw.speed_limited.empty()) bw.speed_limited.clear();
+  if (!bw.diverged.empty()) bw.diverged.clear();
+  switch (model.contact().method) {      // a scene with robots takes the impulse method (Scene refuses others)
+    case ContactMethod::kShapeMatching:  // replaces every stage (§7.3), under the same guard
+      forgetFixedPoint(bw);
+      stepShapeMatching(model, state.bodies, loads.bodies, h, bw);
+      break;
+    case ContactMethod::kPenaltyLogBarrier:  // advance() under step control (§7.2)
+      forgetFixedPoint(bw);
+      advanceKeepingBarrier(model, state.bodies, loads.bodies, h, bw, advanceBodies);
+      break;
+    default:
+      if (!world.robots().empty()) {  // the cache compares bodies only: a robot's joints could move unseen
+        forgetFixedPoint(bw);
+        advance(world, state, loads, h, ws);
+        break;
+      }
+      // advance(), unless the last step returned this same input (fixed_point.cpp)
+      if (repeatFixedPoint(model, state.bodies, loads.bodies, h, bw)) break;
+      recordFixedPoint(model, state.bodies, loads.bodies, advance(world, state, loads, h, ws), bw);
+      break;
+  }
+  state.bodies.time += h;
+  if (!bw.diverged.empty()) finishGuard(state.bodies, bw);
+  if (bw.speed_limited.size() > 1) {  // the stages list a body each time they limit it: once each, ascending
+    std::sort(bw.speed_limited.begin(), bw.speed_limited.end());
+    bw.speed_limited.erase(std::unique(bw.speed_limited.begin(), bw.speed_limited.end()), bw.speed_limited.end());
+  }
+}
+
+}  // namespace detail
 
 void step(const Model& model, State& state, const Loads& loads, Workspace* workspace) {
   std::unique_ptr<Workspace> local;  // only built when the caller brings none
   if (workspace == nullptr) local = std::make_unique<Workspace>();
-  Workspace& ws = workspace != nullptr ? *workspace : *local;
-  const double h = model.dt();
-  wakeLoadedBodies(state, loads);
-  if (!ws.speed_limited.empty()) ws.speed_limited.clear();
-  if (!ws.diverged.empty()) ws.diverged.clear();
-  switch (model.contact().method) {
-    case ContactMethod::kShapeMatching:  // replaces every stage (§7.3), under the same guard
-      forgetFixedPoint(ws);
-      stepShapeMatching(model, state, loads, h, ws);
-      break;
-    case ContactMethod::kPenaltyLogBarrier:  // advance() under step control (§7.2)
-      forgetFixedPoint(ws);
-      advanceKeepingBarrier(model, state, loads, h, ws, advance);
-      break;
-    default:  // advance(), unless the last step returned this same input (fixed_point.cpp)
-      if (repeatFixedPoint(model, state, loads, h, ws)) break;
-      recordFixedPoint(model, state, loads, advance(model, state, loads, h, ws), ws);
-      break;
-  }
-  state.time += h;
-  if (!ws.diverged.empty()) finishGuard(state, ws);
-  if (ws.speed_limited.size() > 1) {  // the stages list a body each time they limit it: once each, ascending
-    std::sort(ws.speed_limited.begin(), ws.speed_limited.end());
-    ws.speed_limited.erase(std::unique(ws.speed_limited.begin(), ws.speed_limited.end()), ws.speed_limited.end());
-  }
+  std::vector<ArticulationState> no_robots;
+  std::vector<ArticulationLoads> no_loads;
+  std::vector<ArticulationWorkspace> no_memory;
+  std::vector<char> no_flags;
+  detail::WorldState now{state, no_robots};
+  detail::WorldWorkspace memory{workspace != nullptr ? *workspace : *local, no_memory, no_flags, nullptr};
+  detail::stepWorld(detail::World(model), now, detail::WorldLoads{loads, no_loads}, memory);
 }
 
 }  // namespace rigid_body_sim::core

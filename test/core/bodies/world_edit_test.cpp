@@ -183,8 +183,8 @@ TEST(WorldEdit, ASimulationTakesABodyOutOfEveryTableAtOnce) {
   sim.schedule.add(0, push, 100.0, forever, 1);  // on a, in b's axes: goes with b
   sim.schedule.add(3, push, 100.0, forever);     // on d: stays, as body 2
   for (int n = 0; n < 2000; ++n) {
-    core::step(sim.model(), sim.state, {}, &sim.workspace);
-    sim.contacts.update(sim.state, sim.workspace.contacts);
+    core::step(sim.model(), sim.state, {}, &sim.workspace.bodies);
+    sim.contacts.update(sim.state, sim.workspace.bodies.contacts);
   }
   ASSERT_TRUE(sim.state.bodies[2].asleep);  // c on b
   ASSERT_FALSE(sim.contacts.kept().empty());
@@ -208,7 +208,7 @@ TEST(WorldEdit, ASimulationTakesABodyOutOfEveryTableAtOnce) {
   EXPECT_EQ(sim.schedule.count(0), 0u);
   EXPECT_EQ(sim.schedule.count(2), 1u);  // d's, moved down with d
   // c falls onto the ground, and reset puts every body where it started.
-  for (int n = 0; n < 1000; ++n) core::step(sim.model(), sim.state, {}, &sim.workspace);
+  for (int n = 0; n < 1000; ++n) core::step(sim.model(), sim.state, {}, &sim.workspace.bodies);
   EXPECT_NEAR(sim.state.bodies[1].p_WB.z(), kHalf.z(), 1e-3);
   sim.reset(7.0);
   EXPECT_EQ(sim.state.time, 7.0);
@@ -223,7 +223,7 @@ TEST(WorldEdit, ABodyPlacedElsewhereKeepsNoWarmStart) {
   core::State s;
   s.bodies = {at(model, 0, Vec3(0, 0, kHalf.z()))};
   core::Simulation sim(model, s);
-  for (int n = 0; n < 20; ++n) core::step(sim.model(), sim.state, {}, &sim.workspace);
+  for (int n = 0; n < 20; ++n) core::step(sim.model(), sim.state, {}, &sim.workspace.bodies);
   ASSERT_FALSE(sim.state.contact_impulses.empty());  // resting on the ground, not yet asleep
   ASSERT_GT(sim.state.bodies[0].still_time, 0.0);
   core::BodyState there = at(model, 0, Vec3(3, 0, 1));
@@ -233,7 +233,7 @@ TEST(WorldEdit, ABodyPlacedElsewhereKeepsNoWarmStart) {
   EXPECT_FALSE(sim.state.bodies[0].asleep);
   EXPECT_EQ(sim.state.bodies[0].still_time, 0.0);
   EXPECT_EQ(sim.state.bodies[0].p_WB, Vec3(3, 0, 1));
-  for (int n = 0; n < 1000; ++n) core::step(sim.model(), sim.state, {}, &sim.workspace);
+  for (int n = 0; n < 1000; ++n) core::step(sim.model(), sim.state, {}, &sim.workspace.bodies);
   EXPECT_NEAR(sim.state.bodies[0].p_WB.z(), kHalf.z(), 1e-3);  // fell from there
   EXPECT_THROW(sim.place(1, s.bodies[0]), std::out_of_range);
 }

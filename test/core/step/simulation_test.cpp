@@ -86,7 +86,7 @@ TEST(Simulation, StepsAsTheSceneDoes) {
   EXPECT_EQ(sim.robots[0].q, direct.robots[0].q);
   EXPECT_EQ(sim.robots[0].v, direct.robots[0].v);
   EXPECT_GT(std::abs(sim.robots[0].q[0]), 0.5);  // it swung
-  EXPECT_EQ(sim.workspace.contacts.size(), ws.bodies.contacts.size());
+  EXPECT_EQ(sim.workspace.bodies.contacts.size(), ws.bodies.contacts.size());
 }
 
 // Deleting a free body moves the links down one index everywhere, and the

@@ -27,13 +27,10 @@ struct Simulation {
   WrenchSchedule schedule;
   JointEffortSchedule joint_efforts;  ///< the robots' timed joint efforts
   ContactLedger contacts;
-  /// The bodies' knobs (threads) and the step's outputs: contacts (links by
-  /// their body index), speed limits, the guard.
-  Workspace workspace;
-  /// With robots: the scene step's scratch and the robots' outputs
-  /// (`robot_diverged`, `robots[r].speed_limited`); its `bodies` is
-  /// `workspace`'s only while it steps.
-  SceneWorkspace scene_workspace;
+  /// The step's memory and outputs: `bodies` holds the knobs (threads) and
+  /// the contacts (links by their body index), speed limits and guard;
+  /// `robot_diverged` and `robots[r].speed_limited` the robots'.
+  SceneWorkspace workspace;
 
   /// A world of free bodies; `state` is also the initial state.
   Simulation(Model model, State state);
@@ -44,9 +41,8 @@ struct Simulation {
   std::size_t freeBodyCount() const { return scene.freeBodyCount(); }
 
   /// One step of dt under `loads` (per free body, or per body with the
-  /// links' zero, or none) and `robot_loads` (per robot, or none): core::step
-  /// for a world of free bodies (bit for bit as ever), stepScene with robots.
-  /// Throws std::invalid_argument for loads of the wrong size, and then
+  /// links' zero, or none) and `robot_loads` (per robot, or none): the one
+  /// step (step.h), in place. Throws std::invalid_argument for loads of the wrong size, and then
   /// nothing has changed.
   void step(const Loads& loads, const std::vector<ArticulationLoads>& robot_loads = {});
 
