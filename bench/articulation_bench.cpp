@@ -107,10 +107,24 @@ Engine chainEngine(const ChainSpec& c, Step step) {
           }};
 }
 
+/// The chain as the one robot of a scene, stepped by the one step (stepScene)
+/// as rbsim and the node step it.
 Engine ours(const ChainSpec& c) {
-  return chainEngine(c, [](const ArticulationModel& m, ArticulationState& s, ArticulationWorkspace& ws, const Vec3& g) {
-    stepArticulation(m, s, {}, g, kDt, {}, &ws);
-  });
+  const std::shared_ptr<ArticulationModel> model = chainModel(c);
+  ModelSpec spec;
+  spec.dt = kDt;
+  spec.gravity_W = Vec3(0, 0, -kG);
+  ArticulationState start = restState(*model);
+  start.q.setConstant(c.q0);
+  auto scene = std::make_shared<Scene>(spec, std::vector<Scene::RobotSpec>{{"chain", *model}});
+  auto state = std::make_shared<SceneState>(sceneState(*scene, State(), {start}));
+  auto ws = std::make_shared<SceneWorkspace>();
+  const Vec3 g = spec.gravity_W;
+  return {[=] { stepScene(*scene, *state, {}, *ws); },
+          [=] {
+            const ArticulationKinematics kin = kinematics(*model, state->robots[0]);
+            return kineticEnergy(*model, kin) + potentialEnergy(*model, kin, g);
+          }};
 }
 
 /// Our kernels on MuJoCo's algorithm, from the public dynamics API: the
@@ -231,24 +245,8 @@ struct Roller {
 
 constexpr double kWheelRadius = 0.1, kWheelSpin = 10.0, kFriction = 0.5;
 
-Roller oursRolling() {
-  auto model = std::make_shared<ArticulationModel>(
-      rigid_body_sim::io::loadArticulationFile(std::string(RBS_SOURCE_DIR) + "/urdf/four_wheeler.urdf"));
-  ModelSpec ground;
-  ground.scene = {Sdf::plane(Vec3::UnitZ())};
-  ground.contact.friction = kFriction;
-  ground.sleep.enabled = false;
-  auto colliders = std::make_shared<ArticulationColliders>(articulationColliders(*model, ground));
-  auto state = std::make_shared<ArticulationState>(restState(*model, Pose{Quat::Identity(), Vec3(0, 0, kWheelRadius)}));
-  state->v.setConstant(kWheelSpin);
-  auto ws = std::make_shared<ArticulationWorkspace>();
-  const Vec3 g(0, 0, -kG);
-  return {[=] { stepArticulation(*model, *state, {}, g, kDt, {}, ws.get(), colliders.get()); },
-          [=] { return std::make_pair(state->V_B(3), kWheelRadius * state->v.mean()); }};
-}
-
-/// The same base as the one robot of a scene (stepScene: its contacts in
-/// the scene's solve, warm started): what a scene costs a robot.
+/// The base as the one robot of a scene, stepped by the one step (its
+/// contacts in the scene's solve, warm started).
 Roller oursRollingInAScene() {
   ArticulationModel model =
       rigid_body_sim::io::loadArticulationFile(std::string(RBS_SOURCE_DIR) + "/urdf/four_wheeler.urdf");
@@ -342,8 +340,7 @@ int main(int argc, char** argv) {
     }
   }
   // Contacts: the wheeled base.
-  std::vector<std::pair<const char*, std::function<Roller()>>> rollers = {
-      {"rigid_body_sim", oursRolling}, {"rigid_body_sim scene", oursRollingInAScene}};
+  std::vector<std::pair<const char*, std::function<Roller()>>> rollers = {{"rigid_body_sim", oursRollingInAScene}};
 #ifdef RBS_WITH_MUJOCO
   rollers.push_back({"MuJoCo 2.2.2", mujocoRolling});
 #endif

@@ -1,8 +1,6 @@
 // A robot from a config: robot.h.
 #include "rigid_body_sim/io/robot.h"
 
-#include <utility>
-
 #include "rigid_body_sim/io/joint_start.h"
 #include "rigid_body_sim/io/world.h"
 
@@ -37,18 +35,6 @@ core::ArticulationState robotStart(const core::ArticulationModel& model, const c
   core::setBaseLinkState(state, initial);
   startJoints(model, joints, limits, key, state);
   return state;
-}
-
-Robot buildRobot(const SimConfig& config, core::ArticulationModel model) {
-  if (config.bodies_listed) {
-    throw ConfigError("config key 'bodies': robot '" + model.name +
-                      "' given alone (--urdf) with a bodies list: list it among the bodies instead");
-  }
-  checkRobotSettings(config, model.name);
-  core::ArticulationState state =
-      robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
-  core::ArticulationColliders colliders = core::articulationColliders(model, config.model);
-  return {std::move(model), std::move(colliders), std::move(state)};
 }
 
 }  // namespace rigid_body_sim::io

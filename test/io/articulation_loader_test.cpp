@@ -7,8 +7,8 @@
 
 #include <cmath>
 
+#include "../core/articulations/lone_robot.h"
 #include "../test_util.h"
-#include "rigid_body_sim/core/articulations/articulation_step.h"
 
 namespace rigid_body_sim::test {
 namespace {
@@ -95,9 +95,10 @@ TEST(ArticulationLoader, ALoadedPendulumSwingsWithItsPeriod) {
   core::ArticulationState state = core::restState(model);
   state.q(0) = M_PI / 2.0;
   std::vector<double> up;
+  LoneRobot alone(model, Vec3(0, 0, -9.81), 1e-3);
   for (int n = 0; n < 8000; ++n) {
     const double before = state.q(0);
-    core::stepArticulation(model, state, {}, Vec3(0, 0, -9.81), 1e-3);
+    alone.step(state);
     if (before < 0.0 && state.q(0) >= 0.0) up.push_back(1e-3 * (n + before / (before - state.q(0))));
   }
   ASSERT_GE(up.size(), 3u);

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <optional>
 
+#include "../core/articulations/lone_robot.h"
 #include "../test_util.h"
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
-#include "rigid_body_sim/core/articulations/articulation_step.h"
 #include "rigid_body_sim/io/articulation_loader.h"
 #include "rigid_body_sim/io/joint_start.h"
 
@@ -52,7 +52,8 @@ ArticulationModel load(const std::string& xml, std::vector<std::string>* notes =
 ArticulationState swing(const ArticulationModel& model, int steps) {
   ArticulationState state = core::restState(model);
   state.q(0) = 1.0;
-  for (int n = 0; n < steps; ++n) core::stepArticulation(model, state, {}, kG, 1e-3);
+  LoneRobot alone(model, kG, 1e-3);
+  for (int n = 0; n < steps; ++n) alone.step(state);
   return state;
 }
 
@@ -123,8 +124,9 @@ TEST(MasslessFrames, AMasslessLinkBetweenTwoJointsIsAGimbal) {
   state.v << 0.0, 1.5;
   const double start = energy(model, state);
   double worst = 0.0;
+  LoneRobot alone(model, kG, 1e-3);
   for (int n = 0; n < 5000; ++n) {
-    ASSERT_TRUE(core::stepArticulation(model, state, {}, kG, 1e-3));
+    ASSERT_TRUE(alone.step(state));
     worst = std::max(worst, std::abs(energy(model, state) - start));
   }
   EXPECT_LT(worst, 2e-3 * std::abs(start));
@@ -260,8 +262,9 @@ TEST(ZeroOutsideTheLimits, StartsAtTheNearestLimitWithoutAnEnergyJump) {
   expectContains(notes[0], {"robot.urdf: 1 joint has its zero outside the limits", "'joint_2' 0 -> 0.82",
                             "(limits [0.82, 5.46])"});
   const double start = energy(model, state);
+  LoneRobot alone(model, kG, 1e-3);
   for (int n = 0; n < 1000; ++n) {
-    core::stepArticulation(model, state, {}, kG, 1e-3);
+    alone.step(state);
     ASSERT_LE(energy(model, state), start + 1e-9) << "step " << n;
     ASSERT_GE(state.q(0), 0.82 - 1e-6);
   }

@@ -31,22 +31,6 @@ LinkBodies linkBodies(const ArticulationModel& model, int collision_group) {
   return out;
 }
 
-ArticulationColliders articulationColliders(const ArticulationModel& model, const ModelSpec& settings) {
-  const bool self_collision = settings.contact.self_collision;
-  LinkBodies links = linkBodies(model, self_collision ? -1 : 0);
-  ModelSpec spec = settings;
-  spec.bodies = std::move(links.bodies);
-  return {Model(spec), std::move(links.link), self_collision};
-}
-
-State linkStates(const ArticulationColliders& colliders, const ArticulationModel& model,
-                 const ArticulationState& state) {
-  State links;
-  links.bodies.resize(colliders.bodies.bodyCount());
-  detail::setLinkStates(colliders.bodies, colliders.link, kinematics(model, state), 0, links.bodies);
-  return links;
-}
-
 namespace detail {
 
 namespace {
@@ -172,43 +156,6 @@ void setLinkStates(const Model& bodies, const std::vector<int>& link, const Arti
     s.q_WB = (Quat(X.R_PC) * b.q_LB).normalized();
     s.v_WB = X.R_PC * (V.tail<3>() + V.head<3>().cross(b.p_LB));
     s.w_B = b.q_LB.conjugate() * V.head<3>();
-  }
-}
-
-void findContactRows(const ArticulationModel& model, const ArticulationColliders& colliders,
-                     const ArticulationKinematics& kin, const Eigen::VectorXd& u, double h, State& links, Workspace& ws,
-                     std::vector<ContactRows>& contacts) {
-  contacts.clear();
-  const Model& bodies = colliders.bodies;
-  if (bodies.bodyCount() == 0 || (bodies.scene().empty() && !colliders.self_collision)) {
-    ws.contacts.clear();
-    return;
-  }
-  links.bodies.resize(bodies.bodyCount());
-  setLinkStates(bodies, colliders.link, kin, 0, links.bodies);
-  detectContacts(bodies, links, h, ws);
-  // Links joined by a joint never touch each other (they meet at it).
-  const auto adjacent = [&](const Contact& c) {
-    if (c.other < 0) return false;
-    const int a = colliders.link[c.body], o = colliders.link[c.other];
-    return model.links[a].parent == o || model.links[o].parent == a;
-  };
-  ws.contacts.erase(std::remove_if(ws.contacts.begin(), ws.contacts.end(), adjacent), ws.contacts.end());
-  const int nv = model.dofCount();
-  contacts.resize(ws.contacts.size());
-  for (std::size_t k = 0; k < ws.contacts.size(); ++k) {
-    const Contact& contact = ws.contacts[k];
-    ContactRows& c = contacts[k];
-    const Mat3 directions = frameContact(contact, c);
-    const Vec3 x_W = links.bodies[contact.body].p_WB + contact.r_W;
-    // Against another link of the robot: less that link's point's velocity.
-    c.sides = 1;
-    c.side[0].offset = 0;
-    c.side[0].J.setZero(nv, 3);
-    addLinkPoint(model, kin, colliders.link[contact.body], x_W, directions, 1.0, c.side[0].J);
-    if (contact.other >= 0) addLinkPoint(model, kin, colliders.link[contact.other], x_W, directions, -1.0, c.side[0].J);
-    aimContact(bodies, contact, h, u, c);
-    c.contact = static_cast<int>(k);
   }
 }
 

@@ -1,6 +1,6 @@
 // An articulation's step in two halves around its impulse solve (private to
-// the core): the standalone step (articulation_step.cpp) and a scene's
-// (scene_step.cpp) solve the rows between them, docs/physics.md §11.5, §11.9.
+// the core): the one step (step.cpp, through scene_step.cpp) solves the rows
+// between them, docs/physics.md §11.5, §11.9.
 #pragma once
 
 #include <Eigen/Core>

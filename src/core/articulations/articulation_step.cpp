@@ -1,4 +1,5 @@
-// One step of an articulation on its own: docs/physics.md §11.5.
+// An articulation's step in two halves, around the solve of the one step
+// (step.cpp): docs/physics.md §11.5.
 #include "rigid_body_sim/core/articulations/articulation_step.h"
 
 #include <Eigen/Cholesky>
@@ -246,45 +247,6 @@ void finishArticulation(const ArticulationModel& model, const SpeedLimits& limit
 
 }  // namespace detail
 
-namespace {
-
-/// The step itself; stepArticulation checks its inputs and guards its result.
-/// The joints' limits, friction and mimics (§11.6), and the links' contacts
-/// with the scene (§11.8), at the twists the step would give them: one
-/// impulse solve between the prediction and the positions.
-void advance(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads, const Vec3& g_W,
-             double h, const SpeedLimits& limits, const ArticulationColliders* colliders, ArticulationWorkspace& ws) {
-  detail::predictArticulation(model, state, loads, g_W, h, ws);
-  Eigen::VectorXd& u_next = ws.next;
-  std::vector<detail::JointRow> rows;
-  detail::buildJointRows(model, state, u_next, h, 0, rows);
-  std::vector<detail::ContactRows> contacts;
-  if (colliders != nullptr) {
-    // The last step's impulses, for the warm start: the detection replaces its contacts.
-    ws.last_impulses.clear();
-    for (const Contact& c : ws.detection.contacts)
-      ws.last_impulses.push_back({c.key(), c.normal_impulse, c.tangent_impulse_W});
-    setTwists(model, u_next, ws.kin);
-    detail::findContactRows(model, *colliders, ws.kin, u_next, h, ws.links, ws.detection, contacts);
-    detail::warmStart(ws.last_impulses, ws.detection.contacts, contacts);
-  }
-  if (rows.empty() && contacts.empty()) {
-    detail::finishArticulation(model, limits, h, nullptr, nullptr, state, ws);
-    return;
-  }
-  const std::vector<detail::CoordinateBlock> blocks{{0, model.dofCount(), &ws.llt}};
-  Eigen::VectorXd impulse = Eigen::VectorXd::Zero(model.dofCount());
-  detail::solveRows(colliders != nullptr ? colliders->bodies.solver() : SolverSettings(), blocks, rows, contacts,
-                    u_next, impulse);
-  detail::reportContactImpulses(contacts, ws.detection.contacts);
-  Eigen::VectorXd pseudo;
-  const bool lift = !contacts.empty() &&
-                    detail::liftOutOfContacts(contacts, u_next, h, colliders->bodies.contact().position_slop, pseudo);
-  detail::finishArticulation(model, limits, h, &impulse, lift ? &pseudo : nullptr, state, ws);
-}
-
-}  // namespace
-
 namespace detail {
 
 bool loaded(const ArticulationLoads& loads) {
@@ -342,30 +304,5 @@ bool guardArticulation(const ArticulationModel& model, const ArticulationState& 
 }
 
 }  // namespace detail
-
-bool stepArticulation(const ArticulationModel& model, ArticulationState& state, const ArticulationLoads& loads,
-                      const Vec3& g_W, double h, const SpeedLimits& limits, ArticulationWorkspace* workspace,
-                      const ArticulationColliders* colliders) {
-  detail::checkLoads(model, loads);
-  if (model.dofCount() == 0) return true;  // a base on the world and no joint: nothing moves
-  if (state.asleep) {
-    if (!detail::loaded(loads)) return true;  // it stays exactly where it is
-    state.asleep = false;
-    state.still_time = 0.0;
-  }
-  ArticulationWorkspace local;
-  ArticulationWorkspace& ws = workspace != nullptr ? *workspace : local;
-  ws.start.X_WB = state.X_WB;
-  ws.start.q = state.q;  // the positions only: the guard puts back no velocity
-  advance(model, state, loads, g_W, h, limits, colliders, ws);
-  if (!detail::guardArticulation(model, ws.start, state)) return false;
-  // Sleep (§11.8), as a body's (§6): touching something, every joint and
-  // the base slower than the sleep speeds for `sleep.time`.
-  const bool touching = !ws.detection.contacts.empty();
-  if (colliders != nullptr && detail::updateStillTime(model, colliders->bodies.sleep(), touching, h, state)) {
-    detail::fallAsleep(state);
-  }
-  return true;
-}
 
 }  // namespace rigid_body_sim::core

@@ -150,14 +150,6 @@ void setBodyPoint(const Vec3& r_W, const Mat3& directions, double sign, Columns&
 /// u leaves at e times that speed (§11.8).
 void aimContact(const Model& bodies, const Contact& contact, double h, const Eigen::VectorXd& u, ContactRows& c);
 
-/// The links' contacts with the scene at the positions of `kin` (its twists,
-/// those of u, give the speculative margins), detected as a world's bodies'
-/// are, into `ws.contacts`, each made three rows over the robot's one block
-/// (J only: solveRows adds the rest). `links` holds the links' body states.
-void findContactRows(const ArticulationModel& model, const ArticulationColliders& colliders,
-                     const ArticulationKinematics& kin, const Eigen::VectorXd& u, double h, State& links, Workspace& ws,
-                     std::vector<ContactRows>& contacts);
-
 /// The links' body states (centre of mass and principal axes, velocity)
 /// from the kinematics: body i of `bodies` is link link[i], its state
 /// states[first + i].

@@ -1,8 +1,6 @@
 // An articulation's links against the scene (docs/physics.md §11.8): a
 // pendulum comes to rest on the floor, a two-link arm lying on it does not
 // creep, a four-wheeled base rolls at the speed ω r its wheels set.
-#include "rigid_body_sim/core/articulations/articulation_contacts.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,8 +8,10 @@
 #include <limits>
 
 #include "articulation_models.h"
+#include "lone_robot.h"
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
 #include "rigid_body_sim/core/articulations/articulation_step.h"
+#include "rigid_body_sim/core/articulations/scene.h"
 #include "rigid_body_sim/core/contacts/contact.h"
 
 namespace rigid_body_sim::core {
@@ -31,24 +31,24 @@ ModelSpec groundSettings(double friction) {
 using test::boxMass;
 using test::boxShape;
 
+/// A robot alone on the settings' scene, under gravity.
 struct Robot {
   const ArticulationModel& model;
-  ArticulationColliders colliders;
+  test::LoneRobot alone;
   ArticulationState state;
-  ArticulationWorkspace ws;
   ArticulationLoads loads;
 
   Robot(const ArticulationModel& m, const ModelSpec& settings, const ArticulationState& start)
-      : model(m), colliders(articulationColliders(m, settings)), state(start) {}
+      : model(m), alone(m, Vec3(0, 0, -kG), kH, settings.limits, settings), state(start) {}
   void steps(int n) {
-    for (int i = 0; i < n; ++i) {
-      ASSERT_TRUE(stepArticulation(model, state, loads, Vec3(0, 0, -kG), kH, {}, &ws, &colliders));
-    }
+    for (int i = 0; i < n; ++i) ASSERT_TRUE(alone.step(state, loads));
   }
+  /// The last step's contacts, with their impulses.
+  const std::vector<Contact>& contacts() const { return alone.workspace().bodies.contacts; }
   /// The deepest any link's contact is into the floor (m, ≥ 0).
   double deepest() const {
     double d = 0.0;
-    for (const Contact& c : ws.detection.contacts) d = std::max(d, -c.separation);
+    for (const Contact& c : contacts()) d = std::max(d, -c.separation);
     return d;
   }
 };
@@ -103,7 +103,7 @@ TEST(ArticulationContacts, ArmLyingOnTheFloorRestsWithoutCreep) {
   EXPECT_LT(run.state.V_B.norm(), 1e-9);
   // The floor carries the arm's weight: Σ λ_N = m g h.
   double lifted = 0.0;
-  for (const Contact& c : run.ws.detection.contacts) lifted += c.normal_impulse;
+  for (const Contact& c : run.contacts()) lifted += c.normal_impulse;
   EXPECT_NEAR(lifted, 2.0 * kG * kH, 1e-9);
 }
 
@@ -174,7 +174,7 @@ TEST(ArticulationContacts, ArmSlidingOnTheFloorStops) {
   run.steps(5);
   double normal = 0.0, friction = 0.0;
   Vec3 tangent = Vec3::Zero();
-  for (const Contact& c : run.ws.detection.contacts) {
+  for (const Contact& c : run.contacts()) {
     normal += c.normal_impulse;
     friction += c.tangent_impulse_W.norm();
     tangent += c.tangent_impulse_W;
@@ -255,8 +255,8 @@ TEST(ArticulationContacts, BitIdenticalAtOneThreadAndTwo) {
   std::vector<ArticulationState> ends;
   for (const int threads : {1, 2}) {
     Robot run(model, groundSettings(0.8), start);
-    run.ws.detection.threads = threads;
-    run.ws.detection.min_parallel_work = 0;
+    run.alone.workspace().bodies.threads = threads;
+    run.alone.workspace().bodies.min_parallel_work = 0;
     run.steps(1500);
     ends.push_back(run.state);
   }
@@ -325,12 +325,11 @@ TEST(ArticulationContacts, SelfCollisionIsASettingOffByDefault) {
   settings.sleep.enabled = false;
   for (const bool self : {false, true}) {
     settings.contact.self_collision = self;
-    ArticulationColliders colliders = articulationColliders(model, settings);
+    test::LoneRobot alone(model, Vec3::Zero(), kH, settings.limits, settings);
     ArticulationState state = start;
-    ArticulationWorkspace ws;
     double deepest = std::numeric_limits<double>::infinity();
     for (int i = 0; i < 1000; ++i) {
-      ASSERT_TRUE(stepArticulation(model, state, {}, Vec3::Zero(), kH, {}, &ws, &colliders));
+      ASSERT_TRUE(alone.step(state));
       deepest = std::min(deepest, lastBarIntoBase(model, state));
     }
     std::printf("self-collision %s: the last bar's deepest into the base %.3g m\n", self ? "on" : "off", deepest);

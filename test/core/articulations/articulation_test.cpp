@@ -12,14 +12,17 @@
 #include <tuple>
 
 #include "articulation_models.h"
+#include "lone_robot.h"
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
 #include "rigid_body_sim/core/articulations/articulation_step.h"
 
 namespace rigid_body_sim::core {
 namespace {
 
+using test::LoneRobot;
 using test::planarChain;
 using test::randomTree;
+using test::stepAlone;
 
 const Vec3 kGravity(0.0, 0.0, -9.81);
 
@@ -161,9 +164,10 @@ TEST(ArticulationDynamics, AcrobotMatchesClosedForm) {
 std::vector<double> upwardCrossings(const ArticulationModel& model, ArticulationState state, double h, double T) {
   std::vector<double> times;
   const int steps = static_cast<int>(std::lround(T / h));
+  LoneRobot alone(model, kGravity, h);
   for (int n = 0; n < steps; ++n) {
     const double before = state.q(0);
-    stepArticulation(model, state, {}, kGravity, h);
+    alone.step(state);
     if (before < 0.0 && state.q(0) >= 0.0) times.push_back(h * (n + before / (before - state.q(0))));
   }
   return times;
@@ -203,8 +207,9 @@ TEST(ArticulationStep, DoublePendulumEnergyDoesNotDrift) {
   const double scale = 2.0 * 9.81 * 1.0;  // m g l: the energies at play
   double first = 0.0, last = 0.0, worst = 0.0;
   const int steps = 20000;
+  LoneRobot alone(model, kGravity, 1e-3);
   for (int n = 0; n < steps; ++n) {
-    stepArticulation(model, state, {}, kGravity, 1e-3);
+    alone.step(state);
     const double error = (energy() - e0) / scale;
     worst = std::max(worst, std::abs(error));
     if (n < 2000) first += error / 2000.0;
@@ -228,8 +233,9 @@ TEST(ArticulationStep, DampingDecaysAsTheClosedForm) {
     ArticulationState state = restState(model);
     state.v(0) = 3.0;
     const double h = 1e-3, I = 0.5;
+    LoneRobot alone(model, kGravity, h);
     for (int n = 1; n <= 1000; ++n) {
-      stepArticulation(model, state, {}, kGravity, h);
+      alone.step(state);
       ASSERT_GE(state.v(0), 0.0);
       EXPECT_NEAR(state.v(0), 3.0 * std::pow(I / (I + h * b), n), 1e-12 * 3.0);
     }
@@ -258,9 +264,10 @@ TEST(ArticulationStep, FloatingTreeKeepsItsMomentumAndItsCentreOfMassLine) {
     const Vec3 velocity = H0.tail<3>() / totalMass(model);
     double worst_carried = 0.0, worst_acting = 0.0, worst_line = 0.0;
     const double h = 1e-3;
+    LoneRobot alone(model, Vec3::Zero(), h, SpeedLimits{1e4, 1e4});  // never slowed
     for (int n = 1; n <= 10000; ++n) {
       const ArticulationState before = state;
-      stepArticulation(model, state, {}, Vec3::Zero(), h, SpeedLimits{1e4, 1e4});  // never slowed
+      alone.step(state);
       ArticulationState acting = before;
       acting.v = state.v;
       acting.V_B = state.V_B;
@@ -291,7 +298,7 @@ TEST(ArticulationStep, AnImpulseOnALinkChangesTheMomentumByItself) {
   ArticulationLoads loads;
   loads.impulse_L.assign(model.links.size(), Vec6::Zero());
   loads.impulse_L[4] << 0.3, -0.2, 0.5, 1.5, 2.0, -1.0;
-  ASSERT_TRUE(stepArticulation(model, state, loads, Vec3::Zero(), 1e-3, SpeedLimits{1e4, 1e4}));
+  ASSERT_TRUE(stepAlone(model, state, loads, Vec3::Zero(), 1e-3, SpeedLimits{1e4, 1e4}));
   const Vec6 expected = H0 + before.X_WL[4].forceToParent(loads.impulse_L[4]);
   EXPECT_LT((state.carried.H_W - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.norm());
 
@@ -302,7 +309,7 @@ TEST(ArticulationStep, AnImpulseOnALinkChangesTheMomentumByItself) {
   // 0.6 N·s along x at 0.8 m below the pivot, given at the link's origin
   // (the pivot): the force, and its moment r × P = (0, −0.48, 0).
   strike.impulse_L[1] << 0.0, -0.48, 0.0, 0.6, 0.0, 0.0;
-  ASSERT_TRUE(stepArticulation(rod, hanging, strike, Vec3::Zero(), 1e-3));
+  ASSERT_TRUE(stepAlone(rod, hanging, strike, Vec3::Zero(), 1e-3));
   const double I = 2.0 / 12.0 + 2.0 * 0.25;     // about the pivot
   EXPECT_NEAR(hanging.v(0), -0.48 / I, 1e-12);  // the bottom swings toward +x: about −y
 }
@@ -316,8 +323,9 @@ TEST(ArticulationStep, CentreOfMassFallsAsAFreeBody) {
   ArticulationKinematics kin = kinematics(model, state);
   Vec3 c = centreOfMass(model, kin);
   Vec3 v = momentum_W(model, kin).tail<3>() / totalMass(model);
+  LoneRobot alone(model, kGravity, 1e-3);
   for (int n = 0; n < 2000; ++n) {
-    stepArticulation(model, state, {}, kGravity, 1e-3);
+    alone.step(state);
     v += 1e-3 * kGravity;
     c += 1e-3 * v;
   }
@@ -333,7 +341,7 @@ TEST(ArticulationStep, CommandedEffortIsClippedToTheLimit) {
     ArticulationState state = restState(model);
     ArticulationLoads loads;
     loads.effort = Eigen::VectorXd::Constant(1, effort);
-    stepArticulation(model, state, loads, kGravity, 1e-3);
+    stepAlone(model, state, loads, kGravity, 1e-3);
     EXPECT_NEAR(state.v(0), 1e-3 * std::clamp(effort, -2.0, 2.0) / 0.5, 1e-15);
   }
 }
@@ -347,8 +355,9 @@ TEST(ArticulationJoints, ALimitHoldsTheJoint) {
   ArticulationState state = restState(model);
   state.q(0) = M_PI / 2.0;
   double lowest = 10.0;
+  LoneRobot alone(model, kGravity, 1e-3);
   for (int n = 0; n < 3000; ++n) {
-    stepArticulation(model, state, {}, kGravity, 1e-3);
+    alone.step(state);
     lowest = std::min(lowest, state.q(0));
   }
   EXPECT_GE(lowest, 0.3);
@@ -359,7 +368,7 @@ TEST(ArticulationJoints, ALimitHoldsTheJoint) {
   loads.effort = Eigen::VectorXd::Constant(1, 500.0);
   double highest = 0.0;
   for (int n = 0; n < 2000; ++n) {
-    stepArticulation(model, state, loads, kGravity, 1e-3);
+    alone.step(state, loads);
     highest = std::max(highest, state.q(0));
   }
   EXPECT_LE(highest, 2.0);
@@ -377,7 +386,8 @@ TEST(ArticulationJoints, FrictionHoldsBelowItsTorqueAndSlipsAbove) {
     ArticulationState state = restState(model);
     ArticulationLoads loads;
     loads.effort = Eigen::VectorXd::Constant(1, effort);
-    for (int n = 0; n < 1000; ++n) stepArticulation(model, state, loads, kGravity, 1e-3);
+    LoneRobot alone(model, kGravity, 1e-3);
+    for (int n = 0; n < 1000; ++n) alone.step(state, loads);
     const double slip = std::abs(effort) > 2.0 ? (effort - std::copysign(2.0, effort)) / 0.5 : 0.0;
     EXPECT_NEAR(state.v(0), slip * 1.0, 1e-9) << "effort " << effort;
     if (slip == 0.0) {
@@ -389,10 +399,12 @@ TEST(ArticulationJoints, FrictionHoldsBelowItsTorqueAndSlipsAbove) {
   pendulum.links[1].friction = 1.0 * 9.81 * 0.5 * std::sin(0.2) * 1.01;
   ArticulationState held = restState(pendulum);
   held.q(0) = 0.2;
-  for (int n = 0; n < 1000; ++n) stepArticulation(pendulum, held, {}, kGravity, 1e-3);
+  LoneRobot holding(pendulum, kGravity, 1e-3);
+  for (int n = 0; n < 1000; ++n) holding.step(held);
   EXPECT_NEAR(held.q(0), 0.2, 1e-15);
   pendulum.links[1].friction *= 0.9;  // now too weak: it slips
-  for (int n = 0; n < 100; ++n) stepArticulation(pendulum, held, {}, kGravity, 1e-3);
+  LoneRobot slipping(pendulum, kGravity, 1e-3);
+  for (int n = 0; n < 100; ++n) slipping.step(held);
   EXPECT_LT(held.q(0), 0.2);
 }
 
@@ -405,8 +417,9 @@ TEST(ArticulationJoints, MimicJointsKeepTheirRatio) {
   ArticulationState state = restState(model);
   state.q << 1.2, -0.5;
   double worst = 0.0;
+  LoneRobot alone(model, kGravity, 1e-3);
   for (int n = 0; n < 5000; ++n) {
-    stepArticulation(model, state, {}, kGravity, 1e-3);
+    alone.step(state);
     if (n > 0) worst = std::max(worst, std::abs(state.q(1) - (-0.5 * state.q(0) + 0.1)));
   }
   EXPECT_LT(worst, 1e-6);
@@ -424,7 +437,7 @@ TEST(ArticulationStep, TheGuardKeepsEveryStateFinite) {
     loads.effort = Eigen::VectorXd::Constant(1, 1e308);
     SpeedLimits limits;
     limits.max_angular_speed = 50.0;
-    EXPECT_TRUE(stepArticulation(pendulum, state, loads, kGravity, 1e-3, limits));
+    EXPECT_TRUE(stepAlone(pendulum, state, loads, kGravity, 1e-3, limits));
     EXPECT_EQ(state.v(0), 50.0);
     EXPECT_FALSE(state.carried.valid);
   }
@@ -434,12 +447,12 @@ TEST(ArticulationStep, TheGuardKeepsEveryStateFinite) {
     state.v(0) = 1.0;
     ArticulationLoads loads;
     loads.effort = Eigen::VectorXd::Constant(1, effort);
-    EXPECT_FALSE(stepArticulation(pendulum, state, loads, kGravity, 1e-3)) << effort;
+    EXPECT_FALSE(stepAlone(pendulum, state, loads, kGravity, 1e-3)) << effort;
     EXPECT_EQ(state.q(0), 0.4);
     EXPECT_EQ(state.v(0), 0.0);
     EXPECT_FALSE(state.carried.valid);
     loads.effort(0) = 0.0;
-    EXPECT_TRUE(stepArticulation(pendulum, state, loads, kGravity, 1e-3));
+    EXPECT_TRUE(stepAlone(pendulum, state, loads, kGravity, 1e-3));
     EXPECT_TRUE(state.q.allFinite() && state.v.allFinite());
   }
   // A base on the world with no joint has nothing to move (the fuzzer found
@@ -448,15 +461,15 @@ TEST(ArticulationStep, TheGuardKeepsEveryStateFinite) {
   still.fixed_base = true;
   still.links.resize(1);
   ArticulationState nothing = restState(still, {Quat::Identity(), Vec3(1, 2, 3)});
-  EXPECT_TRUE(stepArticulation(still, nothing, {}, kGravity, 1e-3));
+  EXPECT_TRUE(stepAlone(still, nothing, {}, kGravity, 1e-3));
   EXPECT_EQ(nothing.X_WB.translation, Vec3(1, 2, 3));
   ArticulationState state = restState(pendulum);
   ArticulationLoads loads;
   loads.effort = Eigen::VectorXd::Zero(2);
-  EXPECT_THROW(stepArticulation(pendulum, state, loads, kGravity, 1e-3), std::invalid_argument);
+  EXPECT_THROW(stepAlone(pendulum, state, loads, kGravity, 1e-3), std::invalid_argument);
   loads.effort.resize(0);
   loads.wrench_L.resize(1);
-  EXPECT_THROW(stepArticulation(pendulum, state, loads, kGravity, 1e-3), std::invalid_argument);
+  EXPECT_THROW(stepAlone(pendulum, state, loads, kGravity, 1e-3), std::invalid_argument);
 }
 
 TEST(ArticulationModel, RefusesWhatCannotBeSimulatedNamingIt) {
