@@ -26,6 +26,7 @@ const ArticulationLoads& robotLoads(const WorldLoads& loads, std::size_t r) {
 
 void placeLinks(const World& world, std::size_t r, WorldState& state, WorldWorkspace& ws) {
   const SceneRobot& robot = world.robots()[r];
+  if (robot.link.empty()) return;  // no link is a body: nothing to place
   ArticulationWorkspace& rw = ws.robots[r];
   kinematics(robot.model, state.robots[r], rw.kin);
   const std::size_t first = static_cast<std::size_t>(robot.first_body);
@@ -116,10 +117,9 @@ void finishRobots(const World& world, double h, WorldState& state, WorldWorkspac
     ArticulationState& rs = state.robots[r];
     if (m.dofCount() == 0 || rs.asleep) continue;
     const int at = solve.robot_offset[r];
-    const Eigen::VectorXd impulse = solve.impulse.segment(at, m.dofCount());
-    const Eigen::VectorXd pseudo =
-        solve.lift ? Eigen::VectorXd(solve.pseudo.segment(at, m.dofCount())) : Eigen::VectorXd();
-    finishArticulation(m, world.model().limits(), h, &impulse, solve.lift ? &pseudo : nullptr, rs, rw);
+    rw.row_impulse = solve.impulse.segment(at, m.dofCount());
+    if (solve.lift) rw.row_pseudo = solve.pseudo.segment(at, m.dofCount());
+    finishArticulation(m, world.model().limits(), h, &rw.row_impulse, solve.lift ? &rw.row_pseudo : nullptr, rs, rw);
     if (!guardArticulation(m, rw.start, rs)) ws.robot_diverged[r] = 1;
   }
 }

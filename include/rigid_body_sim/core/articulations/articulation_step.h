@@ -34,11 +34,12 @@ struct ArticulationWorkspace {
   Eigen::MatrixXd A;
   Eigen::LLT<Eigen::MatrixXd> llt;
   Eigen::VectorXd u, p, force, bias, predicted, next, corrected, rhs, gradient, lift;
-  std::vector<Vec6> wrench_L;  ///< the loads' wrenches and impulses / h together
-  ArticulationState start;     ///< where the step began, for the guard
-  bool speed_limited = false;  ///< the last step slowed something to the speed limits
-  Vec6 H_W = Vec6::Zero();     ///< the floating base's rows: the whole momentum, world axes, within a step
-  int predict_only = 0;        ///< within a step: the steps left that skip the corrector
+  std::vector<Vec6> wrench_L;               ///< the loads' wrenches and impulses / h together
+  Eigen::VectorXd row_impulse, row_pseudo;  ///< its part of the solve's impulse and pseudo velocity
+  ArticulationState start;                  ///< where the step began, for the guard
+  bool speed_limited = false;               ///< the last step slowed something to the speed limits
+  Vec6 H_W = Vec6::Zero();                  ///< the floating base's rows: the whole momentum, world axes, within a step
+  int predict_only = 0;                     ///< within a step: the steps left that skip the corrector
 };
 
 /// The base pose after h seconds at twist V_B (in the base's axes): the
