@@ -51,6 +51,9 @@ core::BodySpec loadUrdfString(const std::string& xml, const std::string& source,
   spec.I_C_L = total.I_C_F;
   spec.collision = std::move(group.shapes);
   spec.fixed_links = std::move(group.frames);
+  // Its surface: the root link's <gazebo reference> <mu1>/<mu2>, as a
+  // robot link's (a config entry's or a spawn's own friction wins over it).
+  spec.friction = lumper.surfaceFriction(root->name);
   return spec;
 }
 

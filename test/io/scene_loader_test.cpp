@@ -10,6 +10,8 @@
 
 #include "../test_util.h"
 #include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/urdf_loader.h"
+#include "rigid_body_sim/io/world.h"
 
 namespace rigid_body_sim::test {
 namespace {
@@ -50,6 +52,40 @@ bodies:
   EXPECT_EQ(s.scene.model().body(2).friction, 0.9);
   const Vec3 rod = s.state.bodies.bodies[2].p_WB;  // 0.25 m down the rod from the pivot at z = 0.6
   EXPECT_LT((rod - Vec3(-0.25 * std::sin(0.5), 0.0, 0.6 - 0.25 * std::cos(0.5))).norm(), 1e-12);
+}
+
+// A body's URDF with Gazebo markup (<gazebo reference="ROOT"><mu1>, <mu2>)
+// gives the body its surface as it gives a robot's link one (the smaller);
+// an entry's own contact.friction wins over it; without either, the scene's.
+TEST(SceneLoader, ABodysGazeboFrictionIsItsSurfaceUnlessItsEntryGivesOne) {
+  const std::string slippery =
+      "<robot name='puck'><link name='puck'><inertial><mass value='1'/><inertia ixx='0.01' iyy='0.01' izz='0.01' "
+      "ixy='0' ixz='0' iyz='0'/></inertial><collision><geometry><box size='0.2 0.2 0.1'/></geometry></collision>"
+      "</link><gazebo reference='puck'><mu1>0.3</mu1><mu2>0.2</mu2></gazebo></robot>";
+  EXPECT_EQ(io::loadUrdfString(slippery, "puck.urdf").friction, 0.2);
+  const io::SimConfig c = config(R"(
+contact: {friction: 0.6}
+bodies:
+  - {name: a, urdf: puck.urdf}
+  - {name: b, urdf: puck.urdf, contact: {friction: 0.9}}
+  - {name: c, urdf: box.urdf}
+)");
+  const io::UrdfReader read = [&](const io::BodyEntry& e) -> io::UrdfText {
+    if (e.urdf.find("puck.urdf") != std::string::npos) return {slippery, e.urdf, ""};
+    return io::readUrdfFile(e.urdf, kUrdf);
+  };
+  const io::SceneSetup s = io::buildScene(c, read);
+  ASSERT_EQ(s.scene.freeBodyCount(), 3u);
+  EXPECT_EQ(s.scene.model().body(0).friction, 0.2);
+  EXPECT_EQ(s.scene.model().body(1).friction, 0.9);
+  EXPECT_EQ(s.scene.model().body(2).friction, 0.6);
+  // The world of bodies alone (io::buildWorld, the node's path without
+  // robots) reads it alike.
+  const io::World w =
+      io::loadWorld(c, {}, [&](const io::BodyEntry& e) { return io::loadUrdfString(read(e).xml, e.urdf); });
+  EXPECT_EQ(w.model.body(0).friction, 0.2);
+  EXPECT_EQ(w.model.body(1).friction, 0.9);
+  EXPECT_EQ(w.model.body(2).friction, 0.6);
 }
 
 TEST(SceneLoader, RefusesWhatAnEntryWouldNotRead) {
