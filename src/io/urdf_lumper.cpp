@@ -87,7 +87,9 @@ void Lumper::finish() const {
     const std::string many = problems_.size() == 1 ? "" : std::to_string(problems_.size()) + " problems: ";
     throw UrdfError(source_ + ": " + many + joined(problems_));
   }
-  if (repairs_.empty() || options_.notes == nullptr) return;
+  if (options_.notes == nullptr) return;
+  noteUnreadMarkup();
+  if (repairs_.empty()) return;
   std::map<Repair, std::vector<std::string>> by_kind;
   for (const auto& [kind, what] : repairs_) {
     std::vector<std::string>& list = by_kind[kind];
@@ -155,6 +157,17 @@ void Lumper::finish() const {
   options_.notes->push_back(message);
 }
 
+void Lumper::noteUnreadMarkup() const {
+  if (unread_markup_.empty()) return;
+  std::vector<std::string> parts;
+  for (const auto& [kind, names] : unread_markup_) parts.push_back(kind + " (" + nameList(names, 6) + ")");
+  options_.notes->push_back(source_ +
+                            ": markup for Gazebo that nothing here simulates, skipped (sensors, plugins, surface "
+                            "and joint tuning, transmissions; a robot's controllers come from its controller "
+                            "config; docs/physics.md 2.1): " +
+                            joined(parts));
+}
+
 urdf::ModelInterfaceSharedPtr Lumper::parse(const std::string& xml) {
   if (xml.size() > InputCaps::kUrdfBytes) {
     fail("the URDF text is " + std::to_string(xml.size()) + " bytes, more than the " +
@@ -170,6 +183,7 @@ urdf::ModelInterfaceSharedPtr Lumper::parse(const std::string& xml) {
   }
   capsules_ = std::move(parsed.capsules);
   surface_friction_ = std::move(parsed.surface_friction);
+  unread_markup_ = std::move(parsed.unread_markup);
   for (const std::string& above : parsed.friction_above) {
     if (repair()) {
       repaired(Repair::kFrictionCapped, above);

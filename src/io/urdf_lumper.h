@@ -118,11 +118,15 @@ class Lumper {
   void collect(const urdf::Link& root, LinkGroup& group, bool allow_moving, bool massless_root = false);
 
  private:
+  /// One note naming the markup nothing here reads (unread_markup_).
+  void noteUnreadMarkup() const;
+
   std::string source_;
   std::string base_dir_;
   UrdfOptions options_;
   CapsuleSet capsules_;
   std::map<std::string, double> surface_friction_;
+  std::map<std::string, std::vector<std::string>> unread_markup_;  ///< ParsedUrdf's
   std::vector<std::string> problems_;
   std::vector<std::pair<Repair, std::string>> repairs_;
 };

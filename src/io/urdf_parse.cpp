@@ -229,6 +229,39 @@ std::string gazeboFriction(const TiXmlElement& robot, ParsedUrdf& out) {
   return "";
 }
 
+/// What `<gazebo>` and `<transmission>` markup of `robot` nothing here
+/// reads, into out.unread_markup (see ParsedUrdf).
+void unreadMarkup(const TiXmlElement& robot, ParsedUrdf& out) {
+  const auto attribute = [](const TiXmlElement& e, const char* name) {
+    const char* value = e.Attribute(name);
+    return std::string(value != nullptr ? value : "");
+  };
+  const auto add = [&out](const std::string& kind, const std::string& name) {
+    std::vector<std::string>& names = out.unread_markup[kind];
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  };
+  for (const TiXmlElement* g = robot.FirstChildElement("gazebo"); g; g = g->NextSiblingElement("gazebo")) {
+    const std::string reference = attribute(*g, "reference");
+    for (const TiXmlElement* e = g->FirstChildElement(); e; e = e->NextSiblingElement()) {
+      const std::string tag = e->Value();
+      if (tag == "mu1" || tag == "mu2" || tag == "material") continue;  // read above; drawing only
+      std::string kind = "<" + tag + ">";
+      if (tag == "sensor") {
+        kind = "<sensor type=\"" + attribute(*e, "type") + "\">";
+        for (const TiXmlElement* p = e->FirstChildElement("plugin"); p; p = p->NextSiblingElement("plugin")) {
+          kind += " " + attribute(*p, "filename");
+        }
+      } else if (tag == "plugin") {
+        kind = "<plugin> " + attribute(*e, "filename");
+      }
+      add(kind, !reference.empty() ? reference : tag == "plugin" ? attribute(*e, "name") : "the robot");
+    }
+  }
+  for (const TiXmlElement* t = robot.FirstChildElement("transmission"); t; t = t->NextSiblingElement("transmission")) {
+    add("<transmission>", attribute(*t, "name"));
+  }
+}
+
 std::mutex& parserMutex() {
   static std::mutex m;
   return m;
@@ -249,6 +282,7 @@ ParsedUrdf parseUrdf(const std::string& xml) {
     }
     if (problem.empty()) problem = gazeboFriction(*robot, out);
     if (!problem.empty()) throw std::invalid_argument(problem);
+    unreadMarkup(*robot, out);
     if (xml.find("capsule") != std::string::npos && capsulesAsCylinders(*robot, out.capsules)) {
       TiXmlPrinter printer;
       doc.Accept(&printer);

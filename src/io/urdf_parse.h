@@ -28,6 +28,11 @@ struct ParsedUrdf {
   std::map<std::string, double> surface_friction;
   /// Those read as kMaxFriction: "<gazebo reference=\"LINK\"> <mu1> = V".
   std::vector<std::string> friction_above;
+  /// The markup nothing here reads (Gazebo's sensors, plugins and surface
+  /// or joint tuning, <transmission>s), by kind (`<sensor type="ray">
+  /// libgazebo_ros_laser.so`, `<kp>`, `<transmission>`), each kind's links
+  /// or names in document order; `<material>`, drawing only, is left out.
+  std::map<std::string, std::vector<std::string>> unread_markup;
 };
 
 /// urdfdom's model of `xml`. Throws std::invalid_argument, one line that

@@ -245,6 +245,33 @@ TEST(FrictionAboveTheLargest, IsReadAsItAndSaid) {
                                   {"<gazebo reference=\"upper\"> <mu1> = '100.0' is above 10", "urdf.repair: true"});
 }
 
+// Markup for Gazebo that nothing here reads (sensors, plugins, contact
+// tuning, transmissions) is named in one note, each kind once with its links
+// or names, and loads as before, repairing or not; <material> (drawing) and
+// <mu1>/<mu2> (read) are not named.
+TEST(GazeboMarkupNothingReads, IsNamedInOneNote) {
+  const std::string xml = doublePendulum(
+      "<gazebo reference='upper'><material>Gazebo/Red</material><kp>1e6</kp>"
+      "<sensor type='ray' name='scan'><plugin name='laser' filename='libgazebo_ros_laser.so'/></sensor></gazebo>"
+      "<gazebo reference='lower'><kp>1e5</kp><mu1>0.7</mu1></gazebo>"
+      "<gazebo><plugin name='gazebo_ros_control' filename='libgazebo_ros_control.so'/></gazebo>"
+      "<transmission name='t1'><type>transmission_interface/SimpleTransmission</type></transmission>");
+  for (const bool repair : {true, false}) {
+    std::vector<std::string> notes;
+    const ArticulationModel model = load(xml, &notes, repair);
+    EXPECT_EQ(model.links[2].surface_friction, std::optional<double>(0.7));
+    ASSERT_EQ(notes.size(), 1u);
+    expectContains(notes[0], {"robot.urdf: markup for Gazebo that nothing here simulates", "<kp> ('upper' and 'lower')",
+                              "<sensor type=\"ray\"> libgazebo_ros_laser.so ('upper')",
+                              "<plugin> libgazebo_ros_control.so ('gazebo_ros_control')", "<transmission> ('t1')"});
+    EXPECT_EQ(notes[0].find("material"), std::string::npos) << notes[0];
+    EXPECT_EQ(notes[0].find("mu1"), std::string::npos) << notes[0];
+  }
+  std::vector<std::string> notes;
+  load(doublePendulum("<gazebo reference='upper'><material>Gazebo/Red</material><mu1>0.5</mu1></gazebo>"), &notes);
+  EXPECT_TRUE(notes.empty()) << notes.front();
+}
+
 TEST(ZeroOutsideTheLimits, StartsAtTheNearestLimitWithoutAnEnergyJump) {
   // Kinova's joint_2, limits [0.82, 5.46]: its zero is no legal pose. The
   // rest state puts it at 0.82 and says so; held there against the limit by
