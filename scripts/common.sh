@@ -111,7 +111,7 @@ rbs_build() {
   # (PYTHONPATH) only if it exists when CMake first runs; without it a tests-only
   # build (sanitize.sh) ran the spawn_body script unable to import its messages.
   mkdir -p "$RBS_WS/devel/lib/python3/dist-packages"
-  local what="building ${*:-the package} into ${RBS_WS#"$PWD"/} ($RBS_BUILD_TYPE; about 7 minutes the first time on 2 cores)"
+  local what="building ${*:-the package} into ${RBS_WS#"$PWD"/} ($RBS_BUILD_TYPE; about 4 minutes the first time on 2 cores)"
   local probe=sim_node  # built already: only what changed is built again
   [ "${1:-}" != tests ] || probe=node_test
   [ ! -f "$RBS_WS/devel/lib/rigid_body_sim/$probe" ] || what="building ${*:-the package} (only what changed)"
