@@ -64,6 +64,7 @@ set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/controller_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/controllers.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_loader.cpp
+  ${RBS_SOURCE_ROOT}/src/io/urdf_load_notes.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_lumper.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_parse.cpp
   ${RBS_SOURCE_ROOT}/src/io/robot.cpp

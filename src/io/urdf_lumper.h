@@ -27,6 +27,9 @@ core::Pose toPose(const urdf::Pose& u);
 /// "revolute", "fixed", ...: a joint type as the URDF spells it.
 const char* jointTypeName(int type);
 
+/// The largest friction coefficient, as text ("10"): urdf_load_notes.cpp.
+std::string maxFriction();
+
 /// A movable joint met while gathering a group: where it hangs from.
 struct MovingJoint {
   const urdf::Joint* joint = nullptr;
@@ -118,7 +121,8 @@ class Lumper {
   void collect(const urdf::Link& root, LinkGroup& group, bool allow_moving, bool massless_root = false);
 
  private:
-  /// One note naming the markup nothing here reads (unread_markup_).
+  /// One note naming the markup nothing here reads (unread_markup_;
+  /// urdf_load_notes.cpp, with fail() and finish()).
   void noteUnreadMarkup() const;
 
   std::string source_;
