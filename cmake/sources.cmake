@@ -41,6 +41,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/bodies/sdf_surface.cpp
   ${RBS_SOURCE_ROOT}/src/core/bodies/setting_keys.cpp
   ${RBS_SOURCE_ROOT}/src/core/step/shape_matching.cpp
+  ${RBS_SOURCE_ROOT}/src/core/controllers/diff_drive.cpp
   ${RBS_SOURCE_ROOT}/src/core/controllers/joint_control.cpp
   ${RBS_SOURCE_ROOT}/src/core/articulations/joint_effort_schedule.cpp
   ${RBS_SOURCE_ROOT}/src/core/controllers/joint_trajectory.cpp
@@ -63,6 +64,7 @@ set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/device_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/controller_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/controllers.cpp
+  ${RBS_SOURCE_ROOT}/src/io/drive_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_load_notes.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_lumper.cpp

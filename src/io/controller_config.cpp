@@ -4,6 +4,7 @@
 #include <sstream>
 #include <utility>
 
+#include "drive_config.h"
 #include "rigid_body_sim/core/bodies/ranges.h"
 #include "yaml_fields.h"
 
@@ -36,6 +37,15 @@ ControllerEntry parseController(const YAML::Node& name, const YAML::Node& body, 
   c.name = text(name, path);
   c.key = join(path, c.name);
   if (!body.IsMap()) fail(c.key, "expected a map {type, joint or joints, pid or gains}");
+  if (body["type"] && body["type"].IsScalar() && body["type"].Scalar() == kDiffDriveType) {
+    c.type = kDiffDriveType;
+    c.drive = parseDiffDrive(body, c.key);
+    c.joints = c.drive->left;  // left then right: where gazebo_ros_control's pid_gains find them
+    c.joints.insert(c.joints.end(), c.drive->right.begin(), c.drive->right.end());
+    c.joint_list = true;
+    c.gains.assign(c.joints.size(), std::nullopt);
+    return c;
+  }
   // A JointTrajectoryController's keys that belong to its action and state topics (control_msgs,
   // not in Debian 12): refused by name rather than read halfway.
   for (const char* key : {"constraints", "state_publish_rate", "action_monitor_rate", "stop_trajectory_duration",
@@ -134,10 +144,11 @@ void applyPidGains(const YAML::Node& node, const std::string& path, std::vector<
       }
     }
     if (owner == nullptr) fail(key, "no controller in `controllers` names joint '" + joint + "'");
-    if (owner->type.rfind("position_controllers/", 0) != 0 && owner->type.rfind("velocity_controllers/", 0) != 0) {
+    if (owner->type.rfind("position_controllers/", 0) != 0 && owner->type.rfind("velocity_controllers/", 0) != 0 &&
+        !owner->drive) {
       fail(key, "joint '" + joint + "' is controller '" + owner->name + "''s, a " + owner->type +
-                    ": it takes its own gains (gazebo_ros_control's pid_gains are for position_controllers and "
-                    "velocity_controllers)");
+                    ": it takes its own gains (gazebo_ros_control's pid_gains are for position_controllers, "
+                    "velocity_controllers and a DiffDriveController's wheels)");
     }
     if (owner->gains[k]) fail(key, "joint '" + joint + "' has gains already, in " + owner->key);
     owner->gains[k] = parseGains(g.second, key);

@@ -1,9 +1,13 @@
 // A robot's controllers from the config: controllers.h.
 #include "rigid_body_sim/io/controllers.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "controller_config.h"
+#include "drive_config.h"
 
 namespace rigid_body_sim::io {
 namespace {
@@ -49,17 +53,74 @@ int jointIndex(const core::ArticulationModel& model, const std::string& name, co
 }  // namespace
 
 std::vector<std::string> controllerTypes() {
-  std::vector<std::string> out{kJointState};
+  std::vector<std::string> out{kJointState, kDiffDriveType};
   for (const TypeInfo& t : kTypes) out.emplace_back(t.name);
   return out;
 }
 
 namespace {
 
+/// The wheel radius ros_controllers reads: the first collision of `link`, a cylinder's or a sphere's.
+double urdfWheelRadius(const core::ArticulatedLink& link, const std::string& key) {
+  if (!link.collision.empty()) {
+    const core::CollisionShape& shape = link.collision.front();
+    if (shape.kind == core::CollisionShape::Kind::kCylinder || shape.kind == core::CollisionShape::Kind::kSphere) {
+      return shape.radius;
+    }
+  }
+  refuse(key, "is not given, and link '" + link.name +
+                  "''s first collision is no cylinder or sphere to read it from (as ros_controllers reads it): "
+                  "give wheel_radius (m)");
+}
+
+/// A DiffDriveController of `model`, into `out`.
+void addDrive(const ControllerEntry& e, const core::ArticulationModel& model, RobotControls& out) {
+  const DiffDriveEntry& d = *e.drive;
+  core::DiffDriveSpec spec;
+  spec.name = e.name;
+  spec.settings = d.settings;
+  for (const auto& [names, joints, side] :
+       {std::tuple{&d.left, &spec.left, "left_wheel"}, std::tuple{&d.right, &spec.right, "right_wheel"}}) {
+    for (std::size_t k = 0; k < names->size(); ++k) {
+      const std::string key = e.key + "." + side + (names->size() > 1 ? "[" + std::to_string(k) + "]" : "");
+      joints->push_back(jointIndex(model, (*names)[k], key));
+    }
+  }
+  const core::ArticulatedLink &left = model.links[spec.left.front()], &right = model.links[spec.right.front()];
+  // As ros_controllers: the first wheels' joint origins apart (in their parents' frames).
+  spec.wheel_separation = d.wheel_separation.value_or((left.X_PJ.translation - right.X_PJ.translation).norm());
+  spec.wheel_radius = d.wheel_radius ? *d.wheel_radius : urdfWheelRadius(left, e.key + ".wheel_radius");
+  if (!(spec.wheel_separation > 0.0)) {
+    refuse(e.key + ".wheel_separation", "is not given, and the wheels' joints '" + left.joint + "' and '" +
+                                            right.joint + "' are at one place: give wheel_separation (m)");
+  }
+  const bool any_gains = std::any_of(e.gains.begin(), e.gains.end(), [](const auto& g) { return g.has_value(); });
+  if (any_gains) {  // pid_gains for some wheels: the others get the default
+    const std::vector<int> wheels = [&] {
+      std::vector<int> all = spec.left;
+      all.insert(all.end(), spec.right.begin(), spec.right.end());
+      return all;
+    }();
+    for (std::size_t w = 0; w < wheels.size(); ++w) {
+      const double radius = spec.wheel_radius * (w < spec.left.size() ? d.settings.left_wheel_radius_multiplier
+                                                                      : d.settings.right_wheel_radius_multiplier);
+      spec.gains.push_back(
+          e.gains[w].value_or(core::defaultWheelGains(model, wheels[w], radius, static_cast<int>(wheels.size()))));
+    }
+  }
+  try {
+    out.drives.emplace_back(model, std::move(spec));
+  } catch (const std::invalid_argument& err) {
+    refuse(e.key, err.what());
+  }
+  out.drive_topics.push_back(d.topics);
+}
+
 /// One controller of `entries` for `model`, into `out` and `specs`; each
 /// refusal a ConfigError naming its key.
 void addController(const ControllerEntry& e, const core::ArticulationModel& model, RobotControls& out,
                    std::vector<core::JointControllerSpec>& specs) {
+  if (e.drive) return addDrive(e, model, out);
   const std::string type_key = e.key + ".type";
   if (e.type == kJointState) {
     if (!e.joints.empty()) refuse(e.key, "a JointStateController takes no joints (it reports them all)");
@@ -114,12 +175,32 @@ RobotControls buildControls(const std::vector<ControllerEntry>& entries, const c
     }
   }
   throwProblems(problems);
+  const auto map_key = [&] {
+    const ControllerEntry& e = entries.front();
+    return e.key.substr(0, e.key.size() - e.name.size() - 1);
+  };
   try {
     out.controllers = core::JointControllers(model, std::move(specs));
   } catch (const std::invalid_argument& err) {  // its message names the controller
-    const ControllerEntry& e = entries.front();
-    throw ConfigError("config key '" + e.key.substr(0, e.key.size() - e.name.size() - 1) + "': " + err.what());
+    throw ConfigError("config key '" + map_key() + "': " + err.what());
   }
+  // A wheel is one controller's: no joint controller's, no other drive's.
+  std::vector<std::pair<int, std::string>> owned;
+  for (const core::DiffDrive& drive : out.drives) {
+    for (const int j : drive.wheels()) {
+      const int c = out.controllers.ownerOf(j);
+      std::string other = c >= 0 ? out.controllers.specs()[c].name : "";
+      for (const auto& [joint, name] : owned) {
+        if (joint == j) other = name;
+      }
+      if (!other.empty()) {
+        problems.push_back("config key '" + map_key() + "': controller '" + drive.spec().name + "': wheel joint '" +
+                           model.links[j].joint + "' is already controller '" + other + "''s");
+      }
+      owned.emplace_back(j, drive.spec().name);
+    }
+  }
+  throwProblems(problems);
   return out;
 }
 

@@ -5,13 +5,16 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <array>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "rigid_body_sim/core/bodies/model.h"
 #include "rigid_body_sim/core/bodies/state.h"
+#include "rigid_body_sim/core/controllers/diff_drive.h"
 #include "rigid_body_sim/core/controllers/joint_control.h"
 #include "rigid_body_sim/core/devices/imu.h"
 #include "rigid_body_sim/core/devices/odom_noise.h"
@@ -42,6 +45,29 @@ struct InitialJoints {
   bool empty() const { return positions.empty() && velocities.empty(); }
 };
 
+/// What a DiffDriveController publishes, and on which frames: its YAML's
+/// keys the node reads (ros_controllers' defaults).
+struct DriveTopics {
+  double publish_rate = 50.0;                         ///< Hz of sim time, its odometry's
+  std::array<double, 6> pose_covariance_diagonal{};   ///< nav_msgs/Odometry's pose covariance, its diagonal
+  std::array<double, 6> twist_covariance_diagonal{};  ///< and its twist's
+  std::string base_frame_id = "base_link";            ///< after the robot's tf prefix, in the node
+  std::string odom_frame_id = "odom";                 ///< after the robot's tf prefix, in the node
+  bool enable_odom_tf = true;                         ///< odom -> base on tf
+  bool publish_cmd = false;                           ///< the limited command on cmd_vel_out
+  bool allow_multiple_cmd_vel_publishers = true;      ///< false: brake while two publish on cmd_vel
+};
+
+/// A diff_drive_controller/DiffDriveController's keys (io/drive_config.h reads them).
+struct DiffDriveEntry {
+  std::vector<std::string> left, right;  ///< `left_wheel`, `right_wheel`: a joint name or a list
+  /// m; unset: from the URDF as ros_controllers finds them (the first wheels' joint
+  /// origins apart, the left one's first collision cylinder or sphere).
+  std::optional<double> wheel_separation, wheel_radius;
+  core::DiffDriveSettings settings;  ///< multipliers, cmd_vel_timeout, limits, open_loop, window
+  DriveTopics topics;
+};
+
 /// One controller of a robot's `controllers` map, as ros_controllers' YAML
 /// gives it (io/controllers.h turns it into the core's).
 struct ControllerEntry {
@@ -54,6 +80,9 @@ struct ControllerEntry {
   std::vector<std::optional<core::PidGains>> gains;
   std::optional<double> publish_rate;  ///< Hz, a JointStateController's `publish_rate`
   std::string key;                     ///< "controllers.NAME", "bodies[2].controllers.NAME"
+  /// A DiffDriveController's own keys (its wheels are `joints` too, left then
+  /// right, so gazebo_ros_control's pid_gains find them).
+  std::optional<DiffDriveEntry> drive;
 };
 
 /// One entry of the `bodies` list: a body of the world.

@@ -20,6 +20,8 @@ struct RobotControls {
   /// Hz of sim time of a joint_state_controller/JointStateController's
   /// joint_states; 0: none was given (the node's ~publish_rate).
   double joint_state_rate = 0.0;
+  std::vector<core::DiffDrive> drives;    ///< its DiffDriveControllers, in the map's order
+  std::vector<DriveTopics> drive_topics;  ///< per drive: what it publishes, on which frames
 };
 
 /// The types this project runs, as ros_controllers names them.
@@ -31,6 +33,11 @@ std::vector<std::string> controllerTypes();
 /// have or a mimic joint, a joint two controllers own, a position or
 /// velocity controller without gains for each joint (`pid`, or `gains` for
 /// a group): they act through a PID on effort, never by setting the joint.
+/// A DiffDriveController's wheels are checked likewise (each a turning joint
+/// no other controller owns); its wheel_separation and wheel_radius, when
+/// not given, come from the URDF as ros_controllers finds them (refused when
+/// the left wheel's first collision is no cylinder or sphere); its wheels'
+/// PID gains from gazebo_ros_control's pid_gains, else core::defaultWheelGains.
 RobotControls buildControls(const std::vector<ControllerEntry>& entries, const core::ArticulationModel& model);
 
 /// A robot's controllers given apart from a config (~spawn_body), for

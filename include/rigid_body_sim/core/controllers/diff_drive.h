@@ -1,0 +1,135 @@
+// A differential-drive base's controller, as ros_controllers'
+// diff_drive_controller/DiffDriveController runs one (docs/physics.md
+// §11.12): a body twist (v, ω) becomes the two sides' wheel speeds, within
+// its speed, acceleration and jerk limits and zero once the command is
+// older than its timeout; each wheel tracks its speed through a PID on
+// effort (never by setting the joint); the odometry is integrated from the
+// wheels' joint positions, so it drifts when a wheel slips, as a real
+// one's does. ROS-free: the node feeds the twist and publishes the odometry.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/core/articulations/articulation.h"
+#include "rigid_body_sim/core/controllers/joint_control.h"
+
+namespace rigid_body_sim::core {
+
+/// One axis of the twist (linear x, angular z), as ros_controllers'
+/// SpeedLimiter: velocity within [min_velocity, max_velocity], its change
+/// per step within the acceleration bounds × dt, the change of that change
+/// within the jerk bounds × 2 dt².
+struct TwistLimiter {
+  bool has_velocity_limits = false;
+  bool has_acceleration_limits = false;
+  bool has_jerk_limits = false;
+  double min_velocity = 0.0, max_velocity = 0.0;          ///< m/s or rad/s
+  double min_acceleration = 0.0, max_acceleration = 0.0;  ///< m/s² or rad/s²
+  double min_jerk = 0.0, max_jerk = 0.0;                  ///< m/s³ or rad/s³
+
+  /// v held to the limits, v0 and v1 the last two limited values, dt (s) the step.
+  double limit(double v, double v0, double v1, double dt) const;
+};
+
+/// What a DiffDriveController is given besides its wheels (its YAML's keys).
+struct DiffDriveSettings {
+  double wheel_separation_multiplier = 1.0;
+  double left_wheel_radius_multiplier = 1.0;
+  double right_wheel_radius_multiplier = 1.0;
+  double cmd_vel_timeout = 0.5;           ///< s: an older command is zero (the base brakes)
+  int velocity_rolling_window_size = 10;  ///< steps the odometry's velocity is averaged over
+  bool open_loop = false;                 ///< odometry from the commands, not the wheels
+  TwistLimiter linear;                    ///< linear/x/*
+  TwistLimiter angular;                   ///< angular/z/*
+};
+
+struct DiffDriveSpec {
+  std::string name;         ///< the controller's (config key, topic namespace)
+  std::vector<int> left;    ///< the left wheels' joints (link indices), one or more
+  std::vector<int> right;   ///< the right wheels', as many
+  double wheel_separation;  ///< m, before its multiplier
+  double wheel_radius;      ///< m, before the multipliers
+  DiffDriveSettings settings;
+  /// Per wheel (left then right) the PID on its speed error; empty: the
+  /// default of defaultWheelGains.
+  std::vector<PidGains> gains;
+};
+
+/// The default PID of a wheel whose joint is link `wheel` of `model`: a PI
+/// on the speed error with both closed-loop poles at −1/τ, τ = 20 ms, for
+/// the inertia J the wheel drives, its own about its axle plus its share of
+/// the robot's mass at its rim (m_robot r² / wheels): p = 2 J / τ,
+/// i = J / τ², i_clamp = the joint's effort limit (100 p if it has none).
+PidGains defaultWheelGains(const ArticulationModel& model, int wheel, double wheel_radius, int wheels);
+
+/// The base's pose and twist in the odometry frame, which is where the
+/// base was when the controller started (x forward, z up).
+struct PlanarOdometry {
+  double x = 0.0, y = 0.0;  ///< m
+  double heading = 0.0;     ///< rad, in (−π, π]
+  double linear = 0.0;      ///< m/s, along the base's x (averaged over the window)
+  double angular = 0.0;     ///< rad/s, about z (averaged over the window)
+};
+
+class DiffDrive {
+ public:
+  /// Throws std::invalid_argument naming the controller: no wheels, unequal
+  /// counts, a wheel that is no moving joint of `model`, a mimic joint, named
+  /// twice; a separation, radius or multiplier not finite and > 0, a
+  /// timeout < 0, a window < 1, gains not one per wheel or not finite ≥ 0.
+  DiffDrive(const ArticulationModel& model, DiffDriveSpec spec);
+
+  const DiffDriveSpec& spec() const { return spec_; }
+  /// Every wheel joint (left then right).
+  const std::vector<int>& wheels() const { return wheels_; }
+  /// m and m: the separation and each side's radius after the multipliers.
+  double separation() const { return separation_; }
+  double leftRadius() const { return left_radius_; }
+  double rightRadius() const { return right_radius_; }
+
+  /// A cmd_vel received at `t` (s of sim time): v (m/s), ω (rad/s). Not
+  /// finite: refused (false), nothing changes.
+  bool command(double linear, double angular, double t);
+  /// The step [t, t + dt) from `state`: the odometry updated to it, the
+  /// command limited and turned into wheel speeds, each wheel's PID effort
+  /// written to `effort` (per joint, within its limit).
+  void efforts(const ArticulationState& state, double t, double dt, Eigen::VectorXd& effort);
+  const PlanarOdometry& odometry() const { return odometry_; }
+  /// The last command as limited (publish_cmd's cmd_vel_out): v, ω.
+  double limitedLinear() const { return last0_linear_; }
+  double limitedAngular() const { return last0_angular_; }
+
+  /// The base was put somewhere or its joints moved: the wheels' positions
+  /// are read afresh (no jump in the odometry), the PIDs and the velocity
+  /// window forgotten, the command zero. `zero_pose` (a world reset): the
+  /// odometry starts again at 0.
+  void restart(const ArticulationState& state, bool zero_pose);
+
+ private:
+  /// The mean of `joints`' positions in `state`.
+  static double meanPosition(const ArticulationState& state, const std::vector<int>& joints);
+  /// Moves the pose by an arc of length `ds` turning `dtheta`.
+  void integrate(double ds, double dtheta);
+  /// Adds one step's velocity sample to the windows.
+  void average(double linear, double angular);
+
+  DiffDriveSpec spec_;
+  std::vector<int> wheels_;          ///< left then right
+  std::vector<JointLimits> limits_;  ///< per wheel, left then right
+  std::vector<Pid> pids_;            ///< per wheel, left then right
+  double separation_ = 0.0, left_radius_ = 0.0, right_radius_ = 0.0;
+  // The command: as received, and the last two as limited.
+  double linear_ = 0.0, angular_ = 0.0, stamp_ = 0.0;
+  bool commanded_ = false;
+  double last0_linear_ = 0.0, last0_angular_ = 0.0, last1_linear_ = 0.0, last1_angular_ = 0.0;
+  // The odometry.
+  PlanarOdometry odometry_;
+  double left_travel_ = 0.0, right_travel_ = 0.0;  ///< m, each side's rim at the last update
+  bool has_travel_ = false;                        ///< false until the first update or restart
+  std::vector<double> linear_window_, angular_window_;
+  std::size_t window_next_ = 0;
+};
+
+}  // namespace rigid_body_sim::core

@@ -1,0 +1,208 @@
+// A differential-drive base's controller: diff_drive.h, docs/physics.md §11.12.
+#include "rigid_body_sim/core/controllers/diff_drive.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <utility>
+
+namespace rigid_body_sim::core {
+
+double TwistLimiter::limit(double v, double v0, double v1, double dt) const {
+  if (has_jerk_limits) {  // the change of the change, over two steps
+    const double dv = v - v0, dv0 = v0 - v1, dt2 = 2.0 * dt * dt;
+    v = v0 + dv0 + std::clamp(dv - dv0, min_jerk * dt2, max_jerk * dt2);
+  }
+  if (has_acceleration_limits) v = v0 + std::clamp(v - v0, min_acceleration * dt, max_acceleration * dt);
+  if (has_velocity_limits) v = std::clamp(v, min_velocity, max_velocity);
+  return v;
+}
+
+PidGains defaultWheelGains(const ArticulationModel& model, int wheel, double wheel_radius, int wheels) {
+  constexpr double kTau = 0.02;  // s, both poles of the wheel's speed loop
+  double robot_mass = 0.0;
+  for (const ArticulatedLink& link : model.links) robot_mass += link.mass.mass;
+  const ArticulatedLink& link = model.links.at(wheel);
+  const Vec3 axis = link.axis_J.normalized();
+  const double own = axis.dot(link.mass.I_C_F * axis);  // about its axle (through its centre of mass)
+  const double J = own + robot_mass * wheel_radius * wheel_radius / std::max(wheels, 1);
+  PidGains g;
+  g.p = 2.0 * J / kTau;
+  g.i = J / (kTau * kTau);
+  g.d = 0.0;
+  g.i_clamp = std::isfinite(link.limits.effort) ? link.limits.effort : 100.0 * g.p;
+  return g;
+}
+
+namespace {
+
+[[noreturn]] void fail(const DiffDriveSpec& s, const std::string& what) {
+  throw std::invalid_argument("controller '" + s.name + "': " + what);
+}
+
+bool positive(double x) { return std::isfinite(x) && x > 0.0; }
+
+void checkLimits(const DiffDriveSpec& s, const TwistLimiter& l, const char* axis) {
+  const auto pair = [&](bool on, double lo, double hi, const char* what) {
+    if (on && !(std::isfinite(lo) && std::isfinite(hi) && lo <= hi)) {
+      fail(s, std::string(axis) + ": min_" + what + " and max_" + what + " must be finite, min <= max");
+    }
+  };
+  pair(l.has_velocity_limits, l.min_velocity, l.max_velocity, "velocity");
+  pair(l.has_acceleration_limits, l.min_acceleration, l.max_acceleration, "acceleration");
+  pair(l.has_jerk_limits, l.min_jerk, l.max_jerk, "jerk");
+}
+
+/// sin(a) / a, exact near 0.
+double sinc(double a) { return std::abs(a) < 1e-4 ? 1.0 - a * a / 6.0 : std::sin(a) / a; }
+
+}  // namespace
+
+DiffDrive::DiffDrive(const ArticulationModel& model, DiffDriveSpec spec) : spec_(std::move(spec)) {
+  const DiffDriveSpec& s = spec_;
+  if (s.left.empty() || s.right.empty()) fail(s, "needs left and right wheels");
+  if (s.left.size() != s.right.size()) {
+    fail(s, std::to_string(s.left.size()) + " left wheels and " + std::to_string(s.right.size()) +
+                " right wheels: give as many on each side");
+  }
+  wheels_ = s.left;
+  wheels_.insert(wheels_.end(), s.right.begin(), s.right.end());
+  std::vector<int> seen;
+  for (const int j : wheels_) {
+    if (j < 1 || j >= static_cast<int>(model.links.size())) fail(s, "wheel joint index " + std::to_string(j));
+    const ArticulatedLink& link = model.links[j];
+    if (link.mimic.joint >= 0) fail(s, "wheel joint '" + link.joint + "' is a mimic joint");
+    if (link.type != JointType::Revolute && link.type != JointType::Continuous) {
+      fail(s, "wheel joint '" + link.joint + "' does not turn (a wheel's joint is continuous or revolute)");
+    }
+    if (std::find(seen.begin(), seen.end(), j) != seen.end()) fail(s, "wheel joint '" + link.joint + "' twice");
+    seen.push_back(j);
+    limits_.push_back(link.limits);
+  }
+  const DiffDriveSettings& k = s.settings;
+  for (const auto& [value, what] : {std::pair<double, const char*>{s.wheel_separation, "wheel_separation"},
+                                    {s.wheel_radius, "wheel_radius"},
+                                    {k.wheel_separation_multiplier, "wheel_separation_multiplier"},
+                                    {k.left_wheel_radius_multiplier, "left_wheel_radius_multiplier"},
+                                    {k.right_wheel_radius_multiplier, "right_wheel_radius_multiplier"}}) {
+    if (!positive(value)) fail(s, std::string(what) + " must be finite and > 0, got " + std::to_string(value));
+  }
+  if (!(std::isfinite(k.cmd_vel_timeout) && k.cmd_vel_timeout >= 0.0)) fail(s, "cmd_vel_timeout must be >= 0");
+  if (k.velocity_rolling_window_size < 1) fail(s, "velocity_rolling_window_size must be >= 1");
+  checkLimits(s, k.linear, "linear/x");
+  checkLimits(s, k.angular, "angular/z");
+  separation_ = s.wheel_separation * k.wheel_separation_multiplier;
+  left_radius_ = s.wheel_radius * k.left_wheel_radius_multiplier;
+  right_radius_ = s.wheel_radius * k.right_wheel_radius_multiplier;
+  const std::vector<int>& all = wheels_;
+  if (!s.gains.empty() && s.gains.size() != all.size()) fail(s, "needs one set of PID gains per wheel");
+  for (std::size_t w = 0; w < all.size(); ++w) {
+    const double radius = w < s.left.size() ? left_radius_ : right_radius_;
+    const PidGains g =
+        s.gains.empty() ? defaultWheelGains(model, all[w], radius, static_cast<int>(all.size())) : s.gains[w];
+    for (const double x : {g.p, g.i, g.d, g.i_clamp}) {
+      if (!(std::isfinite(x) && x >= 0.0)) fail(s, "wheel PID gains p, i, d, i_clamp must be finite and >= 0");
+    }
+    pids_.emplace_back(g);
+  }
+}
+
+bool DiffDrive::command(double linear, double angular, double t) {
+  if (!std::isfinite(linear) || !std::isfinite(angular) || !std::isfinite(t)) return false;
+  linear_ = linear;
+  angular_ = angular;
+  stamp_ = t;
+  commanded_ = true;
+  return true;
+}
+
+double DiffDrive::meanPosition(const ArticulationState& state, const std::vector<int>& joints) {
+  double sum = 0.0;
+  for (const int j : joints) sum += state.q(j - 1);
+  return sum / static_cast<double>(joints.size());
+}
+
+void DiffDrive::integrate(double ds, double dtheta) {
+  // The arc of constant curvature: the chord ds sinc(dθ/2) along the mean heading.
+  const double chord = ds * sinc(0.5 * dtheta), mid = odometry_.heading + 0.5 * dtheta;
+  odometry_.x += chord * std::cos(mid);
+  odometry_.y += chord * std::sin(mid);
+  odometry_.heading = std::remainder(odometry_.heading + dtheta, 2.0 * M_PI);
+}
+
+void DiffDrive::average(double linear, double angular) {
+  const std::size_t n = static_cast<std::size_t>(spec_.settings.velocity_rolling_window_size);
+  if (linear_window_.size() < n) {
+    linear_window_.push_back(linear);
+    angular_window_.push_back(angular);
+  } else {
+    linear_window_[window_next_] = linear;
+    angular_window_[window_next_] = angular;
+    window_next_ = (window_next_ + 1) % n;
+  }
+  const double count = static_cast<double>(linear_window_.size());
+  odometry_.linear = std::accumulate(linear_window_.begin(), linear_window_.end(), 0.0) / count;
+  odometry_.angular = std::accumulate(angular_window_.begin(), angular_window_.end(), 0.0) / count;
+}
+
+void DiffDrive::efforts(const ArticulationState& state, double t, double dt, Eigen::VectorXd& effort) {
+  const DiffDriveSettings& k = spec_.settings;
+  // The odometry to the state at t: from the wheels (or the commands, open loop).
+  if (k.open_loop) {
+    integrate(last0_linear_ * dt, last0_angular_ * dt);
+    odometry_.linear = last0_linear_;
+    odometry_.angular = last0_angular_;
+  } else if (dt > 0.0) {
+    const double left = meanPosition(state, spec_.left) * left_radius_;
+    const double right = meanPosition(state, spec_.right) * right_radius_;
+    if (!has_travel_) {  // the first update: where the wheels start
+      left_travel_ = left;
+      right_travel_ = right;
+      has_travel_ = true;
+    }
+    const double d_left = left - left_travel_, d_right = right - right_travel_;
+    left_travel_ = left;
+    right_travel_ = right;
+    const double ds = 0.5 * (d_left + d_right), dtheta = (d_right - d_left) / separation_;
+    integrate(ds, dtheta);
+    average(ds / dt, dtheta / dt);
+  }
+  // The command: zero once too old, then limited against the last two.
+  double v = linear_, w = angular_;
+  if (!commanded_ || t - stamp_ > k.cmd_vel_timeout) v = w = 0.0;
+  v = k.linear.limit(v, last0_linear_, last1_linear_, dt);
+  w = k.angular.limit(w, last0_angular_, last1_angular_, dt);
+  last1_linear_ = last0_linear_;
+  last1_angular_ = last0_angular_;
+  last0_linear_ = v;
+  last0_angular_ = w;
+  // Each wheel's speed, tracked through effort.
+  const double left_speed = (v - 0.5 * w * separation_) / left_radius_;
+  const double right_speed = (v + 0.5 * w * separation_) / right_radius_;
+  const std::vector<int>& all = wheels_;
+  for (std::size_t n = 0; n < all.size(); ++n) {
+    const JointLimits& lim = limits_[n];
+    const double target = std::clamp(n < spec_.left.size() ? left_speed : right_speed, -lim.velocity, lim.velocity);
+    const int j = all[n];
+    const double u = pids_[n].command(target - state.v(j - 1), dt);
+    effort(j - 1) = std::clamp(u, -lim.effort, lim.effort);
+  }
+}
+
+void DiffDrive::restart(const ArticulationState& state, bool zero_pose) {
+  left_travel_ = meanPosition(state, spec_.left) * left_radius_;
+  right_travel_ = meanPosition(state, spec_.right) * right_radius_;
+  has_travel_ = true;
+  for (Pid& pid : pids_) pid.reset();
+  linear_window_.clear();
+  angular_window_.clear();
+  window_next_ = 0;
+  linear_ = angular_ = 0.0;
+  commanded_ = false;
+  last0_linear_ = last0_angular_ = last1_linear_ = last1_angular_ = 0.0;
+  if (zero_pose) odometry_ = PlanarOdometry{};
+  odometry_.linear = odometry_.angular = 0.0;
+}
+
+}  // namespace rigid_body_sim::core

@@ -1,0 +1,170 @@
+// A DiffDriveController's keys: drive_config.h.
+#include "drive_config.h"
+
+#include <sstream>
+#include <utility>
+
+#include "rigid_body_sim/core/bodies/ranges.h"
+#include "yaml_fields.h"
+
+namespace rigid_body_sim::io {
+
+using namespace yaml_fields;
+
+namespace {
+
+/// `left_wheel` or `right_wheel`: a joint name or a non-empty list of them.
+std::vector<std::string> wheelNames(const YAML::Node& node, const std::string& key) {
+  if (!node) fail(key, "is missing: a DiffDriveController needs left_wheel and right_wheel (a joint or a list)");
+  if (node.IsScalar()) return {text(node, key)};
+  if (!node.IsSequence() || node.size() == 0) fail(key, "expected a joint name or a non-empty list of them");
+  std::vector<std::string> names;
+  for (std::size_t k = 0; k < node.size(); ++k) names.push_back(text(node[k], key + "[" + std::to_string(k) + "]"));
+  return names;
+}
+
+/// `linear: {x: {...}}` or `angular: {z: {...}}`: ros_controllers' limiter keys.
+core::TwistLimiter parseLimits(const YAML::Node& node, const std::string& path, const char* axis) {
+  core::TwistLimiter l;
+  if (!node) return l;
+  if (!node.IsMap()) fail(path, std::string("expected {") + axis + ": {has_velocity_limits, max_velocity, ...}}");
+  requireKnownKeys(node, path, {axis});
+  const YAML::Node& a = node[axis];
+  const std::string at = join(path, axis);
+  if (!a) return l;
+  if (!a.IsMap()) fail(at, "expected a map {has_velocity_limits, max_velocity, min_velocity, ...}");
+  requireKnownKeys(a, at,
+                   {"has_velocity_limits", "max_velocity", "min_velocity", "has_acceleration_limits",
+                    "max_acceleration", "min_acceleration", "has_jerk_limits", "max_jerk", "min_jerk"});
+  struct Bound {
+    const char* what;
+    bool* has;
+    double *lo, *hi;
+  };
+  for (const Bound& b : {Bound{"velocity", &l.has_velocity_limits, &l.min_velocity, &l.max_velocity},
+                         Bound{"acceleration", &l.has_acceleration_limits, &l.min_acceleration, &l.max_acceleration},
+                         Bound{"jerk", &l.has_jerk_limits, &l.min_jerk, &l.max_jerk}}) {
+    const std::string has = std::string("has_") + b.what + "_limits", max = std::string("max_") + b.what,
+                      min = std::string("min_") + b.what;
+    if (a[has]) *b.has = boolean(a[has], join(at, has));
+    if (a[max]) *b.hi = number(a[max], join(at, max));
+    *b.lo = a[min] ? number(a[min], join(at, min)) : -*b.hi;  // ros_controllers: min defaults to -max
+    if (*b.has && !a[max]) {
+      fail(join(at, max), "is missing: " + has + " is true (ros_controllers would hold the " + b.what + " to 0)");
+    }
+    if (*b.has && *b.lo > *b.hi) fail(join(at, min), "must be <= " + max);
+  }
+  return l;
+}
+
+std::array<double, 6> covariance(const YAML::Node& node, const std::string& key) {
+  if (!node.IsSequence() || node.size() != 6) fail(key, "expected 6 numbers (x, y, z, rotation about x, y, z)");
+  std::array<double, 6> out{};
+  for (std::size_t k = 0; k < 6; ++k) {
+    out[k] = number(node[k], key + "[" + std::to_string(k) + "]");
+    if (out[k] < 0.0) fail(key + "[" + std::to_string(k) + "]", "a variance must be >= 0");
+  }
+  return out;
+}
+
+}  // namespace
+
+DiffDriveEntry parseDiffDrive(const YAML::Node& body, const std::string& key) {
+  for (const char* k : {"publish_wheel_joint_controller_state", "publish_joint_trajectory_controller_state"}) {
+    if (body[k] && boolean(body[k], join(key, k))) {
+      fail(join(key, k), "is not available here: its message is control_msgs', which Debian 12 does not have");
+    }
+  }
+  requireKnownKeys(body, key,
+                   {"type",
+                    "left_wheel",
+                    "right_wheel",
+                    "wheel_separation",
+                    "wheel_radius",
+                    "wheel_separation_multiplier",
+                    "wheel_radius_multiplier",
+                    "left_wheel_radius_multiplier",
+                    "right_wheel_radius_multiplier",
+                    "publish_rate",
+                    "pose_covariance_diagonal",
+                    "twist_covariance_diagonal",
+                    "cmd_vel_timeout",
+                    "base_frame_id",
+                    "odom_frame_id",
+                    "enable_odom_tf",
+                    "open_loop",
+                    "velocity_rolling_window_size",
+                    "allow_multiple_cmd_vel_publishers",
+                    "publish_cmd",
+                    "linear",
+                    "angular",
+                    "publish_wheel_joint_controller_state",
+                    "publish_joint_trajectory_controller_state"});
+  DiffDriveEntry d;
+  d.left = wheelNames(body["left_wheel"], join(key, "left_wheel"));
+  d.right = wheelNames(body["right_wheel"], join(key, "right_wheel"));
+  if (d.left.size() != d.right.size()) {
+    fail(join(key, "right_wheel"), std::to_string(d.right.size()) + " wheels against left_wheel's " +
+                                       std::to_string(d.left.size()) + ": give as many on each side");
+  }
+  if (body["wheel_separation"])
+    d.wheel_separation = positiveNumber(body["wheel_separation"], join(key, "wheel_separation"));
+  if (body["wheel_radius"]) d.wheel_radius = positiveNumber(body["wheel_radius"], join(key, "wheel_radius"));
+  core::DiffDriveSettings& s = d.settings;
+  const auto positive = [&](const char* k, double& field) {
+    if (body[k]) field = positiveNumber(body[k], join(key, k));
+  };
+  positive("wheel_separation_multiplier", s.wheel_separation_multiplier);
+  // ros_controllers: wheel_radius_multiplier, when given, is both sides'.
+  if (body["wheel_radius_multiplier"]) {
+    for (const char* side : {"left_wheel_radius_multiplier", "right_wheel_radius_multiplier"}) {
+      if (body[side]) fail(join(key, side), "give wheel_radius_multiplier (both sides) or the sides', not both");
+    }
+    s.left_wheel_radius_multiplier = s.right_wheel_radius_multiplier =
+        positiveNumber(body["wheel_radius_multiplier"], join(key, "wheel_radius_multiplier"));
+  }
+  positive("left_wheel_radius_multiplier", s.left_wheel_radius_multiplier);
+  positive("right_wheel_radius_multiplier", s.right_wheel_radius_multiplier);
+  if (body["cmd_vel_timeout"]) {
+    s.cmd_vel_timeout = number(body["cmd_vel_timeout"], join(key, "cmd_vel_timeout"));
+    if (s.cmd_vel_timeout < 0.0) fail(join(key, "cmd_vel_timeout"), "must be >= 0 s");
+  }
+  if (body["velocity_rolling_window_size"]) {
+    const std::string k = join(key, "velocity_rolling_window_size");
+    s.velocity_rolling_window_size = integer(body["velocity_rolling_window_size"], k);
+    if (s.velocity_rolling_window_size < 1 || s.velocity_rolling_window_size > 100000) {
+      fail(k, "must be within [1, 100000] steps");
+    }
+  }
+  if (body["open_loop"]) s.open_loop = boolean(body["open_loop"], join(key, "open_loop"));
+  s.linear = parseLimits(body["linear"], join(key, "linear"), "x");
+  s.angular = parseLimits(body["angular"], join(key, "angular"), "z");
+  DriveTopics& t = d.topics;
+  if (body["publish_rate"]) {
+    const std::string k = join(key, "publish_rate");
+    t.publish_rate = number(body["publish_rate"], k);
+    if (!(t.publish_rate >= core::ranges::kMinRate && t.publish_rate <= core::ranges::kMaxPublishRate)) {
+      std::ostringstream why;
+      why << "must be within [" << core::ranges::kMinRate << ", " << core::ranges::kMaxPublishRate << "] Hz, got "
+          << show(body["publish_rate"]);
+      fail(k, why.str());
+    }
+  }
+  if (body["pose_covariance_diagonal"]) {
+    t.pose_covariance_diagonal = covariance(body["pose_covariance_diagonal"], join(key, "pose_covariance_diagonal"));
+  }
+  if (body["twist_covariance_diagonal"]) {
+    t.twist_covariance_diagonal = covariance(body["twist_covariance_diagonal"], join(key, "twist_covariance_diagonal"));
+  }
+  if (body["base_frame_id"]) t.base_frame_id = text(body["base_frame_id"], join(key, "base_frame_id"));
+  if (body["odom_frame_id"]) t.odom_frame_id = text(body["odom_frame_id"], join(key, "odom_frame_id"));
+  if (t.base_frame_id == t.odom_frame_id) fail(join(key, "odom_frame_id"), "is base_frame_id: tf needs two frames");
+  for (const auto& [k, field] : {std::pair<const char*, bool*>{"enable_odom_tf", &t.enable_odom_tf},
+                                 {"publish_cmd", &t.publish_cmd},
+                                 {"allow_multiple_cmd_vel_publishers", &t.allow_multiple_cmd_vel_publishers}}) {
+    if (body[k]) *field = boolean(body[k], join(key, k));
+  }
+  return d;
+}
+
+}  // namespace rigid_body_sim::io

@@ -1,0 +1,239 @@
+// The differential-drive controller (docs/physics.md §11.12) against closed
+// forms: ros_controllers' speed limiter, the odometry of wheels turning at
+// constant speeds (an arc), the wheel speeds a twist asks for, the command's
+// timeout, the default wheel gains, refusals, and a restart. The base driving
+// on the ground is io/drive_test.cpp's, the node's diff_drive_controller.test's.
+#include "rigid_body_sim/core/controllers/diff_drive.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "../articulations/articulation_models.h"
+
+namespace rigid_body_sim::core {
+namespace {
+
+constexpr double kH = 1e-3;
+
+/// A 10 kg base on two 1 kg wheels about y (0.02 kg m² about their axles),
+/// 0.4 m apart, each with a 5 N m effort limit and a 30 rad/s speed limit.
+ArticulationModel twoWheels() {
+  ArticulationModel model;
+  model.name = "rover";
+  ArticulatedLink base;
+  base.name = "base_link";
+  base.mass = test::boxMass(10.0, Vec3(0.5, 0.4, 0.1));
+  model.links.push_back(base);
+  for (const auto& [name, y] : {std::pair<const char*, double>{"left", 0.2}, {"right", -0.2}}) {
+    ArticulatedLink wheel;
+    wheel.name = std::string(name) + "_wheel";
+    wheel.joint = std::string(name) + "_wheel_joint";
+    wheel.parent = 0;
+    wheel.type = JointType::Continuous;
+    wheel.X_PJ.translation = Vec3(0.0, y, 0.0);
+    wheel.axis_J = Vec3::UnitY();
+    wheel.limits.effort = 5.0;
+    wheel.limits.velocity = 30.0;
+    wheel.mass.mass = 1.0;
+    wheel.mass.I_C_F = Vec3(0.01, 0.02, 0.01).asDiagonal();
+    model.links.push_back(wheel);
+  }
+  checkArticulation(model);
+  return model;
+}
+
+DiffDriveSpec spec(double radius = 0.1) {
+  DiffDriveSpec s;
+  s.name = "base_controller";
+  s.left = {1};
+  s.right = {2};
+  s.wheel_separation = 0.4;
+  s.wheel_radius = radius;
+  return s;
+}
+
+TEST(TwistLimiter, AreRosControllersSpeedLimiter) {
+  TwistLimiter l;
+  l.has_velocity_limits = true;
+  l.min_velocity = -0.5;
+  l.max_velocity = 1.0;
+  EXPECT_DOUBLE_EQ(l.limit(2.0, 0.0, 0.0, 0.01), 1.0);
+  EXPECT_DOUBLE_EQ(l.limit(-2.0, 0.0, 0.0, 0.01), -0.5);
+  // Acceleration 2 m/s² over 0.01 s: at most 0.02 from the last value.
+  l.has_acceleration_limits = true;
+  l.min_acceleration = -4.0;
+  l.max_acceleration = 2.0;
+  EXPECT_DOUBLE_EQ(l.limit(1.0, 0.3, 0.3, 0.01), 0.32);
+  EXPECT_DOUBLE_EQ(l.limit(-1.0, 0.3, 0.3, 0.01), 0.26);
+  // Jerk 100 m/s³: the change may change by at most 100 · 2 · 0.01² = 0.02 from the last change (0.01).
+  l.has_jerk_limits = true;
+  l.min_jerk = -100.0;
+  l.max_jerk = 100.0;
+  EXPECT_DOUBLE_EQ(l.limit(1.0, 0.3, 0.29, 0.01), 0.32);  // the acceleration bound 0.02 is the tighter
+  l.max_acceleration = 10.0;
+  EXPECT_NEAR(l.limit(1.0, 0.3, 0.29, 0.01), 0.3 + 0.01 + 0.02, 1e-15);
+}
+
+/// The state with the wheels at `left`, `right` (rad) and turning at `wl`, `wr` (rad/s).
+ArticulationState wheelsAt(const ArticulationModel& model, double left, double right, double wl = 0.0,
+                           double wr = 0.0) {
+  ArticulationState s = restState(model);
+  s.q << left, right;
+  s.v << wl, wr;
+  return s;
+}
+
+TEST(DiffDriveOdometry, FollowsTheArcOfWheelsTurningSteadily) {
+  const ArticulationModel model = twoWheels();
+  DiffDrive drive(model, spec());
+  // Left rim 0.3 m/s, right 0.5 m/s: v = 0.4 m/s, ω = 0.2 / 0.4 = 0.5 rad/s, an arc of radius 0.8 m.
+  const double wl = 3.0, wr = 5.0, v = 0.4, w = 0.5, R = v / w;
+  drive.restart(wheelsAt(model, 0.7, -0.2), true);  // the wheels need not start at 0
+  const int steps = 4000;
+  for (int n = 1; n <= steps; ++n) {
+    const double t = n * kH;
+    Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
+    drive.efforts(wheelsAt(model, 0.7 + wl * t, -0.2 + wr * t), t, kH, effort);
+  }
+  const double T = steps * kH;
+  const PlanarOdometry& o = drive.odometry();
+  EXPECT_NEAR(o.x, R * std::sin(w * T), 1e-12);
+  EXPECT_NEAR(o.y, R * (1.0 - std::cos(w * T)), 1e-12);
+  EXPECT_NEAR(o.heading, w * T, 1e-12);
+  EXPECT_NEAR(o.linear, v, 1e-12);
+  EXPECT_NEAR(o.angular, w, 1e-12);
+}
+
+TEST(DiffDriveOdometry, AveragesItsVelocityOverTheWindow) {
+  const ArticulationModel model = twoWheels();
+  DiffDriveSpec s = spec();
+  s.settings.velocity_rolling_window_size = 4;
+  DiffDrive drive(model, s);
+  drive.restart(wheelsAt(model, 0.0, 0.0), true);
+  Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
+  // One step of 1 mm on each rim (0.01 rad), then three still: the mean of 1, 0, 0, 0 m/s.
+  drive.efforts(wheelsAt(model, 0.01, 0.01), kH, kH, effort);
+  EXPECT_NEAR(drive.odometry().linear, 1.0, 1e-12);
+  for (int n = 2; n <= 4; ++n) drive.efforts(wheelsAt(model, 0.01, 0.01), n * kH, kH, effort);
+  EXPECT_NEAR(drive.odometry().linear, 0.25, 1e-12);
+  drive.efforts(wheelsAt(model, 0.01, 0.01), 5 * kH, kH, effort);  // the 1 m/s sample leaves the window
+  EXPECT_NEAR(drive.odometry().linear, 0.0, 1e-15);
+  EXPECT_NEAR(drive.odometry().x, 1e-3, 1e-15);
+}
+
+TEST(DiffDrive, AsksEachWheelForTheSpeedOfItsSide) {
+  const ArticulationModel model = twoWheels();
+  DiffDriveSpec s = spec();
+  s.gains = {{0.5, 0.0, 0.0, 0.0}, {0.5, 0.0, 0.0, 0.0}};  // effort = 0.5 × the speed error
+  s.settings.wheel_separation_multiplier = 1.5;            // 0.6 m
+  s.settings.right_wheel_radius_multiplier = 0.5;          // 0.05 m
+  DiffDrive drive(model, s);
+  drive.restart(wheelsAt(model, 0.0, 0.0), true);
+  ASSERT_TRUE(drive.command(0.2, 1.0, 0.0));
+  Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
+  drive.efforts(wheelsAt(model, 0.0, 0.0, 1.0, 0.0), kH, kH, effort);
+  // Left (0.2 − 1 · 0.6 / 2) / 0.1 = −1 rad/s against 1 rad/s turning; right (0.2 + 0.3) / 0.05 = 10 rad/s.
+  EXPECT_DOUBLE_EQ(effort(0), 0.5 * (-1.0 - 1.0));
+  EXPECT_DOUBLE_EQ(effort(1), 0.5 * 10.0);
+  EXPECT_DOUBLE_EQ(drive.limitedLinear(), 0.2);
+  EXPECT_DOUBLE_EQ(drive.limitedAngular(), 1.0);
+  // A command fast enough to pass the effort limit is held to it (5 N m).
+  ASSERT_TRUE(drive.command(0.0, 100.0, 2 * kH));
+  drive.efforts(wheelsAt(model, 0.0, 0.0), 2 * kH, kH, effort);
+  EXPECT_DOUBLE_EQ(effort(0), -5.0);
+  EXPECT_DOUBLE_EQ(effort(1), 5.0);
+}
+
+TEST(DiffDrive, BrakesWhenTheCommandIsOlderThanItsTimeout) {
+  const ArticulationModel model = twoWheels();
+  DiffDriveSpec s = spec();
+  s.gains = {{1.0, 0.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}};
+  s.settings.cmd_vel_timeout = 0.25;
+  DiffDrive drive(model, s);
+  drive.restart(wheelsAt(model, 0.0, 0.0), true);
+  ASSERT_TRUE(drive.command(0.5, 0.0, 1.0));  // received at t = 1 s
+  Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
+  drive.efforts(wheelsAt(model, 0.0, 0.0), 1.25, kH, effort);
+  EXPECT_DOUBLE_EQ(effort(0), 5.0);  // 0.5 / 0.1 = 5 rad/s: still in time
+  drive.efforts(wheelsAt(model, 0.0, 0.0), 1.2501, kH, effort);
+  EXPECT_DOUBLE_EQ(effort(0), 0.0);
+  EXPECT_DOUBLE_EQ(drive.limitedLinear(), 0.0);
+  // Not finite: refused, the last command kept.
+  EXPECT_FALSE(drive.command(std::nan(""), 0.0, 1.3));
+  EXPECT_FALSE(drive.command(0.1, std::numeric_limits<double>::infinity(), 1.3));
+}
+
+TEST(DiffDrive, DefaultGainsPlaceBothPolesOfTheWheelLoopAt20Ms) {
+  const ArticulationModel model = twoWheels();
+  // J = 0.02 + 12 kg · 0.1² / 2 = 0.08 kg m²: p = 2 J / 0.02 = 8, i = J / 0.02² = 200.
+  const PidGains g = defaultWheelGains(model, 1, 0.1, 2);
+  EXPECT_DOUBLE_EQ(g.p, 8.0);
+  EXPECT_DOUBLE_EQ(g.i, 200.0);
+  EXPECT_DOUBLE_EQ(g.d, 0.0);
+  EXPECT_DOUBLE_EQ(g.i_clamp, 5.0);
+  // The closed loop J ω' = p (ω* − ω) + i ∫(ω* − ω) is critically damped: p² = 4 J i.
+  EXPECT_DOUBLE_EQ(g.p * g.p, 4.0 * 0.08 * g.i);
+}
+
+TEST(DiffDrive, RefusesWhatCannotDrive) {
+  const ArticulationModel model = twoWheels();
+  const auto refused = [&](DiffDriveSpec s, const std::string& what) {
+    try {
+      DiffDrive drive(model, s);
+      ADD_FAILURE() << "accepted; expected: " << what;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("base_controller"), std::string::npos) << e.what();
+    }
+  };
+  DiffDriveSpec s = spec();
+  s.right = {};
+  refused(s, "left and right wheels");
+  s = spec();
+  s.right = {2, 1};
+  refused(s, "as many on each side");
+  s = spec();
+  s.right = {1};
+  refused(s, "'left_wheel_joint' twice");
+  s = spec(0.0);
+  refused(s, "wheel_radius must be finite and > 0");
+  s = spec();
+  s.wheel_separation = std::numeric_limits<double>::infinity();
+  refused(s, "wheel_separation must be");
+  s = spec();
+  s.settings.velocity_rolling_window_size = 0;
+  refused(s, "velocity_rolling_window_size");
+  s = spec();
+  s.settings.linear.has_velocity_limits = true;
+  s.settings.linear.min_velocity = 1.0;
+  refused(s, "linear/x: min_velocity and max_velocity");
+  s = spec();
+  s.gains = {{1.0, 0.0, 0.0, 0.0}};
+  refused(s, "one set of PID gains per wheel");
+}
+
+TEST(DiffDrive, ARestartReadsTheWheelsAfreshAndForgetsTheCommand) {
+  const ArticulationModel model = twoWheels();
+  DiffDriveSpec s = spec();
+  s.gains = {{1.0, 0.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}};
+  DiffDrive drive(model, s);
+  drive.restart(wheelsAt(model, 0.0, 0.0), true);
+  Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
+  drive.efforts(wheelsAt(model, 10.0, 10.0), kH, kH, effort);  // 1 m on each side
+  ASSERT_NEAR(drive.odometry().x, 1.0, 1e-12);
+  ASSERT_TRUE(drive.command(1.0, 0.0, kH));
+  // The joints were moved (set_model_configuration): the odometry does not jump, the command is gone.
+  drive.restart(wheelsAt(model, -3.0, 4.0), false);
+  drive.efforts(wheelsAt(model, -3.0, 4.0), 2 * kH, kH, effort);
+  EXPECT_NEAR(drive.odometry().x, 1.0, 1e-12);
+  EXPECT_DOUBLE_EQ(effort(0), 0.0);
+  drive.restart(wheelsAt(model, 0.0, 0.0), true);  // a world reset: the odometry starts again
+  EXPECT_EQ(drive.odometry().x, 0.0);
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::core

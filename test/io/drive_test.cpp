@@ -1,0 +1,220 @@
+// A DiffDriveController from ros_controllers' YAML (io/controllers.h,
+// drive_config.h): its keys, what it finds in the URDF, its refusals, and
+// the shipped wheeled base (urdf/diff_drive.urdf) driven on the ground by it
+// as the node steps a robot: the twist it is given, and its odometry against
+// the ground truth.
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <string>
+
+#include "rigid_body_sim/core/articulations/scene.h"
+#include "rigid_body_sim/io/articulation_loader.h"
+#include "rigid_body_sim/io/controllers.h"
+#include "rigid_body_sim/io/scene_loader.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+const std::string kUrdf = std::string(RBS_SOURCE_DIR) + "/urdf/";
+
+/// The shipped base's config with `controllers` (a flow map).
+io::SimConfig baseConfig(const std::string& controllers) {
+  return io::parseConfig(
+      YAML::Load("dt: 0.001\ncontact: {friction: 0.8}\ninitial: {position: [0, 0, 0.08]}\n"
+                 "controllers: " +
+                 controllers + "\n"));
+}
+
+io::RobotControls baseControls(const std::string& controllers) {
+  return io::buildControls(baseConfig(controllers).controllers, io::loadArticulationFile(kUrdf + "diff_drive.urdf"));
+}
+
+std::string refusal(const std::string& controllers) {
+  try {
+    baseControls(controllers);
+  } catch (const io::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+constexpr const char* kDrive =
+    "{base: {type: diff_drive_controller/DiffDriveController, left_wheel: left_wheel_joint, "
+    "right_wheel: right_wheel_joint";
+
+TEST(DiffDriveController, ReadsRosControllersYamlAndTheUrdfsWheels) {
+  const io::RobotControls c = baseControls(std::string(kDrive) +
+                                           ", publish_rate: 20, cmd_vel_timeout: 0.25, enable_odom_tf: false,"
+                                           " base_frame_id: chassis, wheel_separation_multiplier: 2,"
+                                           " pose_covariance_diagonal: [1, 2, 3, 4, 5, 6],"
+                                           " linear: {x: {has_velocity_limits: true, max_velocity: 1.5}},"
+                                           " angular: {z: {has_acceleration_limits: true, max_acceleration: 3,"
+                                           " min_acceleration: -6}}}}");
+  ASSERT_EQ(c.drives.size(), 1u);
+  const core::DiffDrive& d = c.drives[0];
+  EXPECT_EQ(d.spec().name, "base");
+  EXPECT_EQ(d.wheels(), (std::vector<int>{1, 2}));  // the URDF's left_wheel_joint, right_wheel_joint
+  // From the URDF, as ros_controllers: the joints 0.36 m apart, the left wheel's collision cylinder 0.06 m.
+  EXPECT_DOUBLE_EQ(d.spec().wheel_separation, 0.36);
+  EXPECT_DOUBLE_EQ(d.separation(), 0.72);
+  EXPECT_DOUBLE_EQ(d.spec().wheel_radius, 0.06);
+  EXPECT_EQ(d.spec().settings.cmd_vel_timeout, 0.25);
+  const core::TwistLimiter& lin = d.spec().settings.linear;
+  EXPECT_TRUE(lin.has_velocity_limits);
+  EXPECT_EQ(lin.max_velocity, 1.5);
+  EXPECT_EQ(lin.min_velocity, -1.5);  // ros_controllers: min defaults to -max
+  EXPECT_FALSE(lin.has_acceleration_limits);
+  const core::TwistLimiter& ang = d.spec().settings.angular;
+  EXPECT_EQ(ang.min_acceleration, -6.0);
+  ASSERT_EQ(c.drive_topics.size(), 1u);
+  const io::DriveTopics& t = c.drive_topics[0];
+  EXPECT_EQ(t.publish_rate, 20.0);
+  EXPECT_FALSE(t.enable_odom_tf);
+  EXPECT_EQ(t.base_frame_id, "chassis");
+  EXPECT_EQ(t.odom_frame_id, "odom");
+  EXPECT_EQ(t.pose_covariance_diagonal[5], 6.0);
+  EXPECT_EQ(t.twist_covariance_diagonal[0], 0.0);
+  EXPECT_TRUE(c.controllers.specs().empty());
+}
+
+TEST(DiffDriveController, RefusalsNameTheKey) {
+  const std::string drive = kDrive;
+  const auto refused = [](const std::string& yaml, const std::string& what) {
+    const std::string why = refusal(yaml);
+    EXPECT_NE(why.find(what), std::string::npos) << "'" << what << "' not in: " << (why.empty() ? "(accepted)" : why);
+  };
+  refused("{base: {type: diff_drive_controller/DiffDriveController, right_wheel: right_wheel_joint}}",
+          "'controllers.base.left_wheel': is missing");
+  refused(
+      "{base: {type: diff_drive_controller/DiffDriveController, left_wheel: [left_wheel_joint],"
+      " right_wheel: [right_wheel_joint, left_wheel_joint]}}",
+      "'controllers.base.right_wheel': 2 wheels against left_wheel's 1");
+  refused(
+      "{base: {type: diff_drive_controller/DiffDriveController, left_wheel: caster,"
+      " right_wheel: right_wheel_joint}}",
+      "'controllers.base.left_wheel': robot 'diff_drive' has no moving joint 'caster'");
+  refused(drive + ", linear: {x: {has_velocity_limits: true}}}}",
+          "'controllers.base.linear.x.max_velocity': is missing: has_velocity_limits is true");
+  refused(drive + ", linear: {y: {}}}}", "controllers.base.linear");
+  refused(drive + ", wheel_radius: -1}}", "'controllers.base.wheel_radius'");
+  refused(drive + ", publish_rate: 1e300}}", "'controllers.base.publish_rate': must be within");
+  refused(drive + ", pose_covariance_diagonal: [1, 2]}}", "'controllers.base.pose_covariance_diagonal'");
+  refused(drive + ", publish_joint_trajectory_controller_state: true}}", "control_msgs");
+  refused(drive + ", odom_frame_id: base_link}}", "'controllers.base.odom_frame_id'");
+  refused(drive + ", cmd_vel_timout: 1}}", "cmd_vel_timout");
+  refused(drive +
+              "}, spin: {type: velocity_controllers/JointVelocityController, joint: left_wheel_joint,"
+              " pid: {p: 1}}}",
+          "controller 'base': wheel joint 'left_wheel_joint' is already controller 'spin''s");
+}
+
+TEST(DiffDriveController, TakesGazeboRosControlsPidGainsForItsWheels) {
+  const io::SimConfig config = io::parseConfig(
+      YAML::Load("controllers: " + std::string(kDrive) +
+                 "}}\ngazebo_ros_control: {pid_gains: {right_wheel_joint: {p: 3, i: 1, i_clamp: 2}}}\n"));
+  const core::ArticulationModel model = io::loadArticulationFile(kUrdf + "diff_drive.urdf");
+  const io::RobotControls c = io::buildControls(config.controllers, model);
+  ASSERT_EQ(c.drives.size(), 1u);
+  const std::vector<core::PidGains>& gains = c.drives[0].spec().gains;
+  ASSERT_EQ(gains.size(), 2u);
+  EXPECT_EQ(gains[1].p, 3.0);
+  EXPECT_EQ(gains[1].i_clamp, 2.0);
+  // The left wheel, given none, gets the default.
+  EXPECT_EQ(gains[0].p, core::defaultWheelGains(model, 1, 0.06, 2).p);
+}
+
+/// The shipped base on the ground under `controllers`, stepped as the node steps a robot.
+struct DrivenBase {
+  io::SceneSetup world;
+  core::SceneWorkspace ws;
+  core::SceneLoads loads;
+  double t = 0.0;
+
+  explicit DrivenBase(const std::string& controllers)
+      : world(io::loadScene(baseConfig(controllers), [] { return io::readUrdfFile(kUrdf + "diff_drive.urdf", ""); })) {
+    loads.robots.resize(1);
+    drive().restart(robot(), true);
+  }
+  core::DiffDrive& drive() { return world.controls.at(0).drives.at(0); }
+  core::ArticulationState& robot() { return world.state.robots.at(0); }
+  /// `seconds` of sim time with (v, ω) sent every 0.1 s; the base's own
+  /// forward speed and yaw rate averaged over the last `span` s.
+  void run(double seconds, double v, double w, double span, double& speed, double& yaw_rate) {
+    const double dt = world.scene.model().dt();
+    const int steps = static_cast<int>(std::lround(seconds / dt));
+    const int from = steps - static_cast<int>(std::lround(span / dt));
+    speed = yaw_rate = 0.0;
+    for (int n = 0; n < steps; ++n) {
+      if (n % 100 == 0) {
+        ASSERT_TRUE(drive().command(v, w, t));
+      }
+      Eigen::VectorXd& effort = loads.robots[0].effort;
+      effort.setZero(2);
+      drive().efforts(robot(), t, dt, effort);
+      core::stepScene(world.scene, world.state, loads, ws);
+      t += dt;
+      if (n >= from) {
+        speed += robot().V_B(3) / (steps - from);  // the base's origin is on the axle: its x is forward
+        yaw_rate += (robot().X_WB.rotation * robot().V_B.head<3>()).z() / (steps - from);
+      }
+    }
+  }
+  double yaw() const {
+    const core::Vec3 x = world.state.robots[0].X_WB.rotation * core::Vec3::UnitX();
+    return std::atan2(x.y(), x.x());
+  }
+};
+
+// Accelerations the wheels' grip allows (each carries about 2 kg at mu = 0.8):
+// the wheels roll without slipping, as ros_controllers' users set limits for.
+constexpr const char* kGentle =
+    ", linear: {x: {has_acceleration_limits: true, max_acceleration: 1.0}},"
+    " angular: {z: {has_acceleration_limits: true, max_acceleration: 2.0}}}}";
+
+TEST(DiffDriveController, DrivesTheBaseAtItsTwistAndItsOdometryFollows) {
+  DrivenBase base(std::string(kDrive) + kGentle);
+  const core::Vec3 start = base.robot().X_WB.translation;
+  double speed = 0.0, yaw_rate = 0.0;
+  base.run(4.0, 0.5, 0.3, 2.0, speed, yaw_rate);
+  // Within 1 %: in a turn the wheels' rigid rims bear on their outer edges (the load moves out of
+  // the turn), 15 mm off their mid-planes, so the base's origin runs ω · 15 mm = 4.5 mm/s faster.
+  EXPECT_NEAR(speed, 0.5, 0.01 * 0.5);
+  EXPECT_NEAR(yaw_rate, 0.3, 0.001 * 0.3);
+  // The odometry against the ground truth, from where the base started (it faced world x).
+  const core::PlanarOdometry& o = base.drive().odometry();
+  const core::Vec3 moved = base.robot().X_WB.translation - start;
+  const double travelled = 0.5 * 4.0;
+  EXPECT_NEAR(o.x, moved.x(), 0.01 * travelled);
+  EXPECT_NEAR(o.y, moved.y(), 0.01 * travelled);
+  EXPECT_NEAR(std::remainder(o.heading - base.yaw(), 2.0 * M_PI), 0.0, 0.001);
+  EXPECT_NEAR(o.linear, 0.5, 0.001 * 0.5);  // the wheels' own speed: what they were asked
+  EXPECT_NEAR(o.angular, yaw_rate, 0.001 * 0.3);
+  // No command for longer than cmd_vel_timeout: it brakes to a stop (within the acceleration limits).
+  base.t += 1.0;  // the last command is 1 s old
+  for (int k = 0; k < 2000; ++k) {
+    Eigen::VectorXd& effort = base.loads.robots[0].effort;
+    effort.setZero(2);
+    base.drive().efforts(base.robot(), base.t, 1e-3, effort);
+    core::stepScene(base.world.scene, base.world.state, base.loads, base.ws);
+    base.t += 1e-3;
+  }
+  EXPECT_NEAR(base.robot().V_B(3), 0.0, 0.005);
+  EXPECT_NEAR(base.robot().V_B(2), 0.0, 0.005);
+}
+
+TEST(DiffDriveController, ItsOdometryDriftsWhenAStepCommandSpinsTheWheels) {
+  // No limits: a step to 0.6 rad/s asks the wheels for more torque than friction holds,
+  // so they slip at the start, and the odometry, which counts wheel turns, turns further than the base.
+  DrivenBase base(std::string(kDrive) + "}}");
+  double speed = 0.0, yaw_rate = 0.0;
+  base.run(4.0, 0.5, 0.6, 2.0, speed, yaw_rate);
+  const double drift = base.drive().odometry().heading - base.yaw();
+  EXPECT_GT(drift, 0.05);
+  EXPECT_LT(drift, 0.2);
+  EXPECT_NEAR(yaw_rate, 0.6, 0.001 * 0.6);  // once the wheels grip, the base turns at the rate asked
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
