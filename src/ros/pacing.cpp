@@ -28,6 +28,7 @@ void SimNode::stepOnce() {
   }
   commands_->loadsFor(sim_, t, robot_loads_);  // the robots' controllers, from the state before the step
   sim_.step(loads_, robot_loads_);
+  commands_->observe(sim_);  // the drives' odometry, from where the step left the wheels
   reportStep();
   ++steps_;
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
@@ -41,12 +42,14 @@ void SimNode::stepOnce() {
     publisher_->contacts(sim_, stamp());
   }
   robot_publisher_->publish(sim_, commands_->applied(), stamp(), steps_);  // each at its rate
+  commands_->publishDrives(stamp(), steps_);
   if (steps_ % body_states_every_ == 0) publisher_->bodyStates(sim_, ports_, stamp());
 }
 
 void SimNode::publish() {
   publishBodies();
   robot_publisher_->publish(sim_, commands_->applied(), stamp());
+  commands_->publishDrives(stamp());
 }
 
 void SimNode::publishBodies() {

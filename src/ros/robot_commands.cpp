@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "request_checks.h"
+#include "rigid_body_sim/ros/robot_ports.h"
 
 namespace rigid_body_sim::node {
 
@@ -17,12 +18,12 @@ RobotCommands::RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotCon
   const std::vector<core::SceneRobot>& robots = sim.scene.robots();
   controls.resize(robots.size());
   for (std::size_t r = 0; r < robots.size(); ++r) {
-    addRobot(sim, r, several ? robots[r].name + "/" : "", std::move(controls[r]));
+    addRobot(sim, r, several ? robots[r].name + "/" : "", framePrefix(nh_, robots[r].name), std::move(controls[r]));
   }
 }
 
 void RobotCommands::addRobot(const core::Simulation& sim, std::size_t r, const std::string& prefix,
-                             io::RobotControls controls) {
+                             const std::string& frame_prefix, io::RobotControls controls) {
   const core::SceneRobot& robot = sim.scene.robots().at(r);
   robot_names_.push_back(robot.name);
   std::vector<std::string> joints;
@@ -31,7 +32,58 @@ void RobotCommands::addRobot(const core::Simulation& sim, std::size_t r, const s
   controls_.push_back(std::move(controls));
   applied_.emplace_back();
   subscribers_.push_back(subscribe(r, prefix));
-  restart(sim, r);
+  drives_.push_back(openDrives(r, prefix, frame_prefix));
+  restart(sim, r, true);
+}
+
+std::vector<std::unique_ptr<DrivePorts>> RobotCommands::openDrives(std::size_t r, const std::string& prefix,
+                                                                   const std::string& frame_prefix) {
+  const std::string& name = robot_names_[r];
+  std::vector<std::unique_ptr<DrivePorts>> out;
+  const io::RobotControls& controls = controls_[r];
+  for (std::size_t d = 0; d < controls.drives.size(); ++d) {
+    const io::DriveTopics& topics = controls.drive_topics[d];
+    const DriveFrames frames{frame_prefix + topics.odom_frame_id, frame_prefix + topics.base_frame_id};
+    const long long every = std::llround(1.0 / (topics.publish_rate * sim_.model().dt()));
+    // The callback finds its robot by name: a robot deleted before moves the later ones down.
+    auto command = [this, name, d](double v, double w) {
+      const auto it = std::find(robot_names_.begin(), robot_names_.end(), name);
+      if (it == robot_names_.end()) return;
+      core::DiffDrive& drive = controls_[static_cast<std::size_t>(it - robot_names_.begin())].drives[d];
+      if (!drive.command(v, w, time_.simTime())) {
+        ROS_WARN_THROTTLE(kWarnPeriod, "sim_node: robot '%s': controller '%s': a cmd_vel not finite: dropped",
+                          name.c_str(), drive.spec().name.c_str());
+      }
+    };
+    out.push_back(
+        std::make_unique<DrivePorts>(nh_, prefix, controls.drives[d].spec().name, topics, frames, every, command));
+  }
+  return out;
+}
+
+std::vector<std::string> RobotCommands::odometryFrames(std::size_t r) const {
+  std::vector<std::string> frames;
+  for (const auto& d : drives_.at(r)) {
+    if (d->onTf()) frames.push_back(d->frames().base);
+  }
+  return frames;
+}
+
+void RobotCommands::observe(const core::Simulation& sim) {
+  const double dt = sim.model().dt();
+  for (std::size_t r = 0; r < controls_.size(); ++r) {
+    for (core::DiffDrive& drive : controls_[r].drives) drive.observe(sim.robots[r], dt);
+  }
+}
+
+void RobotCommands::publishDrives(const ros::Time& stamp, long long steps) {
+  if (!ros::ok()) return;
+  odom_tf_.clear();
+  for (std::size_t r = 0; r < drives_.size(); ++r) {
+    for (std::size_t d = 0; d < drives_[r].size(); ++d)
+      drives_[r][d]->publish(controls_[r].drives[d], stamp, steps, odom_tf_);
+  }
+  if (!odom_tf_.empty()) tf_.sendTransform(odom_tf_);
 }
 
 std::vector<ros::Subscriber> RobotCommands::subscribe(std::size_t r, const std::string& prefix) {
@@ -76,6 +128,7 @@ void RobotCommands::removeRobot(std::size_t r) {
   const std::string name = robot_names_.at(r);
   const auto erase = [r](auto& per_robot) { per_robot.erase(per_robot.begin() + static_cast<std::ptrdiff_t>(r)); };
   erase(subscribers_);  // its topics unsubscribed
+  erase(drives_);
   erase(controls_);
   erase(robot_names_);
   erase(joint_names_);
@@ -235,6 +288,7 @@ void RobotCommands::loadsFor(const core::Simulation& sim, double t, std::vector<
     Eigen::VectorXd& effort = applied_[r];
     controls_[r].controllers.efforts(sim.robots[r], t, dt, effort);  // zero where none acts
     if (effort.size() != model.jointCount()) effort.setZero(model.jointCount());
+    for (core::DiffDrive& drive : controls_[r].drives) drive.efforts(sim.robots[r], t, dt, effort);
     sim.joint_efforts.addEfforts(r, t, dt, effort);
     for (int j = 1; j <= model.jointCount(); ++j) {  // the sum within the limit, as reported
       effort(j - 1) = std::clamp(effort(j - 1), -model.links[j].limits.effort, model.links[j].limits.effort);
@@ -248,11 +302,12 @@ void RobotCommands::loadsFor(const core::Simulation& sim, double t, std::vector<
 }
 
 void RobotCommands::restart(const core::Simulation& sim) {
-  for (std::size_t r = 0; r < controls_.size(); ++r) restart(sim, r);
+  for (std::size_t r = 0; r < controls_.size(); ++r) restart(sim, r, true);
 }
 
-void RobotCommands::restart(const core::Simulation& sim, std::size_t r) {
+void RobotCommands::restart(const core::Simulation& sim, std::size_t r, bool zero_odometry) {
   controls_.at(r).controllers.restart(sim.robots[r]);
+  for (core::DiffDrive& drive : controls_[r].drives) drive.restart(sim.robots[r], zero_odometry);
   applied_[r].resize(0);
   watch_.restart(r);
 }

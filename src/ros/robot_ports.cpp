@@ -118,6 +118,25 @@ void RobotPublisher::addRobot(const core::SceneRobot& robot, const std::string& 
   robots_.push_back(std::move(p));
 }
 
+void RobotPublisher::leaveBase(std::size_t r, const std::vector<std::string>& frames) {
+  RobotPorts& p = robots_.at(r);
+  for (const std::string& frame : frames) {
+    if (!p.base_frame.empty() && frame == p.base_frame) {
+      ROS_INFO(
+          "sim_node: robot '%s': its base '%s' is on tf from its odometry (odom -> base), not from %s; "
+          "its ground truth is on ~body_states",
+          p.name.c_str(), frame.c_str(), world_frame_.c_str());
+      p.base_frame.clear();
+    } else {
+      ROS_WARN(
+          "sim_node: robot '%s': a controller puts odom -> '%s' on tf, and '%s' is not its base frame ('%s'): "
+          "set its base_frame_id to the base, or tf may see two parents",
+          p.name.c_str(), frame.c_str(), frame.c_str(),
+          p.base_frame.empty() ? "none, fixed to the world" : p.base_frame.c_str());
+    }
+  }
+}
+
 void RobotPublisher::publish(const core::Simulation& sim, const std::vector<Eigen::VectorXd>& applied,
                              const ros::Time& now, long long steps) {
   if (!ros::ok()) return;

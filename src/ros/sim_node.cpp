@@ -146,6 +146,9 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   robot_publisher_.emplace(nh_, sim_.scene, several, settings_.world_frame, model_.dt(), settings_.publish_rate,
                            [this](std::size_t r) { return commands_->jointStateRate(r); });
   checkRobotFrames(robot_publisher_->robots(), settings_.world_frame, ports_.frames());
+  for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
+    robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
+  }
   services_ = {
       pnh_.advertiseService("apply_wrench", &LoadRequests::applyWrench, &load_requests_),
       pnh_.advertiseService("apply_impulse", &LoadRequests::applyImpulse, &load_requests_),
@@ -189,7 +192,8 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   io::RobotControls& controls = spawn.controls;
   const double hz = controls.joint_state_rate > 0.0 ? controls.joint_state_rate : settings_.publish_rate;
   robot_publisher_->addRobot(sim_.scene.robots()[r], prefix, hz, spawn.frame_prefix);
-  commands_->addRobot(sim_, r, prefix, std::move(controls));
+  commands_->addRobot(sim_, r, prefix, spawn.frame_prefix, std::move(controls));
+  robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
 }
 
 void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {

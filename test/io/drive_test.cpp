@@ -154,6 +154,7 @@ struct DrivenBase {
       effort.setZero(2);
       drive().efforts(robot(), t, dt, effort);
       core::stepScene(world.scene, world.state, loads, ws);
+      drive().observe(robot(), dt);
       t += dt;
       if (n >= from) {
         speed += robot().V_B(3) / (steps - from);  // the base's origin is on the axle: its x is forward
@@ -198,6 +199,7 @@ TEST(DiffDriveController, DrivesTheBaseAtItsTwistAndItsOdometryFollows) {
     effort.setZero(2);
     base.drive().efforts(base.robot(), base.t, 1e-3, effort);
     core::stepScene(base.world.scene, base.world.state, base.loads, base.ws);
+    base.drive().observe(base.robot(), 1e-3);
     base.t += 1e-3;
   }
   EXPECT_NEAR(base.robot().V_B(3), 0.0, 0.005);

@@ -9,6 +9,7 @@
 
 #include "../test_util.h"
 #include "rigid_body_sim/io/articulation_loader.h"
+#include "rigid_body_sim/ros/drive_ports.h"
 #include "rigid_body_sim/ros/robot_ports.h"
 #include "rigid_body_sim/ros/state_publisher.h"
 
@@ -220,6 +221,50 @@ TEST(StateMessages, ContactsNameBothSidesAndDrawEachForce) {
   EXPECT_NEAR(drawn.markers[2].points[1].x, kContactForceScale * 2.0, 1e-15);
   EXPECT_EQ(drawn.markers[3].points.size(), 2u);
   EXPECT_EQ(drawn.markers[3].header.frame_id, "map");
+}
+
+// A DiffDriveController's odometry as nav_msgs/Odometry and on tf: the pose
+// in the odom frame turned by its heading, the twist in the base's axes, the
+// covariance diagonals at 0, 7, ..., 35.
+TEST(DriveMessages, CarryTheOdometryInItsFrames) {
+  const core::ArticulationModel model = io::loadArticulationFile(std::string(RBS_SOURCE_DIR) + "/urdf/diff_drive.urdf");
+  core::DiffDriveSpec spec;
+  spec.name = "base_controller";
+  spec.left = {1};
+  spec.right = {2};
+  spec.wheel_separation = 0.36;
+  spec.wheel_radius = 0.06;
+  core::DiffDrive drive(model, spec);
+  core::ArticulationState state = core::restState(model);
+  drive.restart(state, true);
+  // The right wheel alone turns 0.36 / 0.06 / 2 rad: the base turns about the left wheel by 0.5 rad.
+  state.q(1) = 3.0;
+  drive.observe(state, 0.5);
+  io::DriveTopics topics;
+  topics.pose_covariance_diagonal = {1, 2, 3, 4, 5, 6};
+  topics.twist_covariance_diagonal = {7, 8, 9, 10, 11, 12};
+  const DriveFrames frames{"rover/odom", "rover/base_link"};
+  const nav_msgs::Odometry m = odometryMessage(drive, topics, frames, ros::Time(12, 5));
+  EXPECT_EQ(m.header.stamp, ros::Time(12, 5));
+  EXPECT_EQ(m.header.frame_id, "rover/odom");
+  EXPECT_EQ(m.child_frame_id, "rover/base_link");
+  // An arc of radius 0.18 m about the left wheel: x = 0.18 sin 0.5, y = 0.18 (1 - cos 0.5).
+  EXPECT_NEAR(m.pose.pose.position.x, 0.18 * std::sin(0.5), 1e-15);
+  EXPECT_NEAR(m.pose.pose.position.y, 0.18 * (1.0 - std::cos(0.5)), 1e-15);
+  EXPECT_NEAR(m.pose.pose.orientation.z, std::sin(0.25), 1e-15);
+  EXPECT_NEAR(m.pose.pose.orientation.w, std::cos(0.25), 1e-15);
+  EXPECT_NEAR(m.twist.twist.linear.x, 0.09 / 0.5, 1e-15);
+  EXPECT_NEAR(m.twist.twist.angular.z, 1.0, 1e-15);
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_EQ(m.pose.covariance[7 * k], k + 1.0);
+    EXPECT_EQ(m.twist.covariance[7 * k], k + 7.0);
+  }
+  EXPECT_EQ(m.pose.covariance[1], 0.0);
+  const geometry_msgs::TransformStamped t = odometryTransform(drive, frames, ros::Time(12, 5));
+  EXPECT_EQ(t.header.frame_id, "rover/odom");
+  EXPECT_EQ(t.child_frame_id, "rover/base_link");
+  EXPECT_EQ(t.transform.translation.x, m.pose.pose.position.x);
+  EXPECT_EQ(t.transform.rotation.z, m.pose.pose.orientation.z);
 }
 
 }  // namespace

@@ -2,16 +2,19 @@
 // (CONTROLLER/command under the robot's namespace: std_msgs/Float64,
 // Float64MultiArray for a group, trajectory_msgs/JointTrajectory for a
 // trajectory controller), the robot's `joint_command` (an Isaac
-// Sim style sensor_msgs/JointState, joints by name), the efforts they give
-// every step, and their restart when a robot is put somewhere. The control itself is the
+// Sim style sensor_msgs/JointState, joints by name), its DiffDriveControllers'
+// cmd_vel and odometry (drive_ports.h), the efforts they give every step,
+// and their restart when a robot is put somewhere. The control itself is the
 // core's (core/controllers/joint_control.h), through effort only.
 #pragma once
 
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
+#include <tf2_ros/transform_broadcaster.h>
 #include <trajectory_msgs/JointTrajectory.h>
 
 #include <Eigen/Core>
+#include <memory>
 #include <set>
 #include <string>
 #include <utility>
@@ -21,6 +24,7 @@
 #include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/io/controllers.h"
 #include "rigid_body_sim/ros/controller_watch.h"
+#include "rigid_body_sim/ros/drive_ports.h"
 #include "rigid_body_sim/ros/sim_clock.h"
 
 namespace rigid_body_sim::node {
@@ -39,8 +43,9 @@ class RobotCommands {
 
   /// Robot r of `sim`, added to the world (~spawn_body), with `controls`:
   /// their topics under `prefix`, the position and trajectory controllers
-  /// holding the joints where they are.
-  void addRobot(const core::Simulation& sim, std::size_t r, const std::string& prefix, io::RobotControls controls);
+  /// holding the joints where they are, its drives' frames after `frame_prefix`.
+  void addRobot(const core::Simulation& sim, std::size_t r, const std::string& prefix, const std::string& frame_prefix,
+                io::RobotControls controls);
   /// Robot r deleted (~delete_body): its topics unsubscribed, its
   /// controllers gone; the later robots move down by one.
   void removeRobot(std::size_t r);
@@ -49,13 +54,22 @@ class RobotCommands {
   /// controllers' efforts and the timed ones (apply_joint_effort) added,
   /// within the joints' limits (also kept for joint_states).
   void loadsFor(const core::Simulation& sim, double t, std::vector<core::ArticulationLoads>& loads);
+  /// After the step: each drive's odometry from where the step left its wheels.
+  void observe(const core::Simulation& sim);
+  /// Each drive's odometry, and odom -> base on tf, stamped `stamp`: those
+  /// due at step `steps`, or every one (`steps` < 0).
+  void publishDrives(const ros::Time& stamp, long long steps = -1);
+  /// The frames robot r's drives put on tf as odom -> FRAME.
+  std::vector<std::string> odometryFrames(std::size_t r) const;
   /// The efforts of the last step, per robot (empty before the first).
   const std::vector<Eigen::VectorXd>& applied() const { return applied_; }
   /// After a reset or set_state: every controller starts again from where
-  /// its robot now is (no integral, position targets where the joints are).
+  /// its robot now is (no integral, position targets where the joints are;
+  /// a drive's odometry at zero).
   void restart(const core::Simulation& sim);
-  /// The same for robot r alone (after set_model_configuration).
-  void restart(const core::Simulation& sim, std::size_t r);
+  /// The same for robot r alone (after set_model_configuration; a drive's
+  /// odometry goes on from where it was).
+  void restart(const core::Simulation& sim, std::size_t r, bool zero_odometry = false);
   /// Hz of robot r's joint_state_controller, 0 for none.
   double jointStateRate(std::size_t r) const { return controls_[r].joint_state_rate; }
 
@@ -80,6 +94,9 @@ class RobotCommands {
  private:
   /// Robot r's controllers' command topics and its joint_command, under `prefix`.
   std::vector<ros::Subscriber> subscribe(std::size_t r, const std::string& prefix);
+  /// Robot r's drives' topics under `prefix`, frames after `frame_prefix`.
+  std::vector<std::unique_ptr<DrivePorts>> openDrives(std::size_t r, const std::string& prefix,
+                                                      const std::string& frame_prefix);
   /// Warns once per joint and limit of the commands `source` had clipped.
   void warnClipped(std::size_t r, const std::string& source, const std::vector<core::Clipped>& clipped);
 
@@ -94,6 +111,9 @@ class RobotCommands {
   std::set<std::pair<std::string, std::string>> warned_;  ///< (robot/joint, limit) clipped once
   ControllerWatch watch_;                                 ///< saturated or pressing controllers, said once
   std::vector<std::vector<ros::Subscriber>> subscribers_;
+  std::vector<std::vector<std::unique_ptr<DrivePorts>>> drives_;  ///< per robot, per drive
+  std::vector<geometry_msgs::TransformStamped> odom_tf_;          ///< this publication's
+  tf2_ros::TransformBroadcaster tf_;
 };
 
 }  // namespace rigid_body_sim::node

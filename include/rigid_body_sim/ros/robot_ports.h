@@ -80,6 +80,11 @@ class RobotPublisher {
   /// A robot added to the world (~spawn_body): its joint_states under
   /// `prefix`, at `hz` Hz of sim time, its frames after `frame_prefix`.
   void addRobot(const core::SceneRobot& robot, const std::string& prefix, double hz, const std::string& frame_prefix);
+  /// Robot r's base is on tf from its drives' odometry as odom -> FRAME,
+  /// one of `frames`: the node no longer puts world -> base there (tf
+  /// allows one parent), and its ground truth stays on ~body_states. A frame
+  /// of `frames` that is not its base is warned of (tf would give it two parents).
+  void leaveBase(std::size_t r, const std::vector<std::string>& frames);
   /// Robot r deleted (~delete_body): its joint_states unadvertised, its
   /// base no longer on tf; the later robots move down by one.
   void removeRobot(std::size_t r) { robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r)); }

@@ -146,28 +146,30 @@ void DiffDrive::average(double linear, double angular) {
   odometry_.angular = std::accumulate(angular_window_.begin(), angular_window_.end(), 0.0) / count;
 }
 
-void DiffDrive::efforts(const ArticulationState& state, double t, double dt, Eigen::VectorXd& effort) {
-  const DiffDriveSettings& k = spec_.settings;
-  // The odometry to the state at t: from the wheels (or the commands, open loop).
-  if (k.open_loop) {
+void DiffDrive::observe(const ArticulationState& state, double dt) {
+  if (spec_.settings.open_loop) {
     integrate(last0_linear_ * dt, last0_angular_ * dt);
     odometry_.linear = last0_linear_;
     odometry_.angular = last0_angular_;
-  } else if (dt > 0.0) {
-    const double left = meanPosition(state, spec_.left) * left_radius_;
-    const double right = meanPosition(state, spec_.right) * right_radius_;
-    if (!has_travel_) {  // the first update: where the wheels start
-      left_travel_ = left;
-      right_travel_ = right;
-      has_travel_ = true;
-    }
-    const double d_left = left - left_travel_, d_right = right - right_travel_;
+    return;
+  }
+  const double left = meanPosition(state, spec_.left) * left_radius_;
+  const double right = meanPosition(state, spec_.right) * right_radius_;
+  if (!has_travel_) {  // the first update: where the wheels start
     left_travel_ = left;
     right_travel_ = right;
-    const double ds = 0.5 * (d_left + d_right), dtheta = (d_right - d_left) / separation_;
-    integrate(ds, dtheta);
-    average(ds / dt, dtheta / dt);
+    has_travel_ = true;
   }
+  const double d_left = left - left_travel_, d_right = right - right_travel_;
+  left_travel_ = left;
+  right_travel_ = right;
+  const double ds = 0.5 * (d_left + d_right), dtheta = (d_right - d_left) / separation_;
+  integrate(ds, dtheta);
+  if (dt > 0.0) average(ds / dt, dtheta / dt);
+}
+
+void DiffDrive::efforts(const ArticulationState& state, double t, double dt, Eigen::VectorXd& effort) {
+  const DiffDriveSettings& k = spec_.settings;
   // The command: zero once too old, then limited against the last two.
   double v = linear_, w = angular_;
   if (!commanded_ || t - stamp_ > k.cmd_vel_timeout) v = w = 0.0;

@@ -96,8 +96,7 @@ TEST(DiffDriveOdometry, FollowsTheArcOfWheelsTurningSteadily) {
   const int steps = 4000;
   for (int n = 1; n <= steps; ++n) {
     const double t = n * kH;
-    Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
-    drive.efforts(wheelsAt(model, 0.7 + wl * t, -0.2 + wr * t), t, kH, effort);
+    drive.observe(wheelsAt(model, 0.7 + wl * t, -0.2 + wr * t), kH);
   }
   const double T = steps * kH;
   const PlanarOdometry& o = drive.odometry();
@@ -114,13 +113,12 @@ TEST(DiffDriveOdometry, AveragesItsVelocityOverTheWindow) {
   s.settings.velocity_rolling_window_size = 4;
   DiffDrive drive(model, s);
   drive.restart(wheelsAt(model, 0.0, 0.0), true);
-  Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
   // One step of 1 mm on each rim (0.01 rad), then three still: the mean of 1, 0, 0, 0 m/s.
-  drive.efforts(wheelsAt(model, 0.01, 0.01), kH, kH, effort);
+  drive.observe(wheelsAt(model, 0.01, 0.01), kH);
   EXPECT_NEAR(drive.odometry().linear, 1.0, 1e-12);
-  for (int n = 2; n <= 4; ++n) drive.efforts(wheelsAt(model, 0.01, 0.01), n * kH, kH, effort);
+  for (int n = 2; n <= 4; ++n) drive.observe(wheelsAt(model, 0.01, 0.01), kH);
   EXPECT_NEAR(drive.odometry().linear, 0.25, 1e-12);
-  drive.efforts(wheelsAt(model, 0.01, 0.01), 5 * kH, kH, effort);  // the 1 m/s sample leaves the window
+  drive.observe(wheelsAt(model, 0.01, 0.01), kH);  // the 1 m/s sample leaves the window
   EXPECT_NEAR(drive.odometry().linear, 0.0, 1e-15);
   EXPECT_NEAR(drive.odometry().x, 1e-3, 1e-15);
 }
@@ -223,11 +221,12 @@ TEST(DiffDrive, ARestartReadsTheWheelsAfreshAndForgetsTheCommand) {
   DiffDrive drive(model, s);
   drive.restart(wheelsAt(model, 0.0, 0.0), true);
   Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
-  drive.efforts(wheelsAt(model, 10.0, 10.0), kH, kH, effort);  // 1 m on each side
+  drive.observe(wheelsAt(model, 10.0, 10.0), kH);  // 1 m on each side
   ASSERT_NEAR(drive.odometry().x, 1.0, 1e-12);
   ASSERT_TRUE(drive.command(1.0, 0.0, kH));
   // The joints were moved (set_model_configuration): the odometry does not jump, the command is gone.
   drive.restart(wheelsAt(model, -3.0, 4.0), false);
+  drive.observe(wheelsAt(model, -3.0, 4.0), kH);
   drive.efforts(wheelsAt(model, -3.0, 4.0), 2 * kH, kH, effort);
   EXPECT_NEAR(drive.odometry().x, 1.0, 1e-12);
   EXPECT_DOUBLE_EQ(effort(0), 0.0);

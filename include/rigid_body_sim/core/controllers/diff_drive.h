@@ -92,10 +92,13 @@ class DiffDrive {
   /// A cmd_vel received at `t` (s of sim time): v (m/s), ω (rad/s). Not
   /// finite: refused (false), nothing changes.
   bool command(double linear, double angular, double t);
-  /// The step [t, t + dt) from `state`: the odometry updated to it, the
-  /// command limited and turned into wheel speeds, each wheel's PID effort
-  /// written to `effort` (per joint, within its limit).
+  /// The step [t, t + dt) from `state`: the command limited and turned into
+  /// wheel speeds, each wheel's PID effort written to `effort` (per joint,
+  /// within its limit).
   void efforts(const ArticulationState& state, double t, double dt, Eigen::VectorXd& effort);
+  /// The odometry after a step of `dt` s that left `state` (its wheels'
+  /// angles; open loop, the command limited for that step).
+  void observe(const ArticulationState& state, double dt);
   const PlanarOdometry& odometry() const { return odometry_; }
   /// The last command as limited (publish_cmd's cmd_vel_out): v, ω.
   double limitedLinear() const { return last0_linear_; }
