@@ -27,7 +27,9 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/step/loads.cpp
   ${RBS_SOURCE_ROOT}/src/core/bodies/model.cpp
   ${RBS_SOURCE_ROOT}/src/core/bodies/model_checks.cpp
+  ${RBS_SOURCE_ROOT}/src/core/devices/lidar.cpp
   ${RBS_SOURCE_ROOT}/src/core/devices/odom_noise.cpp
+  ${RBS_SOURCE_ROOT}/src/core/devices/ray_cast.cpp
   ${RBS_SOURCE_ROOT}/src/core/step/parallel.cpp
   ${RBS_SOURCE_ROOT}/src/core/step/penalty.cpp
   ${RBS_SOURCE_ROOT}/src/core/contacts/position_correction.cpp

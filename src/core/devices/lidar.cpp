@@ -1,0 +1,67 @@
+// A scanning range sensor: lidar.h, docs/physics.md §10.6.
+#include "rigid_body_sim/core/devices/lidar.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+
+namespace rigid_body_sim::core {
+
+void checkLidar(const LidarSettings& s) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("lidar: " + what); };
+  if (s.samples < 1) fail("samples must be >= 1");
+  if (s.vertical_samples < 1) fail("vertical_samples must be >= 1");
+  if (static_cast<double>(s.samples) * s.vertical_samples > 1e6) fail("samples x vertical_samples must be <= 1e6");
+  for (const auto& [lo, hi, what] :
+       {std::tuple{s.min_angle, s.max_angle, "min_angle and max_angle"},
+        std::tuple{s.vertical_min_angle, s.vertical_max_angle, "vertical_min_angle and vertical_max_angle"}}) {
+    if (!(std::isfinite(lo) && std::isfinite(hi) && lo <= hi)) fail(std::string(what) + " must be finite, min <= max");
+  }
+  if (!(s.vertical_min_angle >= -M_PI / 2 && s.vertical_max_angle <= M_PI / 2)) {
+    fail("vertical angles must be within [-pi/2, pi/2]");
+  }
+  if (!(std::isfinite(s.max_range) && s.min_range >= 0.0 && s.min_range < s.max_range)) {
+    fail("ranges must be 0 <= min_range < max_range, finite");
+  }
+  if (!(std::isfinite(s.noise) && s.noise >= 0.0)) fail("noise must be finite and >= 0");
+}
+
+Lidar::Lidar(const LidarSettings& settings) : settings_(settings), rng_(settings.seed) {
+  checkLidar(settings_);
+  const LidarSettings& s = settings_;
+  increment_ = s.samples > 1 ? (s.max_angle - s.min_angle) / (s.samples - 1) : 0.0;
+  vertical_increment_ =
+      s.vertical_samples > 1 ? (s.vertical_max_angle - s.vertical_min_angle) / (s.vertical_samples - 1) : 0.0;
+  directions_.reserve(static_cast<std::size_t>(s.samples) * static_cast<std::size_t>(s.vertical_samples));
+  for (int f = 0; f < s.vertical_samples; ++f) {
+    const double elevation = s.vertical_min_angle + f * vertical_increment_;
+    for (int k = 0; k < s.samples; ++k) {
+      const double azimuth = s.min_angle + k * increment_;
+      directions_.emplace_back(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                               std::sin(elevation));
+    }
+  }
+}
+
+void Lidar::scan(const Model& model, const State& state, const Pose& X_WS, const std::vector<char>& skip,
+                 std::vector<double>& ranges) {
+  const LidarSettings& s = settings_;
+  const Mat3 R_WS = X_WS.rotation.toRotationMatrix();
+  const RayWorld world(model, state, skip);
+  ranges.resize(directions_.size());
+  for (std::size_t k = 0; k < directions_.size(); ++k) {
+    const double t = world.cast(X_WS.translation, R_WS * directions_[k], s.max_range).range;
+    if (t == kNoHit) {
+      ranges[k] = kNoHit;
+    } else if (t < s.min_range) {
+      ranges[k] = -kNoHit;
+    } else {
+      const double noisy = s.noise > 0.0 ? t + s.noise * normal_(rng_) : t;
+      ranges[k] = std::clamp(noisy, s.min_range, s.max_range);
+    }
+  }
+}
+
+}  // namespace rigid_body_sim::core

@@ -1,0 +1,232 @@
+// Rays against the world and the lidar (docs/physics.md §10.5-10.6), against
+// closed forms: a beam to a plane at an angle, a sphere off its centre, a
+// box's edge and faces, a cylinder's side and cap, a capsule's cap, a
+// union's nearest part, a traced room (a difference of boxes); bodies at
+// their poses, a skipped body, REP 117's ±inf, seeded noise.
+#include "rigid_body_sim/core/devices/ray_cast.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "../../test_util.h"
+#include "rigid_body_sim/core/devices/lidar.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+using core::castRay;
+using core::kNoHit;
+using core::Sdf;
+
+const Vec3 kX = Vec3::UnitX(), kY = Vec3::UnitY(), kZ = Vec3::UnitZ();
+
+TEST(CastRay, MeetsAPlaneAtItsDistanceOverTheSineOfTheAngle) {
+  const Sdf ground = Sdf::plane(kZ);
+  for (const double alpha : {0.1, 0.5, 1.2, M_PI / 2}) {
+    const Vec3 d(std::cos(alpha), 0.0, -std::sin(alpha));
+    EXPECT_NEAR(castRay(ground, Vec3(0, 0, 1.5), d, 100.0), 1.5 / std::sin(alpha), 1e-12) << alpha;
+  }
+  EXPECT_EQ(castRay(ground, Vec3(0, 0, 1.5), kX, 100.0), kNoHit);                // parallel
+  EXPECT_EQ(castRay(ground, Vec3(0, 0, 1.5), Vec3(0.6, 0, -0.8), 1.0), kNoHit);  // 1.875 m away
+  EXPECT_EQ(castRay(ground, Vec3(0, 0, -0.1), kX, 100.0), 0.0);                  // starts inside
+  // A tilted plane through (3, 0, 0) facing (-1, 0, 1)/√2: from the origin along x it is 3 m away.
+  const Sdf tilted = Sdf::plane(Vec3(-1, 0, 1), Vec3(3, 0, 0));
+  EXPECT_NEAR(castRay(tilted, Vec3::Zero(), kX, 100.0), 3.0, 1e-12);
+}
+
+TEST(CastRay, MeetsASphereOffItsCentre) {
+  const Sdf ball = Sdf::sphere(0.5).transformed({Quat::Identity(), Vec3(4, 0, 0)});
+  for (const double b : {0.0, 0.3, 0.49}) {
+    EXPECT_NEAR(castRay(ball, Vec3(0, b, 0), kX, 100.0), 4.0 - std::sqrt(0.25 - b * b), 1e-12) << b;
+  }
+  EXPECT_EQ(castRay(ball, Vec3(0, 0.51, 0), kX, 100.0), kNoHit);
+  EXPECT_EQ(castRay(ball, Vec3(0, 0, 0), -kX, 100.0), kNoHit);  // behind
+  EXPECT_EQ(castRay(ball, Vec3(4.1, 0, 0), kX, 100.0), 0.0);
+}
+
+TEST(CastRay, MeetsABoxAtItsEdgeAndFaces) {
+  // A 2 m cube turned 45° about z: its vertical edge at x = −√2 faces a ray along x.
+  const Sdf cube = Sdf::box(Vec3(2, 2, 2)).transformed({Quat(Eigen::AngleAxisd(M_PI / 4, kZ)), Vec3::Zero()});
+  EXPECT_NEAR(castRay(cube, Vec3(-5, 0, 0), kX, 100.0), 5.0 - std::sqrt(2.0), 1e-12);
+  // 0.1 m to the side it meets a face at 45°, 0.1 m further on.
+  EXPECT_NEAR(castRay(cube, Vec3(-5, 0.1, 0), kX, 100.0), 5.0 - std::sqrt(2.0) + 0.1, 1e-12);
+  EXPECT_NEAR(castRay(cube, Vec3(0, 0, 5), -kZ, 100.0), 4.0, 1e-12);  // its top
+  EXPECT_EQ(castRay(cube, Vec3(-5, 0, 1.01), kX, 100.0), kNoHit);
+}
+
+TEST(CastRay, MeetsACylindersSideAndCapAndACapsulesCap) {
+  const Sdf can = Sdf::cylinder(0.5, 1.0);
+  EXPECT_NEAR(castRay(can, Vec3(-3, 0, 0.2), kX, 100.0), 2.5, 1e-12);
+  EXPECT_NEAR(castRay(can, Vec3(0.3, 0, 3), -kZ, 100.0), 2.5, 1e-12);
+  EXPECT_NEAR(castRay(can, Vec3(-3, 0.3, 0), kX, 100.0), 3.0 - 0.4, 1e-12);
+  EXPECT_EQ(castRay(can, Vec3(-3, 0, 0.6), kX, 100.0), kNoHit);
+  EXPECT_EQ(castRay(can, Vec3(0.51, 0, 3), -kZ, 100.0), kNoHit);
+  const Sdf pill = Sdf::capsule(0.5, 1.0);  // the segment z in [-0.5, 0.5]
+  EXPECT_NEAR(castRay(pill, Vec3(0, 0, 3), -kZ, 100.0), 2.0, 1e-12);
+  EXPECT_NEAR(castRay(pill, Vec3(-3, 0, 0.7), kX, 100.0), 3.0 - std::sqrt(0.25 - 0.04), 1e-12);
+  EXPECT_NEAR(castRay(pill, Vec3(-3, 0, 0.3), kX, 100.0), 2.5, 1e-12);
+}
+
+TEST(CastRay, MeetsAUnionsNearestPartAndTracesARoom) {
+  const Sdf two = Sdf::unite({Sdf::sphere(0.5).transformed({Quat::Identity(), Vec3(5, 0, 0)}),
+                              Sdf::box(Vec3(1, 1, 1)).transformed({Quat::Identity(), Vec3(3, 0, 0)})})
+                      .transformed({Quat(Eigen::AngleAxisd(M_PI / 2, kZ)), Vec3(0, 1, 0)});
+  // Turned a quarter about z and moved 1 m along y: the box's near face is 3.5 m up y from y = 1.
+  EXPECT_NEAR(castRay(two, Vec3::Zero(), kY, 100.0), 1.0 + 2.5, 1e-12);
+  // The room (walls x, y = ±1, floor z = 0): a difference, traced to within 1 µm.
+  const Sdf walls = room();
+  for (const double theta : {0.0, 0.3, 0.7, 2.0}) {
+    const Vec3 d(std::cos(theta), std::sin(theta), 0.0);
+    const double expected = 1.0 / std::max(std::abs(d.x()), std::abs(d.y()));
+    EXPECT_NEAR(castRay(walls, Vec3(0, 0, 0.5), d, 100.0), expected, 2e-6) << theta;
+  }
+  EXPECT_NEAR(castRay(walls, Vec3(0.2, 0, 0.5), Vec3(0.6, 0, -0.8), 100.0), 0.5 / 0.8, 2e-6);
+}
+
+/// The ground, a 1 m cube centred at (3, 0, 0.5) turned 30° about z, and a ball of radius 0.25 at (0, 2, 0.25).
+struct World {
+  core::Model model;
+  core::State state;
+  World() : model(spec()), state(core::restState(model)) {
+    core::LinkState cube;
+    cube.p_WL = Vec3(3, 0, 0.5);
+    cube.q_WL = Quat(Eigen::AngleAxisd(M_PI / 6, kZ));
+    state.bodies[0] = core::bodyStateFromLink(model.body(0), cube);
+    core::LinkState ball;
+    ball.p_WL = Vec3(0, 2, 0.25);
+    state.bodies[1] = core::bodyStateFromLink(model.body(1), ball);
+  }
+  static core::ModelSpec spec() {
+    core::ModelSpec s;
+    s.bodies = {boxBody(Vec3(0.5, 0.5, 0.5)), ballBody(0.25)};
+    s.bodies[1].name = "ball";
+    s.scene = {Sdf::plane(kZ)};
+    return s;
+  }
+};
+
+TEST(CastRay, SeesBodiesWhereTheirStatePutsThemUnlessSkipped) {
+  const World w;
+  // Along x at 0.5 m: the cube's face turned 30° crosses y = 0 at x = 3 − 0.5 / cos 30°.
+  const core::RayHit cube = castRay(w.model, w.state, Vec3(0, 0, 0.5), kX, 100.0);
+  EXPECT_NEAR(cube.range, 3.0 - 0.5 / std::cos(M_PI / 6), 1e-12);
+  EXPECT_EQ(cube.body, 0);
+  const core::RayHit ball = castRay(w.model, w.state, Vec3(0, 0, 0.25), kY, 100.0);
+  EXPECT_NEAR(ball.range, 1.75, 1e-12);
+  EXPECT_EQ(ball.body, 1);
+  // Skipped, the ball is not seen; down, the ground is.
+  EXPECT_EQ(castRay(w.model, w.state, Vec3(0, 0, 0.25), kY, 100.0, {0, 1}).range, kNoHit);
+  const core::RayHit ground = castRay(w.model, w.state, Vec3(0, 0, 1), -kZ, 100.0);
+  EXPECT_NEAR(ground.range, 1.0, 1e-15);
+  EXPECT_EQ(ground.body, -1);
+}
+
+TEST(Lidar, ReadsAWallAsItsDistanceOverTheCosineAndRep117Beyond) {
+  core::ModelSpec s;
+  // A ball of radius 0.045 m 0.1 m to the sensor's right, nearer than min_range, and one far away (a world of one
+  // body builds no solid).
+  s.bodies = {ballBody(0.045), ballBody(0.045)};
+  s.bodies[1].name = "far";
+  s.scene = {Sdf::plane(-kX, Vec3(2, 0, 0))};
+  const core::Model model(s);
+  core::State state = core::restState(model);
+  core::LinkState near;
+  near.p_WL = Vec3(0, -0.1, 0);
+  state.bodies[0] = core::bodyStateFromLink(model.body(0), near);
+  near.p_WL = Vec3(0, 0, -50);
+  state.bodies[1] = core::bodyStateFromLink(model.body(1), near);
+  core::LidarSettings settings;
+  settings.samples = 181;
+  settings.min_angle = -M_PI / 2;
+  settings.max_angle = M_PI / 2;
+  settings.min_range = 0.1;
+  settings.max_range = 5.0;
+  core::Lidar lidar(settings);
+  EXPECT_DOUBLE_EQ(lidar.angleIncrement(), M_PI / 180);
+  std::vector<double> ranges;
+  lidar.scan(model, state, core::Pose{}, {}, ranges);
+  ASSERT_EQ(ranges.size(), 181u);
+  for (int k = 0; k < 181; ++k) {
+    const double theta = -M_PI / 2 + k * M_PI / 180, expected = 2.0 / std::cos(theta);
+    if (k < 90 && 0.1 * std::sin(k * M_PI / 180) < 0.045) {  // the ball's rays (k <= 26): too close
+      EXPECT_EQ(ranges[k], -kNoHit) << k;
+    } else if (expected <= 5.0) {
+      EXPECT_NEAR(ranges[k], expected, 1e-12) << k;
+    } else {
+      EXPECT_EQ(ranges[k], kNoHit) << k;  // past max_range
+    }
+  }
+  // Turned to face away, it sees nothing.
+  lidar.scan(model, state, core::Pose{Quat(Eigen::AngleAxisd(M_PI, kZ)), Vec3(0, 0, 0)}, {1, 1}, ranges);
+  for (const double r : ranges) EXPECT_EQ(r, kNoHit);
+}
+
+TEST(Lidar, NoiseIsSeededGaussianOfItsSigma) {
+  core::ModelSpec s;
+  s.bodies = {ballBody(0.1)};
+  s.scene = {Sdf::plane(kZ)};
+  const core::Model model(s);
+  const core::State state = core::restState(model);
+  core::LidarSettings settings;
+  settings.samples = 1000;
+  settings.vertical_samples = 10;
+  settings.min_angle = -1.0;
+  settings.max_angle = 1.0;
+  settings.vertical_min_angle = -1.2;
+  settings.vertical_max_angle = -0.8;
+  settings.noise = 0.01;
+  settings.seed = 7;
+  core::Lidar a(settings), b(settings);
+  EXPECT_NEAR(a.verticalIncrement(), 0.4 / 9, 1e-15);
+  const core::Pose X_WS{Quat::Identity(), Vec3(0, 0, 2)};
+  std::vector<double> ra, rb;
+  a.scan(model, state, X_WS, {1}, ra);
+  b.scan(model, state, X_WS, {1}, rb);
+  EXPECT_EQ(ra, rb);  // the same seed, the same scan
+  std::vector<double> residual;
+  for (std::size_t k = 0; k < ra.size(); ++k) {
+    const Vec3& d = a.direction(k);
+    residual.push_back(ra[k] - 2.0 / -d.z());
+  }
+  const auto [mean, sigma] = meanAndSigma(residual);
+  EXPECT_NEAR(mean, 0.0, 4.0 * 0.01 / std::sqrt(10000.0));
+  EXPECT_NEAR(sigma, 0.01, 0.0005);
+  a.scan(model, state, X_WS, {1}, rb);
+  EXPECT_NE(ra, rb);  // the next scan draws new noise
+  a.restart();
+  a.scan(model, state, X_WS, {1}, rb);
+  EXPECT_EQ(ra, rb);
+}
+
+TEST(Lidar, RefusesSettingsNamingTheField) {
+  const auto refused = [](core::LidarSettings s, const char* what) {
+    try {
+      core::Lidar lidar(s);
+      ADD_FAILURE() << "accepted; expected " << what;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  core::LidarSettings s;
+  s.samples = 0;
+  refused(s, "samples");
+  s = {};
+  s.min_angle = 1.0;
+  s.max_angle = 0.5;
+  refused(s, "min_angle and max_angle");
+  s = {};
+  s.max_range = std::numeric_limits<double>::infinity();
+  refused(s, "min_range < max_range");
+  s = {};
+  s.noise = -1.0;
+  refused(s, "noise");
+  s = {};
+  s.samples = 2000;
+  s.vertical_samples = 1000;
+  refused(s, "<= 1e6");
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
