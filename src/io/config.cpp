@@ -128,9 +128,9 @@ class BodyList {
 
   void add(const YAML::Node& entry, std::size_t i) {
     const std::string path = "bodies[" + std::to_string(i) + "]";
-    requireKnownKeys(
-        entry, path,
-        {"name", "urdf", "initial", "contact", "imu", "odom_noise", "cmd_vel", "controllers", "gazebo_ros_control"});
+    requireKnownKeys(entry, path,
+                     {"name", "urdf", "initial", "contact", "imu", "odom_noise", "cmd_vel", "controllers",
+                      "gazebo_ros_control", "lidar"});
     if (!entry["name"]) fail(path + ".name", "every body needs a name");
     if (!entry["urdf"]) fail(path + ".urdf", "every body needs a urdf (a file, or for the node a parameter)");
     BodyEntry b;
@@ -155,6 +155,7 @@ class BodyList {
     if (entry["odom_noise"]) b.odom_noise = parseOdomNoise(entry["odom_noise"], path + ".odom_noise");
     if (entry["cmd_vel"]) b.cmd_vel = parseDriver(entry["cmd_vel"], path + ".cmd_vel");
     if (entry["controllers"]) b.controllers = parseControllers(entry["controllers"], path + ".controllers");
+    if (entry["lidar"]) b.lidars = parseLidars(entry["lidar"], path + ".lidar");
     if (entry["gazebo_ros_control"]) {
       applyPidGains(entry["gazebo_ros_control"], path + ".gazebo_ros_control", b.controllers);
     }
@@ -193,9 +194,10 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
   c.base_dir = base_dir;
   c.model.scene = {core::Sdf::plane(Vec3::UnitZ())};  // the ground, z = 0
   if (!root || root.IsNull()) return c;
-  requireKnownKeys(root, "",
-                   {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver",
-                    "limits", "bodies", "imu", "odom_noise", "cmd_vel", "controllers", "gazebo_ros_control", "urdf"});
+  requireKnownKeys(
+      root, "",
+      {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver", "limits", "bodies",
+       "imu", "odom_noise", "cmd_vel", "controllers", "gazebo_ros_control", "urdf", "lidar"});
   parseSection(root, "", c.model);  // dt, gravity, gyroscopic
   if (const YAML::Node urdf = root["urdf"]) {
     requireKnownKeys(urdf, "urdf", {"repair"});
@@ -226,6 +228,10 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
   if (root["controllers"]) {
     if (root["bodies"]) fail("controllers", "with a bodies list, give each robot its own bodies[i].controllers");
     c.controllers = parseControllers(root["controllers"], "controllers");
+  }
+  if (root["lidar"]) {
+    if (root["bodies"]) fail("lidar", "with a bodies list, give each robot its own bodies[i].lidar");
+    c.lidars = parseLidars(root["lidar"], "lidar");
   }
   if (root["gazebo_ros_control"]) {
     if (root["bodies"]) {

@@ -1,8 +1,10 @@
 #include "device_config.h"
 
 #include <initializer_list>
+#include <string>
 #include <utility>
 
+#include "rigid_body_sim/core/bodies/ranges.h"
 #include "yaml_fields.h"
 
 namespace rigid_body_sim::io {
@@ -62,6 +64,55 @@ ImuEntry parseImu(const YAML::Node& node, const std::string& path) {
                {"orientation_noise", &s.orientation_noise}});
   readSeed(node, path, s.seed);
   return imu;
+}
+
+namespace {
+
+LidarEntry parseLidar(const YAML::Node& node, const std::string& path) {
+  if (!node.IsMap()) fail(path, "expected a map {link, topic, rate, samples, min_angle, max_angle, ...}");
+  requireKnownKeys(node, path,
+                   {"link", "topic", "rate", "samples", "min_angle", "max_angle", "vertical_samples",
+                    "vertical_min_angle", "vertical_max_angle", "min_range", "max_range", "noise", "seed"});
+  LidarEntry l;
+  l.key = path;
+  if (!node["link"]) fail(path + ".link", "is missing: the robot's link the lidar scans from");
+  l.link = text(node["link"], path + ".link");
+  if (node["topic"]) l.topic = text(node["topic"], path + ".topic");
+  core::LidarSettings& s = l.settings;
+  readNumbers(node, path,
+              {{"rate", &l.rate},
+               {"min_angle", &s.min_angle},
+               {"max_angle", &s.max_angle},
+               {"vertical_min_angle", &s.vertical_min_angle},
+               {"vertical_max_angle", &s.vertical_max_angle},
+               {"min_range", &s.min_range},
+               {"max_range", &s.max_range},
+               {"noise", &s.noise}});
+  if (node["samples"]) s.samples = integer(node["samples"], path + ".samples");
+  if (node["vertical_samples"]) s.vertical_samples = integer(node["vertical_samples"], path + ".vertical_samples");
+  readSeed(node, path, s.seed);
+  if (!(l.rate >= core::ranges::kMinRate && l.rate <= core::ranges::kMaxPublishRate)) {
+    fail(path + ".rate", "must be within [" + std::to_string(core::ranges::kMinRate) + ", " +
+                             std::to_string(core::ranges::kMaxPublishRate) + "] Hz");
+  }
+  checked([&] {
+    try {
+      core::checkLidar(s);
+    } catch (const std::invalid_argument& e) {  // "lidar: FIELD ...": named under the entry's key
+      throw std::invalid_argument("'" + path + "': " + std::string(e.what()).substr(7));
+    }
+  });
+  return l;
+}
+
+}  // namespace
+
+std::vector<LidarEntry> parseLidars(const YAML::Node& node, const std::string& path) {
+  if (!node.IsSequence()) return {parseLidar(node, path)};
+  std::vector<LidarEntry> out;
+  for (std::size_t k = 0; k < node.size(); ++k)
+    out.push_back(parseLidar(node[k], path + "[" + std::to_string(k) + "]"));
+  return out;
 }
 
 core::OdomNoiseSettings parseOdomNoise(const YAML::Node& node, const std::string& path) {

@@ -23,6 +23,9 @@ core::OdomNoiseSettings parseOdomNoise(const YAML::Node& node, const std::string
 core::DriverSettings parseDriver(const YAML::Node& node, const std::string& path);
 
 /// The core's checks of an IMU for a model of step `dt`, as a ConfigError naming `path`.
+/// `lidar` at `path`: one lidar's map, or a list of them (each key read or
+/// refused; the settings checked by core::checkLidar, refusals naming the key).
+std::vector<LidarEntry> parseLidars(const YAML::Node& node, const std::string& path);
 void validateImuEntry(const ImuEntry& imu, double dt, const std::string& path);
 
 }  // namespace rigid_body_sim::io

@@ -33,6 +33,7 @@ void SimNode::stepOnce() {
   ++steps_;
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
   sampleSensors();
+  range_sensors_->sample(sim_, steps_, stamp());
   sim_.contacts.update(state_, workspace_.contacts);
   schedule_.dropFinished(simTime());
   sim_.joint_efforts.dropFinished(simTime());

@@ -50,11 +50,14 @@ io::SceneSetup loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
   });
 }
 
-/// The simulation of `world`; its controllers go to `controls`, and what
-/// its loading repaired or warns of to the log, each message once.
-core::Simulation startOf(io::SceneSetup world, std::vector<io::RobotControls>& controls) {
+/// The simulation of `world`; its controllers go to `controls`, its lidars
+/// to `lidars`, and what its loading repaired or warns of to the log, each
+/// message once.
+core::Simulation startOf(io::SceneSetup world, std::vector<io::RobotControls>& controls,
+                         std::vector<std::vector<io::RobotLidar>>& lidars) {
   for (const std::string& note : world.notes) ROS_WARN("sim_node: %s", note.c_str());
   controls = std::move(world.controls);
+  lidars = std::move(world.lidars);
   return {std::move(world.scene), std::move(world.state)};
 }
 
@@ -77,7 +80,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     : nh_(nh),
       pnh_(private_nh),
       params_(readParams(private_nh)),
-      sim_(startOf(loadWorld(params_, nh_), start_controls_)),
+      sim_(startOf(loadWorld(params_, nh_), start_controls_, start_lidars_)),
       use_sim_time_(ros::param::param("/use_sim_time", false)),
       time_(model_.dt(), !use_sim_time_) {
   // ROS shut down while the world loaded (rosnode kill; SIGINT ends the
@@ -146,9 +149,15 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   robot_publisher_.emplace(nh_, sim_.scene, several, settings_.world_frame, model_.dt(), settings_.publish_rate,
                            [this](std::size_t r) { return commands_->jointStateRate(r); });
   checkRobotFrames(robot_publisher_->robots(), settings_.world_frame, ports_.frames());
+  range_sensors_.emplace(nh_, model_.dt());
+  start_lidars_.resize(sim_.scene.robots().size());
   for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
     robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
+    const std::string& name = sim_.scene.robots()[r].name;
+    range_sensors_->addRobot(name, several ? name + "/" : "", robot_publisher_->robots()[r].frame_prefix,
+                             start_lidars_[r]);
   }
+  start_lidars_.clear();
   services_ = {
       pnh_.advertiseService("apply_wrench", &LoadRequests::applyWrench, &load_requests_),
       pnh_.advertiseService("apply_impulse", &LoadRequests::applyImpulse, &load_requests_),
@@ -194,11 +203,13 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   robot_publisher_->addRobot(sim_.scene.robots()[r], prefix, hz, spawn.frame_prefix);
   commands_->addRobot(sim_, r, prefix, spawn.frame_prefix, std::move(controls));
   robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
+  range_sensors_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, {});
 }
 
 void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {
   robot_publisher_->removeRobot(r);
   commands_->removeRobot(r);
+  range_sensors_->removeRobot(r);
   robots_speed_limited_.erase(name);
 }
 

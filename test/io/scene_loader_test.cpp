@@ -105,6 +105,37 @@ TEST(SceneLoader, RefusesWhatAnEntryWouldNotRead) {
   refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, initial: {joint_positions: {elbow: 1}}}\n", "elbow");
   refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, imu: {}}\n", "'bodies[0].imu': robot 'swing'");
   refused("damping: {linear: 0.1}\nbodies:\n" + swing, "'damping': robot 'swing'");
+  // A lidar goes on a link the robot has, with settings a lidar can have.
+  refused("bodies:\n  - {name: a, urdf: box.urdf, lidar: {link: base_link}}\n",
+          "'bodies[0].lidar': body 'a' has no moving joints");
+  refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, lidar: {link: laser}}\n",
+          "'bodies[0].lidar.link': robot 'rover' has no link 'laser' (its links: 'base_link', 'caster', ");
+  refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, lidar: [{link: caster}, {samples: 3}]}\n",
+          "'bodies[0].lidar[1].link': is missing");
+  refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, lidar: {link: caster, min_range: 3, max_range: 2}}\n",
+          "'bodies[0].lidar': ranges must be 0 <= min_range < max_range");
+  refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, lidar: {link: caster, samples: 1.5}}\n",
+          "'bodies[0].lidar.samples'");
+  refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, lidar: {link: caster, beams: 3}}\n", "beams");
+}
+
+TEST(SceneLoader, ALidarSitsOnItsLinkOrWhereAFixedJointPutsIt) {
+  const io::SceneSetup s = io::buildScene(
+      config("bodies:\n  - {name: rover, urdf: diff_drive.urdf, lidar: [{link: left_wheel, topic: wheel_scan},"
+             " {link: caster, samples: 10, vertical_samples: 2, rate: 5}]}\n"));
+  ASSERT_EQ(s.lidars.size(), 1u);
+  ASSERT_EQ(s.lidars[0].size(), 2u);
+  const io::RobotLidar& wheel = s.lidars[0][0];
+  EXPECT_EQ(s.scene.robots()[0].model.links.at(static_cast<std::size_t>(wheel.link)).name, "left_wheel");
+  EXPECT_EQ(wheel.X_LS.translation, Vec3::Zero());
+  EXPECT_EQ(wheel.entry.topic, "wheel_scan");
+  // The caster is fixed to base_link 0.15 m behind and 0.04 m below its origin (urdf/diff_drive.urdf).
+  const io::RobotLidar& caster = s.lidars[0][1];
+  EXPECT_EQ(caster.link, 0);
+  EXPECT_EQ(caster.X_LS.translation, Vec3(-0.15, 0.0, -0.04));
+  EXPECT_EQ(caster.entry.rate, 5.0);
+  EXPECT_EQ(caster.entry.settings.vertical_samples, 2);
+  EXPECT_EQ(caster.entry.topic, "scan");
 }
 
 }  // namespace

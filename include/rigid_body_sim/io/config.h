@@ -17,6 +17,7 @@
 #include "rigid_body_sim/core/controllers/diff_drive.h"
 #include "rigid_body_sim/core/controllers/joint_control.h"
 #include "rigid_body_sim/core/devices/imu.h"
+#include "rigid_body_sim/core/devices/lidar.h"
 #include "rigid_body_sim/core/devices/odom_noise.h"
 #include "rigid_body_sim/core/devices/velocity_driver.h"
 
@@ -35,6 +36,18 @@ struct ImuEntry {
   std::string frame_id = "imu_link";  ///< under the body's prefix in a world ("NAME/imu_link")
   std::string link;                   ///< the link it is mounted on: "" the root link, or a link fixed to it
   std::string key = "imu";            ///< its config key, for messages ("bodies[2].imu")
+};
+
+/// A lidar on a robot's link (`lidar`, `bodies[i].lidar`: a map, or a list
+/// of them): it scans from the link's origin along its axes, and its scans
+/// are in the link's tf frame (mount it on a link of its own, as URDFs do
+/// with a laser_link; a link lumped into another by a fixed joint will do).
+struct LidarEntry {
+  core::LidarSettings settings;
+  std::string link;            ///< the robot's link it is on (required)
+  std::string topic = "scan";  ///< under the robot's prefix in a world ("NAME/scan")
+  double rate = 10.0;          ///< Hz of sim time
+  std::string key = "lidar";   ///< its config key, for messages ("bodies[2].lidar[0]")
 };
 
 /// A robot's joints at the start (`initial.joint_positions` and
@@ -98,6 +111,7 @@ struct BodyEntry {
   std::optional<core::OdomNoiseSettings> odom_noise;  ///< bodies[i].odom_noise
   std::optional<core::DriverSettings> cmd_vel;        ///< bodies[i].cmd_vel
   std::vector<ControllerEntry> controllers;           ///< bodies[i].controllers (a robot's)
+  std::vector<LidarEntry> lidars;                     ///< bodies[i].lidar (a robot's)
 };
 
 struct SimConfig {
@@ -117,6 +131,7 @@ struct SimConfig {
   std::optional<core::OdomNoiseSettings> odom_noise;
   std::optional<core::DriverSettings> cmd_vel;  ///< the one body's velocity driver
   std::vector<ControllerEntry> controllers;     ///< the one robot's `controllers`
+  std::vector<LidarEntry> lidars;               ///< the one robot's `lidar`
   /// urdf.repair: read the URDFs as Gazebo and KDL do, repairing what a
   /// strict reading refuses (io::UrdfOptions); false refuses it.
   bool urdf_repair = true;

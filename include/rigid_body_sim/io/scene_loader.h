@@ -10,6 +10,7 @@
 #include "rigid_body_sim/core/articulations/scene.h"
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/io/controllers.h"
+#include "rigid_body_sim/io/lidar_mount.h"
 
 namespace rigid_body_sim::io {
 
@@ -22,6 +23,8 @@ struct SceneSetup {
   std::vector<int> entry;
   /// Per robot: its controllers (`controllers`, `bodies[i].controllers`).
   std::vector<RobotControls> controls;
+  /// Per robot: its lidars (`lidar`, `bodies[i].lidar`), on its links.
+  std::vector<std::vector<RobotLidar>> lidars;
   /// What loading it repaired or warns of, one message per URDF or start,
   /// for the caller to log once (io::UrdfOptions::notes).
   std::vector<std::string> notes;

@@ -44,6 +44,7 @@
 #include "rigid_body_sim/ros/markers.h"
 #include "rigid_body_sim/ros/pacer.h"
 #include "rigid_body_sim/ros/params.h"
+#include "rigid_body_sim/ros/range_sensors.h"
 #include "rigid_body_sim/ros/robot_commands.h"
 #include "rigid_body_sim/ros/robot_ports.h"
 #include "rigid_body_sim/ros/sim_clock.h"
@@ -123,6 +124,8 @@ class SimNode {
   const NodeSettings& settings_ = params_.node;  ///< ~physics changes params_.node
   /// The robots' controllers as the world was loaded, until commands_ takes them.
   std::vector<io::RobotControls> start_controls_;
+  /// The robots' lidars as the world was loaded, until range_sensors_ takes them.
+  std::vector<std::vector<io::RobotLidar>> start_lidars_;
   /// The model and every table in its bodies' order: a world edit goes through it once.
   core::Simulation sim_;
   const core::Model& model_ = sim_.model();
@@ -132,6 +135,7 @@ class SimNode {
   core::Loads loads_;
   std::vector<core::ArticulationLoads> robot_loads_;  ///< per robot, its controllers' efforts
   std::optional<RobotCommands> commands_;             ///< the robots' controllers and their topics
+  std::optional<RangeSensors> range_sensors_;         ///< the robots' lidars
 
   /// Every body's frames, topics and devices, and its names: a spawn, a
   /// delete and a reset go through it (body_ports.h).
@@ -160,6 +164,7 @@ class SimNode {
        [this] {
          rebaseClock();
          commands_->restart(sim_);  // nothing drives a reset robot back (gazebo_ros_pkgs #1311)
+         range_sensors_->restart();
        }}};
   /// set_model_configuration, get_joint_properties.
   JointRequests joint_requests_{sim_, time_, [this](std::size_t r) {

@@ -1,0 +1,25 @@
+// Where a robot's lidars sit: each config entry (io::LidarEntry) on one of
+// its links, or on a link a fixed joint lumped into one (as a laser_link
+// usually is). ROS-free.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/core/articulations/articulation.h"
+#include "rigid_body_sim/io/config.h"
+
+namespace rigid_body_sim::io {
+
+/// A lidar on link `link` of a robot, its frame at X_LS in that link's.
+struct RobotLidar {
+  LidarEntry entry;
+  int link = 0;     ///< the moving link (index in the model) that carries it
+  core::Pose X_LS;  ///< the sensor frame (entry.link's) in the moving link's frame
+};
+
+/// `entries` on `model`'s links. Refused (ConfigError naming `entries[k].key`.link):
+/// a link the robot does not have (the message lists its links).
+std::vector<RobotLidar> mountLidars(const std::vector<LidarEntry>& entries, const core::ArticulationModel& model);
+
+}  // namespace rigid_body_sim::io

@@ -1,0 +1,63 @@
+// The robots' lidars in the node: each scans at its rate of sim time from
+// its link (core/devices/lidar.h), against the scene, the free bodies and
+// every robot's links but its own, and publishes sensor_msgs/LaserScan
+// (one fan) or sensor_msgs/PointCloud2 (several fans: x, y, z of each
+// return in the sensor's frame) on its topic, in its link's tf frame,
+// stamped on the node's clock. A scan nobody subscribes to is not cast.
+// The messages are built by plain functions (tested without a master).
+#pragma once
+
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <sensor_msgs/PointCloud2.h>
+
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/core/articulations/articulation_dynamics.h"
+#include "rigid_body_sim/core/step/simulation.h"
+#include "rigid_body_sim/io/lidar_mount.h"
+#include "rigid_body_sim/ros/counted_publisher.h"
+
+namespace rigid_body_sim::node {
+
+/// sensor_msgs/LaserScan of one fan: REP 117's ±inf kept, scan_time 1/rate.
+sensor_msgs::LaserScan scanMessage(const core::Lidar& lidar, const std::vector<double>& ranges, double rate,
+                                   const std::string& frame, const ros::Time& stamp);
+/// sensor_msgs/PointCloud2 of every finite return (x, y, z float32 in the sensor's frame, one row).
+sensor_msgs::PointCloud2 cloudMessage(const core::Lidar& lidar, const std::vector<double>& ranges,
+                                      const std::string& frame, const ros::Time& stamp);
+
+class RangeSensors {
+ public:
+  RangeSensors(const ros::NodeHandle& nh, double dt) : nh_(nh), dt_(dt) {}
+  /// Robot r (the last) and its lidars: their topics under `prefix`, frames after `frame_prefix`.
+  void addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
+                const std::vector<io::RobotLidar>& lidars);
+  /// Robot r deleted: its lidars' topics close; the later robots move down by one.
+  void removeRobot(std::size_t r) { robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r)); }
+  /// After a reset: each lidar's noise from its seed again.
+  void restart();
+  /// The scans due at step `steps` of `sim`'s state, stamped `stamp`.
+  void sample(const core::Simulation& sim, long long steps, const ros::Time& stamp);
+
+ private:
+  struct Port {
+    core::Lidar lidar;
+    int link = 0;
+    core::Pose X_LS;
+    double rate = 10.0;
+    long long every = 1;
+    std::string frame;
+    CountedPublisher publisher;
+  };
+  ros::NodeHandle nh_;
+  double dt_;
+  std::vector<std::vector<Port>> robots_;
+  // Reused by every scan.
+  core::ArticulationKinematics kin_;
+  std::vector<double> ranges_;
+  std::vector<char> skip_;
+};
+
+}  // namespace rigid_body_sim::node
