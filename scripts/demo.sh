@@ -3,10 +3,13 @@
 # (launch/sim.launch: a body dropped from 1 m, turning, onto the ground), and
 # prints the body's pose a few times a second from t = 0 until Ctrl-C. Extra
 # arguments go to roslaunch, e.g. urdf:=$PWD/urdf/bunny.urdf rviz:=true.
-# robot:=arm2 (the two-link arm under a trajectory controller) or
-# robot:=diff_drive (the wheeled base under wheel velocity controllers)
-# launches that robot instead and drives it (scripts/drive_robot), printing
-# its joints, or its base's pose, a few times a second.
+# robot:=arm2 (the two-link arm under a trajectory controller),
+# robot:=diff_drive (the wheeled base under wheel velocity controllers) or
+# robot:=rover (the wheeled base with a laser, under a DiffDriveController,
+# in a room of boxes) launches that robot instead and drives it
+# (scripts/drive_robot), printing its joints, or its base's pose (the
+# rover's odometry against the ground truth, and the nearest obstacle its
+# scan sees), a few times a second. rviz:=true shows it (and the scan).
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 rbs_install_packages
@@ -20,7 +23,8 @@ for a in "$@"; do
   case "$a" in
     robot:=arm2) robot=arm2 args+=("urdf:=$RBS_ROOT/urdf/arm2.urdf" "config:=$RBS_ROOT/config/arm2_trajectory.yaml") ;;
     robot:=diff_drive) robot=diff_drive args+=("urdf:=$RBS_ROOT/urdf/diff_drive.urdf" "config:=$RBS_ROOT/config/diff_drive.yaml") ;;
-    robot:=*) echo "demo: ${a}: the shipped robots are robot:=arm2 and robot:=diff_drive" >&2; exit 2 ;;
+    robot:=rover) robot=rover args+=("urdf:=$RBS_ROOT/urdf/diff_drive_lidar.urdf" "config:=$RBS_ROOT/config/rover.yaml") ;;
+    robot:=*) echo "demo: ${a}: the shipped robots are robot:=arm2, robot:=diff_drive and robot:=rover" >&2; exit 2 ;;
     config:=*) config_given=1 args+=("$a") ;;
     *) args+=("$a") ;;
   esac

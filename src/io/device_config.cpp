@@ -70,14 +70,22 @@ namespace {
 
 LidarEntry parseLidar(const YAML::Node& node, const std::string& path) {
   if (!node.IsMap()) fail(path, "expected a map {link, topic, rate, samples, min_angle, max_angle, ...}");
-  requireKnownKeys(node, path,
-                   {"link", "topic", "rate", "samples", "min_angle", "max_angle", "vertical_samples",
-                    "vertical_min_angle", "vertical_max_angle", "min_range", "max_range", "noise", "seed"});
+  requireKnownKeys(
+      node, path,
+      {"link", "frame_id", "pose", "topic", "rate", "samples", "min_angle", "max_angle", "vertical_samples",
+       "vertical_min_angle", "vertical_max_angle", "min_range", "max_range", "noise", "seed"});
   LidarEntry l;
   l.key = path;
   if (!node["link"]) fail(path + ".link", "is missing: the robot's link the lidar scans from");
   l.link = text(node["link"], path + ".link");
   if (node["topic"]) l.topic = text(node["topic"], path + ".topic");
+  if (node["frame_id"]) l.frame_id = text(node["frame_id"], path + ".frame_id");
+  if (node["pose"]) {
+    const YAML::Node pose = node["pose"];
+    requireKnownKeys(pose, path + ".pose", {"position", "rpy", "quaternion"});
+    if (pose["position"]) l.pose.translation = vec3(pose["position"], path + ".pose.position");
+    l.pose.rotation = orientation(pose, path + ".pose");
+  }
   core::LidarSettings& s = l.settings;
   readNumbers(node, path,
               {{"rate", &l.rate},

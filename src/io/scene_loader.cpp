@@ -16,15 +16,28 @@
 namespace rigid_body_sim::io {
 namespace {
 
-/// What one URDF file describes.
-using Described = std::variant<core::BodySpec, core::ArticulationModel>;
+/// What one URDF file describes: a body, or a robot and the lidars of its Gazebo markup.
+struct Described {
+  std::variant<core::BodySpec, core::ArticulationModel> what;
+  std::vector<LidarEntry> lidars;
+};
 
 /// A body, or a robot when the URDF has a moving joint.
-Described describe(const UrdfText& text, const UrdfOptions& options) {
+Described describe(const UrdfText& text, UrdfOptions options) {
+  Described d;
   if (describesRobot(text.xml, text.source)) {
-    return loadArticulationString(text.xml, text.source, text.base_dir, options);
+    options.lidars = &d.lidars;
+    d.what = loadArticulationString(text.xml, text.source, text.base_dir, options);
+  } else {
+    d.what = loadUrdfString(text.xml, text.source, text.base_dir, options);
   }
-  return loadUrdfString(text.xml, text.source, text.base_dir, options);
+  return d;
+}
+
+/// The config's lidars and then the URDF's.
+std::vector<LidarEntry> allLidars(std::vector<LidarEntry> config, const std::vector<LidarEntry>& urdf) {
+  config.insert(config.end(), urdf.begin(), urdf.end());
+  return config;
 }
 
 /// Each URDF of the bodies list read and parsed once (a world of 10,000
@@ -110,7 +123,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     const BodyEntry& e = config.bodies[i];
     const std::string key = "bodies[" + std::to_string(i) + "]";
     const Described& described = files.get(e);
-    if (const auto* body = std::get_if<core::BodySpec>(&described)) {
+    if (const auto* body = std::get_if<core::BodySpec>(&described.what)) {
       if (!e.controllers.empty()) {
         throw ConfigError("config key '" + key + ".controllers': body '" + e.name + "' has no moving joints");
       }
@@ -132,13 +145,13 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
       body_starts.push_back(e.initial);
       continue;
     }
-    core::ArticulationModel model = std::get<core::ArticulationModel>(described);
+    core::ArticulationModel model = std::get<core::ArticulationModel>(described.what);
     model.name = e.name;
     checkRobotSettings(config, e.name);
     refuseBodyDevices(key + ".", e.name, e.imu.has_value(), e.odom_noise.has_value(), e.cmd_vel.has_value());
     robot_starts.push_back(robotStart(model, e.initial, e.initial_joints, config.model.limits, key + ".initial"));
     controls.push_back(buildControls(e.controllers, model));
-    lidars.push_back(mountLidars(e.lidars, model));
+    lidars.push_back(mountLidars(allLidars(e.lidars, described.lidars), model));
     entry.push_back(-1 - static_cast<int>(robots.size()));
     robots.push_back({e.name, std::move(model), e.friction, e.restitution});
   }
@@ -163,7 +176,7 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
   if (!single) throw ConfigError("bodies: the config lists no bodies, and no single body was given");
   std::vector<std::string> notes;
   Described described = describe(single(), UrdfOptions{config.urdf_repair, &notes});
-  if (auto* body = std::get_if<core::BodySpec>(&described)) {
+  if (auto* body = std::get_if<core::BodySpec>(&described.what)) {
     if (!config.controllers.empty()) {
       throw ConfigError("config key 'controllers': body '" + body->name + "' has no moving joints");
     }
@@ -177,13 +190,13 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
     core::SceneState state{std::move(world.state), {}};
     return {std::move(scene), std::move(state), {0}, {}, {}, std::move(notes)};
   }
-  core::ArticulationModel model = std::move(std::get<core::ArticulationModel>(described));
+  core::ArticulationModel model = std::move(std::get<core::ArticulationModel>(described.what));
   checkRobotSettings(config, model.name);
   refuseBodyDevices("", model.name, config.imu.has_value(), config.odom_noise.has_value(), config.cmd_vel.has_value());
   core::ArticulationState start =
       robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
   RobotControls controls = buildControls(config.controllers, model);
-  std::vector<RobotLidar> lidars = mountLidars(config.lidars, model);
+  std::vector<RobotLidar> lidars = mountLidars(allLidars(config.lidars, described.lidars), model);
   core::ModelSpec spec = config.model;
   spec.bodies.clear();
   const std::string name = model.name;

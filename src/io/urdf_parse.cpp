@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "gazebo_sensors.h"
 #include "rigid_body_sim/core/bodies/ranges.h"
 
 namespace rigid_body_sim::io::detail {
@@ -254,7 +255,12 @@ void unreadMarkup(const TiXmlElement& robot, ParsedUrdf& out) {
       } else if (tag == "plugin") {
         kind = "<plugin> " + attribute(*e, "filename");
       }
-      add(kind, !reference.empty() ? reference : tag == "plugin" ? attribute(*e, "name") : "the robot");
+      const std::string name = !reference.empty() ? reference : tag == "plugin" ? attribute(*e, "name") : "the robot";
+      if (tag == "sensor" && readsSensor(*e)) {  // a lidar (gazebo_sensors.h), for a robot
+        out.lidar_markup[kind].push_back(name);
+        continue;
+      }
+      add(kind, name);
     }
   }
   for (const TiXmlElement* t = robot.FirstChildElement("transmission"); t; t = t->NextSiblingElement("transmission")) {
@@ -283,6 +289,10 @@ ParsedUrdf parseUrdf(const std::string& xml) {
     if (problem.empty()) problem = gazeboFriction(*robot, out);
     if (!problem.empty()) throw std::invalid_argument(problem);
     unreadMarkup(*robot, out);
+    out.lidars = gazeboLidars(*robot, [&out](const std::string& kind, const std::string& name) {
+      std::vector<std::string>& names = out.unread_markup[kind];
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    });
     if (xml.find("capsule") != std::string::npos && capsulesAsCylinders(*robot, out.capsules)) {
       TiXmlPrinter printer;
       doc.Accept(&printer);

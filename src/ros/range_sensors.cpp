@@ -56,10 +56,11 @@ void RangeSensors::addRobot(const std::string& robot, const std::string& prefix,
                             const std::vector<io::RobotLidar>& lidars) {
   std::vector<Port> ports;
   for (const io::RobotLidar& l : lidars) {
-    Port p{core::Lidar(l.entry.settings), l.link, l.X_LS, l.entry.rate, 1, frame_prefix + l.entry.link, {}};
+    const std::string& frame = l.entry.frame_id.empty() ? l.entry.link : l.entry.frame_id;
+    Port p{core::Lidar(l.entry.settings), l.link, l.X_LS, l.entry.rate, 1, frame_prefix + frame, {}};
     p.every = std::max(1LL, std::llround(1.0 / (l.entry.rate * dt_)));
     const bool cloud = l.entry.settings.vertical_samples > 1;
-    const std::string topic = prefix + l.entry.topic;
+    const std::string topic = l.entry.topic.front() == '/' ? l.entry.topic : prefix + l.entry.topic;  // absolute
     p.publisher = cloud ? CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh_, topic, 10)
                         : CountedPublisher::advertise<sensor_msgs::LaserScan>(nh_, topic, 10);
     ROS_INFO("sim_node: robot '%s': a lidar of %zu rays on '%s', %s on %s at %g Hz", robot.c_str(), p.lidar.rayCount(),

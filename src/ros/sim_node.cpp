@@ -203,7 +203,7 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   robot_publisher_->addRobot(sim_.scene.robots()[r], prefix, hz, spawn.frame_prefix);
   commands_->addRobot(sim_, r, prefix, spawn.frame_prefix, std::move(controls));
   robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
-  range_sensors_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, {});
+  range_sensors_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.lidars);
 }
 
 void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {

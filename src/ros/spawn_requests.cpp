@@ -113,8 +113,12 @@ void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf,
                                      {"cmd_vel", !req.cmd_vel.empty()}}) {
     if (given) throw std::invalid_argument(std::string(field) + ": a robot takes no devices yet");
   }
-  core::ArticulationModel model = io::loadArticulationString(urdf.xml, urdf.source, urdf.base_dir, options);
+  std::vector<io::LidarEntry> lidars;
+  io::UrdfOptions with_lidars = options;
+  with_lidars.lidars = &lidars;
+  core::ArticulationModel model = io::loadArticulationString(urdf.xml, urdf.source, urdf.base_dir, with_lidars);
   model.name = req.name;
+  spawn.lidars = io::mountLidars(lidars, model);
   if (model.fixed_base &&
       (fromVector3(req.twist.linear) != core::Vec3::Zero() || fromVector3(req.twist.angular) != core::Vec3::Zero())) {
     throw std::invalid_argument("twist: robot '" + req.name +

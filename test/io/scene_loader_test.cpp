@@ -140,3 +140,99 @@ TEST(SceneLoader, ALidarSitsOnItsLinkOrWhereAFixedJointPutsIt) {
 
 }  // namespace
 }  // namespace rigid_body_sim::test
+
+namespace rigid_body_sim::test {
+namespace {
+
+/// A base with a wheel and a laser_link fixed 0.1 m ahead and 0.2 m up, with `markup` inside its <robot>.
+io::UrdfText laserRobot(const std::string& markup) {
+  const std::string inertial =
+      "<inertial><mass value='1'/><inertia ixx='0.01' iyy='0.01' izz='0.01' ixy='0' ixz='0' iyz='0'/></inertial>";
+  return {"<robot name='scout'><link name='base_link'>" + inertial +
+              "<collision><geometry><box size='0.4 0.3 0.1'/></geometry></collision></link>"
+              "<joint name='axle' type='continuous'><parent link='base_link'/><child link='wheel'/>"
+              "<origin xyz='0 0.2 0'/><axis xyz='0 1 0'/></joint><link name='wheel'>" +
+              inertial +
+              "</link><joint name='laser_mount' type='fixed'><parent link='base_link'/><child link='laser_link'/>"
+              "<origin xyz='0.1 0 0.2'/></joint><link name='laser_link'/>" +
+              markup + "</robot>",
+          "scout.urdf", ""};
+}
+
+const std::string kLaser =
+    "<gazebo reference='laser_link'><sensor type='ray' name='front'><pose>0 0 0.05 0 0 1.5707963267948966</pose>"
+    "<update_rate>20</update_rate><ray><scan><horizontal><samples>180</samples><resolution>2</resolution>"
+    "<min_angle>-1.5</min_angle><max_angle>1.5</max_angle></horizontal></scan>"
+    "<range><min>0.2</min><max>12</max><resolution>0.01</resolution></range>"
+    "<noise><type>gaussian</type><mean>0.0</mean><stddev>0.01</stddev></noise></ray>"
+    "<plugin name='laser' filename='libgazebo_ros_laser.so'><topicName>/scout/scan</topicName>"
+    "<frameName>laser_link</frameName></plugin></sensor></gazebo>";
+
+TEST(GazeboLidars, ARaySensorWithARosPluginIsALidarWithItsMarkupsSettings) {
+  const std::string velodyne =
+      "<gazebo reference='base_link'><sensor type='gpu_ray' name='velo'><ray><scan><horizontal><samples>100</samples>"
+      "<min_angle>-3.14</min_angle><max_angle>3.14</max_angle></horizontal><vertical><samples>16</samples>"
+      "<min_angle>-0.26</min_angle><max_angle>0.26</max_angle></vertical></scan><range><min>0.3</min><max>100</max>"
+      "</range></ray><plugin name='v' filename='libgazebo_ros_velodyne_gpu_laser.so'><topicName>velodyne_points"
+      "</topicName><min_range>0.9</min_range><max_range>130</max_range><gaussianNoise>0.008</gaussianNoise>"
+      "</plugin></sensor></gazebo><gazebo reference='base_link'><sensor type='camera' name='cam'/></gazebo>";
+  const io::SceneSetup s = io::loadScene(config(""), [&] { return laserRobot(kLaser + velodyne); });
+  ASSERT_EQ(s.lidars.size(), 1u);
+  ASSERT_EQ(s.lidars[0].size(), 2u);
+  const io::RobotLidar& laser = s.lidars[0][0];
+  EXPECT_EQ(laser.link, 0);  // laser_link is lumped into base_link
+  EXPECT_LT((laser.X_LS.translation - Vec3(0.1, 0.0, 0.25)).norm(), 1e-15);
+  EXPECT_LT((laser.X_LS.rotation * Vec3::UnitX() - Vec3::UnitY()).norm(), 1e-15);  // turned a quarter about z
+  const core::LidarSettings& l = laser.entry.settings;
+  EXPECT_EQ(l.samples, 360);  // samples x resolution
+  EXPECT_EQ(l.min_angle, -1.5);
+  EXPECT_EQ(l.max_angle, 1.5);
+  EXPECT_EQ(l.min_range, 0.2);
+  EXPECT_EQ(l.max_range, 12.0);
+  EXPECT_EQ(l.noise, 0.01);
+  EXPECT_EQ(laser.entry.rate, 20.0);
+  EXPECT_EQ(laser.entry.topic, "/scout/scan");
+  EXPECT_EQ(laser.entry.frame_id, "laser_link");
+  const io::LidarEntry& velo = s.lidars[0][1].entry;
+  EXPECT_EQ(velo.settings.samples, 100);
+  EXPECT_EQ(velo.settings.vertical_samples, 16);
+  EXPECT_EQ(velo.settings.vertical_min_angle, -0.26);
+  EXPECT_EQ(velo.settings.min_range, 0.9);  // the plugin's over the sensor's
+  EXPECT_EQ(velo.settings.max_range, 130.0);
+  EXPECT_EQ(velo.settings.noise, 0.008);
+  EXPECT_EQ(velo.topic, "velodyne_points");
+  EXPECT_EQ(velo.frame_id, "");
+  // The camera is named as markup nothing runs; the lidars are not.
+  std::string markup;
+  for (const std::string& note : s.notes) {
+    if (note.find("markup for Gazebo") != std::string::npos) markup = note;
+  }
+  EXPECT_NE(markup.find("<sensor type=\"camera\"> ('base_link')"), std::string::npos) << markup;
+  EXPECT_EQ(markup.find("ray"), std::string::npos) << markup;
+}
+
+TEST(GazeboLidars, ANumberTheMarkupCannotHoldIsRefusedNamingIt) {
+  std::string bad = kLaser;
+  bad.replace(bad.find("<samples>180"), 12, "<samples>many");
+  try {
+    io::loadScene(config(""), [&] { return laserRobot(bad); });
+    ADD_FAILURE() << "accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "<gazebo reference=\"laser_link\"> <sensor name=\"front\"> <scan/horizontal/samples> = 'many'"),
+              std::string::npos)
+        << e.what();
+  }
+  // A lidar's settings it cannot have (min above max) are refused naming the markup.
+  std::string wrong = kLaser;
+  wrong.replace(wrong.find("<min>0.2"), 8, "<min>20");
+  try {
+    io::loadScene(config(""), [&] { return laserRobot(wrong); });
+    ADD_FAILURE() << "accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("<sensor name=\"front\">"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test

@@ -39,12 +39,16 @@ struct ImuEntry {
 };
 
 /// A lidar on a robot's link (`lidar`, `bodies[i].lidar`: a map, or a list
-/// of them): it scans from the link's origin along its axes, and its scans
-/// are in the link's tf frame (mount it on a link of its own, as URDFs do
-/// with a laser_link; a link lumped into another by a fixed joint will do).
+/// of them; or a URDF's Gazebo `<sensor type="ray">`): it scans from `pose`
+/// in the link (a link lumped into another by a fixed joint will do, as a
+/// laser_link), its scans in the link's tf frame or `frame_id`.
 struct LidarEntry {
   core::LidarSettings settings;
-  std::string link;            ///< the robot's link it is on (required)
+  std::string link;  ///< the robot's link it is on (required)
+  core::Pose pose;   ///< the sensor in that link's frame (`pose`, as Gazebo's <sensor><pose>)
+  /// The scans' tf frame, after the robot's tf_prefix; "": the link's. As
+  /// in Gazebo, ranges are measured from `pose` whatever frame they name.
+  std::string frame_id;
   std::string topic = "scan";  ///< under the robot's prefix in a world ("NAME/scan")
   double rate = 10.0;          ///< Hz of sim time
   std::string key = "lidar";   ///< its config key, for messages ("bodies[2].lidar[0]")

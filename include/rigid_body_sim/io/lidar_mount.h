@@ -15,11 +15,12 @@ namespace rigid_body_sim::io {
 struct RobotLidar {
   LidarEntry entry;
   int link = 0;     ///< the moving link (index in the model) that carries it
-  core::Pose X_LS;  ///< the sensor frame (entry.link's) in the moving link's frame
+  core::Pose X_LS;  ///< the sensor (at entry.pose in entry.link) in the moving link's frame
 };
 
-/// `entries` on `model`'s links. Refused (ConfigError naming `entries[k].key`.link):
-/// a link the robot does not have (the message lists its links).
+/// `entries` on `model`'s links. Refused (ConfigError naming `entries[k].key`):
+/// a link the robot does not have (the message lists its links), settings
+/// core::checkLidar refuses, a rate outside the publish rates.
 std::vector<RobotLidar> mountLidars(const std::vector<LidarEntry>& entries, const core::ArticulationModel& model);
 
 }  // namespace rigid_body_sim::io

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rigid_body_sim/core/bodies/model.h"
+#include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::io {
 
@@ -31,6 +32,10 @@ struct UrdfOptions {
   /// Where a load that repaired something says what, in one message naming
   /// every link and figure (appended; nothing when nothing was repaired).
   std::vector<std::string>* notes = nullptr;
+  /// Where a robot's load puts the lidars its Gazebo markup declares
+  /// (`<sensor type="ray">` with a ROS plugin); null: they are named with
+  /// the markup nothing reads (a free body's: no lidar on a body yet; rbsim's).
+  std::vector<LidarEntry>* lidars = nullptr;
 };
 
 /// The rigid body described by a URDF document.

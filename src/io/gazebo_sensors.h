@@ -1,0 +1,34 @@
+// The sensors of a URDF's Gazebo markup that this project runs, read as
+// Gazebo reads them (private to io): `<gazebo reference="LINK"><sensor
+// type="ray">` (or `gpu_ray`) with gazebo_ros's laser plugins
+// (libgazebo_ros_laser.so, libgazebo_ros_gpu_laser.so: a LaserScan) or the
+// Velodyne ones (libgazebo_ros_velodyne_laser.so, ..._gpu_laser.so: a
+// PointCloud2), each turned into a lidar entry on LINK.
+#pragma once
+
+#include <tinyxml.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/io/config.h"
+
+namespace rigid_body_sim::io::detail {
+
+/// Whether `sensor` (a <sensor> element) is one gazeboLidars reads.
+bool readsSensor(const TiXmlElement& sensor);
+
+/// The lidars of `robot`'s markup: the sensor's `<pose>` (x y z roll pitch
+/// yaw) in LINK, `<update_rate>`, `<ray><scan><horizontal>` and
+/// `<vertical>` (`samples` times `resolution`, `min_angle`, `max_angle`),
+/// `<range>` (`min`, `max`), `<noise>` (`stddev`), and the plugin's
+/// `topicName` and `frameName` (a Velodyne plugin's `min_range`,
+/// `max_range` and `gaussianNoise` over the sensor's). Each entry's key
+/// names its markup. What it does not run (a noise's non-zero mean) is
+/// told to `unread` (kind, link). Throws std::invalid_argument naming the
+/// element: a number it cannot read.
+using Unread = std::function<void(const std::string& kind, const std::string& name)>;
+std::vector<LidarEntry> gazeboLidars(const TiXmlElement& robot, const Unread& unread);
+
+}  // namespace rigid_body_sim::io::detail
