@@ -130,7 +130,7 @@ class BodyList {
     const std::string path = "bodies[" + std::to_string(i) + "]";
     requireKnownKeys(entry, path,
                      {"name", "urdf", "initial", "contact", "imu", "odom_noise", "cmd_vel", "controllers",
-                      "gazebo_ros_control", "lidar"});
+                      "gazebo_ros_control", "lidar", "depth_camera"});
     if (!entry["name"]) fail(path + ".name", "every body needs a name");
     if (!entry["urdf"]) fail(path + ".urdf", "every body needs a urdf (a file, or for the node a parameter)");
     BodyEntry b;
@@ -156,6 +156,7 @@ class BodyList {
     if (entry["cmd_vel"]) b.cmd_vel = parseDriver(entry["cmd_vel"], path + ".cmd_vel");
     if (entry["controllers"]) b.controllers = parseControllers(entry["controllers"], path + ".controllers");
     if (entry["lidar"]) b.lidars = parseLidars(entry["lidar"], path + ".lidar");
+    if (entry["depth_camera"]) b.cameras = parseDepthCameras(entry["depth_camera"], path + ".depth_camera");
     if (entry["gazebo_ros_control"]) {
       applyPidGains(entry["gazebo_ros_control"], path + ".gazebo_ros_control", b.controllers);
     }
@@ -197,7 +198,7 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
   requireKnownKeys(
       root, "",
       {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver", "limits", "bodies",
-       "imu", "odom_noise", "cmd_vel", "controllers", "gazebo_ros_control", "urdf", "lidar"});
+       "imu", "odom_noise", "cmd_vel", "controllers", "gazebo_ros_control", "urdf", "lidar", "depth_camera"});
   parseSection(root, "", c.model);  // dt, gravity, gyroscopic
   if (const YAML::Node urdf = root["urdf"]) {
     requireKnownKeys(urdf, "urdf", {"repair"});
@@ -232,6 +233,10 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
   if (root["lidar"]) {
     if (root["bodies"]) fail("lidar", "with a bodies list, give each robot its own bodies[i].lidar");
     c.lidars = parseLidars(root["lidar"], "lidar");
+  }
+  if (root["depth_camera"]) {
+    if (root["bodies"]) fail("depth_camera", "with a bodies list, give each robot its own bodies[i].depth_camera");
+    c.cameras = parseDepthCameras(root["depth_camera"], "depth_camera");
   }
   if (root["gazebo_ros_control"]) {
     if (root["bodies"]) {

@@ -68,6 +68,61 @@ ImuEntry parseImu(const YAML::Node& node, const std::string& path) {
 
 namespace {
 
+/// `pose` ({position, rpy | quaternion}) at `path`.
+core::Pose parsePose(const YAML::Node& pose, const std::string& path) {
+  requireKnownKeys(pose, path, {"position", "rpy", "quaternion"});
+  core::Pose X;
+  if (pose["position"]) X.translation = vec3(pose["position"], path + ".position");
+  X.rotation = orientation(pose, path);
+  return X;
+}
+
+/// `rate` within the publish rates.
+void checkRate(double rate, const std::string& key) {
+  if (!(rate >= core::ranges::kMinRate && rate <= core::ranges::kMaxPublishRate)) {
+    fail(key, "must be within [" + std::to_string(core::ranges::kMinRate) + ", " +
+                  std::to_string(core::ranges::kMaxPublishRate) + "] Hz");
+  }
+}
+
+DepthCameraEntry parseDepthCamera(const YAML::Node& node, const std::string& path) {
+  if (!node.IsMap()) fail(path, "expected a map {link, topic, rate, width, height, hfov, ...}");
+  requireKnownKeys(node, path,
+                   {"link", "frame_id", "pose", "topic", "rate", "width", "height", "hfov", "min_depth", "max_depth",
+                    "noise", "seed", "encoding"});
+  DepthCameraEntry c;
+  c.key = path;
+  if (!node["link"]) fail(path + ".link", "is missing: the robot's link the camera looks from");
+  c.link = text(node["link"], path + ".link");
+  if (node["topic"]) c.topic = text(node["topic"], path + ".topic");
+  if (node["frame_id"]) c.frame_id = text(node["frame_id"], path + ".frame_id");
+  if (node["pose"]) c.pose = parsePose(node["pose"], path + ".pose");
+  if (node["encoding"]) {
+    const std::string e = text(node["encoding"], path + ".encoding");
+    if (e != "32FC1" && e != "16UC1") fail(path + ".encoding", "'" + e + "': 32FC1 (m) or 16UC1 (mm)");
+    c.millimetres = e == "16UC1";
+  }
+  core::DepthCameraSettings& s = c.settings;
+  readNumbers(node, path,
+              {{"rate", &c.rate},
+               {"hfov", &s.hfov},
+               {"min_depth", &s.min_depth},
+               {"max_depth", &s.max_depth},
+               {"noise", &s.noise}});
+  if (node["width"]) s.width = integer(node["width"], path + ".width");
+  if (node["height"]) s.height = integer(node["height"], path + ".height");
+  readSeed(node, path, s.seed);
+  checkRate(c.rate, path + ".rate");
+  checked([&] {
+    try {
+      core::checkDepthCamera(s);
+    } catch (const std::invalid_argument& e) {  // "depth camera: FIELD ...": named under the entry's key
+      throw std::invalid_argument("'" + path + "': " + std::string(e.what()).substr(14));
+    }
+  });
+  return c;
+}
+
 LidarEntry parseLidar(const YAML::Node& node, const std::string& path) {
   if (!node.IsMap()) fail(path, "expected a map {link, topic, rate, samples, min_angle, max_angle, ...}");
   requireKnownKeys(
@@ -80,12 +135,7 @@ LidarEntry parseLidar(const YAML::Node& node, const std::string& path) {
   l.link = text(node["link"], path + ".link");
   if (node["topic"]) l.topic = text(node["topic"], path + ".topic");
   if (node["frame_id"]) l.frame_id = text(node["frame_id"], path + ".frame_id");
-  if (node["pose"]) {
-    const YAML::Node pose = node["pose"];
-    requireKnownKeys(pose, path + ".pose", {"position", "rpy", "quaternion"});
-    if (pose["position"]) l.pose.translation = vec3(pose["position"], path + ".pose.position");
-    l.pose.rotation = orientation(pose, path + ".pose");
-  }
+  if (node["pose"]) l.pose = parsePose(node["pose"], path + ".pose");
   core::LidarSettings& s = l.settings;
   readNumbers(node, path,
               {{"rate", &l.rate},
@@ -99,10 +149,7 @@ LidarEntry parseLidar(const YAML::Node& node, const std::string& path) {
   if (node["samples"]) s.samples = integer(node["samples"], path + ".samples");
   if (node["vertical_samples"]) s.vertical_samples = integer(node["vertical_samples"], path + ".vertical_samples");
   readSeed(node, path, s.seed);
-  if (!(l.rate >= core::ranges::kMinRate && l.rate <= core::ranges::kMaxPublishRate)) {
-    fail(path + ".rate", "must be within [" + std::to_string(core::ranges::kMinRate) + ", " +
-                             std::to_string(core::ranges::kMaxPublishRate) + "] Hz");
-  }
+  checkRate(l.rate, path + ".rate");
   checked([&] {
     try {
       core::checkLidar(s);
@@ -120,6 +167,15 @@ std::vector<LidarEntry> parseLidars(const YAML::Node& node, const std::string& p
   std::vector<LidarEntry> out;
   for (std::size_t k = 0; k < node.size(); ++k)
     out.push_back(parseLidar(node[k], path + "[" + std::to_string(k) + "]"));
+  return out;
+}
+
+std::vector<DepthCameraEntry> parseDepthCameras(const YAML::Node& node, const std::string& path) {
+  if (!node.IsSequence()) return {parseDepthCamera(node, path)};
+  std::vector<DepthCameraEntry> out;
+  for (std::size_t k = 0; k < node.size(); ++k) {
+    out.push_back(parseDepthCamera(node[k], path + "[" + std::to_string(k) + "]"));
+  }
   return out;
 }
 

@@ -26,6 +26,8 @@ core::DriverSettings parseDriver(const YAML::Node& node, const std::string& path
 /// `lidar` at `path`: one lidar's map, or a list of them (each key read or
 /// refused; the settings checked by core::checkLidar, refusals naming the key).
 std::vector<LidarEntry> parseLidars(const YAML::Node& node, const std::string& path);
+/// `depth_camera` at `path`: one camera's map, or a list of them, as parseLidars.
+std::vector<DepthCameraEntry> parseDepthCameras(const YAML::Node& node, const std::string& path);
 void validateImuEntry(const ImuEntry& imu, double dt, const std::string& path);
 
 }  // namespace rigid_body_sim::io

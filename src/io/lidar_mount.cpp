@@ -28,6 +28,24 @@ bool poseIn(const core::ArticulatedLink& link, const std::string& name, core::Po
 
 }  // namespace
 
+void mount(const core::ArticulationModel& model, const std::string& link, const core::Pose& pose,
+           const std::string& key, int& j, core::Pose& X_LS) {
+  j = -1;
+  for (std::size_t i = 0; i < model.links.size() && j < 0; ++i) {
+    if (poseIn(model.links[i], link, X_LS)) j = static_cast<int>(i);
+  }
+  if (j < 0) {
+    std::string names;
+    for (const core::ArticulatedLink& l : model.links) {
+      names += (names.empty() ? "'" : ", '") + l.name + "'";
+      for (const core::FixedLink& f : l.fixed_links) names += ", '" + f.name + "'";
+    }
+    throw ConfigError("config key '" + key + ".link': robot '" + model.name + "' has no link '" + link +
+                      "' (its links: " + names + ")");
+  }
+  X_LS = X_LS * pose;
+}
+
 std::vector<RobotLidar> mountLidars(const std::vector<LidarEntry>& entries, const core::ArticulationModel& model) {
   std::vector<RobotLidar> out;
   for (const LidarEntry& e : entries) {
@@ -42,19 +60,18 @@ std::vector<RobotLidar> mountLidars(const std::vector<LidarEntry>& entries, cons
                         "]");
     }
     RobotLidar mounted{e, -1, {}};
-    for (std::size_t j = 0; j < model.links.size() && mounted.link < 0; ++j) {
-      if (poseIn(model.links[j], e.link, mounted.X_LS)) mounted.link = static_cast<int>(j);
-    }
-    if (mounted.link < 0) {
-      std::string names;
-      for (const core::ArticulatedLink& l : model.links) {
-        names += (names.empty() ? "'" : ", '") + l.name + "'";
-        for (const core::FixedLink& f : l.fixed_links) names += ", '" + f.name + "'";
-      }
-      throw ConfigError("config key '" + e.key + ".link': robot '" + model.name + "' has no link '" + e.link +
-                        "' (its links: " + names + ")");
-    }
-    mounted.X_LS = mounted.X_LS * e.pose;
+    mount(model, e.link, e.pose, e.key, mounted.link, mounted.X_LS);
+    out.push_back(std::move(mounted));
+  }
+  return out;
+}
+
+std::vector<RobotCamera> mountCameras(const std::vector<DepthCameraEntry>& entries,
+                                      const core::ArticulationModel& model) {
+  std::vector<RobotCamera> out;
+  for (const DepthCameraEntry& e : entries) {
+    RobotCamera mounted{e, -1, {}};
+    mount(model, e.link, e.pose, e.key, mounted.link, mounted.X_LS);
     out.push_back(std::move(mounted));
   }
   return out;

@@ -119,6 +119,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
   std::vector<int> entry;
   std::vector<RobotControls> controls;
   std::vector<std::vector<RobotLidar>> lidars;
+  std::vector<std::vector<RobotCamera>> cameras;
   for (std::size_t i = 0; i < config.bodies.size(); ++i) {
     const BodyEntry& e = config.bodies[i];
     const std::string key = "bodies[" + std::to_string(i) + "]";
@@ -127,9 +128,10 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
       if (!e.controllers.empty()) {
         throw ConfigError("config key '" + key + ".controllers': body '" + e.name + "' has no moving joints");
       }
-      if (!e.lidars.empty()) {
-        throw ConfigError("config key '" + key + ".lidar': body '" + e.name +
-                          "' has no moving joints: a lidar goes on a robot's link (not on a free body yet)");
+      if (!e.lidars.empty() || !e.cameras.empty()) {
+        throw ConfigError(
+            "config key '" + key + ".lidar': body '" + e.name +
+            "' has no moving joints: a lidar or depth camera goes on a robot's link (not on a free body yet)");
       }
       if (!e.initial_joints.empty()) {
         throw ConfigError("config key '" + key + ".initial.joint_positions' / '.joint_velocities': body '" + e.name +
@@ -152,6 +154,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     robot_starts.push_back(robotStart(model, e.initial, e.initial_joints, config.model.limits, key + ".initial"));
     controls.push_back(buildControls(e.controllers, model));
     lidars.push_back(mountLidars(allLidars(e.lidars, described.lidars), model));
+    cameras.push_back(mountCameras(e.cameras, model));
     entry.push_back(-1 - static_cast<int>(robots.size()));
     robots.push_back({e.name, std::move(model), e.friction, e.restitution});
   }
@@ -163,8 +166,8 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
   }
   core::SceneState state = core::sceneState(scene, free, robot_starts);
   noteStartsInside(scene, state, notes);
-  return {std::move(scene),    std::move(state),  std::move(entry),
-          std::move(controls), std::move(lidars), std::move(notes)};
+  return {std::move(scene),  std::move(state),   std::move(entry), std::move(controls),
+          std::move(lidars), std::move(cameras), std::move(notes)};
 }
 
 }  // namespace rigid_body_sim::io
@@ -180,7 +183,7 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
     if (!config.controllers.empty()) {
       throw ConfigError("config key 'controllers': body '" + body->name + "' has no moving joints");
     }
-    if (!config.lidars.empty()) {
+    if (!config.lidars.empty() || !config.cameras.empty()) {
       throw ConfigError("config key 'lidar': body '" + body->name +
                         "' has no moving joints: a lidar goes on a robot's link (not on a free body yet)");
     }
@@ -188,7 +191,7 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
     notes.insert(notes.end(), world.notes.begin(), world.notes.end());
     core::Scene scene(std::move(world.model));
     core::SceneState state{std::move(world.state), {}};
-    return {std::move(scene), std::move(state), {0}, {}, {}, std::move(notes)};
+    return {std::move(scene), std::move(state), {0}, {}, {}, {}, std::move(notes)};
   }
   core::ArticulationModel model = std::move(std::get<core::ArticulationModel>(described.what));
   checkRobotSettings(config, model.name);
@@ -197,13 +200,15 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
       robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
   RobotControls controls = buildControls(config.controllers, model);
   std::vector<RobotLidar> lidars = mountLidars(allLidars(config.lidars, described.lidars), model);
+  std::vector<RobotCamera> cameras = mountCameras(config.cameras, model);
   core::ModelSpec spec = config.model;
   spec.bodies.clear();
   const std::string name = model.name;
   core::Scene scene(spec, {{name, std::move(model)}});
   core::SceneState state = core::sceneState(scene, {}, {start});
   noteStartsInside(scene, state, notes);
-  return {std::move(scene), std::move(state), {-1}, {std::move(controls)}, {std::move(lidars)}, std::move(notes)};
+  return {std::move(scene),     std::move(state), {-1}, {std::move(controls)}, {std::move(lidars)},
+          {std::move(cameras)}, std::move(notes)};
 }
 
 }  // namespace rigid_body_sim::io

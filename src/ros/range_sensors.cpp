@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace rigid_body_sim::node {
 
@@ -52,8 +53,97 @@ sensor_msgs::PointCloud2 cloudMessage(const core::Lidar& lidar, const std::vecto
   return m;
 }
 
+sensor_msgs::Image depthImageMessage(const core::DepthCamera& camera, const std::vector<double>& depth,
+                                     bool millimetres, const std::string& frame, const ros::Time& stamp) {
+  const core::DepthCameraSettings& s = camera.settings();
+  sensor_msgs::Image m;
+  m.header.stamp = stamp;
+  m.header.frame_id = frame;
+  m.width = static_cast<uint32_t>(s.width);
+  m.height = static_cast<uint32_t>(s.height);
+  m.is_bigendian = 0;
+  const std::size_t bytes = millimetres ? 2 : 4;
+  m.encoding = millimetres ? "16UC1" : "32FC1";
+  m.step = static_cast<uint32_t>(bytes * m.width);
+  m.data.resize(bytes * depth.size());
+  for (std::size_t k = 0; k < depth.size(); ++k) {
+    if (millimetres) {
+      const double mm = std::isfinite(depth[k]) ? std::min(std::round(1000.0 * depth[k]), 65535.0) : 0.0;
+      const auto value = static_cast<uint16_t>(mm);
+      std::memcpy(&m.data[2 * k], &value, 2);
+    } else {
+      const auto value = static_cast<float>(depth[k]);
+      std::memcpy(&m.data[4 * k], &value, 4);
+    }
+  }
+  return m;
+}
+
+sensor_msgs::CameraInfo cameraInfoMessage(const core::DepthCamera& camera, const std::string& frame,
+                                          const ros::Time& stamp) {
+  const core::DepthCameraSettings& s = camera.settings();
+  sensor_msgs::CameraInfo m;
+  m.header.stamp = stamp;
+  m.header.frame_id = frame;
+  m.width = static_cast<uint32_t>(s.width);
+  m.height = static_cast<uint32_t>(s.height);
+  m.distortion_model = "plumb_bob";
+  m.D.assign(5, 0.0);
+  const double f = camera.focal();
+  m.K = {f, 0.0, camera.cx(), 0.0, f, camera.cy(), 0.0, 0.0, 1.0};
+  m.R = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
+  m.P = {f, 0.0, camera.cx(), 0.0, 0.0, f, camera.cy(), 0.0, 0.0, 0.0, 1.0, 0.0};
+  return m;
+}
+
+sensor_msgs::PointCloud2 depthCloudMessage(const core::DepthCamera& camera, const std::vector<double>& depth,
+                                           const std::string& frame, const ros::Time& stamp) {
+  const int width = camera.settings().width;
+  sensor_msgs::PointCloud2 m;
+  m.header.stamp = stamp;
+  m.header.frame_id = frame;
+  sensor_msgs::PointCloud2Modifier modifier(m);
+  modifier.setPointCloud2FieldsByString(1, "xyz");
+  const auto finite =
+      static_cast<std::size_t>(std::count_if(depth.begin(), depth.end(), [](double z) { return std::isfinite(z); }));
+  modifier.resize(finite);
+  m.height = 1;
+  m.width = static_cast<uint32_t>(finite);
+  m.is_dense = true;
+  sensor_msgs::PointCloud2Iterator<float> x(m, "x"), y(m, "y"), z(m, "z");
+  for (std::size_t k = 0; k < depth.size(); ++k) {
+    if (!std::isfinite(depth[k])) continue;
+    const std::size_t row = k / static_cast<std::size_t>(width);  // whole rows above this pixel
+    const double u = static_cast<double>(k - row * static_cast<std::size_t>(width));
+    const double v = static_cast<double>(row);
+    *x = static_cast<float>((u - camera.cx()) * depth[k] / camera.focal());
+    *y = static_cast<float>((v - camera.cy()) * depth[k] / camera.focal());
+    *z = static_cast<float>(depth[k]);
+    ++x;
+    ++y;
+    ++z;
+  }
+  return m;
+}
+
 void RangeSensors::addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
-                            const std::vector<io::RobotLidar>& lidars) {
+                            const std::vector<io::RobotLidar>& lidars, const std::vector<io::RobotCamera>& cameras) {
+  std::vector<CameraPort> camera_ports;
+  for (const io::RobotCamera& c : cameras) {
+    const std::string& frame = c.entry.frame_id.empty() ? c.entry.link : c.entry.frame_id;
+    CameraPort p{
+        core::DepthCamera(c.entry.settings), c.link, c.X_LS, 1, c.entry.millimetres, frame_prefix + frame, {}, {}, {}};
+    p.every = std::max(1LL, std::llround(1.0 / (c.entry.rate * dt_)));
+    const std::string ns = (c.entry.topic.front() == '/' ? c.entry.topic : prefix + c.entry.topic) + "/depth/";
+    p.image = CountedPublisher::advertise<sensor_msgs::Image>(nh_, ns + "image_raw", 2);
+    p.info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(nh_, ns + "camera_info", 2);
+    p.points = CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh_, ns + "points", 2);
+    ROS_INFO("sim_node: robot '%s': a depth camera of %d x %d on '%s', %s{image_raw, camera_info, points} at %g Hz",
+             robot.c_str(), c.entry.settings.width, c.entry.settings.height, p.frame.c_str(),
+             nh_.resolveName(ns).c_str(), c.entry.rate);
+    camera_ports.push_back(std::move(p));
+  }
+  cameras_.push_back(std::move(camera_ports));
   std::vector<Port> ports;
   for (const io::RobotLidar& l : lidars) {
     const std::string& frame = l.entry.frame_id.empty() ? l.entry.link : l.entry.frame_id;
@@ -75,6 +165,22 @@ void RangeSensors::restart() {
   for (std::vector<Port>& ports : robots_) {
     for (Port& p : ports) p.lidar.restart();
   }
+  for (std::vector<CameraPort>& ports : cameras_) {
+    for (CameraPort& p : ports) p.camera.restart();
+  }
+}
+
+core::Pose RangeSensors::sensorPose(const core::Simulation& sim, std::size_t r, int link, const core::Pose& X_LS,
+                                    bool& placed) {
+  const core::SceneRobot& robot = sim.scene.robots()[r];
+  if (!placed) {  // the robot's links, once for all its sensors
+    core::kinematics(robot.model, sim.robots[r], kin_);
+    skip_.assign(sim.model().bodyCount(), 0);
+    for (std::size_t k = 0; k < robot.link.size(); ++k) skip_[static_cast<std::size_t>(robot.first_body) + k] = 1;
+    placed = true;
+  }
+  const core::Placement X_WS = kin_.X_WL[static_cast<std::size_t>(link)] * core::Placement::of(X_LS);
+  return core::Pose{core::Quat(X_WS.R_PC), X_WS.p_PC};
 }
 
 void RangeSensors::sample(const core::Simulation& sim, long long steps, const ros::Time& stamp) {
@@ -82,20 +188,20 @@ void RangeSensors::sample(const core::Simulation& sim, long long steps, const ro
     bool placed = false;
     for (Port& p : robots_[r]) {
       if (steps % p.every != 0 || !p.publisher.listened()) continue;
-      const core::SceneRobot& robot = sim.scene.robots()[r];
-      if (!placed) {  // the robot's links, once for all its lidars
-        core::kinematics(robot.model, sim.robots[r], kin_);
-        skip_.assign(sim.model().bodyCount(), 0);
-        for (std::size_t k = 0; k < robot.link.size(); ++k) skip_[static_cast<std::size_t>(robot.first_body) + k] = 1;
-        placed = true;
-      }
-      const core::Placement X_WS = kin_.X_WL[static_cast<std::size_t>(p.link)] * core::Placement::of(p.X_LS);
-      p.lidar.scan(sim.model(), sim.state, core::Pose{core::Quat(X_WS.R_PC), X_WS.p_PC}, skip_, ranges_);
+      p.lidar.scan(sim.model(), sim.state, sensorPose(sim, r, p.link, p.X_LS, placed), skip_, ranges_);
       if (p.lidar.settings().vertical_samples > 1) {
         p.publisher.publish(cloudMessage(p.lidar, ranges_, p.frame, stamp));
       } else {
         p.publisher.publish(scanMessage(p.lidar, ranges_, p.rate, p.frame, stamp));
       }
+    }
+    for (CameraPort& p : cameras_[r]) {
+      if (steps % p.every != 0) continue;
+      if (p.info.listened()) p.info.publish(cameraInfoMessage(p.camera, p.frame, stamp));
+      if (!p.image.listened() && !p.points.listened()) continue;
+      p.camera.capture(sim.model(), sim.state, sensorPose(sim, r, p.link, p.X_LS, placed), skip_, depth_);
+      if (p.image.listened()) p.image.publish(depthImageMessage(p.camera, depth_, p.millimetres, p.frame, stamp));
+      if (p.points.listened()) p.points.publish(depthCloudMessage(p.camera, depth_, p.frame, stamp));
     }
   }
 }

@@ -54,10 +54,12 @@ io::SceneSetup loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
 /// to `lidars`, and what its loading repaired or warns of to the log, each
 /// message once.
 core::Simulation startOf(io::SceneSetup world, std::vector<io::RobotControls>& controls,
-                         std::vector<std::vector<io::RobotLidar>>& lidars) {
+                         std::vector<std::vector<io::RobotLidar>>& lidars,
+                         std::vector<std::vector<io::RobotCamera>>& cameras) {
   for (const std::string& note : world.notes) ROS_WARN("sim_node: %s", note.c_str());
   controls = std::move(world.controls);
   lidars = std::move(world.lidars);
+  cameras = std::move(world.cameras);
   return {std::move(world.scene), std::move(world.state)};
 }
 
@@ -80,7 +82,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     : nh_(nh),
       pnh_(private_nh),
       params_(readParams(private_nh)),
-      sim_(startOf(loadWorld(params_, nh_), start_controls_, start_lidars_)),
+      sim_(startOf(loadWorld(params_, nh_), start_controls_, start_lidars_, start_cameras_)),
       use_sim_time_(ros::param::param("/use_sim_time", false)),
       time_(model_.dt(), !use_sim_time_) {
   // ROS shut down while the world loaded (rosnode kill; SIGINT ends the
@@ -151,13 +153,15 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   checkRobotFrames(robot_publisher_->robots(), settings_.world_frame, ports_.frames());
   range_sensors_.emplace(nh_, model_.dt());
   start_lidars_.resize(sim_.scene.robots().size());
+  start_cameras_.resize(sim_.scene.robots().size());
   for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
     robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
     const std::string& name = sim_.scene.robots()[r].name;
     range_sensors_->addRobot(name, several ? name + "/" : "", robot_publisher_->robots()[r].frame_prefix,
-                             start_lidars_[r]);
+                             start_lidars_[r], start_cameras_[r]);
   }
   start_lidars_.clear();
+  start_cameras_.clear();
   services_ = {
       pnh_.advertiseService("apply_wrench", &LoadRequests::applyWrench, &load_requests_),
       pnh_.advertiseService("apply_impulse", &LoadRequests::applyImpulse, &load_requests_),

@@ -117,6 +117,12 @@ TEST(SceneLoader, RefusesWhatAnEntryWouldNotRead) {
   refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, lidar: {link: caster, samples: 1.5}}\n",
           "'bodies[0].lidar.samples'");
   refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, lidar: {link: caster, beams: 3}}\n", "beams");
+  refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, depth_camera: {link: caster, hfov: 3.2}}\n",
+          "'bodies[0].depth_camera': hfov must be within (0, pi) rad");
+  refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, depth_camera: {link: caster, encoding: rgb8}}\n",
+          "'bodies[0].depth_camera.encoding': 'rgb8': 32FC1 (m) or 16UC1 (mm)");
+  refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, depth_camera: {link: lens}}\n",
+          "'bodies[0].depth_camera.link': robot 'rover' has no link 'lens'");
 }
 
 TEST(SceneLoader, ALidarSitsOnItsLinkOrWhereAFixedJointPutsIt) {
@@ -136,6 +142,14 @@ TEST(SceneLoader, ALidarSitsOnItsLinkOrWhereAFixedJointPutsIt) {
   EXPECT_EQ(caster.entry.rate, 5.0);
   EXPECT_EQ(caster.entry.settings.vertical_samples, 2);
   EXPECT_EQ(caster.entry.topic, "scan");
+  const io::SceneSetup c = io::buildScene(
+      config("bodies:\n  - {name: rover, urdf: diff_drive.urdf, depth_camera: {link: caster, width: 8, height: 6,"
+             " encoding: 16UC1, pose: {position: [0, 0, 0.1]}}}\n"));
+  ASSERT_EQ(c.cameras.at(0).size(), 1u);
+  EXPECT_EQ(c.cameras[0][0].link, 0);
+  EXPECT_LT((c.cameras[0][0].X_LS.translation - Vec3(-0.15, 0.0, 0.06)).norm(), 1e-15);  // its pose in the caster
+  EXPECT_TRUE(c.cameras[0][0].entry.millimetres);
+  EXPECT_EQ(c.cameras[0][0].entry.settings.width, 8);
 }
 
 }  // namespace

@@ -5,11 +5,14 @@
 // +inf where nothing is within range, the robot's own links unseen.
 #include <gtest/gtest.h>
 #include <ros/ros.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Image.h>
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <sensor_msgs/point_cloud2_iterator.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "node_fixture.h"
@@ -74,6 +77,53 @@ TEST(Lidar, ItsFansArePointsOnTheWall) {
     EXPECT_GT(*z, -1e-6);
     EXPECT_LT(*z, 1.9 * std::tan(0.2) / std::cos(M_PI / 4) + 0.01);
   }
+}
+
+// The depth camera on base_link (0.08 m up, looking along x, 60 degrees across 64 pixels): rows that look
+// level or up see the wall's face, 1.9 m away at every pixel (depth is along the optical axis); rows that
+// look down by b = (v - cy) / f more than 0.08 / 1.9 see the ground, at depth 0.08 / b.
+TEST(Lidar, ADepthCameraReadsTheWallsDistancePerPixel) {
+  ros::NodeHandle nh;
+  sensor_msgs::Image image;
+  sensor_msgs::CameraInfo info;
+  bool got_image = false, got_info = false;
+  ros::Subscriber a =
+      nh.subscribe<sensor_msgs::Image>("/camera/depth/image_raw", 2, [&](const sensor_msgs::Image::ConstPtr& m) {
+        image = *m;
+        got_image = true;
+      });
+  ros::Subscriber b = nh.subscribe<sensor_msgs::CameraInfo>("/camera/depth/camera_info", 2,
+                                                            [&](const sensor_msgs::CameraInfo::ConstPtr& m) {
+                                                              info = *m;
+                                                              got_info = true;
+                                                            });
+  ASSERT_TRUE(spinUntil([&] { return got_image && got_info; }, 30.0));
+  ASSERT_EQ(image.encoding, "32FC1");
+  ASSERT_EQ(image.width, 64u);
+  ASSERT_EQ(image.height, 48u);
+  ASSERT_EQ(image.step, 64u * 4u);
+  EXPECT_EQ(image.header.frame_id, "base_link");
+  const double f = 32.0 / std::tan(M_PI / 6);
+  EXPECT_NEAR(info.K[0], f, 1e-9);
+  EXPECT_NEAR(info.K[2], 31.5, 1e-12);
+  EXPECT_NEAR(info.K[5], 23.5, 1e-12);
+  int wall = 0, ground = 0;
+  for (int v = 0; v < 48; ++v) {
+    const double down = (v - 23.5) / f;
+    for (int u = 0; u < 64; ++u) {
+      float depth = 0.0F;
+      std::memcpy(&depth, &image.data[static_cast<std::size_t>(4 * (v * 64 + u))], 4);
+      if (down < 0.08 / 1.9 - 0.01) {
+        EXPECT_NEAR(depth, 1.9, 0.01) << u << ", " << v;
+        ++wall;
+      } else if (down > 0.08 / 1.9 + 0.01) {
+        EXPECT_NEAR(depth, 0.08 / down, 0.01) << u << ", " << v;
+        ++ground;
+      }
+    }
+  }
+  EXPECT_GT(wall, 64 * 20);
+  EXPECT_GT(ground, 64 * 15);
 }
 
 }  // namespace

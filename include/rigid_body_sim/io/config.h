@@ -16,6 +16,7 @@
 #include "rigid_body_sim/core/bodies/state.h"
 #include "rigid_body_sim/core/controllers/diff_drive.h"
 #include "rigid_body_sim/core/controllers/joint_control.h"
+#include "rigid_body_sim/core/devices/depth_camera.h"
 #include "rigid_body_sim/core/devices/imu.h"
 #include "rigid_body_sim/core/devices/lidar.h"
 #include "rigid_body_sim/core/devices/odom_noise.h"
@@ -52,6 +53,20 @@ struct LidarEntry {
   std::string topic = "scan";  ///< under the robot's prefix in a world ("NAME/scan")
   double rate = 10.0;          ///< Hz of sim time
   std::string key = "lidar";   ///< its config key, for messages ("bodies[2].lidar[0]")
+};
+
+/// A depth camera on a robot's link (`depth_camera`, `bodies[i].depth_camera`:
+/// a map, or a list): it looks along `pose`'s x in the link; its images are
+/// laid out as an optical frame's (`frame_id`, "": the link's frame).
+struct DepthCameraEntry {
+  core::DepthCameraSettings settings;
+  std::string link;              ///< the robot's link it is on (required)
+  core::Pose pose;               ///< the camera in that link's frame
+  std::string frame_id;          ///< the images' tf frame, after the robot's tf_prefix; "": the link's
+  std::string topic = "camera";  ///< the namespace: TOPIC/depth/image_raw, camera_info, points
+  double rate = 30.0;            ///< Hz of sim time
+  bool millimetres = false;      ///< `encoding`: 16UC1 (mm, 0 where none) instead of 32FC1 (m)
+  std::string key = "depth_camera";
 };
 
 /// A robot's joints at the start (`initial.joint_positions` and
@@ -116,6 +131,7 @@ struct BodyEntry {
   std::optional<core::DriverSettings> cmd_vel;        ///< bodies[i].cmd_vel
   std::vector<ControllerEntry> controllers;           ///< bodies[i].controllers (a robot's)
   std::vector<LidarEntry> lidars;                     ///< bodies[i].lidar (a robot's)
+  std::vector<DepthCameraEntry> cameras;              ///< bodies[i].depth_camera (a robot's)
 };
 
 struct SimConfig {
@@ -136,6 +152,7 @@ struct SimConfig {
   std::optional<core::DriverSettings> cmd_vel;  ///< the one body's velocity driver
   std::vector<ControllerEntry> controllers;     ///< the one robot's `controllers`
   std::vector<LidarEntry> lidars;               ///< the one robot's `lidar`
+  std::vector<DepthCameraEntry> cameras;        ///< the one robot's `depth_camera`
   /// urdf.repair: read the URDFs as Gazebo and KDL do, repairing what a
   /// strict reading refuses (io::UrdfOptions); false refuses it.
   bool urdf_repair = true;

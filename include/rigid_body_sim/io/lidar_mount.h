@@ -1,6 +1,6 @@
-// Where a robot's lidars sit: each config entry (io::LidarEntry) on one of
-// its links, or on a link a fixed joint lumped into one (as a laser_link
-// usually is). ROS-free.
+// Where a robot's range sensors sit: each config entry (io::LidarEntry,
+// io::DepthCameraEntry) on one of its links, or on a link a fixed joint
+// lumped into one (as a laser_link usually is), at its pose there. ROS-free.
 #pragma once
 
 #include <string>
@@ -17,6 +17,18 @@ struct RobotLidar {
   int link = 0;     ///< the moving link (index in the model) that carries it
   core::Pose X_LS;  ///< the sensor (at entry.pose in entry.link) in the moving link's frame
 };
+
+/// A depth camera on link `link` of a robot, at X_LS in that link's frame.
+struct RobotCamera {
+  DepthCameraEntry entry;
+  int link = 0;
+  core::Pose X_LS;
+};
+
+/// `entries` on `model`'s links (their settings checked when the config was read).
+/// Refused as mountLidars refuses a link.
+std::vector<RobotCamera> mountCameras(const std::vector<DepthCameraEntry>& entries,
+                                      const core::ArticulationModel& model);
 
 /// `entries` on `model`'s links. Refused (ConfigError naming `entries[k].key`):
 /// a link the robot does not have (the message lists its links), settings

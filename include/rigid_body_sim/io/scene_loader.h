@@ -25,6 +25,8 @@ struct SceneSetup {
   std::vector<RobotControls> controls;
   /// Per robot: its lidars (`lidar`, `bodies[i].lidar`), on its links.
   std::vector<std::vector<RobotLidar>> lidars;
+  /// Per robot: its depth cameras (`depth_camera`, `bodies[i].depth_camera`).
+  std::vector<std::vector<RobotCamera>> cameras;
   /// What loading it repaired or warns of, one message per URDF or start,
   /// for the caller to log once (io::UrdfOptions::notes).
   std::vector<std::string> notes;

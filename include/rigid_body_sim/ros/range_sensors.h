@@ -1,13 +1,18 @@
-// The robots' lidars in the node: each scans at its rate of sim time from
-// its link (core/devices/lidar.h), against the scene, the free bodies and
-// every robot's links but its own, and publishes sensor_msgs/LaserScan
-// (one fan) or sensor_msgs/PointCloud2 (several fans: x, y, z of each
-// return in the sensor's frame) on its topic, in its link's tf frame,
-// stamped on the node's clock. A scan nobody subscribes to is not cast.
+// The robots' range sensors in the node, each at its rate of sim time from
+// its link, against the scene, the free bodies and every robot's links but
+// its own, stamped on the node's clock in its frame: a lidar
+// (core/devices/lidar.h) publishes sensor_msgs/LaserScan (one fan) or
+// sensor_msgs/PointCloud2 (several fans: x, y, z of each return in the
+// sensor's frame) on its topic; a depth camera (core/devices/depth_camera.h)
+// publishes TOPIC/depth/image_raw (sensor_msgs/Image, 32FC1 or 16UC1),
+// TOPIC/depth/camera_info and TOPIC/depth/points, as Gazebo's
+// openni_kinect plugin names them. What nobody subscribes to is not cast.
 // The messages are built by plain functions (tested without a master).
 #pragma once
 
 #include <ros/ros.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Image.h>
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/PointCloud2.h>
 
@@ -28,14 +33,28 @@ sensor_msgs::LaserScan scanMessage(const core::Lidar& lidar, const std::vector<d
 sensor_msgs::PointCloud2 cloudMessage(const core::Lidar& lidar, const std::vector<double>& ranges,
                                       const std::string& frame, const ros::Time& stamp);
 
+/// sensor_msgs/Image of a depth image: 32FC1 in m (REP 117's ±inf kept), or
+/// `millimetres`: 16UC1 in mm, 0 where there is no depth (as OpenNI's).
+sensor_msgs::Image depthImageMessage(const core::DepthCamera& camera, const std::vector<double>& depth,
+                                     bool millimetres, const std::string& frame, const ros::Time& stamp);
+/// sensor_msgs/CameraInfo of the pinhole: no distortion, K and P of its focal length and centre.
+sensor_msgs::CameraInfo cameraInfoMessage(const core::DepthCamera& camera, const std::string& frame,
+                                          const ros::Time& stamp);
+/// sensor_msgs/PointCloud2 of every finite depth, in the optical frame (x right, y down, z ahead).
+sensor_msgs::PointCloud2 depthCloudMessage(const core::DepthCamera& camera, const std::vector<double>& depth,
+                                           const std::string& frame, const ros::Time& stamp);
+
 class RangeSensors {
  public:
   RangeSensors(const ros::NodeHandle& nh, double dt) : nh_(nh), dt_(dt) {}
   /// Robot r (the last) and its lidars: their topics under `prefix`, frames after `frame_prefix`.
   void addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
-                const std::vector<io::RobotLidar>& lidars);
-  /// Robot r deleted: its lidars' topics close; the later robots move down by one.
-  void removeRobot(std::size_t r) { robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r)); }
+                const std::vector<io::RobotLidar>& lidars, const std::vector<io::RobotCamera>& cameras = {});
+  /// Robot r deleted: its sensors' topics close; the later robots move down by one.
+  void removeRobot(std::size_t r) {
+    robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r));
+    cameras_.erase(cameras_.begin() + static_cast<std::ptrdiff_t>(r));
+  }
   /// After a reset: each lidar's noise from its seed again.
   void restart();
   /// The scans due at step `steps` of `sim`'s state, stamped `stamp`.
@@ -51,12 +70,26 @@ class RangeSensors {
     std::string frame;
     CountedPublisher publisher;
   };
+  struct CameraPort {
+    core::DepthCamera camera;
+    int link = 0;
+    core::Pose X_LS;
+    long long every = 1;
+    bool millimetres = false;
+    std::string frame;
+    CountedPublisher image, info, points;
+  };
+  /// Where robot r's link `link`, at X_LS in it, is in the world (its links
+  /// placed and its own bodies marked in skip_ once per step, `placed`).
+  core::Pose sensorPose(const core::Simulation& sim, std::size_t r, int link, const core::Pose& X_LS, bool& placed);
+
   ros::NodeHandle nh_;
   double dt_;
   std::vector<std::vector<Port>> robots_;
+  std::vector<std::vector<CameraPort>> cameras_;  ///< per robot
   // Reused by every scan.
   core::ArticulationKinematics kin_;
-  std::vector<double> ranges_;
+  std::vector<double> ranges_, depth_;
   std::vector<char> skip_;
 };
 

@@ -126,6 +126,7 @@ class SimNode {
   std::vector<io::RobotControls> start_controls_;
   /// The robots' lidars as the world was loaded, until range_sensors_ takes them.
   std::vector<std::vector<io::RobotLidar>> start_lidars_;
+  std::vector<std::vector<io::RobotCamera>> start_cameras_;
   /// The model and every table in its bodies' order: a world edit goes through it once.
   core::Simulation sim_;
   const core::Model& model_ = sim_.model();

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "../../test_util.h"
+#include "rigid_body_sim/core/devices/depth_camera.h"
 #include "rigid_body_sim/core/devices/lidar.h"
 
 namespace rigid_body_sim::test {
@@ -226,6 +227,45 @@ TEST(Lidar, RefusesSettingsNamingTheField) {
   s.samples = 2000;
   s.vertical_samples = 1000;
   refused(s, "<= 1e6");
+}
+
+TEST(DepthCamera, ReadsAPlaneAtAnAngleAsItsDepthPerPixel) {
+  // A plane through (2, 0, 0) leaning back by 30 degrees (x = 2 + z tan 30 deg); the camera at the origin looks along
+  // x.
+  const double tan_b = std::tan(M_PI / 6);
+  core::ModelSpec s;
+  s.scene = {Sdf::plane(Vec3(-1.0, 0.0, tan_b), Vec3(2, 0, 0))};
+  const core::Model model(s);
+  const core::State state = core::restState(model);
+  core::DepthCameraSettings settings;
+  settings.width = 64;
+  settings.height = 48;
+  settings.hfov = M_PI / 2;
+  settings.max_depth = 3.0;
+  core::DepthCamera camera(settings);
+  EXPECT_DOUBLE_EQ(camera.focal(), 32.0);  // (width / 2) / tan(hfov / 2)
+  EXPECT_DOUBLE_EQ(camera.cx(), 31.5);
+  EXPECT_DOUBLE_EQ(camera.cy(), 23.5);
+  std::vector<double> depth;
+  camera.capture(model, state, core::Pose{}, {}, depth);
+  ASSERT_EQ(depth.size(), 64u * 48u);
+  for (int v = 0; v < 48; ++v) {
+    // Row v looks up by b = (cy - v) / f: the ray (1, a, b) meets the plane at depth 2 / (1 - b tan 30 deg).
+    const double b = (23.5 - v) / 32.0, expected = 2.0 / (1.0 - b * tan_b);
+    for (int u = 0; u < 64; ++u) {
+      const double d = depth[static_cast<std::size_t>(v * 64 + u)];
+      if (expected <= 3.0) {
+        EXPECT_NEAR(d, expected, 1e-12) << u << ", " << v;
+      } else {
+        EXPECT_EQ(d, kNoHit) << u << ", " << v;  // past max_depth, at the top of the image
+      }
+    }
+  }
+  EXPECT_EQ(depth[0], kNoHit);  // the top row: 2 / (1 - 0.734 tan 30 deg) = 3.45 m
+  EXPECT_NEAR(depth[47 * 64], 2.0 / (1.0 + 23.5 / 32.0 * tan_b), 1e-12);  // the bottom row, nearer
+  // Turned to look at the plane's back (from beyond it, facing -x): inside the half-space, every pixel is too close.
+  camera.capture(model, state, core::Pose{Quat(Eigen::AngleAxisd(M_PI, kZ)), Vec3(5, 0, 0)}, {}, depth);
+  EXPECT_EQ(depth[0], -kNoHit);
 }
 
 }  // namespace

@@ -1,0 +1,60 @@
+// A depth camera (docs/physics.md §10.7): one ray per pixel of a pinhole
+// camera cast against the world (ray_cast.h), each pixel the depth of what
+// it meets along the optical axis. The camera looks along its frame S's x,
+// as Gazebo's sensors do; its image is laid out as ROS's optical frames
+// are (REP 103): u to the right (S's −y), v down (S's −z), depth along S's x.
+// Depths follow REP 117's ranges: +inf where nothing is met within
+// max_depth, −inf nearer than min_depth; a met depth gets seeded Gaussian
+// noise, held within [min_depth, max_depth]. ROS-free.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "rigid_body_sim/core/bodies/geometry.h"
+#include "rigid_body_sim/core/devices/ray_cast.h"
+
+namespace rigid_body_sim::core {
+
+struct DepthCameraSettings {
+  int width = 320;          ///< pixels
+  int height = 240;         ///< pixels
+  double hfov = M_PI / 3;   ///< rad across the image's width
+  double min_depth = 0.1;   ///< m (near clip)
+  double max_depth = 10.0;  ///< m (far clip)
+  double noise = 0.0;       ///< m, σ of each met depth's noise
+  std::uint64_t seed = 0;   ///< of the noise
+};
+
+/// Throws std::invalid_argument naming the field: a size < 1 or more than
+/// 4·10⁶ pixels, hfov not in (0, π), depths not 0 ≤ min < max finite,
+/// noise not finite ≥ 0.
+void checkDepthCamera(const DepthCameraSettings& s);
+
+class DepthCamera {
+ public:
+  explicit DepthCamera(const DepthCameraSettings& settings);
+  const DepthCameraSettings& settings() const { return settings_; }
+  /// The pinhole's focal length in pixels (fx = fy) and principal point
+  /// (pixel centres at whole numbers: cx = (width − 1)/2, cy = (height − 1)/2).
+  double focal() const { return focal_; }
+  double cx() const { return 0.5 * (settings_.width - 1); }
+  double cy() const { return 0.5 * (settings_.height - 1); }
+
+  /// One image from S at X_WS in `state`: `depth` (m, row by row from the
+  /// top-left), the bodies `skip` marks unseen.
+  void capture(const Model& model, const State& state, const Pose& X_WS, const std::vector<char>& skip,
+               std::vector<double>& depth);
+  /// Starts the noise again from its seed.
+  void restart() { rng_.seed(settings_.seed); }
+
+ private:
+  DepthCameraSettings settings_;
+  double focal_ = 0.0;
+  std::vector<Vec3> rays_;  ///< per pixel, in S, with x = 1 (depth = range / |ray|)
+  std::mt19937_64 rng_;
+  std::normal_distribution<double> normal_{0.0, 1.0};
+};
+
+}  // namespace rigid_body_sim::core

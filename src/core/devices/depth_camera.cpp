@@ -1,0 +1,51 @@
+// A depth camera: depth_camera.h, docs/physics.md §10.7.
+#include "rigid_body_sim/core/devices/depth_camera.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace rigid_body_sim::core {
+
+void checkDepthCamera(const DepthCameraSettings& s) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("depth camera: " + what); };
+  if (s.width < 1 || s.height < 1) fail("width and height must be >= 1");
+  if (static_cast<double>(s.width) * s.height > 4e6) fail("width x height must be <= 4e6 pixels");
+  if (!(s.hfov > 0.0 && s.hfov < M_PI)) fail("hfov must be within (0, pi) rad");
+  if (!(std::isfinite(s.max_depth) && s.min_depth >= 0.0 && s.min_depth < s.max_depth)) {
+    fail("depths must be 0 <= min_depth < max_depth, finite");
+  }
+  if (!(std::isfinite(s.noise) && s.noise >= 0.0)) fail("noise must be finite and >= 0");
+}
+
+DepthCamera::DepthCamera(const DepthCameraSettings& settings) : settings_(settings), rng_(settings.seed) {
+  checkDepthCamera(settings_);
+  focal_ = 0.5 * settings_.width / std::tan(0.5 * settings_.hfov);
+  rays_.reserve(static_cast<std::size_t>(settings_.width) * static_cast<std::size_t>(settings_.height));
+  for (int v = 0; v < settings_.height; ++v) {
+    for (int u = 0; u < settings_.width; ++u) rays_.emplace_back(1.0, -(u - cx()) / focal_, -(v - cy()) / focal_);
+  }
+}
+
+void DepthCamera::capture(const Model& model, const State& state, const Pose& X_WS, const std::vector<char>& skip,
+                          std::vector<double>& depth) {
+  const DepthCameraSettings& s = settings_;
+  const Mat3 R_WS = X_WS.rotation.toRotationMatrix();
+  const RayWorld world(model, state, skip);
+  depth.resize(rays_.size());
+  for (std::size_t k = 0; k < rays_.size(); ++k) {
+    const double length = rays_[k].norm();  // range per unit depth
+    const double t = world.cast(X_WS.translation, R_WS * (rays_[k] / length), s.max_depth * length).range;
+    const double z = t / length;
+    if (t == kNoHit) {
+      depth[k] = kNoHit;
+    } else if (z < s.min_depth) {
+      depth[k] = -kNoHit;
+    } else {
+      depth[k] = std::clamp(s.noise > 0.0 ? z + s.noise * normal_(rng_) : z, s.min_depth, s.max_depth);
+    }
+  }
+}
+
+}  // namespace rigid_body_sim::core
