@@ -214,30 +214,18 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
     c.bodies = streamed ? std::move(streamed->bodies) : parseBodies(root["bodies"], base_dir);
     c.bodies_listed = true;
   }
-  if (root["imu"]) {
-    if (root["bodies"]) fail("imu", "with a bodies list, give each body its own bodies[i].imu");
-    c.imu = parseImu(root["imu"], "imu");
-  }
-  if (root["odom_noise"]) {
-    if (root["bodies"]) fail("odom_noise", "with a bodies list, give each body its own bodies[i].odom_noise");
-    c.odom_noise = parseOdomNoise(root["odom_noise"], "odom_noise");
-  }
-  if (root["cmd_vel"]) {
-    if (root["bodies"]) fail("cmd_vel", "with a bodies list, give each body its own bodies[i].cmd_vel");
-    c.cmd_vel = parseDriver(root["cmd_vel"], "cmd_vel");
-  }
-  if (root["controllers"]) {
-    if (root["bodies"]) fail("controllers", "with a bodies list, give each robot its own bodies[i].controllers");
-    c.controllers = parseControllers(root["controllers"], "controllers");
-  }
-  if (root["lidar"]) {
-    if (root["bodies"]) fail("lidar", "with a bodies list, give each robot its own bodies[i].lidar");
-    c.lidars = parseLidars(root["lidar"], "lidar");
-  }
-  if (root["depth_camera"]) {
-    if (root["bodies"]) fail("depth_camera", "with a bodies list, give each robot its own bodies[i].depth_camera");
-    c.cameras = parseDepthCameras(root["depth_camera"], "depth_camera");
-  }
+  // A one-body or one-robot config's devices and controllers (a bodies list gives each entry its own).
+  const auto single = [&root](const char* key, const char* whose, auto& into, const auto& parse) {
+    if (!root[key]) return;
+    if (root["bodies"]) fail(key, std::string("with a bodies list, give each ") + whose + " its own bodies[i]." + key);
+    into = parse(root[key], key);
+  };
+  single("imu", "body", c.imu, parseImu);
+  single("odom_noise", "body", c.odom_noise, parseOdomNoise);
+  single("cmd_vel", "body", c.cmd_vel, parseDriver);
+  single("controllers", "robot", c.controllers, parseControllers);
+  single("lidar", "robot", c.lidars, parseLidars);
+  single("depth_camera", "robot", c.cameras, parseDepthCameras);
   if (root["gazebo_ros_control"]) {
     if (root["bodies"]) {
       fail("gazebo_ros_control", "with a bodies list, give each robot its own bodies[i].gazebo_ros_control");

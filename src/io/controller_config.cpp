@@ -1,11 +1,9 @@
 // A robot's `controllers` map: controller_config.h.
 #include "controller_config.h"
 
-#include <sstream>
 #include <utility>
 
 #include "drive_config.h"
-#include "rigid_body_sim/core/bodies/ranges.h"
 #include "yaml_fields.h"
 
 namespace rigid_body_sim::io {
@@ -86,16 +84,7 @@ ControllerEntry parseController(const YAML::Node& name, const YAML::Node& body, 
       c.gains[k] = parseGains(g.second, join(join(c.key, "gains"), joint));
     }
   }
-  if (body["publish_rate"]) {
-    const std::string key = join(c.key, "publish_rate");
-    c.publish_rate = number(body["publish_rate"], key);
-    if (!(c.publish_rate >= core::ranges::kMinRate && c.publish_rate <= core::ranges::kMaxPublishRate)) {
-      std::ostringstream why;
-      why << "must be within [" << core::ranges::kMinRate << ", " << core::ranges::kMaxPublishRate << "] Hz, got "
-          << show(body["publish_rate"]);
-      fail(key, why.str());
-    }
-  }
+  if (body["publish_rate"]) c.publish_rate = publishRate(body["publish_rate"], join(c.key, "publish_rate"));
   return c;
 }
 

@@ -1,10 +1,8 @@
 // A DiffDriveController's keys: drive_config.h.
 #include "drive_config.h"
 
-#include <sstream>
 #include <utility>
 
-#include "rigid_body_sim/core/bodies/ranges.h"
 #include "yaml_fields.h"
 
 namespace rigid_body_sim::io {
@@ -140,16 +138,7 @@ DiffDriveEntry parseDiffDrive(const YAML::Node& body, const std::string& key) {
   s.linear = parseLimits(body["linear"], join(key, "linear"), "x");
   s.angular = parseLimits(body["angular"], join(key, "angular"), "z");
   DriveTopics& t = d.topics;
-  if (body["publish_rate"]) {
-    const std::string k = join(key, "publish_rate");
-    t.publish_rate = number(body["publish_rate"], k);
-    if (!(t.publish_rate >= core::ranges::kMinRate && t.publish_rate <= core::ranges::kMaxPublishRate)) {
-      std::ostringstream why;
-      why << "must be within [" << core::ranges::kMinRate << ", " << core::ranges::kMaxPublishRate << "] Hz, got "
-          << show(body["publish_rate"]);
-      fail(k, why.str());
-    }
-  }
+  if (body["publish_rate"]) t.publish_rate = publishRate(body["publish_rate"], join(key, "publish_rate"));
   if (body["pose_covariance_diagonal"]) {
     t.pose_covariance_diagonal = covariance(body["pose_covariance_diagonal"], join(key, "pose_covariance_diagonal"));
   }

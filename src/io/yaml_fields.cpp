@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "rigid_body_sim/core/bodies/ranges.h"
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/io/orientation.h"
 
@@ -65,6 +66,17 @@ bool boolean(const YAML::Node& node, const std::string& key) {
 double positiveNumber(const YAML::Node& node, const std::string& key) {
   const double x = number(node, key);
   if (!(x > 0.0)) fail(key, "must be > 0, got " + show(node));
+  return x;
+}
+
+double publishRate(const YAML::Node& node, const std::string& key) {
+  const double x = number(node, key);
+  if (!(x >= core::ranges::kMinRate && x <= core::ranges::kMaxPublishRate)) {
+    std::ostringstream why;
+    why << "must be within [" << core::ranges::kMinRate << ", " << core::ranges::kMaxPublishRate << "] Hz, got "
+        << show(node);
+    fail(key, why.str());
+  }
   return x;
 }
 

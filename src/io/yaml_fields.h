@@ -21,8 +21,9 @@ std::string join(const std::string& path, const std::string& key);
 void requireKnownKeys(const YAML::Node& map, const std::string& path, const std::set<std::string>& known);
 double number(const YAML::Node& node, const std::string& key);  ///< finite
 double positiveNumber(const YAML::Node& node, const std::string& key);
-int integer(const YAML::Node& node, const std::string& key);      ///< a number with no fraction, |x| <= 1e9
-core::Vec3 vec3(const YAML::Node& node, const std::string& key);  ///< [x, y, z]
+double publishRate(const YAML::Node& node, const std::string& key);  ///< Hz, within ranges' publish rates
+int integer(const YAML::Node& node, const std::string& key);         ///< a number with no fraction, |x| <= 1e9
+core::Vec3 vec3(const YAML::Node& node, const std::string& key);     ///< [x, y, z]
 bool boolean(const YAML::Node& node, const std::string& key);
 /// `path.rpy` or `path.quaternion` ([x, y, z, w], unit within 1e-3), or the identity.
 core::Quat orientation(const YAML::Node& node, const std::string& path);

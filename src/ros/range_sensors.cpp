@@ -9,6 +9,39 @@
 
 namespace rigid_body_sim::node {
 
+namespace {
+
+/// A PointCloud2 of x, y, z (float32, one row) of `point(k)` for each finite `values[k]`.
+template <class PointOf>
+sensor_msgs::PointCloud2 xyzCloud(const std::vector<double>& values, const std::string& frame, const ros::Time& stamp,
+                                  const PointOf& point) {
+  sensor_msgs::PointCloud2 m;
+  m.header.stamp = stamp;
+  m.header.frame_id = frame;
+  sensor_msgs::PointCloud2Modifier modifier(m);
+  modifier.setPointCloud2FieldsByString(1, "xyz");
+  const auto finite =
+      static_cast<std::size_t>(std::count_if(values.begin(), values.end(), [](double r) { return std::isfinite(r); }));
+  modifier.resize(finite);
+  m.height = 1;
+  m.width = static_cast<uint32_t>(finite);
+  m.is_dense = true;
+  sensor_msgs::PointCloud2Iterator<float> x(m, "x"), y(m, "y"), z(m, "z");
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (!std::isfinite(values[k])) continue;
+    const core::Vec3 p = point(k);
+    *x = static_cast<float>(p.x());
+    *y = static_cast<float>(p.y());
+    *z = static_cast<float>(p.z());
+    ++x;
+    ++y;
+    ++z;
+  }
+  return m;
+}
+
+}  // namespace
+
 sensor_msgs::LaserScan scanMessage(const core::Lidar& lidar, const std::vector<double>& ranges, double rate,
                                    const std::string& frame, const ros::Time& stamp) {
   const core::LidarSettings& s = lidar.settings();
@@ -28,29 +61,7 @@ sensor_msgs::LaserScan scanMessage(const core::Lidar& lidar, const std::vector<d
 
 sensor_msgs::PointCloud2 cloudMessage(const core::Lidar& lidar, const std::vector<double>& ranges,
                                       const std::string& frame, const ros::Time& stamp) {
-  sensor_msgs::PointCloud2 m;
-  m.header.stamp = stamp;
-  m.header.frame_id = frame;
-  sensor_msgs::PointCloud2Modifier modifier(m);
-  modifier.setPointCloud2FieldsByString(1, "xyz");
-  const auto finite =
-      static_cast<std::size_t>(std::count_if(ranges.begin(), ranges.end(), [](double r) { return std::isfinite(r); }));
-  modifier.resize(finite);
-  m.height = 1;
-  m.width = static_cast<uint32_t>(finite);
-  m.is_dense = true;
-  sensor_msgs::PointCloud2Iterator<float> x(m, "x"), y(m, "y"), z(m, "z");
-  for (std::size_t k = 0; k < ranges.size(); ++k) {
-    if (!std::isfinite(ranges[k])) continue;
-    const core::Vec3 p = ranges[k] * lidar.direction(k);
-    *x = static_cast<float>(p.x());
-    *y = static_cast<float>(p.y());
-    *z = static_cast<float>(p.z());
-    ++x;
-    ++y;
-    ++z;
-  }
-  return m;
+  return xyzCloud(ranges, frame, stamp, [&](std::size_t k) { return ranges[k] * lidar.direction(k); });
 }
 
 sensor_msgs::Image depthImageMessage(const core::DepthCamera& camera, const std::vector<double>& depth,
@@ -98,32 +109,13 @@ sensor_msgs::CameraInfo cameraInfoMessage(const core::DepthCamera& camera, const
 
 sensor_msgs::PointCloud2 depthCloudMessage(const core::DepthCamera& camera, const std::vector<double>& depth,
                                            const std::string& frame, const ros::Time& stamp) {
-  const int width = camera.settings().width;
-  sensor_msgs::PointCloud2 m;
-  m.header.stamp = stamp;
-  m.header.frame_id = frame;
-  sensor_msgs::PointCloud2Modifier modifier(m);
-  modifier.setPointCloud2FieldsByString(1, "xyz");
-  const auto finite =
-      static_cast<std::size_t>(std::count_if(depth.begin(), depth.end(), [](double z) { return std::isfinite(z); }));
-  modifier.resize(finite);
-  m.height = 1;
-  m.width = static_cast<uint32_t>(finite);
-  m.is_dense = true;
-  sensor_msgs::PointCloud2Iterator<float> x(m, "x"), y(m, "y"), z(m, "z");
-  for (std::size_t k = 0; k < depth.size(); ++k) {
-    if (!std::isfinite(depth[k])) continue;
-    const std::size_t row = k / static_cast<std::size_t>(width);  // whole rows above this pixel
-    const double u = static_cast<double>(k - row * static_cast<std::size_t>(width));
-    const double v = static_cast<double>(row);
-    *x = static_cast<float>((u - camera.cx()) * depth[k] / camera.focal());
-    *y = static_cast<float>((v - camera.cy()) * depth[k] / camera.focal());
-    *z = static_cast<float>(depth[k]);
-    ++x;
-    ++y;
-    ++z;
-  }
-  return m;
+  const auto width = static_cast<std::size_t>(camera.settings().width);
+  return xyzCloud(depth, frame, stamp, [&](std::size_t k) {
+    const std::size_t row = k / width;  // whole rows above this pixel
+    const double u = static_cast<double>(k - row * width), v = static_cast<double>(row);
+    return core::Vec3((u - camera.cx()) * depth[k] / camera.focal(), (v - camera.cy()) * depth[k] / camera.focal(),
+                      depth[k]);
+  });
 }
 
 void RangeSensors::addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
