@@ -1,4 +1,4 @@
-// The robots' lidars in the node: range_sensors.h.
+// The robots' lidars and depth cameras in the node: range_sensors.h.
 #include "rigid_body_sim/ros/range_sensors.h"
 
 #include <sensor_msgs/point_cloud2_iterator.h>

@@ -22,9 +22,15 @@ void checkDepthCamera(const DepthCameraSettings& s) {
 DepthCamera::DepthCamera(const DepthCameraSettings& settings) : settings_(settings), rng_(settings.seed) {
   checkDepthCamera(settings_);
   focal_ = 0.5 * settings_.width / std::tan(0.5 * settings_.hfov);
-  rays_.reserve(static_cast<std::size_t>(settings_.width) * static_cast<std::size_t>(settings_.height));
+  const std::size_t pixels = static_cast<std::size_t>(settings_.width) * static_cast<std::size_t>(settings_.height);
+  rays_.reserve(pixels);
+  per_depth_.reserve(pixels);
   for (int v = 0; v < settings_.height; ++v) {
-    for (int u = 0; u < settings_.width; ++u) rays_.emplace_back(1.0, -(u - cx()) / focal_, -(v - cy()) / focal_);
+    for (int u = 0; u < settings_.width; ++u) {
+      const Vec3 ray(1.0, -(u - cx()) / focal_, -(v - cy()) / focal_);  // x = 1: one unit of depth
+      per_depth_.push_back(ray.norm());
+      rays_.push_back(ray / per_depth_.back());
+    }
   }
 }
 
@@ -35,8 +41,8 @@ void DepthCamera::capture(const Model& model, const State& state, const Pose& X_
   const RayWorld world(model, state, skip);
   depth.resize(rays_.size());
   for (std::size_t k = 0; k < rays_.size(); ++k) {
-    const double length = rays_[k].norm();  // range per unit depth
-    const double t = world.cast(X_WS.translation, R_WS * (rays_[k] / length), s.max_depth * length).range;
+    const double length = per_depth_[k];
+    const double t = world.cast(X_WS.translation, R_WS * rays_[k], s.max_depth * length).range;
     const double z = t / length;
     if (t == kNoHit) {
       depth[k] = kNoHit;

@@ -52,7 +52,8 @@ class DepthCamera {
  private:
   DepthCameraSettings settings_;
   double focal_ = 0.0;
-  std::vector<Vec3> rays_;  ///< per pixel, in S, with x = 1 (depth = range / |ray|)
+  std::vector<Vec3> rays_;         ///< per pixel, its unit direction in S
+  std::vector<double> per_depth_;  ///< per pixel, range per unit depth (1 / the direction's x)
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};
 };
