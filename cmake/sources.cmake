@@ -62,7 +62,7 @@ set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/config.cpp
   ${RBS_SOURCE_ROOT}/src/io/input_bounds.cpp
   ${RBS_SOURCE_ROOT}/src/io/joint_start.cpp
-  ${RBS_SOURCE_ROOT}/src/io/lidar_mount.cpp
+  ${RBS_SOURCE_ROOT}/src/io/sensor_mount.cpp
   ${RBS_SOURCE_ROOT}/src/io/mesh_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/scene_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/device_config.cpp

@@ -42,13 +42,14 @@ void checked(const Check& check) {
 
 ImuEntry parseImu(const YAML::Node& node, const std::string& path) {
   requireKnownKeys(node, path,
-                   {"frame_id", "link", "pose", "rate", "seed", "gyro_noise", "accel_noise", "gyro_bias_walk",
+                   {"frame_id", "link", "topic", "pose", "rate", "seed", "gyro_noise", "accel_noise", "gyro_bias_walk",
                     "accel_bias_walk", "orientation_noise"});
   ImuEntry imu;
   core::ImuSettings& s = imu.settings;
   imu.key = path;
   if (node["frame_id"]) imu.frame_id = text(node["frame_id"], path + ".frame_id");
   if (node["link"]) imu.link = text(node["link"], path + ".link");
+  if (node["topic"]) imu.topic = text(node["topic"], path + ".topic");
   if (node["pose"]) {
     const YAML::Node pose = node["pose"];
     requireKnownKeys(pose, path + ".pose", {"position", "rpy", "quaternion"});

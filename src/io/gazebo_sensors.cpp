@@ -1,8 +1,10 @@
 // The sensors of a URDF's Gazebo markup: gazebo_sensors.h.
 #include "gazebo_sensors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -17,15 +19,36 @@ std::string attribute(const TiXmlElement& e, const char* name) {
   return value != nullptr ? value : "";
 }
 
-/// The plugin of `sensor` this project runs: 1 laser (LaserScan), 2 Velodyne (PointCloud2), 0 none.
+/// The plugin of `sensor` this project runs: 1 laser (LaserScan), 2 Velodyne (PointCloud2), 3 IMU, 0 none.
 int pluginKind(const TiXmlElement& sensor, const TiXmlElement** plugin) {
+  const std::string type = attribute(sensor, "type");
+  const bool ray = type == "ray" || type == "gpu_ray";
   for (const TiXmlElement* p = sensor.FirstChildElement("plugin"); p; p = p->NextSiblingElement("plugin")) {
     const std::string file = attribute(*p, "filename");
     *plugin = p;
-    if (file == "libgazebo_ros_laser.so" || file == "libgazebo_ros_gpu_laser.so") return 1;
-    if (file == "libgazebo_ros_velodyne_laser.so" || file == "libgazebo_ros_velodyne_gpu_laser.so") return 2;
+    if (ray && (file == "libgazebo_ros_laser.so" || file == "libgazebo_ros_gpu_laser.so")) return 1;
+    if (ray && (file == "libgazebo_ros_velodyne_laser.so" || file == "libgazebo_ros_velodyne_gpu_laser.so")) return 2;
+    if (type == "imu" && file == "libgazebo_ros_imu_sensor.so") return 3;
   }
   return 0;
+}
+
+/// A model plugin (`<gazebo><plugin>`) this project runs: gazebo_ros_imu.
+bool readsModelPlugin(const TiXmlElement& plugin) { return attribute(plugin, "filename") == "libgazebo_ros_imu.so"; }
+
+/// The text of `parent`'s child `name`, or `fallback`.
+std::string childText(const TiXmlElement& parent, const char* name, const std::string& fallback) {
+  const TiXmlElement* e = parent.FirstChildElement(name);
+  return e != nullptr && e->GetText() != nullptr ? e->GetText() : fallback;
+}
+
+/// SDF's `<pose>` x y z roll pitch yaw: a translation, then fixed-axis rotations about x, y, z.
+core::Pose sdfPose(const std::vector<double>& p) {
+  core::Pose X;
+  X.translation = core::Vec3(p[0], p[1], p[2]);
+  X.rotation = core::Quat(Eigen::AngleAxisd(p[5], core::Vec3::UnitZ()) * Eigen::AngleAxisd(p[4], core::Vec3::UnitY()) *
+                          Eigen::AngleAxisd(p[3], core::Vec3::UnitX()));
+  return X;
 }
 
 /// Reads the numbers of elements under one sensor, each error naming its path.
@@ -69,21 +92,97 @@ class Numbers {
 
 }  // namespace
 
-bool readsSensor(const TiXmlElement& sensor) {
-  const std::string type = attribute(sensor, "type");
+bool readsMarkup(const TiXmlElement& e) {
+  const std::string tag = e.Value();
   const TiXmlElement* plugin = nullptr;
-  return (type == "ray" || type == "gpu_ray") && pluginKind(sensor, &plugin) != 0;
+  if (tag == "sensor") return pluginKind(e, &plugin) != 0;
+  return tag == "plugin" && readsModelPlugin(e);
 }
 
-std::vector<LidarEntry> gazeboLidars(const TiXmlElement& robot, const Unread& unread) {
-  std::vector<LidarEntry> out;
+namespace {
+
+/// The IMU of `<sensor type="imu">` on `link` with gazebo_ros_imu_sensor:
+/// its `<pose>`; the plugin's `updateRateHZ` (1 Hz when not given, as the
+/// plugin's default; 0: each sensor update) under the sensor's
+/// `<update_rate>` (0: every step); `gaussianNoise` on every reading, with
+/// the sensor's own `<imu>` noise σ; `topicName` ("imu_data"), `frameName`.
+ImuEntry sensorImu(const TiXmlElement& s, const TiXmlElement& plugin, const std::string& link, const Unread& unread) {
+  ImuEntry imu;
+  imu.link = link;
+  imu.key = "<gazebo reference=\"" + link + "\"> <sensor name=\"" + attribute(s, "name") + "\">";
+  const Numbers numbers(imu.key);
+  core::ImuSettings& c = imu.settings;
+  if (const TiXmlElement* pose = s.FirstChildElement("pose")) c.X_LS = sdfPose(numbers.read(*pose, "pose", 6));
+  double sensor_rate = 0.0, plugin_rate = 1.0;
+  numbers.at(&s, "update_rate", sensor_rate);
+  Numbers(imu.key + " <plugin>").at(&plugin, "updateRateHZ", plugin_rate);
+  const auto every = [](double hz) { return hz > 0.0 ? hz : std::numeric_limits<double>::infinity(); };
+  c.rate = std::min(every(sensor_rate), every(plugin_rate));  // capped at one a step when mounted
+  double sigma = 0.0, own = 0.0;
+  Numbers(imu.key + " <plugin>").at(&plugin, "gaussianNoise", sigma);
+  for (const char* axis : {"x", "y", "z"}) {  // SDF's per-axis noise: the largest σ
+    double gyro = 0.0, accel = 0.0;
+    numbers.at(&s, std::string("imu/angular_velocity/") + axis + "/noise/stddev", gyro);
+    numbers.at(&s, std::string("imu/linear_acceleration/") + axis + "/noise/stddev", accel);
+    own = std::max({own, gyro, accel});
+  }
+  c.gyro_noise = c.accel_noise = std::hypot(sigma, own);
+  c.orientation_noise = sigma;
+  imu.topic = childText(plugin, "topicName", "imu_data");
+  imu.frame_id = childText(plugin, "frameName", "");
+  double offset = 0.0;
+  for (const char* name : {"rpyOffset", "rpyOffsets"}) {
+    if (const TiXmlElement* e = plugin.FirstChildElement(name)) {
+      for (double x : Numbers(imu.key + " <plugin>").read(*e, name, 3)) offset = std::max(offset, std::abs(x));
+    }
+  }
+  if (offset != 0.0) unread("<plugin> libgazebo_ros_imu_sensor.so <rpyOffset>", link);
+  return imu;
+}
+
+/// The IMU of gazebo_ros_imu's model plugin: on `bodyName` (required),
+/// `updateRate` (0 or none: every step), `gaussianNoise`, `topicName`
+/// ("/default_imu"), `frameName` (bodyName). Its readings follow REP 145
+/// here: the plugin's own leave gravity out of the acceleration.
+ImuEntry pluginImu(const TiXmlElement& plugin, const Unread& unread) {
+  ImuEntry imu;
+  imu.key = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
+  imu.link = childText(plugin, "bodyName", "");
+  if (imu.link.empty()) throw std::invalid_argument(imu.key + ": no <bodyName> (Gazebo refuses it too)");
+  const Numbers numbers(imu.key);
+  double rate = 0.0, sigma = 0.0;
+  numbers.at(&plugin, "updateRate", rate);
+  numbers.at(&plugin, "gaussianNoise", sigma);
+  imu.settings.rate = rate > 0.0 ? rate : std::numeric_limits<double>::infinity();
+  imu.settings.gyro_noise = imu.settings.accel_noise = sigma;
+  imu.topic = childText(plugin, "topicName", "/default_imu");
+  imu.frame_id = childText(plugin, "frameName", imu.link);
+  if (plugin.FirstChildElement("rpyOffset") != nullptr || plugin.FirstChildElement("rpyOffsets") != nullptr) {
+    unread("<plugin> libgazebo_ros_imu.so <rpyOffset>", imu.link);
+  }
+  return imu;
+}
+
+}  // namespace
+
+LinkSensors gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
+  LinkSensors out;
   for (const TiXmlElement* g = robot.FirstChildElement("gazebo"); g; g = g->NextSiblingElement("gazebo")) {
     const std::string link = attribute(*g, "reference");
-    if (link.empty()) continue;
+    if (link.empty()) {
+      for (const TiXmlElement* p = g->FirstChildElement("plugin"); p; p = p->NextSiblingElement("plugin")) {
+        if (readsModelPlugin(*p)) out.imus.push_back(pluginImu(*p, unread));
+      }
+      continue;
+    }
     for (const TiXmlElement* s = g->FirstChildElement("sensor"); s; s = s->NextSiblingElement("sensor")) {
-      if (!readsSensor(*s)) continue;
       const TiXmlElement* plugin = nullptr;
       const int kind = pluginKind(*s, &plugin);
+      if (kind == 0) continue;
+      if (kind == 3) {
+        out.imus.push_back(sensorImu(*s, *plugin, link, unread));
+        continue;
+      }
       LidarEntry l;
       l.link = link;
       l.key = "<gazebo reference=\"" + link + "\"> <sensor name=\"" + attribute(*s, "name") + "\">";
@@ -92,13 +191,7 @@ std::vector<LidarEntry> gazeboLidars(const TiXmlElement& robot, const Unread& un
       c.min_angle = c.max_angle = 0.0;  // SDF's defaults: one ray straight ahead
       c.samples = 640;
       c.min_range = 0.0;  // <range><min> and <max> are required in SDF
-      if (const TiXmlElement* pose = s->FirstChildElement("pose")) {
-        const std::vector<double> p = numbers.read(*pose, "pose", 6);
-        l.pose.translation = core::Vec3(p[0], p[1], p[2]);
-        l.pose.rotation =
-            core::Quat(Eigen::AngleAxisd(p[5], core::Vec3::UnitZ()) * Eigen::AngleAxisd(p[4], core::Vec3::UnitY()) *
-                       Eigen::AngleAxisd(p[3], core::Vec3::UnitX()));
-      }
+      if (const TiXmlElement* pose = s->FirstChildElement("pose")) l.pose = sdfPose(numbers.read(*pose, "pose", 6));
       numbers.at(s, "update_rate", l.rate);
       if (l.rate == 0.0) {  // Gazebo's "every physics step": 10 Hz here, said
         l.rate = 10.0;
@@ -134,7 +227,7 @@ std::vector<LidarEntry> gazeboLidars(const TiXmlElement& robot, const Unread& un
         own.at(plugin, "max_range", c.max_range);
         own.at(plugin, "gaussianNoise", c.noise);
       }
-      out.push_back(std::move(l));
+      out.lidars.push_back(std::move(l));
     }
   }
   return out;

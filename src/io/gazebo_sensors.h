@@ -3,7 +3,10 @@
 // type="ray">` (or `gpu_ray`) with gazebo_ros's laser plugins
 // (libgazebo_ros_laser.so, libgazebo_ros_gpu_laser.so: a LaserScan) or the
 // Velodyne ones (libgazebo_ros_velodyne_laser.so, ..._gpu_laser.so: a
-// PointCloud2), each turned into a lidar entry on LINK.
+// PointCloud2), each turned into a lidar entry on LINK; `<sensor
+// type="imu">` with gazebo_ros_imu_sensor, and the model plugin
+// gazebo_ros_imu (`<gazebo><plugin filename="libgazebo_ros_imu.so">`), each
+// an IMU entry.
 #pragma once
 
 #include <tinyxml.h>
@@ -16,19 +19,21 @@
 
 namespace rigid_body_sim::io::detail {
 
-/// Whether `sensor` (a <sensor> element) is one gazeboLidars reads.
-bool readsSensor(const TiXmlElement& sensor);
+/// Whether `e` (a <sensor> or <plugin> element under <gazebo>) is one gazeboSensors reads.
+bool readsMarkup(const TiXmlElement& e);
 
-/// The lidars of `robot`'s markup: the sensor's `<pose>` (x y z roll pitch
+/// The sensors of `robot`'s markup. A lidar: the sensor's `<pose>` (x y z roll pitch
 /// yaw) in LINK, `<update_rate>`, `<ray><scan><horizontal>` and
 /// `<vertical>` (`samples` times `resolution`, `min_angle`, `max_angle`),
 /// `<range>` (`min`, `max`), `<noise>` (`stddev`), and the plugin's
 /// `topicName` and `frameName` (a Velodyne plugin's `min_range`,
 /// `max_range` and `gaussianNoise` over the sensor's). Each entry's key
 /// names its markup. What it does not run (a noise's non-zero mean) is
-/// told to `unread` (kind, link). Throws std::invalid_argument naming the
-/// element: a number it cannot read.
+/// told to `unread` (kind, link). An IMU: as sensorImu and pluginImu in
+/// gazebo_sensors.cpp say, its rate infinite for "every step" (the mount
+/// caps it at one sample a step). Throws std::invalid_argument naming the
+/// element: a number it cannot read, an IMU plugin without its link.
 using Unread = std::function<void(const std::string& kind, const std::string& name)>;
-std::vector<LidarEntry> gazeboLidars(const TiXmlElement& robot, const Unread& unread);
+LinkSensors gazeboSensors(const TiXmlElement& robot, const Unread& unread);
 
 }  // namespace rigid_body_sim::io::detail

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <utility>
 #include <variant>
 
@@ -16,17 +17,17 @@
 namespace rigid_body_sim::io {
 namespace {
 
-/// What one URDF file describes: a body, or a robot and the lidars of its Gazebo markup.
+/// What one URDF file describes: a body, or a robot and the sensors of its Gazebo markup.
 struct Described {
   std::variant<core::BodySpec, core::ArticulationModel> what;
-  std::vector<LidarEntry> lidars;
+  LinkSensors sensors;
 };
 
 /// A body, or a robot when the URDF has a moving joint.
 Described describe(const UrdfText& text, UrdfOptions options) {
   Described d;
   if (describesRobot(text.xml, text.source)) {
-    options.lidars = &d.lidars;
+    options.sensors = &d.sensors;
     d.what = loadArticulationString(text.xml, text.source, text.base_dir, options);
   } else {
     d.what = loadUrdfString(text.xml, text.source, text.base_dir, options);
@@ -34,10 +35,12 @@ Described describe(const UrdfText& text, UrdfOptions options) {
   return d;
 }
 
-/// The config's lidars and then the URDF's.
-std::vector<LidarEntry> allLidars(std::vector<LidarEntry> config, const std::vector<LidarEntry>& urdf) {
-  config.insert(config.end(), urdf.begin(), urdf.end());
-  return config;
+/// The sensors a robot's config entry (or the one robot's config) puts on its links.
+LinkSensors configSensors(const std::optional<ImuEntry>& imu, const std::vector<LidarEntry>& lidars,
+                          const std::vector<DepthCameraEntry>& cameras) {
+  LinkSensors s{{}, lidars, cameras};
+  if (imu) s.imus.push_back(*imu);
+  return s;
 }
 
 /// Each URDF of the bodies list read and parsed once (a world of 10,000
@@ -60,13 +63,12 @@ class Files {
   std::map<std::string, Described> files_;
 };
 
-/// Refuses a robot's sensor and driver keys (`key`.imu, ...), not read yet.
-void refuseBodyDevices(const std::string& key, const std::string& robot, bool imu, bool odom_noise, bool cmd_vel) {
-  for (const auto& [what, set] :
-       {std::pair<const char*, bool>{"imu", imu}, {"odom_noise", odom_noise}, {"cmd_vel", cmd_vel}}) {
+/// Refuses a robot's odometry and driver keys (`key`.odom_noise, ...), not read yet.
+void refuseBodyDevices(const std::string& key, const std::string& robot, bool odom_noise, bool cmd_vel) {
+  for (const auto& [what, set] : {std::pair<const char*, bool>{"odom_noise", odom_noise}, {"cmd_vel", cmd_vel}}) {
     if (set) {
       throw ConfigError("config key '" + key + what + "': robot '" + robot +
-                        "' does not read it yet (a body's sensor and driver, not a robot's)");
+                        "' does not read it yet (a body's odometry and driver, not a robot's)");
     }
   }
 }
@@ -118,8 +120,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
   std::vector<core::ArticulationState> robot_starts;
   std::vector<int> entry;
   std::vector<RobotControls> controls;
-  std::vector<std::vector<RobotLidar>> lidars;
-  std::vector<std::vector<RobotCamera>> cameras;
+  std::vector<RobotSensors> sensors;
   for (std::size_t i = 0; i < config.bodies.size(); ++i) {
     const BodyEntry& e = config.bodies[i];
     const std::string key = "bodies[" + std::to_string(i) + "]";
@@ -150,11 +151,10 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     core::ArticulationModel model = std::get<core::ArticulationModel>(described.what);
     model.name = e.name;
     checkRobotSettings(config, e.name);
-    refuseBodyDevices(key + ".", e.name, e.imu.has_value(), e.odom_noise.has_value(), e.cmd_vel.has_value());
+    refuseBodyDevices(key + ".", e.name, e.odom_noise.has_value(), e.cmd_vel.has_value());
     robot_starts.push_back(robotStart(model, e.initial, e.initial_joints, config.model.limits, key + ".initial"));
     controls.push_back(buildControls(e.controllers, model));
-    lidars.push_back(mountLidars(allLidars(e.lidars, described.lidars), model));
-    cameras.push_back(mountCameras(e.cameras, model));
+    sensors.push_back(mountSensors(configSensors(e.imu, e.lidars, e.cameras), described.sensors, model, spec.dt));
     entry.push_back(-1 - static_cast<int>(robots.size()));
     robots.push_back({e.name, std::move(model), e.friction, e.restitution});
   }
@@ -166,8 +166,8 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
   }
   core::SceneState state = core::sceneState(scene, free, robot_starts);
   noteStartsInside(scene, state, notes);
-  return {std::move(scene),  std::move(state),   std::move(entry), std::move(controls),
-          std::move(lidars), std::move(cameras), std::move(notes)};
+  return {std::move(scene),    std::move(state),   std::move(entry),
+          std::move(controls), std::move(sensors), std::move(notes)};
 }
 
 }  // namespace rigid_body_sim::io
@@ -191,24 +191,23 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
     notes.insert(notes.end(), world.notes.begin(), world.notes.end());
     core::Scene scene(std::move(world.model));
     core::SceneState state{std::move(world.state), {}};
-    return {std::move(scene), std::move(state), {0}, {}, {}, {}, std::move(notes)};
+    return {std::move(scene), std::move(state), {0}, {}, {}, std::move(notes)};
   }
   core::ArticulationModel model = std::move(std::get<core::ArticulationModel>(described.what));
   checkRobotSettings(config, model.name);
-  refuseBodyDevices("", model.name, config.imu.has_value(), config.odom_noise.has_value(), config.cmd_vel.has_value());
+  refuseBodyDevices("", model.name, config.odom_noise.has_value(), config.cmd_vel.has_value());
   core::ArticulationState start =
       robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
   RobotControls controls = buildControls(config.controllers, model);
-  std::vector<RobotLidar> lidars = mountLidars(allLidars(config.lidars, described.lidars), model);
-  std::vector<RobotCamera> cameras = mountCameras(config.cameras, model);
+  RobotSensors sensors =
+      mountSensors(configSensors(config.imu, config.lidars, config.cameras), described.sensors, model, config.model.dt);
   core::ModelSpec spec = config.model;
   spec.bodies.clear();
   const std::string name = model.name;
   core::Scene scene(spec, {{name, std::move(model)}});
   core::SceneState state = core::sceneState(scene, {}, {start});
   noteStartsInside(scene, state, notes);
-  return {std::move(scene),     std::move(state), {-1}, {std::move(controls)}, {std::move(lidars)},
-          {std::move(cameras)}, std::move(notes)};
+  return {std::move(scene), std::move(state), {-1}, {std::move(controls)}, {std::move(sensors)}, std::move(notes)};
 }
 
 }  // namespace rigid_body_sim::io

@@ -60,10 +60,10 @@ urdf::ModelInterfaceSharedPtr Lumper::parse(const std::string& xml) {
   capsules_ = std::move(parsed.capsules);
   surface_friction_ = std::move(parsed.surface_friction);
   unread_markup_ = std::move(parsed.unread_markup);
-  if (options_.lidars != nullptr) {
-    *options_.lidars = std::move(parsed.lidars);
+  if (options_.sensors != nullptr) {
+    *options_.sensors = std::move(parsed.sensors);
   } else {  // a body's, or a load that runs no sensors
-    for (auto& [kind, names] : parsed.lidar_markup) {
+    for (auto& [kind, names] : parsed.sensor_markup) {
       std::vector<std::string>& all = unread_markup_[kind];
       all.insert(all.end(), names.begin(), names.end());
     }

@@ -256,8 +256,8 @@ void unreadMarkup(const TiXmlElement& robot, ParsedUrdf& out) {
         kind = "<plugin> " + attribute(*e, "filename");
       }
       const std::string name = !reference.empty() ? reference : tag == "plugin" ? attribute(*e, "name") : "the robot";
-      if (tag == "sensor" && readsSensor(*e)) {  // a lidar (gazebo_sensors.h), for a robot
-        out.lidar_markup[kind].push_back(name);
+      if (readsMarkup(*e)) {  // a sensor (gazebo_sensors.h), for a robot
+        out.sensor_markup[kind].push_back(name);
         continue;
       }
       add(kind, name);
@@ -289,7 +289,7 @@ ParsedUrdf parseUrdf(const std::string& xml) {
     if (problem.empty()) problem = gazeboFriction(*robot, out);
     if (!problem.empty()) throw std::invalid_argument(problem);
     unreadMarkup(*robot, out);
-    out.lidars = gazeboLidars(*robot, [&out](const std::string& kind, const std::string& name) {
+    out.sensors = gazeboSensors(*robot, [&out](const std::string& kind, const std::string& name) {
       std::vector<std::string>& names = out.unread_markup[kind];
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     });

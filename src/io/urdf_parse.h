@@ -35,11 +35,10 @@ struct ParsedUrdf {
   /// libgazebo_ros_laser.so`, `<kp>`, `<transmission>`), each kind's links
   /// or names in document order; `<material>`, drawing only, is left out.
   std::map<std::string, std::vector<std::string>> unread_markup;
-  /// The ray sensors of its Gazebo markup with a ROS plugin, as lidars
-  /// (gazebo_sensors.h), and their markup as unread_markup names it (for a
-  /// load that takes no lidars).
-  std::vector<LidarEntry> lidars;
-  std::map<std::string, std::vector<std::string>> lidar_markup;
+  /// The sensors of its Gazebo markup with a ROS plugin (gazebo_sensors.h),
+  /// and their markup as unread_markup names it (for a load that takes no sensors).
+  LinkSensors sensors;
+  std::map<std::string, std::vector<std::string>> sensor_markup;
 };
 
 /// urdfdom's model of `xml`. Throws std::invalid_argument, one line that
@@ -47,7 +46,7 @@ struct ParsedUrdf {
 /// that form a cycle (naming the joint), or anything urdfdom could not read
 /// (naming the link and element, and urdfdom's own words on the attribute),
 /// or a `<gazebo reference><mu1>` or `<mu2>` that is not a number ≥ 0, or
-/// a number of a ray sensor's markup it cannot read.
+/// a number of a sensor's markup it cannot read.
 ParsedUrdf parseUrdf(const std::string& xml);
 
 }  // namespace rigid_body_sim::io::detail

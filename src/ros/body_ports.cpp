@@ -46,11 +46,12 @@ BodyPorts openPorts(const PortContext& context, const core::BodyModel& body, con
   // refused with nothing changed (it ended the node once).
   std::optional<core::ImuSettings> imu_settings;
   if (imu) {
-    ports.imu_frame = prefix + imu->frame_id;
-    bool taken = imu->frame_id == body.link;
-    for (const core::FixedLink& link : body.fixed_links) taken = taken || imu->frame_id == link.name;
+    const std::string own = imu->frame_id.empty() ? "imu_link" : imu->frame_id;
+    ports.imu_frame = prefix + own;
+    bool taken = own == body.link;
+    for (const core::FixedLink& link : body.fixed_links) taken = taken || own == link.name;
     if (taken || ports.imu_frame == context.world_frame) {
-      throw io::ConfigError(imu->key + ".frame_id '" + imu->frame_id + "' of body '" + body.name +
+      throw io::ConfigError(imu->key + ".frame_id '" + own + "' of body '" + body.name +
                             "': is already a frame (of the body, or the world); name the sensor's own frame");
     }
     imu_settings = imu->settings;
@@ -70,9 +71,11 @@ BodyPorts openPorts(const PortContext& context, const core::BodyModel& body, con
     ports.ground_truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh, prefix + "ground_truth", 10);
   }
   if (imu_settings) {
-    ports.imu = std::make_unique<core::Imu>(*imu_settings, core::BodyState{});  // add() gives it the start
+    ports.imu = std::make_unique<core::Imu>(*imu_settings);  // add() gives it the start
     ports.imu_every = std::max(1LL, std::llround(1.0 / (imu->settings.rate * context.dt)));
-    ports.imu_pub = CountedPublisher::advertise<sensor_msgs::Imu>(nh, prefix + "imu", 100);
+    const std::string& topic = imu->topic;
+    ports.imu_pub =
+        CountedPublisher::advertise<sensor_msgs::Imu>(nh, topic.front() == '/' ? topic : prefix + topic, 100);
   }
   if (!topics && !cmd_vel && !odom_noise && !imu) return ports;
   ports.odom = CountedPublisher::advertise<nav_msgs::Odometry>(nh, prefix + "odom", 10);
@@ -84,7 +87,7 @@ BodyPorts openPorts(const PortContext& context, const core::BodyModel& body, con
 }
 
 BodyPorts& PortRegistry::add(BodyPorts ports, const core::BodyModel& body, const core::BodyState& start, double t) {
-  if (ports.imu) ports.imu->restart(start);
+  if (ports.imu) ports.imu->restart(core::linkState(body, start));
   ports.last_odom = t;
   ports.colour = entered_++;
   BodyDirectory::Entry entry{body.name, ports.frame, {}};
@@ -102,13 +105,13 @@ void PortRegistry::erase(std::size_t i) {
   closer_->addCallback(boost::make_shared<Release>(std::move(gone)));
 }
 
-void PortRegistry::restart(std::size_t i, const core::BodyState& now) {
-  if (ports_[i].imu) ports_[i].imu->restart(now);
+void PortRegistry::restart(std::size_t i, const core::BodyModel& body, const core::BodyState& now) {
+  if (ports_[i].imu) ports_[i].imu->restart(core::linkState(body, now));
 }
 
-void PortRegistry::restartAll(const core::State& state) {
+void PortRegistry::restartAll(const core::Model& model, const core::State& state) {
   for (std::size_t i = 0; i < ports_.size(); ++i) {
-    restart(i, state.bodies[i]);
+    restart(i, model.body(i), state.bodies[i]);
     if (ports_[i].odom_noise) ports_[i].odom_noise->restart();  // the drift starts again
   }
 }

@@ -50,16 +50,14 @@ io::SceneSetup loadWorld(const NodeParams& params, const ros::NodeHandle& nh) {
   });
 }
 
-/// The simulation of `world`; its controllers go to `controls`, its lidars
-/// to `lidars`, and what its loading repaired or warns of to the log, each
-/// message once.
+/// The simulation of `world`; its controllers go to `controls`, its
+/// sensors to `sensors`, and what its loading repaired or warns of to the
+/// log, each message once.
 core::Simulation startOf(io::SceneSetup world, std::vector<io::RobotControls>& controls,
-                         std::vector<std::vector<io::RobotLidar>>& lidars,
-                         std::vector<std::vector<io::RobotCamera>>& cameras) {
+                         std::vector<io::RobotSensors>& sensors) {
   for (const std::string& note : world.notes) ROS_WARN("sim_node: %s", note.c_str());
   controls = std::move(world.controls);
-  lidars = std::move(world.lidars);
-  cameras = std::move(world.cameras);
+  sensors = std::move(world.sensors);
   return {std::move(world.scene), std::move(world.state)};
 }
 
@@ -82,7 +80,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     : nh_(nh),
       pnh_(private_nh),
       params_(readParams(private_nh)),
-      sim_(startOf(loadWorld(params_, nh_), start_controls_, start_lidars_, start_cameras_)),
+      sim_(startOf(loadWorld(params_, nh_), start_controls_, start_sensors_)),
       use_sim_time_(ros::param::param("/use_sim_time", false)),
       time_(model_.dt(), !use_sim_time_) {
   // ROS shut down while the world loaded (rosnode kill; SIGINT ends the
@@ -152,16 +150,17 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
                            [this](std::size_t r) { return commands_->jointStateRate(r); });
   checkRobotFrames(robot_publisher_->robots(), settings_.world_frame, ports_.frames());
   range_sensors_.emplace(nh_, model_.dt());
-  start_lidars_.resize(sim_.scene.robots().size());
-  start_cameras_.resize(sim_.scene.robots().size());
+  link_imus_.emplace(nh_, model_.dt());
+  start_sensors_.resize(sim_.scene.robots().size());
   for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
     robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
     const std::string& name = sim_.scene.robots()[r].name;
-    range_sensors_->addRobot(name, several ? name + "/" : "", robot_publisher_->robots()[r].frame_prefix,
-                             start_lidars_[r], start_cameras_[r]);
+    const std::string prefix = several ? name + "/" : "";
+    const std::string& frame_prefix = robot_publisher_->robots()[r].frame_prefix;
+    range_sensors_->addRobot(name, prefix, frame_prefix, start_sensors_[r].lidars, start_sensors_[r].cameras);
+    link_imus_->addRobot(sim_, r, prefix, frame_prefix, start_sensors_[r].imus);
   }
-  start_lidars_.clear();
-  start_cameras_.clear();
+  start_sensors_.clear();
   services_ = {
       pnh_.advertiseService("apply_wrench", &LoadRequests::applyWrench, &load_requests_),
       pnh_.advertiseService("apply_impulse", &LoadRequests::applyImpulse, &load_requests_),
@@ -207,13 +206,15 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   robot_publisher_->addRobot(sim_.scene.robots()[r], prefix, hz, spawn.frame_prefix);
   commands_->addRobot(sim_, r, prefix, spawn.frame_prefix, std::move(controls));
   robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
-  range_sensors_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.lidars);
+  range_sensors_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.lidars, spawn.sensors.cameras);
+  link_imus_->addRobot(sim_, r, prefix, spawn.frame_prefix, spawn.sensors.imus);
 }
 
 void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {
   robot_publisher_->removeRobot(r);
   commands_->removeRobot(r);
   range_sensors_->removeRobot(r);
+  link_imus_->removeRobot(r);
   robots_speed_limited_.erase(name);
 }
 

@@ -107,18 +107,19 @@ io::RobotControls requestedControls(const SpawnBody::Request& req, const ros::No
 /// (the base where the loop puts it), its controllers. Throws std::exception
 /// naming the field.
 void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf, const io::UrdfOptions& options,
-                        const core::SpeedLimits& limits, const ros::NodeHandle& nh, SpawnQueue::Spawn& spawn) {
-  for (const auto& [field, given] : {std::pair<const char*, bool>{"imu", !req.imu.empty()},
-                                     {"odom_noise", !req.odom_noise.empty()},
-                                     {"cmd_vel", !req.cmd_vel.empty()}}) {
-    if (given) throw std::invalid_argument(std::string(field) + ": a robot takes no devices yet");
+                        const core::SpeedLimits& limits, double dt, const ros::NodeHandle& nh,
+                        SpawnQueue::Spawn& spawn) {
+  for (const auto& [field, given] :
+       {std::pair<const char*, bool>{"odom_noise", !req.odom_noise.empty()}, {"cmd_vel", !req.cmd_vel.empty()}}) {
+    if (given) throw std::invalid_argument(std::string(field) + ": a robot does not read it yet (a body's)");
   }
-  std::vector<io::LidarEntry> lidars;
-  io::UrdfOptions with_lidars = options;
-  with_lidars.lidars = &lidars;
-  core::ArticulationModel model = io::loadArticulationString(urdf.xml, urdf.source, urdf.base_dir, with_lidars);
+  io::LinkSensors config, markup;
+  if (!req.imu.empty()) config.imus.push_back(io::parseImuText(req.imu, "imu", dt));
+  io::UrdfOptions with_sensors = options;
+  with_sensors.sensors = &markup;
+  core::ArticulationModel model = io::loadArticulationString(urdf.xml, urdf.source, urdf.base_dir, with_sensors);
   model.name = req.name;
-  spawn.lidars = io::mountLidars(lidars, model);
+  spawn.sensors = io::mountSensors(config, markup, model, dt);
   if (model.fixed_base &&
       (fromVector3(req.twist.linear) != core::Vec3::Zero() || fromVector3(req.twist.angular) != core::Vec3::Zero())) {
     throw std::invalid_argument("twist: robot '" + req.name +
@@ -150,7 +151,7 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
   try {
     const io::UrdfText urdf = readRequestedUrdf(req, nh_, params_.sim.base_dir);
     if (io::describesRobot(urdf.xml, urdf.source)) {
-      loadRequestedRobot(req, urdf, options, spawn_limits_, nh_, spawn);
+      loadRequestedRobot(req, urdf, options, spawn_limits_, dt_, nh_, spawn);
       spawn.request = req;
       res = spawns_.submit(std::move(spawn), [] { return ros::ok(); });  // the loop adds it at its next tick
       tellRepairs(notes, res);

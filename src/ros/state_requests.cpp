@@ -48,7 +48,7 @@ bool StateRequests::setState(SetState::Request& req, SetState::Response& res) {
   link.v_WL = q_frame * v;
   link.w_W = q_frame * w;
   sim_.place(body, core::bodyStateFromLink(sim_.model().body(body), link));  // no warm start carries over
-  ports_.restart(body, sim_.state.bodies[body]);                             // the jump is no acceleration
+  ports_.restart(body, sim_.model().body(body), sim_.state.bodies[body]);    // the jump is no acceleration
   res.success = true;
   res.message = "state set";
   hooks_.changed();
@@ -58,7 +58,7 @@ bool StateRequests::setState(SetState::Request& req, SetState::Response& res) {
 bool StateRequests::reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
   // Back to the initial state; sim time keeps increasing (tf listeners never see it go back).
   sim_.reset(time_.simTime());
-  ports_.restartAll(sim_.state);  // the IMUs from the initial state, the odometry drift from zero
+  ports_.restartAll(sim_.model(), sim_.state);  // the IMUs from the initial state, the odometry drift from zero
   hooks_.restarted();
   hooks_.changed();
   res.success = true;

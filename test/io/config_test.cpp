@@ -326,7 +326,7 @@ TEST(Config, AnImuIsReadForTheOneBodyOrEachBodyOfAWorld) {
   EXPECT_FALSE(world.bodies[0].imu.has_value());
   ASSERT_TRUE(world.bodies[1].imu.has_value());
   EXPECT_EQ(world.bodies[1].imu->settings.rate, 50.0);
-  EXPECT_EQ(world.bodies[1].imu->frame_id, "imu_link");
+  EXPECT_EQ(world.bodies[1].imu->frame_id, "");  // the node names it imu_link
 }
 
 TEST(Config, BadImusAreRefusedByKey) {

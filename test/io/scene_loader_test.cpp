@@ -103,7 +103,11 @@ TEST(SceneLoader, RefusesWhatAnEntryWouldNotRead) {
   refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, initial: {linear_velocity: [1, 0, 0]}}\n",
           "'bodies[0].initial.linear_velocity'");
   refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, initial: {joint_positions: {elbow: 1}}}\n", "elbow");
-  refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, imu: {}}\n", "'bodies[0].imu': robot 'swing'");
+  refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, odom_noise: {}}\n", "'bodies[0].odom_noise': robot 'swing'");
+  refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, imu: {link: mast}}\n",
+          "'bodies[0].imu.link': robot 'rover' has no link 'mast'");
+  refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, imu: {topic: 'a b'}}\n",
+          "bodies[0].imu: topic 'a b' is no ROS name");
   refused("damping: {linear: 0.1}\nbodies:\n" + swing, "'damping': robot 'swing'");
   // A lidar goes on a link the robot has, with settings a lidar can have.
   refused("bodies:\n  - {name: a, urdf: box.urdf, lidar: {link: base_link}}\n",
@@ -129,14 +133,14 @@ TEST(SceneLoader, ALidarSitsOnItsLinkOrWhereAFixedJointPutsIt) {
   const io::SceneSetup s = io::buildScene(
       config("bodies:\n  - {name: rover, urdf: diff_drive.urdf, lidar: [{link: left_wheel, topic: wheel_scan},"
              " {link: caster, samples: 10, vertical_samples: 2, rate: 5}]}\n"));
-  ASSERT_EQ(s.lidars.size(), 1u);
-  ASSERT_EQ(s.lidars[0].size(), 2u);
-  const io::RobotLidar& wheel = s.lidars[0][0];
+  ASSERT_EQ(s.sensors.size(), 1u);
+  ASSERT_EQ(s.sensors[0].lidars.size(), 2u);
+  const io::RobotLidar& wheel = s.sensors[0].lidars[0];
   EXPECT_EQ(s.scene.robots()[0].model.links.at(static_cast<std::size_t>(wheel.link)).name, "left_wheel");
   EXPECT_EQ(wheel.X_LS.translation, Vec3::Zero());
   EXPECT_EQ(wheel.entry.topic, "wheel_scan");
   // The caster is fixed to base_link 0.15 m behind and 0.04 m below its origin (urdf/diff_drive.urdf).
-  const io::RobotLidar& caster = s.lidars[0][1];
+  const io::RobotLidar& caster = s.sensors[0].lidars[1];
   EXPECT_EQ(caster.link, 0);
   EXPECT_EQ(caster.X_LS.translation, Vec3(-0.15, 0.0, -0.04));
   EXPECT_EQ(caster.entry.rate, 5.0);
@@ -145,11 +149,38 @@ TEST(SceneLoader, ALidarSitsOnItsLinkOrWhereAFixedJointPutsIt) {
   const io::SceneSetup c = io::buildScene(
       config("bodies:\n  - {name: rover, urdf: diff_drive.urdf, depth_camera: {link: caster, width: 8, height: 6,"
              " encoding: 16UC1, pose: {position: [0, 0, 0.1]}}}\n"));
-  ASSERT_EQ(c.cameras.at(0).size(), 1u);
-  EXPECT_EQ(c.cameras[0][0].link, 0);
-  EXPECT_LT((c.cameras[0][0].X_LS.translation - Vec3(-0.15, 0.0, 0.06)).norm(), 1e-15);  // its pose in the caster
-  EXPECT_TRUE(c.cameras[0][0].entry.millimetres);
-  EXPECT_EQ(c.cameras[0][0].entry.settings.width, 8);
+  ASSERT_EQ(c.sensors.at(0).cameras.size(), 1u);
+  EXPECT_EQ(c.sensors[0].cameras[0].link, 0);
+  EXPECT_LT((c.sensors[0].cameras[0].X_LS.translation - Vec3(-0.15, 0.0, 0.06)).norm(),
+            1e-15);  // its pose in the caster
+  EXPECT_TRUE(c.sensors[0].cameras[0].entry.millimetres);
+  EXPECT_EQ(c.sensors[0].cameras[0].entry.settings.width, 8);
+}
+
+TEST(SceneLoader, AnImuSitsOnAnyLinkOfARobot) {
+  const io::SceneSetup s = io::buildScene(
+      config("bodies:\n  - {name: rover, urdf: diff_drive.urdf, imu: {link: left_wheel, topic: wheel_imu,"
+             " pose: {position: [0, 0.02, 0], rpy: [1.5707963267948966, 0, 0]}, rate: 50}}\n"
+             "  - {name: other, urdf: diff_drive.urdf, imu: {frame_id: caster}}\n"
+             "  - {name: third, urdf: diff_drive.urdf, imu: {}}\n"));
+  ASSERT_EQ(s.sensors.size(), 3u);
+  const io::RobotImu& wheel = s.sensors[0].imus.at(0);
+  EXPECT_EQ(s.scene.robots()[0].model.links.at(static_cast<std::size_t>(wheel.link)).name, "left_wheel");
+  EXPECT_EQ(wheel.entry.settings.X_LS.translation, Vec3(0, 0.02, 0));
+  EXPECT_LT((wheel.entry.settings.X_LS.rotation * Vec3::UnitZ() + Vec3::UnitY()).norm(), 1e-15);  // rolled a quarter
+  EXPECT_EQ(wheel.entry.frame_id, "left_wheel");  // no frame_id: the link's
+  EXPECT_EQ(wheel.entry.topic, "wheel_imu");
+  EXPECT_EQ(wheel.entry.settings.rate, 50.0);
+  // frame_id naming a frame of the robot and no link: it sits there (the
+  // caster, fixed 0.15 m behind and 0.04 m below base_link's origin).
+  const io::RobotImu& caster = s.sensors[1].imus.at(0);
+  EXPECT_EQ(caster.link, 0);
+  EXPECT_EQ(caster.entry.settings.X_LS.translation, Vec3(-0.15, 0.0, -0.04));
+  EXPECT_EQ(caster.entry.frame_id, "caster");
+  const io::RobotImu& base = s.sensors[2].imus.at(0);  // neither: the base, its frame
+  EXPECT_EQ(base.link, 0);
+  EXPECT_EQ(base.entry.frame_id, "base_link");
+  EXPECT_EQ(base.entry.topic, "imu");
 }
 
 }  // namespace
@@ -191,9 +222,9 @@ TEST(GazeboLidars, ARaySensorWithARosPluginIsALidarWithItsMarkupsSettings) {
       "</topicName><min_range>0.9</min_range><max_range>130</max_range><gaussianNoise>0.008</gaussianNoise>"
       "</plugin></sensor></gazebo><gazebo reference='base_link'><sensor type='camera' name='cam'/></gazebo>";
   const io::SceneSetup s = io::loadScene(config(""), [&] { return laserRobot(kLaser + velodyne); });
-  ASSERT_EQ(s.lidars.size(), 1u);
-  ASSERT_EQ(s.lidars[0].size(), 2u);
-  const io::RobotLidar& laser = s.lidars[0][0];
+  ASSERT_EQ(s.sensors.size(), 1u);
+  ASSERT_EQ(s.sensors[0].lidars.size(), 2u);
+  const io::RobotLidar& laser = s.sensors[0].lidars[0];
   EXPECT_EQ(laser.link, 0);  // laser_link is lumped into base_link
   EXPECT_LT((laser.X_LS.translation - Vec3(0.1, 0.0, 0.25)).norm(), 1e-15);
   EXPECT_LT((laser.X_LS.rotation * Vec3::UnitX() - Vec3::UnitY()).norm(), 1e-15);  // turned a quarter about z
@@ -207,7 +238,7 @@ TEST(GazeboLidars, ARaySensorWithARosPluginIsALidarWithItsMarkupsSettings) {
   EXPECT_EQ(laser.entry.rate, 20.0);
   EXPECT_EQ(laser.entry.topic, "/scout/scan");
   EXPECT_EQ(laser.entry.frame_id, "laser_link");
-  const io::LidarEntry& velo = s.lidars[0][1].entry;
+  const io::LidarEntry& velo = s.sensors[0].lidars[1].entry;
   EXPECT_EQ(velo.settings.samples, 100);
   EXPECT_EQ(velo.settings.vertical_samples, 16);
   EXPECT_EQ(velo.settings.vertical_min_angle, -0.26);
@@ -245,6 +276,50 @@ TEST(GazeboLidars, ANumberTheMarkupCannotHoldIsRefusedNamingIt) {
     ADD_FAILURE() << "accepted";
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("<sensor name=\"front\">"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GazeboImus, AnImuSensorOrTheImuModelPluginIsAnImuWithItsMarkupsSettings) {
+  const std::string sensor =
+      "<gazebo reference='laser_link'><sensor type='imu' name='imu'><update_rate>50</update_rate>"
+      "<pose>0 0 0 0 0 1.5707963267948966</pose><imu><angular_velocity><x><noise type='gaussian'>"
+      "<stddev>0.003</stddev></noise></x></angular_velocity></imu>"
+      "<plugin name='i' filename='libgazebo_ros_imu_sensor.so'><topicName>imu/data</topicName>"
+      "<frameName>laser_link</frameName><updateRateHZ>100</updateRateHZ><gaussianNoise>0.004</gaussianNoise>"
+      "</plugin></sensor></gazebo>";
+  const std::string plugin =
+      "<gazebo><plugin name='imu_plugin' filename='libgazebo_ros_imu.so'><bodyName>wheel</bodyName>"
+      "<topicName>wheel_imu</topicName><gaussianNoise>0.01</gaussianNoise></plugin></gazebo>";
+  const io::SceneSetup s = io::loadScene(config(""), [&] { return laserRobot(sensor + plugin); });
+  ASSERT_EQ(s.sensors.size(), 1u);
+  ASSERT_EQ(s.sensors[0].imus.size(), 2u);
+  const io::RobotImu& imu = s.sensors[0].imus[0];  // in the markup's order
+  EXPECT_EQ(imu.link, 0);                          // laser_link is lumped into base_link
+  const core::ImuSettings& c = imu.entry.settings;
+  EXPECT_LT((c.X_LS.translation - Vec3(0.1, 0.0, 0.2)).norm(), 1e-15);
+  EXPECT_LT((c.X_LS.rotation * Vec3::UnitX() - Vec3::UnitY()).norm(), 1e-15);  // turned a quarter about z
+  EXPECT_EQ(c.rate, 50.0);                                                     // the sensor's rate under the plugin's
+  EXPECT_NEAR(c.gyro_noise, 0.005, 1e-15);                                     // the plugin's σ with the sensor's own
+  EXPECT_NEAR(c.accel_noise, 0.005, 1e-15);
+  EXPECT_EQ(c.orientation_noise, 0.004);
+  EXPECT_EQ(imu.entry.topic, "imu/data");
+  EXPECT_EQ(imu.entry.frame_id, "laser_link");
+  const io::RobotImu& wheel = s.sensors[0].imus[1];
+  EXPECT_EQ(wheel.link, 1);
+  EXPECT_EQ(wheel.entry.settings.rate, 1.0 / s.scene.model().dt());  // no updateRate: every step
+  EXPECT_EQ(wheel.entry.settings.gyro_noise, 0.01);
+  EXPECT_EQ(wheel.entry.topic, "wheel_imu");
+  EXPECT_EQ(wheel.entry.frame_id, "wheel");  // frameName's default: bodyName
+  // Gazebo refuses the model plugin without its link, and so does this.
+  try {
+    io::loadScene(config(""), [&] {
+      return laserRobot(
+          "<gazebo><plugin name='p' filename='libgazebo_ros_imu.so'/>"
+          "</gazebo>");
+    });
+    ADD_FAILURE() << "an IMU plugin without <bodyName> was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("<plugin name=\"p\">: no <bodyName>"), std::string::npos) << e.what();
   }
 }
 

@@ -33,7 +33,7 @@ BodyPorts portsOf(const core::BodyModel& body, bool with_imu = false) {
   p.frame = p.prefix + body.link;
   if (with_imu) {
     core::ImuSettings imu;
-    p.imu = std::make_unique<core::Imu>(imu, core::BodyState{});
+    p.imu = std::make_unique<core::Imu>(imu);
     p.imu_frame = p.prefix + "imu_link";
   }
   return p;
@@ -86,7 +86,7 @@ TEST(PortRegistry, ARestartMakesAJumpNoAcceleration) {
   const core::ImuReading jumped = ports[0].imu->sample(model.body(0), still.bodies[0], g, period);
   EXPECT_NEAR(jumped.f_S.x(), -1.0 / period, 1e-9);
   ports.add(portsOf(model.body(1), true), model.body(1), moving.bodies[1], 0.0);
-  ports.restart(1, still.bodies[1]);
+  ports.restart(1, model.body(1), still.bodies[1]);
   const core::ImuReading restarted = ports[1].imu->sample(model.body(1), still.bodies[1], g, period);
   EXPECT_NEAR(restarted.f_S.x(), 0.0, 1e-12);
   EXPECT_NEAR(restarted.f_S.z(), 9.81, 1e-12);  // at rest: +g up

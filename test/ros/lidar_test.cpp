@@ -2,18 +2,23 @@
 // /scan (sensor_msgs/LaserScan, from the URDF's Gazebo markup) and /points
 // (sensor_msgs/PointCloud2, from the config) from the wheeled base at rest
 // 1.9 m before a wall: the wall at its distance over the cosine, REP 117's
-// +inf where nothing is within range, the robot's own links unseen.
+// +inf where nothing is within range, the robot's own links unseen; the
+// depth camera's image; and what the IMUs on its links read at rest (REP 145).
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
+#include <sensor_msgs/Imu.h>
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <sensor_msgs/point_cloud2_iterator.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
+#include <utility>
 
 #include "node_fixture.h"
 
@@ -124,6 +129,55 @@ TEST(Lidar, ADepthCameraReadsTheWallsDistancePerPixel) {
   }
   EXPECT_GT(wall, 64 * 20);
   EXPECT_GT(ground, 64 * 15);
+}
+
+/// Every message on `topic` until `count` came; the last two.
+std::pair<sensor_msgs::Imu, sensor_msgs::Imu> lastImus(const std::string& topic, int count) {
+  ros::NodeHandle nh;
+  sensor_msgs::Imu before, last;
+  int n = 0;
+  ros::Subscriber sub = nh.subscribe<sensor_msgs::Imu>(topic, 100, [&](const sensor_msgs::Imu::ConstPtr& m) {
+    before = last;
+    last = *m;
+    ++n;
+  });
+  EXPECT_TRUE(spinUntil([&] { return n >= count; }, 30.0)) << topic;
+  return {before, last};
+}
+
+Eigen::Quaterniond quaternionOf(const geometry_msgs::Quaternion& q) { return {q.w, q.x, q.y, q.z}; }
+Eigen::Vector3d vectorOf(const geometry_msgs::Vector3& v) { return {v.x, v.y, v.z}; }
+
+/// At rest, REP 145: the specific force is gravity's reaction, +g up, in
+/// the sensor's axes as the reported orientation has them; no rotation.
+void expectAtRest(const sensor_msgs::Imu& m) {
+  const Eigen::Quaterniond q_WS = quaternionOf(m.orientation);
+  EXPECT_NEAR(q_WS.norm(), 1.0, 1e-6);
+  const Eigen::Vector3d f_S = vectorOf(m.linear_acceleration);
+  EXPECT_LT((q_WS * f_S - Eigen::Vector3d(0, 0, 9.81)).norm(), 0.05) << f_S.transpose();
+  EXPECT_LT(vectorOf(m.angular_velocity).norm(), 0.01);
+  EXPECT_GT(m.header.stamp.toSec(), 0.0);
+}
+
+TEST(RobotImu, DeclaredInGazeboMarkupReadsGravityUpAt100Hz) {
+  const auto [before, m] = lastImus("/imu", 150);  // 1.5 s: the base has settled on its wheels
+  EXPECT_EQ(m.header.frame_id, "imu_link");
+  expectAtRest(m);
+  // imu_link is level with the base: +g along its z, the base facing +x.
+  EXPECT_NEAR(m.linear_acceleration.z, 9.81, 0.05);
+  EXPECT_LT((quaternionOf(m.orientation) * Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitX()).norm(), 0.02);
+  EXPECT_NEAR((m.header.stamp - before.header.stamp).toSec(), 0.01, 1e-6);  // <updateRateHZ> 100
+}
+
+TEST(RobotImu, OnAWheelRolledAQuarterTurnItsZPointsAlongTheAxle) {
+  const auto [before, m] = lastImus("/wheel_imu", 75);
+  EXPECT_EQ(m.header.frame_id, "left_wheel");  // no frame_id: the link's
+  expectAtRest(m);
+  // Rolled a quarter turn about x, the sensor's z is the wheel's -y, the
+  // axle, whatever angle the wheel stands at: gravity has no z part.
+  EXPECT_LT((quaternionOf(m.orientation) * Eigen::Vector3d::UnitZ() + Eigen::Vector3d::UnitY()).norm(), 0.02);
+  EXPECT_NEAR(m.linear_acceleration.z, 0.0, 0.05);
+  EXPECT_NEAR((m.header.stamp - before.header.stamp).toSec(), 0.02, 1e-6);  // rate 50
 }
 
 }  // namespace

@@ -30,13 +30,21 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// An IMU on a body (`imu` for one body, `bodies[i].imu`): the core's
-/// settings, and the frame the node names it by.
+/// An IMU on a body or a robot's link (`imu` for one, `bodies[i].imu`;
+/// or a URDF's Gazebo `<sensor type="imu">`): the core's settings, and the
+/// frame the node names it by.
 struct ImuEntry {
-  core::ImuSettings settings;         ///< its pose X_LS as given: in the frame of `link`
-  std::string frame_id = "imu_link";  ///< under the body's prefix in a world ("NAME/imu_link")
-  std::string link;                   ///< the link it is mounted on: "" the root link, or a link fixed to it
-  std::string key = "imu";            ///< its config key, for messages ("bodies[2].imu")
+  core::ImuSettings settings;  ///< its pose X_LS as given: in the frame of `link`
+  /// A body's: its own frame under the body's prefix, on /tf_static ("":
+  /// "imu_link"; "NAME/imu_link" in a world). A robot's: the frame its
+  /// messages name after the robot's tf prefix ("": the link's), as
+  /// Gazebo's frameName, whatever its pose.
+  std::string frame_id;
+  /// The link it is mounted on. A body's: "" the root link, or a link fixed
+  /// to it. A robot's: any link ("": the robot's frame `frame_id` names, or else its base).
+  std::string link;
+  std::string topic = "imu";  ///< sensor_msgs/Imu, under the body's or robot's prefix ("NAME/imu")
+  std::string key = "imu";    ///< its config key, for messages ("bodies[2].imu")
 };
 
 /// A lidar on a robot's link (`lidar`, `bodies[i].lidar`: a map, or a list
@@ -67,6 +75,14 @@ struct DepthCameraEntry {
   double rate = 30.0;            ///< Hz of sim time
   bool millimetres = false;      ///< `encoding`: 16UC1 (mm, 0 where none) instead of 32FC1 (m)
   std::string key = "depth_camera";
+};
+
+/// The sensors on a robot's links: its config entry's, or its URDF's
+/// Gazebo markup's (io/sensor_mount.h puts them on the links).
+struct LinkSensors {
+  std::vector<ImuEntry> imus;
+  std::vector<LidarEntry> lidars;
+  std::vector<DepthCameraEntry> cameras;
 };
 
 /// A robot's joints at the start (`initial.joint_positions` and

@@ -10,7 +10,7 @@
 #include "rigid_body_sim/core/articulations/scene.h"
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/io/controllers.h"
-#include "rigid_body_sim/io/lidar_mount.h"
+#include "rigid_body_sim/io/sensor_mount.h"
 
 namespace rigid_body_sim::io {
 
@@ -23,10 +23,9 @@ struct SceneSetup {
   std::vector<int> entry;
   /// Per robot: its controllers (`controllers`, `bodies[i].controllers`).
   std::vector<RobotControls> controls;
-  /// Per robot: its lidars (`lidar`, `bodies[i].lidar`), on its links.
-  std::vector<std::vector<RobotLidar>> lidars;
-  /// Per robot: its depth cameras (`depth_camera`, `bodies[i].depth_camera`).
-  std::vector<std::vector<RobotCamera>> cameras;
+  /// Per robot: its sensors on its links (`imu`, `lidar`, `depth_camera`,
+  /// `bodies[i]`'s, then its URDF's Gazebo markup's).
+  std::vector<RobotSensors> sensors;
   /// What loading it repaired or warns of, one message per URDF or start,
   /// for the caller to log once (io::UrdfOptions::notes).
   std::vector<std::string> notes;
@@ -55,7 +54,7 @@ bool listsRobots(const SimConfig& config);
 /// (io::robotStart), its links' surface from bodies[i].contact. Each URDF
 /// comes from `read` (default: readUrdfFile), once per name. Refused
 /// (ConfigError naming the key): joint values for a body, and for a robot
-/// the keys it does not read yet (bodies[i].imu, .odom_noise, .cmd_vel)
+/// the keys it does not read yet (bodies[i].odom_noise, .cmd_vel)
 /// and the settings io::checkRobotSettings refuses.
 SceneSetup buildScene(const SimConfig& config, const UrdfReader& read = {});
 
@@ -63,8 +62,8 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read = {});
 /// (buildScene), or, when it has none, the one body or robot `single`
 /// gives (the node's robot_description) at the config's `initial`, a
 /// robot's joints at `initial.joint_positions` and `.joint_velocities`,
-/// named as its URDF names it. The top-level `imu`, `odom_noise` and
-/// `cmd_vel` are refused for a robot, as its entry's are.
+/// named as its URDF names it. The top-level `odom_noise` and `cmd_vel`
+/// are refused for a robot, as its entry's are.
 SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& single, const UrdfReader& read = {});
 
 }  // namespace rigid_body_sim::io

@@ -32,10 +32,11 @@ struct UrdfOptions {
   /// Where a load that repaired something says what, in one message naming
   /// every link and figure (appended; nothing when nothing was repaired).
   std::vector<std::string>* notes = nullptr;
-  /// Where a robot's load puts the lidars its Gazebo markup declares
-  /// (`<sensor type="ray">` with a ROS plugin); null: they are named with
-  /// the markup nothing reads (a free body's: no lidar on a body yet; rbsim's).
-  std::vector<LidarEntry>* lidars = nullptr;
+  /// Where a robot's load puts the sensors its Gazebo markup declares
+  /// (`<sensor type="ray">` or `"imu"` with a ROS plugin, gazebo_ros_imu);
+  /// null: they are named with the markup nothing reads (a free body's: no
+  /// sensor on a body's markup yet; rbsim's).
+  LinkSensors* sensors = nullptr;
 };
 
 /// The rigid body described by a URDF document.

@@ -100,10 +100,10 @@ class PortRegistry {
   /// Body i's ports and names go; the later bodies' indices move down by one.
   void erase(std::size_t i);
   /// Body i's sensors begin a new period at `now` (set_state: a jump is no acceleration).
-  void restart(std::size_t i, const core::BodyState& now);
+  void restart(std::size_t i, const core::BodyModel& body, const core::BodyState& now);
   /// Every body's sensors begin again at `state`, the odometry noise's drift
   /// from zero (reset).
-  void restartAll(const core::State& state);
+  void restartAll(const core::Model& model, const core::State& state);
 
   std::size_t size() const { return ports_.size(); }
   BodyPorts& operator[](std::size_t i) { return ports_[i]; }

@@ -21,7 +21,7 @@
 
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
 #include "rigid_body_sim/core/step/simulation.h"
-#include "rigid_body_sim/io/lidar_mount.h"
+#include "rigid_body_sim/io/sensor_mount.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
 
 namespace rigid_body_sim::node {

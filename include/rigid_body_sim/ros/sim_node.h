@@ -40,6 +40,7 @@
 #include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
 #include "rigid_body_sim/ros/joint_requests.h"
+#include "rigid_body_sim/ros/link_imus.h"
 #include "rigid_body_sim/ros/load_requests.h"
 #include "rigid_body_sim/ros/markers.h"
 #include "rigid_body_sim/ros/pacer.h"
@@ -124,9 +125,8 @@ class SimNode {
   const NodeSettings& settings_ = params_.node;  ///< ~physics changes params_.node
   /// The robots' controllers as the world was loaded, until commands_ takes them.
   std::vector<io::RobotControls> start_controls_;
-  /// The robots' lidars as the world was loaded, until range_sensors_ takes them.
-  std::vector<std::vector<io::RobotLidar>> start_lidars_;
-  std::vector<std::vector<io::RobotCamera>> start_cameras_;
+  /// The robots' sensors as the world was loaded, until range_sensors_ and link_imus_ take them.
+  std::vector<io::RobotSensors> start_sensors_;
   /// The model and every table in its bodies' order: a world edit goes through it once.
   core::Simulation sim_;
   const core::Model& model_ = sim_.model();
@@ -136,7 +136,8 @@ class SimNode {
   core::Loads loads_;
   std::vector<core::ArticulationLoads> robot_loads_;  ///< per robot, its controllers' efforts
   std::optional<RobotCommands> commands_;             ///< the robots' controllers and their topics
-  std::optional<RangeSensors> range_sensors_;         ///< the robots' lidars
+  std::optional<RangeSensors> range_sensors_;         ///< the robots' lidars and depth cameras
+  std::optional<LinkImus> link_imus_;                 ///< the IMUs on robots' links
 
   /// Every body's frames, topics and devices, and its names: a spawn, a
   /// delete and a reset go through it (body_ports.h).
@@ -166,14 +167,16 @@ class SimNode {
          rebaseClock();
          commands_->restart(sim_);  // nothing drives a reset robot back (gazebo_ros_pkgs #1311)
          range_sensors_->restart();
+         for (std::size_t r = 0; r < sim_.robots.size(); ++r) link_imus_->restart(sim_, r);
        }}};
   /// set_model_configuration, get_joint_properties.
   JointRequests joint_requests_{sim_, time_, [this](std::size_t r) {
                                   commands_->restart(sim_, r);
+                                  link_imus_->restart(sim_, r);
                                   publish();
                                 }};
   PortContext port_context_;  ///< what opening a body's ports needs of the node (read only once made)
-  /// Samples the IMUs due at this step and publishes them (sensors.cpp).
+  /// Samples the IMUs due at this step, the bodies' and the robots' links', and publishes them (sensors.cpp).
   void sampleSensors();
   const double dt_ = model_.dt();                           ///< for the spawn thread (no edit changes it)
   const core::SpeedLimits spawn_limits_ = model_.limits();  ///< for the spawn thread (no edit changes them)

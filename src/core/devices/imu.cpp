@@ -43,10 +43,9 @@ void validateImu(const ImuSettings& s, double dt, const std::string& key) {
   }
 }
 
-ImuReading exactImuReading(const BodyModel& body, const BodyState& previous, const BodyState& now, const Pose& X_LS,
-                           const Vec3& gravity_W, double period) {
-  const auto at = [&](const BodyState& s) {
-    const LinkState link = linkState(body, s);
+ImuReading exactImuReading(const LinkState& previous, const LinkState& now, const Pose& X_LS, const Vec3& gravity_W,
+                           double period) {
+  const auto at = [&](const LinkState& link) {
     const Vec3 r_W = link.q_WL * X_LS.translation;
     return std::make_pair(Quat(link.q_WL * X_LS.rotation).normalized(), Vec3(link.v_WL + link.w_W.cross(r_W)));
   };
@@ -60,7 +59,12 @@ ImuReading exactImuReading(const BodyModel& body, const BodyState& previous, con
   return r;
 }
 
-Imu::Imu(const ImuSettings& settings, const BodyState& now)
+ImuReading exactImuReading(const BodyModel& body, const BodyState& previous, const BodyState& now, const Pose& X_LS,
+                           const Vec3& gravity_W, double period) {
+  return exactImuReading(linkState(body, previous), linkState(body, now), X_LS, gravity_W, period);
+}
+
+Imu::Imu(const ImuSettings& settings, const LinkState& now)
     : settings_(settings), previous_(now), rng_(settings.seed) {}
 
 Vec3 Imu::gaussian(double sigma) {
@@ -69,8 +73,8 @@ Vec3 Imu::gaussian(double sigma) {
   return sigma * Vec3(x, y, z);
 }
 
-ImuReading Imu::sample(const BodyModel& body, const BodyState& now, const Vec3& gravity_W, double period) {
-  ImuReading r = exactImuReading(body, previous_, now, settings_.X_LS, gravity_W, period);
+ImuReading Imu::sample(const LinkState& now, const Vec3& gravity_W, double period) {
+  ImuReading r = exactImuReading(previous_, now, settings_.X_LS, gravity_W, period);
   previous_ = now;
   // The biases walk first, then each axis gets its white noise: after k
   // samples Var(bias) = σ_b² k period = σ_b² t.

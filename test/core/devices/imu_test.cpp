@@ -44,7 +44,7 @@ TEST(Imu, AtRestItReadsGUpTurnedByItsMount) {
   link.q_WL = Quat(Eigen::AngleAxisd(0.7, Vec3::UnitZ()));  // turned on the ground: no change of "up"
   core::State s = stateOf(model, link);
   const Quat q_LS(Eigen::AngleAxisd(0.4, Vec3(1, 2, 3).normalized()));
-  core::Imu imu(mountedAt(Vec3(0.1, -0.05, 0.05), q_LS), s.bodies[0]);
+  core::Imu imu(mountedAt(Vec3(0.1, -0.05, 0.05), q_LS), core::linkState(model.body(0), s.bodies[0]));
   const core::ImuReading r = run(model, s, imu, 2.0);
   const Vec3 expected = (link.q_WL * q_LS).conjugate() * Vec3(0, 0, kG);
   EXPECT_LT((r.f_S - expected).norm(), 1e-6 * kG) << r.f_S.transpose();
@@ -57,7 +57,7 @@ TEST(Imu, InFreeFallItReadsNothing) {
   core::LinkState link;
   link.v_WL = Vec3(1, 0, 3);
   core::State s = stateOf(model, link);
-  core::Imu imu(mountedAt(Vec3(0.2, 0, 0)), s.bodies[0]);
+  core::Imu imu(mountedAt(Vec3(0.2, 0, 0)), core::linkState(model.body(0), s.bodies[0]));
   const core::ImuReading r = run(model, s, imu, 0.5);
   EXPECT_LT(r.f_S.norm(), 1e-9) << r.f_S.transpose();
 }
@@ -71,7 +71,7 @@ TEST(Imu, SpinningAboutZItReadsTheCentripetalAcceleration) {
   core::LinkState link;
   link.w_W = Vec3(0, 0, w);
   core::State s = stateOf(model, link);
-  core::Imu imu(mountedAt(Vec3(r, 0, 0)), s.bodies[0]);
+  core::Imu imu(mountedAt(Vec3(r, 0, 0)), core::linkState(model.body(0), s.bodies[0]));
   const core::ImuReading reading = run(model, s, imu, 1.0);
   EXPECT_NEAR(reading.f_S.x(), -w * w * r, 1e-4 * w * w * r);
   EXPECT_NEAR(reading.f_S.y(), 0.0, 1e-9);
@@ -87,7 +87,7 @@ TEST(Imu, PushedOnFrictionlessGroundItReadsForceOverMassAndG) {
   core::State s = stateOf(model, link);
   core::Loads loads(1);
   loads[0].force_W = Vec3(3.0, 1.0, 0.0);  // 2 kg
-  core::Imu imu(mountedAt(Vec3::Zero()), s.bodies[0]);
+  core::Imu imu(mountedAt(Vec3::Zero()), core::linkState(model.body(0), s.bodies[0]));
   run(model, s, imu, 0.5, loads);  // settled on the ground, sliding
   const core::ImuReading r = run(model, s, imu, 0.1, loads);
   EXPECT_NEAR(r.f_S.x(), 1.5, 1e-6);
@@ -100,7 +100,7 @@ TEST(Imu, AnImpulseReadsAsItsMeanAccelerationOverTheSample) {
   // velocity change 0.25 m/s over 10 ms, 25 m/s², then nothing again.
   const core::Model model(spec(boxBody(kHalf, 2.0), 1e-3, Vec3::Zero()));
   core::State s = stateOf(model, core::LinkState{});
-  core::Imu imu(mountedAt(Vec3::Zero()), s.bodies[0]);
+  core::Imu imu(mountedAt(Vec3::Zero()), core::linkState(model.body(0), s.bodies[0]));
   run(model, s, imu, 0.05);
   core::applyImpulse(model.body(0), s.bodies[0], core::Impulse{Vec3(0.5, 0, 0), Vec3::Zero(), Vec3::Zero()});
   EXPECT_NEAR(run(model, s, imu, 0.01).f_S.x(), 25.0, 1e-9);
@@ -115,7 +115,7 @@ TEST(Imu, ItsWhiteNoiseHasTheConfiguredMeanAndSigma) {
   settings.accel_noise = 0.2;
   settings.orientation_noise = 0.03;
   settings.seed = 7;
-  core::Imu imu(settings, s.bodies[0]);
+  core::Imu imu(settings, core::linkState(model.body(0), s.bodies[0]));
   const int n = 100000;
   std::vector<std::vector<double>> gyro(3), accel(3), tilt(3);
   for (int k = 0; k < n; ++k) {
@@ -155,7 +155,7 @@ TEST(Imu, ItsBiasVarianceGrowsAsSigmaSquaredTimesTime) {
     settings.gyro_bias_walk = sigma_g;
     settings.accel_bias_walk = sigma_a;
     settings.seed = static_cast<std::uint64_t>(seed);
-    core::Imu imu(settings, s.bodies[0]);
+    core::Imu imu(settings, core::linkState(model.body(0), s.bodies[0]));
     for (int k = 1; k <= 100; ++k) {
       imu.sample(model.body(0), s.bodies[0], model.gravity(), 0.01);
       if (k == 25) gyro_quarter.push_back(imu.gyroBias().x());
@@ -177,9 +177,10 @@ TEST(Imu, TheSameSeedGivesTheSameReadingsBitForBit) {
   settings.gyro_noise = settings.accel_noise = settings.orientation_noise = 0.1;
   settings.gyro_bias_walk = settings.accel_bias_walk = 0.1;
   settings.seed = 3;
-  core::Imu a(settings, s.bodies[0]), b(settings, s.bodies[0]);
+  const core::LinkState start = core::linkState(model.body(0), s.bodies[0]);
+  core::Imu a(settings, start), b(settings, start);
   settings.seed = 4;
-  core::Imu c(settings, s.bodies[0]);
+  core::Imu c(settings, start);
   for (int k = 0; k < 100; ++k) {
     const core::ImuReading ra = a.sample(model.body(0), s.bodies[0], model.gravity(), 0.01);
     const core::ImuReading rb = b.sample(model.body(0), s.bodies[0], model.gravity(), 0.01);

@@ -38,27 +38,35 @@ struct ImuReading {
   Vec3 f_S = Vec3::Zero();       ///< specific force (acceleration − gravity), S axes (m/s²): +g up at rest
 };
 
-/// The exact reading over [previous, now] (period s), from the sensor
-/// point's velocity change (impulses included) and the rotation between:
-/// ω_S = log(q_WS(prev)⁻¹ q_WS(now)) / period; f = Δv_WS / period − g,
-/// expressed in S halfway through the rotation.
+/// The exact reading over [previous, now] (period s) of a sensor at X_LS in
+/// a link L, from the sensor point's velocity change (impulses included)
+/// and the rotation between: ω_S = log(q_WS(prev)⁻¹ q_WS(now)) / period;
+/// f = Δv_WS / period − g, expressed in S halfway through the rotation. A
+/// free body's root link, or any link of a robot.
+ImuReading exactImuReading(const LinkState& previous, const LinkState& now, const Pose& X_LS, const Vec3& gravity_W,
+                           double period);
+/// The same for a body's root link.
 ImuReading exactImuReading(const BodyModel& body, const BodyState& previous, const BodyState& now, const Pose& X_LS,
                            const Vec3& gravity_W, double period);
 
-/// An IMU's noise and memory: the state at its last sample, its biases,
-/// its random numbers.
+/// An IMU's noise and memory: its link's state at its last sample, its
+/// biases, its random numbers.
 class Imu {
  public:
-  /// Starts at `now`: the first sample covers the period after it.
-  Imu(const ImuSettings& settings, const BodyState& now);
+  /// Starts at `now` (its link's): the first sample covers the period after it.
+  explicit Imu(const ImuSettings& settings, const LinkState& now = {});
 
   /// The reading of the period ending at `now` (settings().rate apart),
   /// with noise; then `now` is the start of the next period.
-  ImuReading sample(const BodyModel& body, const BodyState& now, const Vec3& gravity_W, double period);
+  ImuReading sample(const LinkState& now, const Vec3& gravity_W, double period);
+  /// The same on a body's root link.
+  ImuReading sample(const BodyModel& body, const BodyState& now, const Vec3& gravity_W, double period) {
+    return sample(linkState(body, now), gravity_W, period);
+  }
 
-  /// Forgets the last sample (after the body was put somewhere, a reset or
+  /// Forgets the last sample (after the link was put somewhere, a reset or
   /// set_state): the next period starts at `now`.
-  void restart(const BodyState& now) { previous_ = now; }
+  void restart(const LinkState& now) { previous_ = now; }
 
   const ImuSettings& settings() const { return settings_; }
   const Vec3& gyroBias() const { return gyro_bias_; }
@@ -68,7 +76,7 @@ class Imu {
   Vec3 gaussian(double sigma);
 
   ImuSettings settings_;
-  BodyState previous_;
+  LinkState previous_;
   Vec3 gyro_bias_ = Vec3::Zero(), accel_bias_ = Vec3::Zero();
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_;

@@ -1,0 +1,54 @@
+// Where a robot's sensors sit: each entry of its config (`imu`, `lidar`,
+// `depth_camera`) or of its URDF's Gazebo markup on one of its links, or on
+// a link a fixed joint lumped into one (as a laser_link or an imu_link
+// usually is), at its pose there. ROS-free.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/core/articulations/articulation.h"
+#include "rigid_body_sim/io/config.h"
+
+namespace rigid_body_sim::io {
+
+/// A lidar on link `link` of a robot, its frame at X_LS in that link's.
+struct RobotLidar {
+  LidarEntry entry;
+  int link = 0;     ///< the moving link (index in the model) that carries it
+  core::Pose X_LS;  ///< the sensor (at entry.pose in entry.link) in the moving link's frame
+};
+
+/// A depth camera on link `link` of a robot, at X_LS in that link's frame.
+struct RobotCamera {
+  DepthCameraEntry entry;
+  int link = 0;
+  core::Pose X_LS;
+};
+
+/// An IMU on link `link` of a robot: entry.settings.X_LS is the sensor in
+/// that moving link's frame, and entry.frame_id the frame its messages
+/// name (before the robot's tf prefix): as given, or the link's it was put on.
+struct RobotImu {
+  ImuEntry entry;
+  int link = 0;
+};
+
+/// Every sensor of one robot, on its links.
+struct RobotSensors {
+  std::vector<RobotImu> imus;
+  std::vector<RobotLidar> lidars;
+  std::vector<RobotCamera> cameras;
+};
+
+/// `config`'s sensors and then `markup`'s (a URDF's Gazebo markup: checked
+/// here against a step of `dt`, an IMU's rate capped at one sample a step,
+/// as Gazebo samples no faster than it steps) on `model`'s links. An IMU's
+/// `link` "" is the robot's frame its `frame_id` names, else the base.
+/// Refused (ConfigError naming the entry's key): a link the robot does not
+/// have (the message lists its links), settings core::checkLidar or
+/// core::validateImu refuse, a lidar's rate outside the publish rates.
+RobotSensors mountSensors(const LinkSensors& config, const LinkSensors& markup, const core::ArticulationModel& model,
+                          double dt);
+
+}  // namespace rigid_body_sim::io

@@ -1,0 +1,134 @@
+// Where a robot's sensors sit: sensor_mount.h.
+#include "rigid_body_sim/io/sensor_mount.h"
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "rigid_body_sim/core/bodies/ranges.h"
+
+namespace rigid_body_sim::io {
+
+namespace {
+
+/// The pose of `name` in link j's frame: j itself, or one of its fixed links (each posed in its parent's).
+bool poseIn(const core::ArticulatedLink& link, const std::string& name, core::Pose& X) {
+  if (link.name == name) {
+    X = core::Pose{};
+    return true;
+  }
+  for (const core::FixedLink& f : link.fixed_links) {
+    if (f.name != name) continue;
+    core::Pose X_LP;
+    if (!poseIn(link, f.parent, X_LP)) return false;
+    X = X_LP * f.X_PK;
+    return true;
+  }
+  return false;
+}
+
+/// The moving link j carrying `link` (a link or a link lumped into one),
+/// and X_LS of `pose` in `link` in j's frame; refused naming `key`.link.
+void mount(const core::ArticulationModel& model, const std::string& link, const core::Pose& pose,
+           const std::string& key, int& j, core::Pose& X_LS) {
+  j = -1;
+  for (std::size_t i = 0; i < model.links.size() && j < 0; ++i) {
+    if (poseIn(model.links[i], link, X_LS)) j = static_cast<int>(i);
+  }
+  if (j < 0) {
+    std::string names;
+    for (const core::ArticulatedLink& l : model.links) {
+      names += (names.empty() ? "'" : ", '") + l.name + "'";
+      for (const core::FixedLink& f : l.fixed_links) names += ", '" + f.name + "'";
+    }
+    throw ConfigError("config key '" + key + ".link': robot '" + model.name + "' has no link '" + link +
+                      "' (its links: " + names + ")");
+  }
+  X_LS = X_LS * pose;
+}
+
+/// Refuses a topic ROS cannot name: empty, or a character other than a
+/// letter, digit, '_' or '/' (each sensor's `topic`, or a plugin's topicName).
+void checkTopic(const std::string& topic, const std::string& key) {
+  const bool named = !topic.empty() && std::all_of(topic.begin(), topic.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '/';
+  });
+  if (!named) throw ConfigError(key + ": topic '" + topic + "' is no ROS name (letters, digits, '_' and '/')");
+}
+
+/// Whether `model` has a tf frame `name`: a link, or a link lumped into one.
+bool hasFrame(const core::ArticulationModel& model, const std::string& name) {
+  core::Pose X;
+  for (const core::ArticulatedLink& link : model.links) {
+    if (poseIn(link, name, X)) return true;
+  }
+  return false;
+}
+
+void mountLidars(const std::vector<LidarEntry>& entries, const core::ArticulationModel& model,
+                 std::vector<RobotLidar>& out) {
+  for (const LidarEntry& e : entries) {
+    try {  // a URDF's markup is checked here; the config's was when it was read
+      core::checkLidar(e.settings);
+    } catch (const std::invalid_argument& err) {
+      throw ConfigError(e.key + ": " + err.what());
+    }
+    if (!(e.rate >= core::ranges::kMinRate && e.rate <= core::ranges::kMaxPublishRate)) {
+      throw ConfigError(e.key + ": its rate " + std::to_string(e.rate) + " Hz is not within [" +
+                        std::to_string(core::ranges::kMinRate) + ", " + std::to_string(core::ranges::kMaxPublishRate) +
+                        "]");
+    }
+    checkTopic(e.topic, e.key);
+    RobotLidar mounted{e, -1, {}};
+    mount(model, e.link, e.pose, e.key, mounted.link, mounted.X_LS);
+    out.push_back(std::move(mounted));
+  }
+}
+
+void mountCameras(const std::vector<DepthCameraEntry>& entries, const core::ArticulationModel& model,
+                  std::vector<RobotCamera>& out) {
+  for (const DepthCameraEntry& e : entries) {
+    checkTopic(e.topic, e.key);
+    RobotCamera mounted{e, -1, {}};
+    mount(model, e.link, e.pose, e.key, mounted.link, mounted.X_LS);
+    out.push_back(std::move(mounted));
+  }
+}
+
+void mountImus(const std::vector<ImuEntry>& entries, const core::ArticulationModel& model, double dt, bool markup,
+               std::vector<RobotImu>& out) {
+  for (const ImuEntry& e : entries) {
+    checkTopic(e.topic, e.key);
+    RobotImu mounted{e, -1};
+    ImuEntry& m = mounted.entry;
+    if (markup) {  // Gazebo samples at most once a step
+      m.settings.rate = std::min(m.settings.rate, 1.0 / dt);
+      try {
+        core::validateImu(m.settings, dt, e.key);
+      } catch (const std::invalid_argument& err) {
+        throw ConfigError(err.what());
+      }
+    }
+    if (m.link.empty()) m.link = !m.frame_id.empty() && hasFrame(model, m.frame_id) ? m.frame_id : model.links[0].name;
+    if (m.frame_id.empty()) m.frame_id = m.link;
+    mount(model, m.link, e.settings.X_LS, e.key, mounted.link, m.settings.X_LS);
+    out.push_back(std::move(mounted));
+  }
+}
+
+}  // namespace
+
+RobotSensors mountSensors(const LinkSensors& config, const LinkSensors& markup, const core::ArticulationModel& model,
+                          double dt) {
+  RobotSensors out;
+  for (const auto& [sensors, from_markup] : {std::pair{&config, false}, std::pair{&markup, true}}) {
+    mountImus(sensors->imus, model, dt, from_markup, out.imus);
+    mountLidars(sensors->lidars, model, out.lidars);
+    mountCameras(sensors->cameras, model, out.cameras);
+  }
+  return out;
+}
+
+}  // namespace rigid_body_sim::io
