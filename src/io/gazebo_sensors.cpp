@@ -33,8 +33,11 @@ int pluginKind(const TiXmlElement& sensor, const TiXmlElement** plugin) {
   return 0;
 }
 
-/// A model plugin (`<gazebo><plugin>`) this project runs: gazebo_ros_imu.
-bool readsModelPlugin(const TiXmlElement& plugin) { return attribute(plugin, "filename") == "libgazebo_ros_imu.so"; }
+/// A model plugin (`<gazebo><plugin>`) this project runs: gazebo_ros_imu, gazebo_ros_p3d.
+bool readsModelPlugin(const TiXmlElement& plugin) {
+  const std::string file = attribute(plugin, "filename");
+  return file == "libgazebo_ros_imu.so" || file == "libgazebo_ros_p3d.so";
+}
 
 /// The text of `parent`'s child `name`, or `fallback`.
 std::string childText(const TiXmlElement& parent, const char* name, const std::string& fallback) {
@@ -140,15 +143,14 @@ ImuEntry sensorImu(const TiXmlElement& s, const TiXmlElement& plugin, const std:
   return imu;
 }
 
-/// The IMU of gazebo_ros_imu's model plugin: on `bodyName` (required),
-/// `updateRate` (0 or none: every step), `gaussianNoise`, `topicName`
-/// ("/default_imu"), `frameName` (bodyName). Its readings follow REP 145
-/// here: the plugin's own leave gravity out of the acceleration.
-ImuEntry pluginImu(const TiXmlElement& plugin, const Unread& unread) {
+/// The IMU of gazebo_ros_imu's model plugin: on `bodyName`, `updateRate`
+/// (0 or none: every step), `gaussianNoise`, `topicName` ("/default_imu"),
+/// `frameName` (bodyName). Its readings follow REP 145 here: the plugin's
+/// own leave gravity out of the acceleration.
+ImuEntry pluginImu(const TiXmlElement& plugin, const std::string& link, const Unread& unread) {
   ImuEntry imu;
   imu.key = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
-  imu.link = childText(plugin, "bodyName", "");
-  if (imu.link.empty()) throw std::invalid_argument(imu.key + ": no <bodyName> (Gazebo refuses it too)");
+  imu.link = link;
   const Numbers numbers(imu.key);
   double rate = 0.0, sigma = 0.0;
   numbers.at(&plugin, "updateRate", rate);
@@ -163,6 +165,50 @@ ImuEntry pluginImu(const TiXmlElement& plugin, const Unread& unread) {
   return imu;
 }
 
+/// The odometry of gazebo_ros_p3d's model plugin: `bodyName` on
+/// `topicName` ("odom"), at `updateRate` (0 or none: every step), its
+/// `gaussianNoise` on the pose and the twist (p3d puts it on the twist
+/// alone, and the covariances on both), in the world frame (a `frameName`
+/// naming a link is read as the world, and said).
+OdometryEntry pluginOdometry(const TiXmlElement& plugin, const std::string& link, const Unread& unread) {
+  OdometryEntry o;
+  o.key = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
+  o.link = link;
+  const Numbers numbers(o.key);
+  double rate = 0.0, sigma = 0.0;
+  numbers.at(&plugin, "updateRate", rate);
+  numbers.at(&plugin, "gaussianNoise", sigma);
+  o.rate = rate > 0.0 ? rate : std::numeric_limits<double>::infinity();
+  if (sigma > 0.0) o.noise = core::OdomNoiseSettings{sigma, sigma, sigma, sigma, 0.0, 0.0, 0.0, 0};
+  o.topic = childText(plugin, "topicName", "odom");
+  const std::string frame = childText(plugin, "frameName", "world");
+  if (frame != "world" && frame != "/world" && frame != "map" && frame != "/map") {
+    unread("<plugin> libgazebo_ros_p3d.so <frameName> of a link (read as the world)", link);
+  }
+  for (const char* name : {"xyzOffsets", "rpyOffsets", "xyzOffset", "rpyOffset"}) {
+    if (const TiXmlElement* e = plugin.FirstChildElement(name)) {
+      for (double x : numbers.read(*e, name, 3)) {
+        if (x != 0.0) unread(std::string("<plugin> libgazebo_ros_p3d.so <") + name + ">", link);
+      }
+    }
+  }
+  return o;
+}
+
+/// A model plugin's sensor into `out`; one without its `bodyName` is told
+/// to `unread`, as Gazebo does not run it.
+void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, LinkSensors& out) {
+  const std::string file = attribute(plugin, "filename");
+  const std::string link = childText(plugin, "bodyName", "");
+  if (link.empty()) {
+    unread("<plugin> " + file + " without <bodyName> (Gazebo does not run it)", attribute(plugin, "name"));
+  } else if (file == "libgazebo_ros_imu.so") {
+    out.imus.push_back(pluginImu(plugin, link, unread));
+  } else {
+    out.odometry.push_back(pluginOdometry(plugin, link, unread));
+  }
+}
+
 }  // namespace
 
 LinkSensors gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
@@ -171,7 +217,7 @@ LinkSensors gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
     const std::string link = attribute(*g, "reference");
     if (link.empty()) {
       for (const TiXmlElement* p = g->FirstChildElement("plugin"); p; p = p->NextSiblingElement("plugin")) {
-        if (readsModelPlugin(*p)) out.imus.push_back(pluginImu(*p, unread));
+        if (readsModelPlugin(*p)) readModelPlugin(*p, unread, out);
       }
       continue;
     }

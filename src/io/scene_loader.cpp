@@ -35,11 +35,14 @@ Described describe(const UrdfText& text, UrdfOptions options) {
   return d;
 }
 
-/// The sensors a robot's config entry (or the one robot's config) puts on its links.
-LinkSensors configSensors(const std::optional<ImuEntry>& imu, const std::vector<LidarEntry>& lidars,
-                          const std::vector<DepthCameraEntry>& cameras) {
-  LinkSensors s{{}, lidars, cameras};
+/// The sensors a robot's config entry (or the one robot's config, `key`
+/// "") puts on its links: `odom_noise` is its base's odometry.
+LinkSensors configSensors(const std::optional<ImuEntry>& imu, const std::optional<core::OdomNoiseSettings>& odom_noise,
+                          const std::vector<LidarEntry>& lidars, const std::vector<DepthCameraEntry>& cameras,
+                          const std::string& key) {
+  LinkSensors s{{}, lidars, cameras, {}};
   if (imu) s.imus.push_back(*imu);
+  if (odom_noise) s.odometry.push_back({"", "odom", "ground_truth", odom_noise, 0.0, key + "odom_noise"});
   return s;
 }
 
@@ -63,13 +66,11 @@ class Files {
   std::map<std::string, Described> files_;
 };
 
-/// Refuses a robot's odometry and driver keys (`key`.odom_noise, ...), not read yet.
-void refuseBodyDevices(const std::string& key, const std::string& robot, bool odom_noise, bool cmd_vel) {
-  for (const auto& [what, set] : {std::pair<const char*, bool>{"odom_noise", odom_noise}, {"cmd_vel", cmd_vel}}) {
-    if (set) {
-      throw ConfigError("config key '" + key + what + "': robot '" + robot +
-                        "' does not read it yet (a body's odometry and driver, not a robot's)");
-    }
+/// Refuses a robot's velocity driver (`key`cmd_vel), not read yet.
+void refuseBodyDevices(const std::string& key, const std::string& robot, bool cmd_vel) {
+  if (cmd_vel) {
+    throw ConfigError("config key '" + key + "cmd_vel': robot '" + robot +
+                      "' does not read it yet (a body's driver, not a robot's: give it a DiffDriveController)");
   }
 }
 
@@ -151,10 +152,11 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     core::ArticulationModel model = std::get<core::ArticulationModel>(described.what);
     model.name = e.name;
     checkRobotSettings(config, e.name);
-    refuseBodyDevices(key + ".", e.name, e.odom_noise.has_value(), e.cmd_vel.has_value());
+    refuseBodyDevices(key + ".", e.name, e.cmd_vel.has_value());
     robot_starts.push_back(robotStart(model, e.initial, e.initial_joints, config.model.limits, key + ".initial"));
     controls.push_back(buildControls(e.controllers, model));
-    sensors.push_back(mountSensors(configSensors(e.imu, e.lidars, e.cameras), described.sensors, model, spec.dt));
+    sensors.push_back(mountSensors(configSensors(e.imu, e.odom_noise, e.lidars, e.cameras, key + "."),
+                                   described.sensors, model, spec.dt));
     entry.push_back(-1 - static_cast<int>(robots.size()));
     robots.push_back({e.name, std::move(model), e.friction, e.restitution});
   }
@@ -195,12 +197,12 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
   }
   core::ArticulationModel model = std::move(std::get<core::ArticulationModel>(described.what));
   checkRobotSettings(config, model.name);
-  refuseBodyDevices("", model.name, config.odom_noise.has_value(), config.cmd_vel.has_value());
+  refuseBodyDevices("", model.name, config.cmd_vel.has_value());
   core::ArticulationState start =
       robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
   RobotControls controls = buildControls(config.controllers, model);
-  RobotSensors sensors =
-      mountSensors(configSensors(config.imu, config.lidars, config.cameras), described.sensors, model, config.model.dt);
+  RobotSensors sensors = mountSensors(configSensors(config.imu, config.odom_noise, config.lidars, config.cameras, ""),
+                                      described.sensors, model, config.model.dt);
   core::ModelSpec spec = config.model;
   spec.bodies.clear();
   const std::string name = model.name;

@@ -67,6 +67,42 @@ bool hasFrame(const core::ArticulationModel& model, const std::string& name) {
   return false;
 }
 
+/// Refuses a rate outside the publish rates, naming `key`.
+void checkRate(double rate, const std::string& key) {
+  if (!(rate >= core::ranges::kMinRate && rate <= core::ranges::kMaxPublishRate)) {
+    throw ConfigError(key + ": its rate " + std::to_string(rate) + " Hz is not within [" +
+                      std::to_string(core::ranges::kMinRate) + ", " + std::to_string(core::ranges::kMaxPublishRate) +
+                      "]");
+  }
+}
+
+void mountOdometry(const std::vector<OdometryEntry>& entries, const core::ArticulationModel& model, double dt,
+                   bool markup, std::vector<RobotOdometry>& out) {
+  for (const OdometryEntry& e : entries) {
+    checkTopic(e.topic, e.key);
+    if (!e.ground_truth.empty()) checkTopic(e.ground_truth, e.key);
+    const double rate = markup ? std::min({e.rate, 1.0 / dt, core::ranges::kMaxPublishRate}) : e.rate;
+    if (rate != 0.0) checkRate(rate, e.key);
+    if (e.noise) {
+      try {
+        core::validateOdomNoise(*e.noise, e.key);
+      } catch (const std::invalid_argument& err) {
+        throw ConfigError(err.what());
+      }
+    }
+    RobotOdometry mounted{e, -1};
+    mounted.entry.rate = rate;
+    mounted.entry.link = e.link.empty() ? model.links[0].name : e.link;
+    core::Pose X_LS;
+    mount(model, mounted.entry.link, core::Pose{}, e.key, mounted.link, X_LS);
+    if (model.links[static_cast<std::size_t>(mounted.link)].name != mounted.entry.link) {
+      throw ConfigError(e.key + ": link '" + e.link + "' is fixed to '" +
+                        model.links[static_cast<std::size_t>(mounted.link)].name + "': give the moving link");
+    }
+    out.push_back(std::move(mounted));
+  }
+}
+
 void mountLidars(const std::vector<LidarEntry>& entries, const core::ArticulationModel& model,
                  std::vector<RobotLidar>& out) {
   for (const LidarEntry& e : entries) {
@@ -75,11 +111,7 @@ void mountLidars(const std::vector<LidarEntry>& entries, const core::Articulatio
     } catch (const std::invalid_argument& err) {
       throw ConfigError(e.key + ": " + err.what());
     }
-    if (!(e.rate >= core::ranges::kMinRate && e.rate <= core::ranges::kMaxPublishRate)) {
-      throw ConfigError(e.key + ": its rate " + std::to_string(e.rate) + " Hz is not within [" +
-                        std::to_string(core::ranges::kMinRate) + ", " + std::to_string(core::ranges::kMaxPublishRate) +
-                        "]");
-    }
+    checkRate(e.rate, e.key);
     checkTopic(e.topic, e.key);
     RobotLidar mounted{e, -1, {}};
     mount(model, e.link, e.pose, e.key, mounted.link, mounted.X_LS);
@@ -127,6 +159,7 @@ RobotSensors mountSensors(const LinkSensors& config, const LinkSensors& markup, 
     mountImus(sensors->imus, model, dt, from_markup, out.imus);
     mountLidars(sensors->lidars, model, out.lidars);
     mountCameras(sensors->cameras, model, out.cameras);
+    mountOdometry(sensors->odometry, model, dt, from_markup, out.odometry);
   }
   return out;
 }

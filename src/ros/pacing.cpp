@@ -34,6 +34,7 @@ void SimNode::stepOnce() {
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
   sampleSensors();
   range_sensors_->sample(sim_, steps_, stamp());
+  link_odometry_->publish(sim_, steps_, simTime(), stamp());
   sim_.contacts.update(state_, workspace_.contacts);
   schedule_.dropFinished(simTime());
   sim_.joint_efforts.dropFinished(simTime());

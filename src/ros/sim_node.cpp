@@ -151,6 +151,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   checkRobotFrames(robot_publisher_->robots(), settings_.world_frame, ports_.frames());
   range_sensors_.emplace(nh_, model_.dt());
   link_imus_.emplace(nh_, model_.dt());
+  link_odometry_.emplace(nh_, model_.dt(), settings_.publish_rate, settings_.world_frame);
   start_sensors_.resize(sim_.scene.robots().size());
   for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
     robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
@@ -159,6 +160,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     const std::string& frame_prefix = robot_publisher_->robots()[r].frame_prefix;
     range_sensors_->addRobot(name, prefix, frame_prefix, start_sensors_[r].lidars, start_sensors_[r].cameras);
     link_imus_->addRobot(sim_, r, prefix, frame_prefix, start_sensors_[r].imus);
+    link_odometry_->addRobot(name, prefix, frame_prefix, start_sensors_[r].odometry);
   }
   start_sensors_.clear();
   services_ = {
@@ -208,6 +210,7 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
   range_sensors_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.lidars, spawn.sensors.cameras);
   link_imus_->addRobot(sim_, r, prefix, spawn.frame_prefix, spawn.sensors.imus);
+  link_odometry_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.odometry);
 }
 
 void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {
@@ -215,6 +218,7 @@ void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {
   commands_->removeRobot(r);
   range_sensors_->removeRobot(r);
   link_imus_->removeRobot(r);
+  link_odometry_->removeRobot(r);
   robots_speed_limited_.erase(name);
 }
 

@@ -109,12 +109,15 @@ io::RobotControls requestedControls(const SpawnBody::Request& req, const ros::No
 void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf, const io::UrdfOptions& options,
                         const core::SpeedLimits& limits, double dt, const ros::NodeHandle& nh,
                         SpawnQueue::Spawn& spawn) {
-  for (const auto& [field, given] :
-       {std::pair<const char*, bool>{"odom_noise", !req.odom_noise.empty()}, {"cmd_vel", !req.cmd_vel.empty()}}) {
-    if (given) throw std::invalid_argument(std::string(field) + ": a robot does not read it yet (a body's)");
+  if (!req.cmd_vel.empty()) {
+    throw std::invalid_argument("cmd_vel: a robot does not read it yet (a body's: give it a DiffDriveController)");
   }
   io::LinkSensors config, markup;
   if (!req.imu.empty()) config.imus.push_back(io::parseImuText(req.imu, "imu", dt));
+  if (!req.odom_noise.empty()) {
+    config.odometry.push_back(
+        {"", "odom", "ground_truth", io::parseOdomNoiseText(req.odom_noise, "odom_noise"), 0.0, "odom_noise"});
+  }
   io::UrdfOptions with_sensors = options;
   with_sensors.sensors = &markup;
   core::ArticulationModel model = io::loadArticulationString(urdf.xml, urdf.source, urdf.base_dir, with_sensors);

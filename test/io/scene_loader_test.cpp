@@ -103,7 +103,7 @@ TEST(SceneLoader, RefusesWhatAnEntryWouldNotRead) {
   refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, initial: {linear_velocity: [1, 0, 0]}}\n",
           "'bodies[0].initial.linear_velocity'");
   refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, initial: {joint_positions: {elbow: 1}}}\n", "elbow");
-  refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, odom_noise: {}}\n", "'bodies[0].odom_noise': robot 'swing'");
+  refused("bodies:\n  - {name: swing, urdf: pendulum.urdf, cmd_vel: {}}\n", "'bodies[0].cmd_vel': robot 'swing'");
   refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, imu: {link: mast}}\n",
           "'bodies[0].imu.link': robot 'rover' has no link 'mast'");
   refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, imu: {topic: 'a b'}}\n",
@@ -155,6 +155,21 @@ TEST(SceneLoader, ALidarSitsOnItsLinkOrWhereAFixedJointPutsIt) {
             1e-15);  // its pose in the caster
   EXPECT_TRUE(c.sensors[0].cameras[0].entry.millimetres);
   EXPECT_EQ(c.sensors[0].cameras[0].entry.settings.width, 8);
+}
+
+TEST(SceneLoader, ARobotsOdomNoiseIsItsBasesOdometry) {
+  const io::SceneSetup s = io::buildScene(
+      config("bodies:\n  - {name: rover, urdf: diff_drive.urdf, odom_noise: {position: 0.02, drift: {x: 0.1}}}\n"));
+  ASSERT_EQ(s.sensors.at(0).odometry.size(), 1u);
+  const io::RobotOdometry& o = s.sensors[0].odometry[0];
+  EXPECT_EQ(o.link, 0);
+  EXPECT_EQ(o.entry.link, "base_link");
+  EXPECT_EQ(o.entry.topic, "odom");
+  EXPECT_EQ(o.entry.ground_truth, "ground_truth");
+  EXPECT_EQ(o.entry.rate, 0.0);  // the node's publish rate
+  ASSERT_TRUE(o.entry.noise.has_value());
+  EXPECT_EQ(o.entry.noise->position, 0.02);
+  EXPECT_EQ(o.entry.noise->drift_x, 0.1);
 }
 
 TEST(SceneLoader, AnImuSitsOnAnyLinkOfARobot) {
@@ -310,17 +325,45 @@ TEST(GazeboImus, AnImuSensorOrTheImuModelPluginIsAnImuWithItsMarkupsSettings) {
   EXPECT_EQ(wheel.entry.settings.gyro_noise, 0.01);
   EXPECT_EQ(wheel.entry.topic, "wheel_imu");
   EXPECT_EQ(wheel.entry.frame_id, "wheel");  // frameName's default: bodyName
-  // Gazebo refuses the model plugin without its link, and so does this.
-  try {
-    io::loadScene(config(""), [&] {
-      return laserRobot(
-          "<gazebo><plugin name='p' filename='libgazebo_ros_imu.so'/>"
-          "</gazebo>");
-    });
-    ADD_FAILURE() << "an IMU plugin without <bodyName> was accepted";
-  } catch (const std::exception& e) {
-    EXPECT_NE(std::string(e.what()).find("<plugin name=\"p\">: no <bodyName>"), std::string::npos) << e.what();
-  }
+}
+
+TEST(GazeboImus, APluginGazeboWouldNotRunIsSaidAndNotRun) {
+  // Gazebo logs the model plugin without its link and runs on without it: so does this.
+  const io::SceneSetup s = io::loadScene(
+      config(""), [&] { return laserRobot("<gazebo><plugin name='p' filename='libgazebo_ros_imu.so'/></gazebo>"); });
+  EXPECT_TRUE(s.sensors.at(0).imus.empty());
+  std::string notes;
+  for (const std::string& n : s.notes) notes += n;
+  EXPECT_NE(notes.find("libgazebo_ros_imu.so without <bodyName> (Gazebo does not run it)"), std::string::npos) << notes;
+}
+
+TEST(GazeboOdometry, TheP3dPluginIsALinksOdometryWithItsNoise) {
+  const std::string p3d =
+      "<gazebo><plugin name='truth' filename='libgazebo_ros_p3d.so'><bodyName>base_link</bodyName>"
+      "<topicName>ground_truth/state</topicName><frameName>world</frameName><updateRate>50</updateRate>"
+      "<gaussianNoise>0.01</gaussianNoise></plugin></gazebo>"
+      "<gazebo><plugin name='wheel' filename='libgazebo_ros_p3d.so'><bodyName>wheel</bodyName>"
+      "<frameName>base_link</frameName><xyzOffsets>0 0 1</xyzOffsets></plugin></gazebo>";
+  const io::SceneSetup s = io::loadScene(config(""), [&] { return laserRobot(p3d); });
+  ASSERT_EQ(s.sensors.at(0).odometry.size(), 2u);
+  const io::RobotOdometry& base = s.sensors[0].odometry[0];
+  EXPECT_EQ(base.link, 0);
+  EXPECT_EQ(base.entry.topic, "ground_truth/state");
+  EXPECT_EQ(base.entry.rate, 50.0);
+  ASSERT_TRUE(base.entry.noise.has_value());
+  EXPECT_EQ(base.entry.noise->position, 0.01);  // on the pose and the twist alike
+  EXPECT_EQ(base.entry.noise->angular_velocity, 0.01);
+  EXPECT_TRUE(base.entry.ground_truth.empty());
+  const io::RobotOdometry& wheel = s.sensors[0].odometry[1];
+  EXPECT_EQ(wheel.link, 1);
+  EXPECT_EQ(wheel.entry.topic, "odom");
+  EXPECT_EQ(wheel.entry.rate, 1.0 / s.scene.model().dt());  // no updateRate: every step
+  EXPECT_FALSE(wheel.entry.noise.has_value());
+  // What it does not run is said: a frame other than the world's, an offset.
+  std::string notes;
+  for (const std::string& n : s.notes) notes += n;
+  EXPECT_NE(notes.find("libgazebo_ros_p3d.so <frameName> of a link (read as the world)"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("libgazebo_ros_p3d.so <xyzOffsets>"), std::string::npos) << notes;
 }
 
 }  // namespace

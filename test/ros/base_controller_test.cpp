@@ -3,7 +3,8 @@
 // (base_controller.test). What a subscriber receives: the odometry on
 // /base_controller/odom and odom -> base_link on tf, against the ground
 // truth on ~body_states, while geometry_msgs/Twist commands arrive on
-// /base_controller/cmd_vel.
+// /base_controller/cmd_vel; and the base's own odometry (odom_noise):
+// /ground_truth exact, /odom scattered about it.
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
@@ -39,6 +40,10 @@ class BaseController : public Node {
         if (t.child_frame_id == "base_link") base_parents_.push_back(t.header.frame_id);
       }
     });
+    ground_truth_sub_ = nh_.subscribe<nav_msgs::Odometry>(
+        "/ground_truth", 1000, [this](const nav_msgs::Odometry::ConstPtr& m) { ground_truth_.push_back(*m); });
+    noisy_sub_ = nh_.subscribe<nav_msgs::Odometry>(
+        "/odom", 1000, [this](const nav_msgs::Odometry::ConstPtr& m) { noisy_.push_back(*m); });
     cmd_vel_ = nh_.advertise<geometry_msgs::Twist>("/base_controller/cmd_vel", 10);
     ASSERT_TRUE(spinUntil([&] { return !odom_.empty() && !truth_.empty(); }, 30.0));
   }
@@ -55,12 +60,12 @@ class BaseController : public Node {
     }
   }
 
-  std::vector<nav_msgs::Odometry> odom_;
+  std::vector<nav_msgs::Odometry> odom_, ground_truth_, noisy_;
   std::vector<rigid_body_sim::BodyStates> truth_;
   std::vector<std::string> base_parents_;
 
  private:
-  ros::Subscriber odom_sub_, truth_sub_, tf_sub_;
+  ros::Subscriber odom_sub_, truth_sub_, tf_sub_, ground_truth_sub_, noisy_sub_;
   ros::Publisher cmd_vel_;
 };
 
@@ -131,6 +136,42 @@ TEST_F(BaseController, StopsWhenTheCommandsStop) {
   double v = 0.0, w = 0.0;
   truthOver(truth_, 0.5, v, w);
   EXPECT_NEAR(v, 0.0, 0.01);
+}
+
+// The base's own odometry (odom_noise on a robot, as on a body): the exact
+// pose and twist on /ground_truth, the twist in the base's axes as
+// nav_msgs/Odometry says; /odom the same with 1 cm of noise on the position.
+TEST_F(BaseController, ItsBaseOdometryIsTheTruthAndItsNoisyOdomScattersAboutIt) {
+  drive(0.5, 0.3, 2.0);
+  ASSERT_FALSE(ground_truth_.empty());
+  ASSERT_FALSE(noisy_.empty());
+  const nav_msgs::Odometry* exact = nullptr;
+  const rigid_body_sim::BodyStates* at = nullptr;
+  for (auto g = ground_truth_.rbegin(); g != ground_truth_.rend() && at == nullptr; ++g) {
+    for (const rigid_body_sim::BodyStates& s : truth_) {
+      if (s.header.stamp == g->header.stamp) at = &s, exact = &*g;
+    }
+  }
+  ASSERT_NE(at, nullptr) << "no body_states stamped as a ground_truth";
+  EXPECT_EQ(exact->header.frame_id, at->header.frame_id);  // the world frame
+  EXPECT_EQ(exact->child_frame_id, "base_link");
+  EXPECT_NEAR(exact->pose.pose.position.x, at->poses.at(0).position.x, 1e-9);
+  EXPECT_NEAR(exact->pose.pose.position.y, at->poses.at(0).position.y, 1e-9);
+  EXPECT_NEAR(yawOf(exact->pose.pose.orientation), yawOf(at->poses.at(0).orientation), 1e-9);
+  EXPECT_NEAR(exact->twist.twist.linear.x, at->twists.at(0).linear.x, 1e-9);  // both in base_link's axes
+  EXPECT_NEAR(exact->twist.twist.angular.z, at->twists.at(0).angular.z, 1e-9);
+  EXPECT_GT(exact->twist.twist.linear.x, 0.4);
+  const nav_msgs::Odometry* noisy = nullptr;
+  for (const nav_msgs::Odometry& n : noisy_) {
+    if (n.header.stamp == exact->header.stamp) noisy = &n;
+  }
+  ASSERT_NE(noisy, nullptr) << "no /odom stamped as the ground truth";
+  const double off = std::hypot(noisy->pose.pose.position.x - exact->pose.pose.position.x,
+                                noisy->pose.pose.position.y - exact->pose.pose.position.y);
+  EXPECT_GT(off, 1e-6);  // σ = 1 cm per axis
+  EXPECT_LT(off, 0.06);
+  EXPECT_NEAR(noisy->pose.covariance[0], 1e-4, 1e-12);
+  EXPECT_EQ(noisy->twist.twist.linear.x, exact->twist.twist.linear.x);  // no twist noise asked
 }
 
 }  // namespace

@@ -77,12 +77,26 @@ struct DepthCameraEntry {
   std::string key = "depth_camera";
 };
 
+/// Odometry of a robot's link as nav_msgs/Odometry, its pose in the world
+/// frame and its twist in the link's axes: a robot's `odom_noise` (its base
+/// on `odom` with the noise, and exact on `ground_truth`), or Gazebo's
+/// gazebo_ros_p3d (`bodyName` on `topicName`, `gaussianNoise` on its pose and twist).
+struct OdometryEntry {
+  std::string link;                              ///< "": the base
+  std::string topic = "odom";                    ///< under the robot's prefix; /... as it is
+  std::string ground_truth;                      ///< the exact state's topic too; "": none
+  std::optional<core::OdomNoiseSettings> noise;  ///< none: exact
+  double rate = 0.0;                             ///< Hz of sim time; 0: the node's ~publish_rate
+  std::string key = "odom_noise";                ///< for messages
+};
+
 /// The sensors on a robot's links: its config entry's, or its URDF's
 /// Gazebo markup's (io/sensor_mount.h puts them on the links).
 struct LinkSensors {
   std::vector<ImuEntry> imus;
   std::vector<LidarEntry> lidars;
   std::vector<DepthCameraEntry> cameras;
+  std::vector<OdometryEntry> odometry;
 };
 
 /// A robot's joints at the start (`initial.joint_positions` and

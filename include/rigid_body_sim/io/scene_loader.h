@@ -23,8 +23,8 @@ struct SceneSetup {
   std::vector<int> entry;
   /// Per robot: its controllers (`controllers`, `bodies[i].controllers`).
   std::vector<RobotControls> controls;
-  /// Per robot: its sensors on its links (`imu`, `lidar`, `depth_camera`,
-  /// `bodies[i]`'s, then its URDF's Gazebo markup's).
+  /// Per robot: its sensors on its links (`imu`, `odom_noise`, `lidar`,
+  /// `depth_camera`, `bodies[i]`'s, then its URDF's Gazebo markup's).
   std::vector<RobotSensors> sensors;
   /// What loading it repaired or warns of, one message per URDF or start,
   /// for the caller to log once (io::UrdfOptions::notes).
@@ -54,7 +54,7 @@ bool listsRobots(const SimConfig& config);
 /// (io::robotStart), its links' surface from bodies[i].contact. Each URDF
 /// comes from `read` (default: readUrdfFile), once per name. Refused
 /// (ConfigError naming the key): joint values for a body, and for a robot
-/// the keys it does not read yet (bodies[i].odom_noise, .cmd_vel)
+/// the key it does not read yet (bodies[i].cmd_vel)
 /// and the settings io::checkRobotSettings refuses.
 SceneSetup buildScene(const SimConfig& config, const UrdfReader& read = {});
 
@@ -62,8 +62,8 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read = {});
 /// (buildScene), or, when it has none, the one body or robot `single`
 /// gives (the node's robot_description) at the config's `initial`, a
 /// robot's joints at `initial.joint_positions` and `.joint_velocities`,
-/// named as its URDF names it. The top-level `odom_noise` and `cmd_vel`
-/// are refused for a robot, as its entry's are.
+/// named as its URDF names it. The top-level `cmd_vel` is refused for a
+/// robot, as its entry's is.
 SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& single, const UrdfReader& read = {});
 
 }  // namespace rigid_body_sim::io

@@ -34,11 +34,18 @@ struct RobotImu {
   int link = 0;
 };
 
+/// Odometry of link `link` of a robot (entry.link: its name).
+struct RobotOdometry {
+  OdometryEntry entry;
+  int link = 0;
+};
+
 /// Every sensor of one robot, on its links.
 struct RobotSensors {
   std::vector<RobotImu> imus;
   std::vector<RobotLidar> lidars;
   std::vector<RobotCamera> cameras;
+  std::vector<RobotOdometry> odometry;
 };
 
 /// `config`'s sensors and then `markup`'s (a URDF's Gazebo markup: checked
@@ -46,8 +53,11 @@ struct RobotSensors {
 /// as Gazebo samples no faster than it steps) on `model`'s links. An IMU's
 /// `link` "" is the robot's frame its `frame_id` names, else the base.
 /// Refused (ConfigError naming the entry's key): a link the robot does not
-/// have (the message lists its links), settings core::checkLidar or
-/// core::validateImu refuse, a lidar's rate outside the publish rates.
+/// have (the message lists its links), settings core::checkLidar,
+/// core::validateImu or core::validateOdomNoise refuse, a lidar's or an
+/// odometry's rate outside the publish rates, a topic ROS cannot name.
+/// An odometry's link "" is the base; it cannot be a lumped link (its
+/// twist is a moving link's).
 RobotSensors mountSensors(const LinkSensors& config, const LinkSensors& markup, const core::ArticulationModel& model,
                           double dt);
 

@@ -41,6 +41,7 @@
 #include "rigid_body_sim/ros/counted_publisher.h"
 #include "rigid_body_sim/ros/joint_requests.h"
 #include "rigid_body_sim/ros/link_imus.h"
+#include "rigid_body_sim/ros/link_odometry.h"
 #include "rigid_body_sim/ros/load_requests.h"
 #include "rigid_body_sim/ros/markers.h"
 #include "rigid_body_sim/ros/pacer.h"
@@ -138,6 +139,7 @@ class SimNode {
   std::optional<RobotCommands> commands_;             ///< the robots' controllers and their topics
   std::optional<RangeSensors> range_sensors_;         ///< the robots' lidars and depth cameras
   std::optional<LinkImus> link_imus_;                 ///< the IMUs on robots' links
+  std::optional<LinkOdometry> link_odometry_;         ///< the odometry of robots' links (odom_noise, p3d)
 
   /// Every body's frames, topics and devices, and its names: a spawn, a
   /// delete and a reset go through it (body_ports.h).
@@ -168,6 +170,7 @@ class SimNode {
          commands_->restart(sim_);  // nothing drives a reset robot back (gazebo_ros_pkgs #1311)
          range_sensors_->restart();
          for (std::size_t r = 0; r < sim_.robots.size(); ++r) link_imus_->restart(sim_, r);
+         link_odometry_->restart();
        }}};
   /// set_model_configuration, get_joint_properties.
   JointRequests joint_requests_{sim_, time_, [this](std::size_t r) {
