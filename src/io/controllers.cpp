@@ -205,8 +205,12 @@ RobotControls buildControls(const std::vector<ControllerEntry>& entries, const c
 }
 
 RobotControls controlsOf(const YAML::Node& node, const std::string& path, const core::ArticulationModel& model,
-                         bool in_namespace) {
-  if (!in_namespace) return buildControls(parseControllers(node, path), model);
+                         bool in_namespace, const std::vector<ControllerEntry>& markup) {
+  const auto with_markup = [&markup](std::vector<ControllerEntry> entries) {
+    entries.insert(entries.end(), markup.begin(), markup.end());
+    return entries;
+  };
+  if (!in_namespace) return buildControls(with_markup(parseControllers(node, path)), model);
   if (!node.IsMap()) throw ConfigError("'" + path + "': expected a namespace (a map of parameters)");
   YAML::Node controllers(YAML::NodeType::Map);
   for (const auto& item : node) {
@@ -216,7 +220,7 @@ RobotControls controlsOf(const YAML::Node& node, const std::string& path, const 
   if (const YAML::Node gazebo = node["gazebo_ros_control"]) {
     applyPidGains(gazebo, path + ".gazebo_ros_control", entries);
   }
-  return buildControls(entries, model);
+  return buildControls(with_markup(std::move(entries)), model);
 }
 
 }  // namespace rigid_body_sim::io

@@ -3,21 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
-#include <sstream>
-#include <stdexcept>
 #include <tuple>
 #include <utility>
+
+#include "gazebo_plugins.h"
 
 namespace rigid_body_sim::io::detail {
 
 namespace {
-
-std::string attribute(const TiXmlElement& e, const char* name) {
-  const char* value = e.Attribute(name);
-  return value != nullptr ? value : "";
-}
 
 /// The plugin of `sensor` this project runs: 1 laser (LaserScan), 2 Velodyne (PointCloud2), 3 IMU, 0 none.
 int pluginKind(const TiXmlElement& sensor, const TiXmlElement** plugin) {
@@ -32,66 +26,6 @@ int pluginKind(const TiXmlElement& sensor, const TiXmlElement** plugin) {
   }
   return 0;
 }
-
-/// A model plugin (`<gazebo><plugin>`) this project runs: gazebo_ros_imu, gazebo_ros_p3d.
-bool readsModelPlugin(const TiXmlElement& plugin) {
-  const std::string file = attribute(plugin, "filename");
-  return file == "libgazebo_ros_imu.so" || file == "libgazebo_ros_p3d.so";
-}
-
-/// The text of `parent`'s child `name`, or `fallback`.
-std::string childText(const TiXmlElement& parent, const char* name, const std::string& fallback) {
-  const TiXmlElement* e = parent.FirstChildElement(name);
-  return e != nullptr && e->GetText() != nullptr ? e->GetText() : fallback;
-}
-
-/// SDF's `<pose>` x y z roll pitch yaw: a translation, then fixed-axis rotations about x, y, z.
-core::Pose sdfPose(const std::vector<double>& p) {
-  core::Pose X;
-  X.translation = core::Vec3(p[0], p[1], p[2]);
-  X.rotation = core::Quat(Eigen::AngleAxisd(p[5], core::Vec3::UnitZ()) * Eigen::AngleAxisd(p[4], core::Vec3::UnitY()) *
-                          Eigen::AngleAxisd(p[3], core::Vec3::UnitX()));
-  return X;
-}
-
-/// Reads the numbers of elements under one sensor, each error naming its path.
-class Numbers {
- public:
-  explicit Numbers(std::string where) : where_(std::move(where)) {}
-  /// The numbers of `e`'s text (`count` of them), or throws naming `path`.
-  std::vector<double> read(const TiXmlElement& e, const std::string& path, std::size_t count) const {
-    const char* text = e.GetText();
-    std::istringstream in(text != nullptr ? text : "");
-    std::vector<double> out;
-    std::string word;
-    while (in >> word) {
-      char* end = nullptr;
-      const double x = std::strtod(word.c_str(), &end);
-      if (end == word.c_str() || *end != '\0' || !std::isfinite(x)) fail(path, text);
-      out.push_back(x);
-    }
-    if (out.size() != count) fail(path, text);
-    return out;
-  }
-  /// `path` (a/b/c) under `root`, if there, into `x`.
-  void at(const TiXmlElement* root, const std::string& path, double& x) const {
-    if (const TiXmlElement* e = find(root, path)) x = read(*e, path, 1)[0];
-  }
-  static const TiXmlElement* find(const TiXmlElement* root, const std::string& path) {
-    std::istringstream parts(path);
-    std::string part;
-    const TiXmlElement* e = root;
-    while (e != nullptr && std::getline(parts, part, '/')) e = e->FirstChildElement(part.c_str());
-    return e;
-  }
-
- private:
-  [[noreturn]] void fail(const std::string& path, const char* text) const {
-    throw std::invalid_argument(where_ + " <" + path + "> = '" + (text != nullptr ? text : "") +
-                                "': not the number(s) Gazebo reads there");
-  }
-  std::string where_;
-};
 
 }  // namespace
 
@@ -143,76 +77,10 @@ ImuEntry sensorImu(const TiXmlElement& s, const TiXmlElement& plugin, const std:
   return imu;
 }
 
-/// The IMU of gazebo_ros_imu's model plugin: on `bodyName`, `updateRate`
-/// (0 or none: every step), `gaussianNoise`, `topicName` ("/default_imu"),
-/// `frameName` (bodyName). Its readings follow REP 145 here: the plugin's
-/// own leave gravity out of the acceleration.
-ImuEntry pluginImu(const TiXmlElement& plugin, const std::string& link, const Unread& unread) {
-  ImuEntry imu;
-  imu.key = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
-  imu.link = link;
-  const Numbers numbers(imu.key);
-  double rate = 0.0, sigma = 0.0;
-  numbers.at(&plugin, "updateRate", rate);
-  numbers.at(&plugin, "gaussianNoise", sigma);
-  imu.settings.rate = rate > 0.0 ? rate : std::numeric_limits<double>::infinity();
-  imu.settings.gyro_noise = imu.settings.accel_noise = sigma;
-  imu.topic = childText(plugin, "topicName", "/default_imu");
-  imu.frame_id = childText(plugin, "frameName", imu.link);
-  if (plugin.FirstChildElement("rpyOffset") != nullptr || plugin.FirstChildElement("rpyOffsets") != nullptr) {
-    unread("<plugin> libgazebo_ros_imu.so <rpyOffset>", imu.link);
-  }
-  return imu;
-}
-
-/// The odometry of gazebo_ros_p3d's model plugin: `bodyName` on
-/// `topicName` ("odom"), at `updateRate` (0 or none: every step), its
-/// `gaussianNoise` on the pose and the twist (p3d puts it on the twist
-/// alone, and the covariances on both), in the world frame (a `frameName`
-/// naming a link is read as the world, and said).
-OdometryEntry pluginOdometry(const TiXmlElement& plugin, const std::string& link, const Unread& unread) {
-  OdometryEntry o;
-  o.key = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
-  o.link = link;
-  const Numbers numbers(o.key);
-  double rate = 0.0, sigma = 0.0;
-  numbers.at(&plugin, "updateRate", rate);
-  numbers.at(&plugin, "gaussianNoise", sigma);
-  o.rate = rate > 0.0 ? rate : std::numeric_limits<double>::infinity();
-  if (sigma > 0.0) o.noise = core::OdomNoiseSettings{sigma, sigma, sigma, sigma, 0.0, 0.0, 0.0, 0};
-  o.topic = childText(plugin, "topicName", "odom");
-  const std::string frame = childText(plugin, "frameName", "world");
-  if (frame != "world" && frame != "/world" && frame != "map" && frame != "/map") {
-    unread("<plugin> libgazebo_ros_p3d.so <frameName> of a link (read as the world)", link);
-  }
-  for (const char* name : {"xyzOffsets", "rpyOffsets", "xyzOffset", "rpyOffset"}) {
-    if (const TiXmlElement* e = plugin.FirstChildElement(name)) {
-      for (double x : numbers.read(*e, name, 3)) {
-        if (x != 0.0) unread(std::string("<plugin> libgazebo_ros_p3d.so <") + name + ">", link);
-      }
-    }
-  }
-  return o;
-}
-
-/// A model plugin's sensor into `out`; one without its `bodyName` is told
-/// to `unread`, as Gazebo does not run it.
-void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, LinkSensors& out) {
-  const std::string file = attribute(plugin, "filename");
-  const std::string link = childText(plugin, "bodyName", "");
-  if (link.empty()) {
-    unread("<plugin> " + file + " without <bodyName> (Gazebo does not run it)", attribute(plugin, "name"));
-  } else if (file == "libgazebo_ros_imu.so") {
-    out.imus.push_back(pluginImu(plugin, link, unread));
-  } else {
-    out.odometry.push_back(pluginOdometry(plugin, link, unread));
-  }
-}
-
 }  // namespace
 
-LinkSensors gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
-  LinkSensors out;
+RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
+  RobotDevices out;
   for (const TiXmlElement* g = robot.FirstChildElement("gazebo"); g; g = g->NextSiblingElement("gazebo")) {
     const std::string link = attribute(*g, "reference");
     if (link.empty()) {

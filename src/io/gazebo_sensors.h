@@ -4,17 +4,13 @@
 // (libgazebo_ros_laser.so, libgazebo_ros_gpu_laser.so: a LaserScan) or the
 // Velodyne ones (libgazebo_ros_velodyne_laser.so, ..._gpu_laser.so: a
 // PointCloud2), each turned into a lidar entry on LINK; `<sensor
-// type="imu">` with gazebo_ros_imu_sensor, and the model plugin
-// gazebo_ros_imu (`<gazebo><plugin filename="libgazebo_ros_imu.so">`), each
-// an IMU entry.
+// type="imu">` with gazebo_ros_imu_sensor, an IMU entry; and the model
+// plugins gazebo_plugins.h reads.
 #pragma once
 
 #include <tinyxml.h>
 
-#include <functional>
-#include <string>
-#include <vector>
-
+#include "gazebo_markup.h"
 #include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::io::detail {
@@ -22,18 +18,17 @@ namespace rigid_body_sim::io::detail {
 /// Whether `e` (a <sensor> or <plugin> element under <gazebo>) is one gazeboSensors reads.
 bool readsMarkup(const TiXmlElement& e);
 
-/// The sensors of `robot`'s markup. A lidar: the sensor's `<pose>` (x y z roll pitch
+/// The devices of `robot`'s markup. A lidar: the sensor's `<pose>` (x y z roll pitch
 /// yaw) in LINK, `<update_rate>`, `<ray><scan><horizontal>` and
 /// `<vertical>` (`samples` times `resolution`, `min_angle`, `max_angle`),
 /// `<range>` (`min`, `max`), `<noise>` (`stddev`), and the plugin's
 /// `topicName` and `frameName` (a Velodyne plugin's `min_range`,
 /// `max_range` and `gaussianNoise` over the sensor's). Each entry's key
 /// names its markup. What it does not run (a noise's non-zero mean) is
-/// told to `unread` (kind, link). An IMU: as sensorImu and pluginImu in
-/// gazebo_sensors.cpp say, its rate infinite for "every step" (the mount
+/// told to `unread` (kind, link). An IMU: as sensorImu in
+/// gazebo_sensors.cpp says, its rate infinite for "every step" (the mount
 /// caps it at one sample a step). Throws std::invalid_argument naming the
-/// element: a number it cannot read, an IMU plugin without its link.
-using Unread = std::function<void(const std::string& kind, const std::string& name)>;
-LinkSensors gazeboSensors(const TiXmlElement& robot, const Unread& unread);
+/// element: a number it cannot read.
+RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread);
 
 }  // namespace rigid_body_sim::io::detail

@@ -20,7 +20,7 @@ namespace {
 /// What one URDF file describes: a body, or a robot and the sensors of its Gazebo markup.
 struct Described {
   std::variant<core::BodySpec, core::ArticulationModel> what;
-  LinkSensors sensors;
+  RobotDevices sensors;
 };
 
 /// A body, or a robot when the URDF has a moving joint.
@@ -37,13 +37,19 @@ Described describe(const UrdfText& text, UrdfOptions options) {
 
 /// The sensors a robot's config entry (or the one robot's config, `key`
 /// "") puts on its links: `odom_noise` is its base's odometry.
-LinkSensors configSensors(const std::optional<ImuEntry>& imu, const std::optional<core::OdomNoiseSettings>& odom_noise,
-                          const std::vector<LidarEntry>& lidars, const std::vector<DepthCameraEntry>& cameras,
-                          const std::string& key) {
-  LinkSensors s{{}, lidars, cameras, {}};
+RobotDevices configSensors(const std::optional<ImuEntry>& imu, const std::optional<core::OdomNoiseSettings>& odom_noise,
+                           const std::vector<LidarEntry>& lidars, const std::vector<DepthCameraEntry>& cameras,
+                           const std::string& key) {
+  RobotDevices s{{}, lidars, cameras, {}, {}};
   if (imu) s.imus.push_back(*imu);
   if (odom_noise) s.odometry.push_back({"", "odom", "ground_truth", odom_noise, 0.0, key + "odom_noise"});
   return s;
+}
+
+/// The config's controllers, then the drives of the URDF's markup.
+std::vector<ControllerEntry> allControllers(std::vector<ControllerEntry> config, const RobotDevices& markup) {
+  config.insert(config.end(), markup.controllers.begin(), markup.controllers.end());
+  return config;
 }
 
 /// Each URDF of the bodies list read and parsed once (a world of 10,000
@@ -154,7 +160,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     checkRobotSettings(config, e.name);
     refuseBodyDevices(key + ".", e.name, e.cmd_vel.has_value());
     robot_starts.push_back(robotStart(model, e.initial, e.initial_joints, config.model.limits, key + ".initial"));
-    controls.push_back(buildControls(e.controllers, model));
+    controls.push_back(buildControls(allControllers(e.controllers, described.sensors), model));
     sensors.push_back(mountSensors(configSensors(e.imu, e.odom_noise, e.lidars, e.cameras, key + "."),
                                    described.sensors, model, spec.dt));
     entry.push_back(-1 - static_cast<int>(robots.size()));
@@ -200,7 +206,7 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
   refuseBodyDevices("", model.name, config.cmd_vel.has_value());
   core::ArticulationState start =
       robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
-  RobotControls controls = buildControls(config.controllers, model);
+  RobotControls controls = buildControls(allControllers(config.controllers, described.sensors), model);
   RobotSensors sensors = mountSensors(configSensors(config.imu, config.odom_noise, config.lidars, config.cameras, ""),
                                       described.sensors, model, config.model.dt);
   core::ModelSpec spec = config.model;

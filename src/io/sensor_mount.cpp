@@ -152,7 +152,7 @@ void mountImus(const std::vector<ImuEntry>& entries, const core::ArticulationMod
 
 }  // namespace
 
-RobotSensors mountSensors(const LinkSensors& config, const LinkSensors& markup, const core::ArticulationModel& model,
+RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup, const core::ArticulationModel& model,
                           double dt) {
   RobotSensors out;
   for (const auto& [sensors, from_markup] : {std::pair{&config, false}, std::pair{&markup, true}}) {

@@ -37,7 +37,7 @@ struct ParsedUrdf {
   std::map<std::string, std::vector<std::string>> unread_markup;
   /// The sensors of its Gazebo markup with a ROS plugin (gazebo_sensors.h),
   /// and their markup as unread_markup names it (for a load that takes no sensors).
-  LinkSensors sensors;
+  RobotDevices sensors;
   std::map<std::string, std::vector<std::string>> sensor_markup;
 };
 

@@ -49,14 +49,16 @@ DrivePorts::DrivePorts(ros::NodeHandle& nh, const std::string& prefix, const std
                        const io::DriveTopics& topics, DriveFrames frames, long long every,
                        const std::function<void(double, double)>& command)
     : topics_(topics), frames_(std::move(frames)), every_(std::max(1LL, every)) {
-  const std::string ns = prefix + name + "/";
-  odom_ = CountedPublisher::advertise<nav_msgs::Odometry>(nh, ns + "odom", 100);
+  const std::string ns = topics_.under_controller ? prefix + name + "/" : prefix;
+  const auto topic = [&](const std::string& t) { return t.front() == '/' ? t : ns + t; };
+  const std::string cmd_vel = topic(topics_.cmd_vel_topic), odom = topic(topics_.odom_topic);
+  odom_ = CountedPublisher::advertise<nav_msgs::Odometry>(nh, odom, 100);
   if (topics_.publish_cmd)
     cmd_vel_out_ = CountedPublisher::advertise<geometry_msgs::TwistStamped>(nh, ns + "cmd_vel_out", 100);
   const bool one_publisher = !topics_.allow_multiple_cmd_vel_publishers;
   // The callback reads its own subscriber's publishers through `this` (the class is neither copied nor moved).
   cmd_vel_ = nh.subscribe<geometry_msgs::Twist>(
-      ns + "cmd_vel", 10, [this, command, one_publisher, name](const geometry_msgs::Twist::ConstPtr& m) {
+      cmd_vel, 10, [this, command, one_publisher, name](const geometry_msgs::Twist::ConstPtr& m) {
         if (one_publisher && cmd_vel_.getNumPublishers() > 1) {
           ROS_ERROR_THROTTLE(1.0, "sim_node: controller '%s': %u publishers on cmd_vel, only 1 allowed: braking",
                              name.c_str(), cmd_vel_.getNumPublishers());
@@ -67,7 +69,7 @@ DrivePorts::DrivePorts(ros::NodeHandle& nh, const std::string& prefix, const std
       });
   const std::string on_tf = topics_.enable_odom_tf ? ", " + frames_.odom + " -> " + frames_.base + " on tf" : "";
   ROS_INFO("sim_node: controller '%s' (DiffDriveController) on %s, odometry on %s%s", name.c_str(),
-           nh.resolveName(ns + "cmd_vel").c_str(), nh.resolveName(ns + "odom").c_str(), on_tf.c_str());
+           nh.resolveName(cmd_vel).c_str(), nh.resolveName(odom).c_str(), on_tf.c_str());
 }
 
 void DrivePorts::publish(const core::DiffDrive& drive, const ros::Time& stamp, long long steps,

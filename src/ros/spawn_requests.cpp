@@ -86,17 +86,20 @@ void tellRepairs(const std::vector<std::string>& notes, SpawnBody::Response& res
 
 /// The controllers of robot `model` the request gives: its `controllers`
 /// YAML, else those loaded under the robot's name (resolved on `nh`), as a
-/// Gazebo user loads them for gazebo_ros_control. Throws std::exception
-/// starting with the field or the parameter.
+/// Gazebo user loads them for gazebo_ros_control; and the drives of its
+/// URDF's markup. Throws std::exception starting with the field or the parameter.
 io::RobotControls requestedControls(const SpawnBody::Request& req, const ros::NodeHandle& nh,
-                                    const core::ArticulationModel& model) {
+                                    const core::ArticulationModel& model,
+                                    const std::vector<io::ControllerEntry>& markup) {
   try {
     if (!req.controllers.empty()) {
-      return io::controlsOf(io::loadYamlText(req.controllers, "controllers"), "controllers", model, false);
+      return io::controlsOf(io::loadYamlText(req.controllers, "controllers"), "controllers", model, false, markup);
     }
     XmlRpc::XmlRpcValue params;
-    if (!nh.getParam(req.name, params) || params.getType() != XmlRpc::XmlRpcValue::TypeStruct) return {};
-    return io::controlsOf(toYaml(params), nh.resolveName(req.name), model, true);
+    if (!nh.getParam(req.name, params) || params.getType() != XmlRpc::XmlRpcValue::TypeStruct) {
+      return io::buildControls(markup, model);
+    }
+    return io::controlsOf(toYaml(params), nh.resolveName(req.name), model, true, markup);
   } catch (const io::ConfigError& e) {
     if (!req.controllers.empty()) throw std::invalid_argument("controllers: " + std::string(e.what()));
     throw std::invalid_argument("controllers (the parameters under '" + nh.resolveName(req.name) + "'): " + e.what());
@@ -112,7 +115,7 @@ void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf,
   if (!req.cmd_vel.empty()) {
     throw std::invalid_argument("cmd_vel: a robot does not read it yet (a body's: give it a DiffDriveController)");
   }
-  io::LinkSensors config, markup;
+  io::RobotDevices config, markup;
   if (!req.imu.empty()) config.imus.push_back(io::parseImuText(req.imu, "imu", dt));
   if (!req.odom_noise.empty()) {
     config.odometry.push_back(
@@ -132,7 +135,7 @@ void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf,
   const std::string problem =
       configureJoints(model, limits, req.joint_names, req.joint_positions, {}, spawn.robot_start);
   if (!problem.empty()) throw std::invalid_argument(problem);
-  spawn.controls = requestedControls(req, nh, model);
+  spawn.controls = requestedControls(req, nh, model, markup.controllers);
   spawn.frame_prefix = framePrefix(nh, req.name);
   core::Scene::RobotSpec robot{req.name, std::move(model)};
   if (req.own_friction) robot.friction = req.friction;

@@ -366,5 +366,49 @@ TEST(GazeboOdometry, TheP3dPluginIsALinksOdometryWithItsNoise) {
   EXPECT_NE(notes.find("libgazebo_ros_p3d.so <xyzOffsets>"), std::string::npos) << notes;
 }
 
+TEST(GazeboDrive, TheDiffDrivePluginIsADiffDriveControllerOnItsTopics) {
+  // urdf/diff_drive.urdf's base with the plugin as a Gazebo user writes it.
+  io::UrdfText text = io::readUrdfFile("diff_drive.urdf", kUrdf);
+  const std::string plugin =
+      "<gazebo><plugin name='wheels' filename='libgazebo_ros_diff_drive.so'><leftJoint>left_wheel_joint</leftJoint>"
+      "<rightJoint>right_wheel_joint</rightJoint><wheelSeparation>0.4</wheelSeparation>"
+      "<wheelDiameter>0.1</wheelDiameter><wheelTorque>3</wheelTorque><wheelAcceleration>2</wheelAcceleration>"
+      "<commandTopic>base/cmd_vel</commandTopic><odometryTopic>/wheel_odom</odometryTopic>"
+      "<robotBaseFrame>base_link</robotBaseFrame><publishOdomTF>false</publishOdomTF><updateRate>20</updateRate>"
+      "</plugin></gazebo>";
+  text.xml.insert(text.xml.rfind("</robot>"), plugin);
+  const io::SceneSetup s = io::loadScene(config(""), [&] { return text; });
+  ASSERT_EQ(s.controls.at(0).drives.size(), 1u);
+  const core::DiffDriveSpec& d = s.controls[0].drives[0].spec();
+  EXPECT_EQ(d.name, "wheels");
+  EXPECT_EQ(d.wheel_separation, 0.4);
+  EXPECT_EQ(d.wheel_radius, 0.05);
+  EXPECT_EQ(d.settings.max_wheel_torque, 3.0);
+  EXPECT_EQ(d.settings.linear.max_acceleration, 2.0);
+  EXPECT_EQ(d.settings.angular.max_acceleration, 2.0 * 2.0 / 0.4);  // one wheel at +a, the other at -a
+  const io::DriveTopics& t = s.controls[0].drive_topics.at(0);
+  EXPECT_FALSE(t.under_controller);
+  EXPECT_EQ(t.cmd_vel_topic, "base/cmd_vel");
+  EXPECT_EQ(t.odom_topic, "/wheel_odom");
+  EXPECT_EQ(t.odom_frame_id, "odom");
+  EXPECT_EQ(t.base_frame_id, "base_link");
+  EXPECT_FALSE(t.enable_odom_tf);
+  EXPECT_EQ(t.publish_rate, 20.0);
+  // Its odometry is the wheels', not the truth the plugin's default reports: said.
+  std::string notes;
+  for (const std::string& n : s.notes) notes += n;
+  EXPECT_NE(notes.find("<odometrySource> world (odometry from the wheels here)"), std::string::npos) << notes;
+  // Without the sizes, the URDF's (as ros_controllers reads them), not the plugin's defaults.
+  io::UrdfText bare = io::readUrdfFile("diff_drive.urdf", kUrdf);
+  bare.xml.insert(bare.xml.rfind("</robot>"),
+                  "<gazebo><plugin name='w' filename='libgazebo_ros_diff_drive.so'><leftJoint>left_wheel_joint"
+                  "</leftJoint><rightJoint>right_wheel_joint</rightJoint></plugin></gazebo>");
+  const io::SceneSetup b = io::loadScene(config(""), [&] { return bare; });
+  EXPECT_NEAR(b.controls.at(0).drives.at(0).spec().wheel_separation, 0.36, 1e-12);
+  EXPECT_NEAR(b.controls[0].drives[0].spec().wheel_radius, 0.06, 1e-12);
+  EXPECT_EQ(b.controls[0].drives[0].spec().settings.max_wheel_torque, 5.0);  // the plugin's default
+  EXPECT_EQ(b.controls[0].drive_topics.at(0).base_frame_id, "base_footprint");
+}
+
 }  // namespace
 }  // namespace rigid_body_sim::test

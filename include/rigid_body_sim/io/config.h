@@ -90,15 +90,6 @@ struct OdometryEntry {
   std::string key = "odom_noise";                ///< for messages
 };
 
-/// The sensors on a robot's links: its config entry's, or its URDF's
-/// Gazebo markup's (io/sensor_mount.h puts them on the links).
-struct LinkSensors {
-  std::vector<ImuEntry> imus;
-  std::vector<LidarEntry> lidars;
-  std::vector<DepthCameraEntry> cameras;
-  std::vector<OdometryEntry> odometry;
-};
-
 /// A robot's joints at the start (`initial.joint_positions` and
 /// `initial.joint_velocities`: maps from joint name to rad or m, rad/s or
 /// m/s), in the file's order. Applied by io::startJoints (joint_start.h).
@@ -118,6 +109,11 @@ struct DriveTopics {
   bool enable_odom_tf = true;                         ///< odom -> base on tf
   bool publish_cmd = false;                           ///< the limited command on cmd_vel_out
   bool allow_multiple_cmd_vel_publishers = true;      ///< false: brake while two publish on cmd_vel
+  /// Its topics: under CONTROLLER/ (ros_controllers'), or under the robot's
+  /// prefix alone (gazebo_ros_diff_drive's `commandTopic`, `odometryTopic`);
+  /// a topic starting with '/' as it is.
+  bool under_controller = true;
+  std::string cmd_vel_topic = "cmd_vel", odom_topic = "odom";
 };
 
 /// A diff_drive_controller/DiffDriveController's keys (io/drive_config.h reads them).
@@ -145,6 +141,18 @@ struct ControllerEntry {
   /// A DiffDriveController's own keys (its wheels are `joints` too, left then
   /// right, so gazebo_ros_control's pid_gains find them).
   std::optional<DiffDriveEntry> drive;
+};
+
+/// The devices on a robot's links: its config entry's, or its URDF's
+/// Gazebo markup's (io/sensor_mount.h puts the sensors on the links).
+struct RobotDevices {
+  std::vector<ImuEntry> imus;
+  std::vector<LidarEntry> lidars;
+  std::vector<DepthCameraEntry> cameras;
+  std::vector<OdometryEntry> odometry;
+  /// The markup's drives (gazebo_ros_diff_drive) as DiffDriveControllers,
+  /// run beside the config's `controllers`.
+  std::vector<ControllerEntry> controllers;
 };
 
 /// One entry of the `bodies` list: a body of the world.

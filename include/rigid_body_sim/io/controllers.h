@@ -49,7 +49,8 @@ RobotControls buildControls(const std::vector<ControllerEntry>& entries, const c
 /// with a `type` key is a controller (as the spawner finds them by name),
 /// its `gazebo_ros_control` map gives pid_gains, and the rest (the
 /// robot_description, other nodes' parameters) is not this node's to read.
+/// `markup`: the drives of the robot's URDF markup, run after them.
 RobotControls controlsOf(const YAML::Node& node, const std::string& path, const core::ArticulationModel& model,
-                         bool in_namespace);
+                         bool in_namespace, const std::vector<ControllerEntry>& markup = {});
 
 }  // namespace rigid_body_sim::io

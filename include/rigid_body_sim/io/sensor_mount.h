@@ -58,7 +58,7 @@ struct RobotSensors {
 /// odometry's rate outside the publish rates, a topic ROS cannot name.
 /// An odometry's link "" is the base; it cannot be a lumped link (its
 /// twist is a moving link's).
-RobotSensors mountSensors(const LinkSensors& config, const LinkSensors& markup, const core::ArticulationModel& model,
+RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup, const core::ArticulationModel& model,
                           double dt);
 
 }  // namespace rigid_body_sim::io

@@ -36,7 +36,7 @@ struct UrdfOptions {
   /// (`<sensor type="ray">` or `"imu"` with a ROS plugin, gazebo_ros_imu);
   /// null: they are named with the markup nothing reads (a free body's: no
   /// sensor on a body's markup yet; rbsim's).
-  LinkSensors* sensors = nullptr;
+  RobotDevices* sensors = nullptr;
 };
 
 /// The rigid body described by a URDF document.

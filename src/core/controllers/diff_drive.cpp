@@ -188,7 +188,8 @@ void DiffDrive::efforts(const ArticulationState& state, double t, double dt, Eig
     const double target = std::clamp(n < spec_.left.size() ? left_speed : right_speed, -lim.velocity, lim.velocity);
     const int j = all[n];
     const double u = pids_[n].command(target - state.v(j - 1), dt);
-    effort(j - 1) = std::clamp(u, -lim.effort, lim.effort);
+    const double most = std::min(lim.effort, k.max_wheel_torque);
+    effort(j - 1) = std::clamp(u, -most, most);
   }
 }
 

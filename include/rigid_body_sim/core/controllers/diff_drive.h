@@ -9,6 +9,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -41,8 +42,11 @@ struct DiffDriveSettings {
   double cmd_vel_timeout = 0.5;           ///< s: an older command is zero (the base brakes)
   int velocity_rolling_window_size = 10;  ///< steps the odometry's velocity is averaged over
   bool open_loop = false;                 ///< odometry from the commands, not the wheels
-  TwistLimiter linear;                    ///< linear/x/*
-  TwistLimiter angular;                   ///< angular/z/*
+  /// N·m: each wheel's effort at most this, beside its joint's limit
+  /// (gazebo_ros_diff_drive's wheelTorque)
+  double max_wheel_torque = std::numeric_limits<double>::infinity();
+  TwistLimiter linear;   ///< linear/x/*
+  TwistLimiter angular;  ///< angular/z/*
 };
 
 struct DiffDriveSpec {

@@ -1,0 +1,159 @@
+// The model plugins of a URDF's Gazebo markup: gazebo_plugins.h.
+#include "gazebo_plugins.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "drive_config.h"
+
+namespace rigid_body_sim::io::detail {
+
+namespace {
+
+/// The IMU of gazebo_ros_imu's model plugin: on `bodyName`, `updateRate`
+/// (0 or none: every step), `gaussianNoise`, `topicName` ("/default_imu"),
+/// `frameName` (bodyName). Its readings follow REP 145 here: the plugin's
+/// own leave gravity out of the acceleration.
+ImuEntry pluginImu(const TiXmlElement& plugin, const std::string& link, const Unread& unread) {
+  ImuEntry imu;
+  imu.key = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
+  imu.link = link;
+  const Numbers numbers(imu.key);
+  double rate = 0.0, sigma = 0.0;
+  numbers.at(&plugin, "updateRate", rate);
+  numbers.at(&plugin, "gaussianNoise", sigma);
+  imu.settings.rate = rate > 0.0 ? rate : std::numeric_limits<double>::infinity();
+  imu.settings.gyro_noise = imu.settings.accel_noise = sigma;
+  imu.topic = childText(plugin, "topicName", "/default_imu");
+  imu.frame_id = childText(plugin, "frameName", imu.link);
+  if (plugin.FirstChildElement("rpyOffset") != nullptr || plugin.FirstChildElement("rpyOffsets") != nullptr) {
+    unread("<plugin> libgazebo_ros_imu.so <rpyOffset>", imu.link);
+  }
+  return imu;
+}
+
+/// The odometry of gazebo_ros_p3d's model plugin: `bodyName` on
+/// `topicName` ("odom"), at `updateRate` (0 or none: every step), its
+/// `gaussianNoise` on the pose and the twist (p3d puts it on the twist
+/// alone, and the covariances on both), in the world frame (a `frameName`
+/// naming a link is read as the world, and said).
+OdometryEntry pluginOdometry(const TiXmlElement& plugin, const std::string& link, const Unread& unread) {
+  OdometryEntry o;
+  o.key = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
+  o.link = link;
+  const Numbers numbers(o.key);
+  double rate = 0.0, sigma = 0.0;
+  numbers.at(&plugin, "updateRate", rate);
+  numbers.at(&plugin, "gaussianNoise", sigma);
+  o.rate = rate > 0.0 ? rate : std::numeric_limits<double>::infinity();
+  if (sigma > 0.0) o.noise = core::OdomNoiseSettings{sigma, sigma, sigma, sigma, 0.0, 0.0, 0.0, 0};
+  o.topic = childText(plugin, "topicName", "odom");
+  const std::string frame = childText(plugin, "frameName", "world");
+  if (frame != "world" && frame != "/world" && frame != "map" && frame != "/map") {
+    unread("<plugin> libgazebo_ros_p3d.so <frameName> of a link (read as the world)", link);
+  }
+  for (const char* name : {"xyzOffsets", "rpyOffsets", "xyzOffset", "rpyOffset"}) {
+    if (const TiXmlElement* e = plugin.FirstChildElement(name)) {
+      for (double x : numbers.read(*e, name, 3)) {
+        if (x != 0.0) unread(std::string("<plugin> libgazebo_ros_p3d.so <") + name + ">", link);
+      }
+    }
+  }
+  return o;
+}
+
+/// gazebo_ros_diff_drive's model plugin as a DiffDriveController (its
+/// topics under the robot's prefix, not a controller's namespace):
+/// `leftJoint`, `rightJoint` ("left_joint", "right_joint"), `wheelSeparation`
+/// and `wheelDiameter` (none: from the URDF, as ros_controllers reads them;
+/// the plugin's own defaults, 0.34 and 0.15 m, are another robot's),
+/// `wheelTorque` (5 N·m) as each wheel's most effort, `wheelAcceleration`
+/// (m/s² at the rim; 0: none) as the linear and angular acceleration
+/// limits, `updateRate` (100 Hz) as the odometry's, `commandTopic`
+/// ("cmd_vel"), `odometryTopic` ("odom"), `odometryFrame` ("odom"),
+/// `robotBaseFrame` ("base_footprint"), `publishOdomTF` (true), and the
+/// plugin's pose covariances. Its odometry is the wheels' here, whatever
+/// `odometrySource` says (the plugin's default, "world", reports the truth:
+/// said); `publishTf` false is said too.
+ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
+  ControllerEntry e;
+  e.name = attribute(plugin, "name").empty() ? "diff_drive" : attribute(plugin, "name");
+  e.type = kDiffDriveType;
+  e.key = "<gazebo> <plugin name=\"" + e.name + "\">";
+  DiffDriveEntry d;
+  d.left = {childText(plugin, "leftJoint", "left_joint")};
+  d.right = {childText(plugin, "rightJoint", "right_joint")};
+  e.joints = {d.left[0], d.right[0]};
+  e.joint_list = true;
+  const Numbers numbers(e.key);
+  double separation = 0.0, diameter = 0.0, accel = 0.0, rate = 100.0;
+  numbers.at(&plugin, "wheelSeparation", separation);
+  numbers.at(&plugin, "wheelDiameter", diameter);
+  d.settings.max_wheel_torque = 5.0;
+  numbers.at(&plugin, "wheelTorque", d.settings.max_wheel_torque);
+  numbers.at(&plugin, "wheelAcceleration", accel);
+  numbers.at(&plugin, "updateRate", rate);
+  if (plugin.FirstChildElement("wheelSeparation") != nullptr) d.wheel_separation = separation;
+  if (plugin.FirstChildElement("wheelDiameter") != nullptr) d.wheel_radius = 0.5 * diameter;
+  if (accel > 0.0) {
+    core::TwistLimiter& linear = d.settings.linear;
+    linear.has_acceleration_limits = true;
+    linear.min_acceleration = -accel;
+    linear.max_acceleration = accel;
+    if (d.wheel_separation && *d.wheel_separation > 0.0) {  // one wheel at +a, the other at -a
+      core::TwistLimiter& angular = d.settings.angular;
+      angular.has_acceleration_limits = true;
+      angular.max_acceleration = 2.0 * accel / *d.wheel_separation;
+      angular.min_acceleration = -angular.max_acceleration;
+    }
+  }
+  DriveTopics& t = d.topics;
+  if (rate > 0.0) {
+    t.publish_rate = rate;
+  } else {
+    unread("<plugin> libgazebo_ros_diff_drive.so <updateRate> 0 (read as 100 Hz)", e.name);
+  }
+  t.under_controller = false;
+  t.cmd_vel_topic = childText(plugin, "commandTopic", "cmd_vel");
+  t.odom_topic = childText(plugin, "odometryTopic", "odom");
+  t.odom_frame_id = childText(plugin, "odometryFrame", "odom");
+  t.base_frame_id = childText(plugin, "robotBaseFrame", "base_footprint");
+  t.enable_odom_tf = childFlag(plugin, "publishOdomTF", true, e.key);
+  t.pose_covariance_diagonal = {1e-5, 1e-5, 1e12, 1e12, 1e12, 1e-3};  // the plugin's
+  if (!childFlag(plugin, "publishTf", true, e.key)) {
+    unread("<plugin> libgazebo_ros_diff_drive.so <publishTf> false (its odometry is published)", e.name);
+  }
+  if (childText(plugin, "odometrySource", "world") != "encoder") {
+    unread("<plugin> libgazebo_ros_diff_drive.so <odometrySource> world (odometry from the wheels here)", e.name);
+  }
+  if (plugin.FirstChildElement("legacyMode") != nullptr) {
+    unread("<plugin> libgazebo_ros_diff_drive.so <legacyMode>", e.name);
+  }
+  e.drive = std::move(d);
+  return e;
+}
+}  // namespace
+
+bool readsModelPlugin(const TiXmlElement& plugin) {
+  const std::string file = attribute(plugin, "filename");
+  return file == "libgazebo_ros_imu.so" || file == "libgazebo_ros_p3d.so" || file == "libgazebo_ros_diff_drive.so";
+}
+
+void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out) {
+  const std::string file = attribute(plugin, "filename");
+  const std::string link = childText(plugin, "bodyName", "");
+  if (file == "libgazebo_ros_diff_drive.so") {
+    out.controllers.push_back(pluginDrive(plugin, unread));
+  } else if (link.empty()) {
+    unread("<plugin> " + file + " without <bodyName> (Gazebo does not run it)", attribute(plugin, "name"));
+  } else if (file == "libgazebo_ros_imu.so") {
+    out.imus.push_back(pluginImu(plugin, link, unread));
+  } else {
+    out.odometry.push_back(pluginOdometry(plugin, link, unread));
+  }
+}
+
+}  // namespace rigid_body_sim::io::detail

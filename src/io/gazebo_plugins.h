@@ -1,0 +1,23 @@
+// The model plugins of a URDF's Gazebo markup that this project runs, read
+// as Gazebo reads them (private to io): `<gazebo><plugin filename=...>`
+// with gazebo_ros_imu (an IMU), gazebo_ros_p3d (a link's odometry) and
+// gazebo_ros_diff_drive (a DiffDriveController).
+#pragma once
+
+#include <tinyxml.h>
+
+#include "gazebo_markup.h"
+#include "rigid_body_sim/io/config.h"
+
+namespace rigid_body_sim::io::detail {
+
+/// Whether readModelPlugin reads `plugin` (a <plugin> under <gazebo>).
+bool readsModelPlugin(const TiXmlElement& plugin);
+
+/// `plugin`'s device into `out`: as pluginImu, pluginOdometry and
+/// pluginDrive in gazebo_plugins.cpp say. One Gazebo would not run (an
+/// IMU or p3d without its `bodyName`) is told to `unread`. Throws
+/// std::invalid_argument naming the element: a number or flag it cannot read.
+void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out);
+
+}  // namespace rigid_body_sim::io::detail

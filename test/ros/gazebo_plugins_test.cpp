@@ -1,0 +1,74 @@
+// A wheeled base described for Gazebo, run unchanged (gazebo_plugins.test):
+// what a subscriber receives while geometry_msgs/Twist commands arrive on
+// /cmd_vel, as gazebo_ros_diff_drive reads them: the base turning at the
+// commanded twist on the p3d plugin's /ground_truth/state, the drive's
+// odometry on /odom, and the IMU plugin's /imu reading the turn's
+// centripetal acceleration and gravity as REP 145 says.
+#include <geometry_msgs/Twist.h>
+#include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <sensor_msgs/Imu.h>
+
+#include <cstdio>
+#include <vector>
+
+#include "node_fixture.h"
+
+namespace {
+
+using namespace rbs_test;
+
+TEST(GazeboPlugins, TheBaseDrivesByCmdVelAndItsOdometryP3dAndImuSayHow) {
+  ros::NodeHandle nh;
+  std::vector<nav_msgs::Odometry> odom, truth;
+  std::vector<sensor_msgs::Imu> imu;
+  ros::Subscriber odom_sub = nh.subscribe<nav_msgs::Odometry>(
+      "/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { odom.push_back(*m); });
+  ros::Subscriber truth_sub = nh.subscribe<nav_msgs::Odometry>(
+      "/ground_truth/state", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { truth.push_back(*m); });
+  ros::Subscriber imu_sub =
+      nh.subscribe<sensor_msgs::Imu>("/imu", 1000, [&](const sensor_msgs::Imu::ConstPtr& m) { imu.push_back(*m); });
+  ros::Publisher cmd_vel = nh.advertise<geometry_msgs::Twist>("/cmd_vel", 10);
+  ASSERT_TRUE(spinUntil([&] { return !odom.empty() && !truth.empty() && !imu.empty(); }, 30.0));
+  // 0.4 m/s and 0.5 rad/s, sent every 20 ms of wall time, for 3 s of sim time.
+  geometry_msgs::Twist twist;
+  twist.linear.x = 0.4;
+  twist.angular.z = 0.5;
+  const double until = truth.back().header.stamp.toSec() + 3.0;
+  while (ros::ok() && truth.back().header.stamp.toSec() < until) {
+    cmd_vel.publish(twist);
+    spinUntil([] { return false; }, 0.02);
+  }
+  // p3d: the truth of base_link, its twist in its own axes (nav_msgs/Odometry).
+  const nav_msgs::Odometry& t = truth.back();
+  EXPECT_EQ(t.child_frame_id, "base_link");
+  EXPECT_NEAR(t.twist.twist.linear.x, 0.4, 0.03 * 0.4);
+  EXPECT_NEAR(t.twist.twist.angular.z, 0.5, 0.03 * 0.5);
+  // The drive's odometry, from the wheels, in odometryFrame and robotBaseFrame.
+  const nav_msgs::Odometry& o = odom.back();
+  EXPECT_EQ(o.header.frame_id, "odom");
+  EXPECT_EQ(o.child_frame_id, "base_link");
+  EXPECT_NEAR(o.twist.twist.linear.x, 0.4, 0.03 * 0.4);
+  EXPECT_NEAR(o.twist.twist.angular.z, 0.5, 0.03 * 0.5);
+  EXPECT_EQ(o.pose.covariance[0], 1e-5);  // the plugin's
+  // The IMU on base_link over the last 0.5 s (its 100 Hz): the yaw rate,
+  // the turn's centripetal v ω = 0.2 m/s² to the left (+y), and +g up.
+  ASSERT_GE(imu.size(), 50u);
+  double wz = 0.0, ay = 0.0, az = 0.0;
+  for (std::size_t k = imu.size() - 50; k < imu.size(); ++k) {
+    wz += imu[k].angular_velocity.z / 50.0;
+    ay += imu[k].linear_acceleration.y / 50.0;
+    az += imu[k].linear_acceleration.z / 50.0;
+  }
+  EXPECT_EQ(imu.back().header.frame_id, "base_link");  // frameName's default: bodyName
+  EXPECT_NEAR(wz, 0.5, 0.03 * 0.5);
+  EXPECT_NEAR(ay, 0.4 * 0.5, 0.03);
+  EXPECT_NEAR(az, 9.81, 0.05);
+  EXPECT_NEAR((imu.back().header.stamp - imu[imu.size() - 2].header.stamp).toSec(), 0.01, 1e-6);
+  std::printf("gazebo_plugins: p3d v %.4f w %.4f; odom v %.4f w %.4f; imu w %.4f a_y %.4f a_z %.4f\n",
+              t.twist.twist.linear.x, t.twist.twist.angular.z, o.twist.twist.linear.x, o.twist.twist.angular.z, wz, ay,
+              az);
+}
+
+}  // namespace
