@@ -13,7 +13,8 @@ namespace rigid_body_sim::io::detail {
 
 namespace {
 
-/// The plugin of `sensor` this project runs: 1 laser (LaserScan), 2 Velodyne (PointCloud2), 3 IMU, 0 none.
+/// The plugin of `sensor` this project runs: 1 laser (LaserScan), 2 Velodyne (PointCloud2), 3 IMU, 4 depth
+/// camera, 0 none.
 int pluginKind(const TiXmlElement& sensor, const TiXmlElement** plugin) {
   const std::string type = attribute(sensor, "type");
   const bool ray = type == "ray" || type == "gpu_ray";
@@ -23,6 +24,9 @@ int pluginKind(const TiXmlElement& sensor, const TiXmlElement** plugin) {
     if (ray && (file == "libgazebo_ros_laser.so" || file == "libgazebo_ros_gpu_laser.so")) return 1;
     if (ray && (file == "libgazebo_ros_velodyne_laser.so" || file == "libgazebo_ros_velodyne_gpu_laser.so")) return 2;
     if (type == "imu" && file == "libgazebo_ros_imu_sensor.so") return 3;
+    if (type == "depth" && (file == "libgazebo_ros_openni_kinect.so" || file == "libgazebo_ros_depth_camera.so")) {
+      return 4;
+    }
   }
   return 0;
 }
@@ -77,6 +81,51 @@ ImuEntry sensorImu(const TiXmlElement& s, const TiXmlElement& plugin, const std:
   return imu;
 }
 
+/// The depth camera of `<sensor type="depth">` on `link` with
+/// gazebo_ros_openni_kinect (or gazebo_ros_depth_camera): its `<pose>`,
+/// `<update_rate>`, `<camera>`'s `horizontal_fov`, `image` `width` and
+/// `height`, `clip` `near` and `far` and `noise` `stddev`; the plugin's
+/// `cameraName` (the topics' namespace, "camera"), `depthImageTopicName`
+/// ("depth/image_raw"), `depthImageCameraInfoTopicName`
+/// ("depth/camera_info"), `pointCloudTopicName` ("points"), `frameName`,
+/// and `pointCloudCutoff` (0.4 m) and `pointCloudCutoffMax` (5 m) within
+/// the clip, the depths it reports. Its colour or IR image is not made: said.
+DepthCameraEntry sensorCamera(const TiXmlElement& s, const TiXmlElement& plugin, const std::string& link,
+                              const Unread& unread) {
+  DepthCameraEntry c;
+  c.link = link;
+  c.key = "<gazebo reference=\"" + link + "\"> <sensor name=\"" + attribute(s, "name") + "\">";
+  const Numbers numbers(c.key), own(c.key + " <plugin>");
+  core::DepthCameraSettings& k = c.settings;
+  if (const TiXmlElement* pose = s.FirstChildElement("pose")) c.pose = sdfPose(numbers.read(*pose, "pose", 6));
+  numbers.at(&s, "update_rate", c.rate);
+  if (c.rate == 0.0) {  // Gazebo's "as fast as it renders": 30 Hz here, said
+    c.rate = 30.0;
+    unread("<sensor type=\"depth\"> <update_rate> 0 (read as 30 Hz)", link);
+  }
+  const TiXmlElement* camera = s.FirstChildElement("camera");
+  double width = k.width, height = k.height, near = 0.1, far = 10.0, cutoff = 0.4, cutoff_max = 5.0;
+  numbers.at(camera, "horizontal_fov", k.hfov);
+  numbers.at(camera, "image/width", width);
+  numbers.at(camera, "image/height", height);
+  numbers.at(camera, "clip/near", near);
+  numbers.at(camera, "clip/far", far);
+  numbers.at(camera, "noise/stddev", k.noise);
+  own.at(&plugin, "pointCloudCutoff", cutoff);
+  own.at(&plugin, "pointCloudCutoffMax", cutoff_max);
+  k.width = static_cast<int>(std::lround(std::clamp(width, 0.0, 1e7)));
+  k.height = static_cast<int>(std::lround(std::clamp(height, 0.0, 1e7)));
+  k.min_depth = std::max(near, cutoff);
+  k.max_depth = std::min(far, cutoff_max);
+  c.topic = childText(plugin, "cameraName", "camera");
+  c.image_topic = childText(plugin, "depthImageTopicName", "depth/image_raw");
+  c.info_topic = childText(plugin, "depthImageCameraInfoTopicName", "depth/camera_info");
+  c.points_topic = childText(plugin, "pointCloudTopicName", "points");
+  c.frame_id = childText(plugin, "frameName", "");
+  unread("<sensor type=\"depth\"> its colour or IR image (depth only here)", link);
+  return c;
+}
+
 }  // namespace
 
 RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
@@ -95,6 +144,10 @@ RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
       if (kind == 0) continue;
       if (kind == 3) {
         out.imus.push_back(sensorImu(*s, *plugin, link, unread));
+        continue;
+      }
+      if (kind == 4) {
+        out.cameras.push_back(sensorCamera(*s, *plugin, link, unread));
         continue;
       }
       LidarEntry l;

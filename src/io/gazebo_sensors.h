@@ -4,8 +4,9 @@
 // (libgazebo_ros_laser.so, libgazebo_ros_gpu_laser.so: a LaserScan) or the
 // Velodyne ones (libgazebo_ros_velodyne_laser.so, ..._gpu_laser.so: a
 // PointCloud2), each turned into a lidar entry on LINK; `<sensor
-// type="imu">` with gazebo_ros_imu_sensor, an IMU entry; and the model
-// plugins gazebo_plugins.h reads.
+// type="imu">` with gazebo_ros_imu_sensor, an IMU entry; `<sensor
+// type="depth">` with gazebo_ros_openni_kinect or gazebo_ros_depth_camera,
+// a depth camera entry; and the model plugins gazebo_plugins.h reads.
 #pragma once
 
 #include <tinyxml.h>
@@ -25,8 +26,8 @@ bool readsMarkup(const TiXmlElement& e);
 /// `topicName` and `frameName` (a Velodyne plugin's `min_range`,
 /// `max_range` and `gaussianNoise` over the sensor's). Each entry's key
 /// names its markup. What it does not run (a noise's non-zero mean) is
-/// told to `unread` (kind, link). An IMU: as sensorImu in
-/// gazebo_sensors.cpp says, its rate infinite for "every step" (the mount
+/// told to `unread` (kind, link). An IMU and a depth camera: as sensorImu
+/// and sensorCamera in gazebo_sensors.cpp say, an IMU's its rate infinite for "every step" (the mount
 /// caps it at one sample a step). Throws std::invalid_argument naming the
 /// element: a number it cannot read.
 RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread);

@@ -123,6 +123,16 @@ void mountCameras(const std::vector<DepthCameraEntry>& entries, const core::Arti
                   std::vector<RobotCamera>& out) {
   for (const DepthCameraEntry& e : entries) {
     checkTopic(e.topic, e.key);
+    for (const std::string* t : {&e.image_topic, &e.info_topic, &e.points_topic}) {
+      checkTopic(*t, e.key);
+      if (t->front() == '/') throw ConfigError(e.key + ": topic '" + *t + "' is under the camera's namespace");
+    }
+    checkRate(e.rate, e.key);
+    try {  // a URDF's markup is checked here; the config's was when it was read
+      core::checkDepthCamera(e.settings);
+    } catch (const std::invalid_argument& err) {
+      throw ConfigError(e.key + ": " + err.what());
+    }
     RobotCamera mounted{e, -1, {}};
     mount(model, e.link, e.pose, e.key, mounted.link, mounted.X_LS);
     out.push_back(std::move(mounted));

@@ -410,5 +410,47 @@ TEST(GazeboDrive, TheDiffDrivePluginIsADiffDriveControllerOnItsTopics) {
   EXPECT_EQ(b.controls[0].drive_topics.at(0).base_frame_id, "base_footprint");
 }
 
+TEST(GazeboCameras, ADepthSensorWithTheKinectPluginIsADepthCameraWithItsMarkupsSettings) {
+  const std::string kinect =
+      "<gazebo reference='laser_link'><sensor type='depth' name='kinect'><update_rate>15</update_rate>"
+      "<pose>0 0 0.05 0 0 0</pose><camera><horizontal_fov>1.047</horizontal_fov><image><width>160</width>"
+      "<height>120</height><format>R8G8B8</format></image><clip><near>0.05</near><far>8</far></clip>"
+      "<noise><type>gaussian</type><stddev>0.007</stddev></noise></camera>"
+      "<plugin name='kinect' filename='libgazebo_ros_openni_kinect.so'><cameraName>kinect</cameraName>"
+      "<depthImageTopicName>depth/image_raw</depthImageTopicName><pointCloudTopicName>depth/points"
+      "</pointCloudTopicName><frameName>kinect_optical</frameName><pointCloudCutoff>0.3</pointCloudCutoff>"
+      "</plugin></sensor></gazebo>";
+  const io::SceneSetup s = io::loadScene(config(""), [&] { return laserRobot(kinect); });
+  ASSERT_EQ(s.sensors.at(0).cameras.size(), 1u);
+  const io::RobotCamera& c = s.sensors[0].cameras[0];
+  EXPECT_EQ(c.link, 0);  // laser_link is lumped into base_link
+  EXPECT_LT((c.X_LS.translation - Vec3(0.1, 0.0, 0.25)).norm(), 1e-15);
+  const core::DepthCameraSettings& k = c.entry.settings;
+  EXPECT_EQ(k.width, 160);
+  EXPECT_EQ(k.height, 120);
+  EXPECT_EQ(k.hfov, 1.047);
+  EXPECT_EQ(k.min_depth, 0.3);  // the cut-off within the clip
+  EXPECT_EQ(k.max_depth, 5.0);  // pointCloudCutoffMax's default within the clip
+  EXPECT_EQ(k.noise, 0.007);
+  EXPECT_EQ(c.entry.rate, 15.0);
+  EXPECT_EQ(c.entry.topic, "kinect");
+  EXPECT_EQ(c.entry.image_topic, "depth/image_raw");
+  EXPECT_EQ(c.entry.info_topic, "depth/camera_info");
+  EXPECT_EQ(c.entry.points_topic, "depth/points");
+  EXPECT_EQ(c.entry.frame_id, "kinect_optical");
+  std::string notes;
+  for (const std::string& n : s.notes) notes += n;
+  EXPECT_NE(notes.find("its colour or IR image (depth only here)"), std::string::npos) << notes;
+  // A size no camera can have is refused, naming the markup.
+  std::string bad = kinect;
+  bad.replace(bad.find("<width>160"), 10, "<width>0");
+  try {
+    io::loadScene(config(""), [&] { return laserRobot(bad); });
+    ADD_FAILURE() << "a camera 0 pixels wide was accepted";
+  } catch (const io::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("<sensor name=\"kinect\">"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace rigid_body_sim::test
