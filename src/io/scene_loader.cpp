@@ -11,6 +11,7 @@
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
 #include "rigid_body_sim/io/robot.h"
+#include "rigid_body_sim/io/transmissions.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/io/world.h"
 
@@ -40,7 +41,9 @@ Described describe(const UrdfText& text, UrdfOptions options) {
 RobotDevices configSensors(const std::optional<ImuEntry>& imu, const std::optional<core::OdomNoiseSettings>& odom_noise,
                            const std::vector<LidarEntry>& lidars, const std::vector<DepthCameraEntry>& cameras,
                            const std::string& key) {
-  RobotDevices s{{}, lidars, cameras, {}, {}};
+  RobotDevices s;
+  s.lidars = lidars;
+  s.cameras = cameras;
   if (imu) s.imus.push_back(*imu);
   if (odom_noise) s.odometry.push_back({"", "odom", "ground_truth", odom_noise, 0.0, key + "odom_noise"});
   return s;
@@ -161,6 +164,9 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     refuseBodyDevices(key + ".", e.name, e.cmd_vel.has_value());
     robot_starts.push_back(robotStart(model, e.initial, e.initial_joints, config.model.limits, key + ".initial"));
     controls.push_back(buildControls(allControllers(e.controllers, described.sensors), model));
+    for (std::string& note : transmissionNotes(e.controllers, described.sensors.transmissions, model)) {
+      notes.push_back(std::move(note));
+    }
     sensors.push_back(mountSensors(configSensors(e.imu, e.odom_noise, e.lidars, e.cameras, key + "."),
                                    described.sensors, model, spec.dt));
     entry.push_back(-1 - static_cast<int>(robots.size()));
@@ -207,6 +213,9 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
   core::ArticulationState start =
       robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
   RobotControls controls = buildControls(allControllers(config.controllers, described.sensors), model);
+  for (std::string& note : transmissionNotes(config.controllers, described.sensors.transmissions, model)) {
+    notes.push_back(std::move(note));
+  }
   RobotSensors sensors = mountSensors(configSensors(config.imu, config.odom_noise, config.lidars, config.cameras, ""),
                                       described.sensors, model, config.model.dt);
   core::ModelSpec spec = config.model;

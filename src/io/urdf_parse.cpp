@@ -263,8 +263,21 @@ void unreadMarkup(const TiXmlElement& robot, ParsedUrdf& out) {
       add(kind, name);
     }
   }
+  // A robot's transmissions are read (io/transmissions.h checks its controllers against them).
   for (const TiXmlElement* t = robot.FirstChildElement("transmission"); t; t = t->NextSiblingElement("transmission")) {
-    add("<transmission>", attribute(*t, "name"));
+    out.sensor_markup["<transmission>"].push_back(attribute(*t, "name"));
+    TransmissionEntry entry{attribute(*t, "name"), {}, {}};
+    for (const TiXmlElement* e = t->FirstChildElement(); e; e = e->NextSiblingElement()) {
+      const std::string tag = e->Value();
+      if (tag != "joint" && tag != "actuator") continue;
+      if (tag == "joint") entry.joints.push_back(attribute(*e, "name"));
+      for (const TiXmlElement* h = e->FirstChildElement("hardwareInterface"); h;
+           h = h->NextSiblingElement("hardwareInterface")) {
+        const std::string text = h->GetText() != nullptr ? h->GetText() : "";
+        entry.interfaces.push_back(text.substr(text.rfind('/') + 1));  // hardware_interface/X or X
+      }
+    }
+    out.sensors.transmissions.push_back(std::move(entry));
   }
 }
 
@@ -288,11 +301,11 @@ ParsedUrdf parseUrdf(const std::string& xml) {
     }
     if (problem.empty()) problem = gazeboFriction(*robot, out);
     if (!problem.empty()) throw std::invalid_argument(problem);
-    unreadMarkup(*robot, out);
     out.sensors = gazeboSensors(*robot, [&out](const std::string& kind, const std::string& name) {
       std::vector<std::string>& names = out.unread_markup[kind];
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     });
+    unreadMarkup(*robot, out);  // after: it adds the transmissions to out.sensors
     if (xml.find("capsule") != std::string::npos && capsulesAsCylinders(*robot, out.capsules)) {
       TiXmlPrinter printer;
       doc.Accept(&printer);

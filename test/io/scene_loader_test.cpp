@@ -10,6 +10,7 @@
 
 #include "../test_util.h"
 #include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/transmissions.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/io/world.h"
 
@@ -450,6 +451,47 @@ TEST(GazeboCameras, ADepthSensorWithTheKinectPluginIsADepthCameraWithItsMarkupsS
   } catch (const io::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("<sensor name=\"kinect\">"), std::string::npos) << e.what();
   }
+}
+
+TEST(Transmissions, AControllerOnAJointNoTransmissionServesAsItsTypeNeedsIsSaid) {
+  io::UrdfText text = io::readUrdfFile("diff_drive.urdf", kUrdf);
+  const auto transmission = [](const std::string& joint, const std::string& interface) {
+    return "<transmission name='" + joint + "_tr'><type>transmission_interface/SimpleTransmission</type><joint name='" +
+           joint + "'><hardwareInterface>hardware_interface/" + interface +
+           "</hardwareInterface></joint><actuator name='m'><mechanicalReduction>1</mechanicalReduction></actuator>"
+           "</transmission>";
+  };
+  text.xml.insert(text.xml.rfind("</robot>"), transmission("left_wheel_joint", "VelocityJointInterface") +
+                                                  transmission("right_wheel_joint", "EffortJointInterface") +
+                                                  transmission("ghost_joint", "EffortJointInterface"));
+  const io::SimConfig c = config(
+      "controllers: {base: {type: diff_drive_controller/DiffDriveController, left_wheel: left_wheel_joint,"
+      " right_wheel: right_wheel_joint}}");
+  const io::SceneSetup s = io::loadScene(c, [&] { return text; });
+  ASSERT_EQ(s.controls.at(0).drives.size(), 1u);  // it runs all the same
+  std::string notes;
+  for (const std::string& n : s.notes) notes += n + "\n";
+  EXPECT_EQ(notes.find("left_wheel_joint"), std::string::npos) << notes;  // declared with the velocity interface
+  EXPECT_NE(notes.find("config key 'controllers.base' (diff_drive_controller/DiffDriveController): joint "
+                       "'right_wheel_joint''s <transmission name=\"right_wheel_joint_tr\"> declares no "
+                       "VelocityJointInterface"),
+            std::string::npos)
+      << notes;
+  EXPECT_NE(notes.find("<transmission name=\"ghost_joint_tr\"> drives joint 'ghost_joint', which it does not have"),
+            std::string::npos)
+      << notes;
+  EXPECT_EQ(notes.find("<transmission>"), std::string::npos) << notes;  // read: not named as unread
+  // A URDF without transmissions is not written for gazebo_ros_control: nothing to say.
+  const io::SceneSetup bare = io::loadScene(c, [&] { return io::readUrdfFile("diff_drive.urdf", kUrdf); });
+  for (const std::string& n : bare.notes) EXPECT_EQ(n.find("transmission"), std::string::npos) << n;
+}
+
+TEST(Transmissions, EachControllerTypeCommandsItsInterface) {
+  EXPECT_EQ(io::commandedInterface("effort_controllers/JointPositionController"), "EffortJointInterface");
+  EXPECT_EQ(io::commandedInterface("velocity_controllers/JointVelocityController"), "VelocityJointInterface");
+  EXPECT_EQ(io::commandedInterface("position_controllers/JointTrajectoryController"), "PositionJointInterface");
+  EXPECT_EQ(io::commandedInterface("diff_drive_controller/DiffDriveController"), "VelocityJointInterface");
+  EXPECT_EQ(io::commandedInterface("joint_state_controller/JointStateController"), "");
 }
 
 }  // namespace

@@ -145,6 +145,15 @@ struct ControllerEntry {
   std::optional<DiffDriveEntry> drive;
 };
 
+/// A URDF's `<transmission>`: the joints it drives and the hardware
+/// interfaces it declares for them (gazebo_ros_control runs a controller
+/// only on such a joint, through an interface the controller's type uses).
+struct TransmissionEntry {
+  std::string name;
+  std::vector<std::string> joints;
+  std::vector<std::string> interfaces;  ///< as `EffortJointInterface`, without `hardware_interface/`
+};
+
 /// The devices on a robot's links: its config entry's, or its URDF's
 /// Gazebo markup's (io/sensor_mount.h puts the sensors on the links).
 struct RobotDevices {
@@ -155,6 +164,7 @@ struct RobotDevices {
   /// The markup's drives (gazebo_ros_diff_drive) as DiffDriveControllers,
   /// run beside the config's `controllers`.
   std::vector<ControllerEntry> controllers;
+  std::vector<TransmissionEntry> transmissions;  ///< the URDF's, to check the config's controllers against
 };
 
 /// One entry of the `bodies` list: a body of the world.
