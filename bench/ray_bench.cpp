@@ -5,7 +5,11 @@
 // issue 46 mounted on the robot: a 360-beam lidar, a 16 x 1,800-beam lidar
 // and a 320 x 240 depth camera (60 degrees across). Each is timed over
 // interleaved rounds; the median round is printed, with the share of one
-// core each sensor takes at its rate (10, 10 and 30 Hz).
+// core each sensor takes at its rate (10, 10 and 30 Hz). "world" casts each
+// ray against every body's bounding sphere; "sensor" is the sensor's own
+// scan (core::Lidar::scan, core::DepthCamera::capture), which culls the
+// bodies once per group of 16 beams or tile of 16 x 16 pixels: the same
+// ranges (core_ray_cast_test), timed in the same rounds.
 // Usage: ray_bench [ROUNDS]   (Release build)
 #include <yaml-cpp/yaml.h>
 
@@ -14,9 +18,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "rigid_body_sim/core/devices/depth_camera.h"
 #include "rigid_body_sim/core/devices/lidar.h"
 #include "rigid_body_sim/io/scene_loader.h"
 
@@ -29,14 +36,23 @@ struct Sensor {
   const char* name;
   double rate;                   // Hz
   std::vector<core::Vec3> rays;  // unit, in the sensor frame (x forward, z up)
+  /// Seconds of the sensor's own scan from X_WS (a checksum added to `sum`).
+  using Scan = std::function<double(const core::Model&, const core::State&, const core::Pose&, const std::vector<char>&,
+                                    double&)>;
+  Scan scan;
 };
 
-std::vector<core::Vec3> lidarRays(int samples, int fans, double low, double high) {
+core::LidarSettings lidarSettings(int samples, int fans, double low, double high) {
   core::LidarSettings s;
   s.samples = samples;
   s.vertical_samples = fans;
   s.vertical_min_angle = low;
   s.vertical_max_angle = high;
+  s.max_range = 30.0;
+  return s;
+}
+
+std::vector<core::Vec3> lidarRays(const core::LidarSettings& s) {
   const core::Lidar lidar(s);
   std::vector<core::Vec3> rays;
   for (std::size_t k = 0; k < lidar.rayCount(); ++k) rays.push_back(lidar.direction(k));
@@ -64,6 +80,41 @@ double castAll(const core::Model& model, const core::State& state, const core::P
     sum += std::isfinite(r) ? r : 0.0;
   }
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Times `run(out)` (a scan into `out`), adding its finite values to `sum`.
+template <class Run>
+double timed(Run&& run, std::vector<double>& out, double& sum) {
+  const auto t0 = std::chrono::steady_clock::now();
+  run(out);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (const double r : out) sum += std::isfinite(r) ? r : 0.0;
+  return seconds;
+}
+
+/// The sensor's own scan: a lidar of `s`.
+Sensor::Scan lidarScan(const core::LidarSettings& s) {
+  auto lidar = std::make_shared<core::Lidar>(s);
+  auto out = std::make_shared<std::vector<double>>();
+  return [lidar, out](const core::Model& m, const core::State& st, const core::Pose& X, const std::vector<char>& skip,
+                      double& sum) {
+    return timed([&](std::vector<double>& r) { lidar->scan(m, st, X, skip, r); }, *out, sum);
+  };
+}
+
+/// The sensor's own capture: a depth camera of w x h pixels, `hfov` across.
+Sensor::Scan cameraScan(int w, int h, double hfov) {
+  core::DepthCameraSettings s;
+  s.width = w;
+  s.height = h;
+  s.hfov = hfov;
+  s.max_depth = 30.0;
+  auto camera = std::make_shared<core::DepthCamera>(s);
+  auto out = std::make_shared<std::vector<double>>();
+  return [camera, out](const core::Model& m, const core::State& st, const core::Pose& X, const std::vector<char>& skip,
+                       double& sum) {
+    return timed([&](std::vector<double>& r) { camera->capture(m, st, X, skip, r); }, *out, sum);
+  };
 }
 
 double median(std::vector<double> x) {
@@ -104,26 +155,30 @@ int main(int argc, char** argv) {
   const core::State empty = core::restState(plane);
   const core::Pose X_down{core::Quat(Eigen::AngleAxisd(M_PI / 2, core::Vec3::UnitY())), core::Vec3(0, 0, 1)};
 
-  const std::vector<Sensor> sensors = {{"lidar 360", 10.0, lidarRays(360, 1, 0.0, 0.0)},
-                                       {"lidar 16 x 1800", 10.0, lidarRays(1800, 16, -0.2618, 0.2618)},
-                                       {"depth 320 x 240", 30.0, cameraRays(320, 240, M_PI / 3)}};
-  std::vector<std::vector<double>> world_times(sensors.size()), plane_times(sensors.size());
+  const core::LidarSettings flat = lidarSettings(360, 1, 0.0, 0.0), sixteen = lidarSettings(1800, 16, -0.2618, 0.2618);
+  const std::vector<Sensor> sensors = {
+      {"lidar 360", 10.0, lidarRays(flat), lidarScan(flat)},
+      {"lidar 16 x 1800", 10.0, lidarRays(sixteen), lidarScan(sixteen)},
+      {"depth 320 x 240", 30.0, cameraRays(320, 240, M_PI / 3), cameraScan(320, 240, M_PI / 3)}};
+  std::vector<std::vector<double>> world_times(sensors.size()), plane_times(sensors.size()),
+      sensor_times(sensors.size());
   double sum = 0.0;
-  for (int r = 0; r < rounds; ++r) {  // interleaved: each sensor in the world and on the plane, every round
+  for (int r = 0; r < rounds; ++r) {  // interleaved: each sensor in the world, its own scan, on the plane
     for (std::size_t s = 0; s < sensors.size(); ++s) {
       world_times[s].push_back(castAll(model, state, X_WS, sensors[s].rays, skip, sum));
+      sensor_times[s].push_back(sensors[s].scan(model, state, X_WS, skip, sum));
       plane_times[s].push_back(castAll(plane, empty, X_down, sensors[s].rays, {}, sum));
     }
   }
   std::printf("ray_bench: %zu bodies (100 boxes, a robot of %zu links), %d rounds, median (checksum %.3f)\n",
               model.bodyCount(), world.scene.robots()[0].link.size(), rounds, sum);
-  std::printf("%-16s %8s %14s %14s %12s %14s\n", "sensor", "rays", "world rays/s", "plane rays/s", "scan (ms)",
-              "share of core");
+  std::printf("%-16s %8s %14s %14s %14s %10s %10s %10s\n", "sensor", "rays", "world rays/s", "sensor rays/s",
+              "plane rays/s", "world ms", "sensor ms", "sensor %");
   for (std::size_t s = 0; s < sensors.size(); ++s) {
     const double n = static_cast<double>(sensors[s].rays.size());
-    const double tw = median(world_times[s]), tp = median(plane_times[s]);
-    std::printf("%-16s %8.0f %14.3e %14.3e %12.3f %13.1f%%\n", sensors[s].name, n, n / tw, n / tp, 1e3 * tw,
-                100.0 * sensors[s].rate * tw);
+    const double tw = median(world_times[s]), ts = median(sensor_times[s]), tp = median(plane_times[s]);
+    std::printf("%-16s %8.0f %14.3e %14.3e %14.3e %10.3f %10.3f %9.1f%%\n", sensors[s].name, n, n / tw, n / ts, n / tp,
+                1e3 * tw, 1e3 * ts, 100.0 * sensors[s].rate * ts);
   }
   return 0;
 }

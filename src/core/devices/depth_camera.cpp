@@ -32,6 +32,24 @@ DepthCamera::DepthCamera(const DepthCameraSettings& settings) : settings_(settin
       rays_.push_back(ray / per_depth_.back());
     }
   }
+  // Tiles of kTile × kTile pixels, each with the cone that holds its rays.
+  constexpr int kTile = 16;
+  for (int v0 = 0; v0 < settings_.height; v0 += kTile) {
+    for (int u0 = 0; u0 < settings_.width; u0 += kTile) {
+      Tile t{u0, v0, std::min(u0 + kTile, settings_.width), std::min(v0 + kTile, settings_.height), {}, 0.0};
+      const auto each = [&](const auto& visit) {
+        for (int v = t.v0; v < t.v1; ++v) {
+          for (int u = t.u0; u < t.u1; ++u) {
+            visit(static_cast<std::size_t>(v) * static_cast<std::size_t>(settings_.width) +
+                  static_cast<std::size_t>(u));
+          }
+        }
+      };
+      t.cone = coneOf(rays_, each);
+      each([&](std::size_t k) { t.reach = std::max(t.reach, per_depth_[k]); });
+      tiles_.push_back(t);
+    }
+  }
 }
 
 void DepthCamera::capture(const Model& model, const State& state, const Pose& X_WS, const std::vector<char>& skip,
@@ -40,9 +58,23 @@ void DepthCamera::capture(const Model& model, const State& state, const Pose& X_
   const Mat3 R_WS = X_WS.rotation.toRotationMatrix();
   const RayWorld world(model, state, skip);
   depth.resize(rays_.size());
+  // Each tile's rays against the bodies its cone can meet: the ranges a
+  // cast against every body gives, in far fewer sphere tests.
+  const Vec3& o_W = X_WS.translation;
+  for (const Tile& tile : tiles_) {
+    world.cull(o_W, R_WS * tile.cone.axis, tile.cone.half_angle, s.max_depth * tile.reach, among_);
+    for (int v = tile.v0; v < tile.v1; ++v) {
+      for (int u = tile.u0; u < tile.u1; ++u) {
+        const std::size_t k =
+            static_cast<std::size_t>(v) * static_cast<std::size_t>(s.width) + static_cast<std::size_t>(u);
+        depth[k] = world.cast(o_W, R_WS * rays_[k], s.max_depth * per_depth_[k], among_).range;
+      }
+    }
+  }
+  // Then row by row, so that the noise is drawn in the pixels' order.
   for (std::size_t k = 0; k < rays_.size(); ++k) {
     const double length = per_depth_[k];
-    const double t = world.cast(X_WS.translation, R_WS * rays_[k], s.max_depth * length).range;
+    const double t = depth[k];
     const double z = t / length;
     if (t == kNoHit) {
       depth[k] = kNoHit;

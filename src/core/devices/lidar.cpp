@@ -43,6 +43,12 @@ Lidar::Lidar(const LidarSettings& settings) : settings_(settings), rng_(settings
                                std::sin(elevation));
     }
   }
+  for (std::size_t first = 0; first < directions_.size(); first += kGroup) {
+    const std::size_t end = std::min(first + kGroup, directions_.size());
+    cones_.push_back(coneOf(directions_, [&](const auto& visit) {
+      for (std::size_t k = first; k < end; ++k) visit(k);
+    }));
+  }
 }
 
 void Lidar::scan(const Model& model, const State& state, const Pose& X_WS, const std::vector<char>& skip,
@@ -52,7 +58,11 @@ void Lidar::scan(const Model& model, const State& state, const Pose& X_WS, const
   const RayWorld world(model, state, skip);
   ranges.resize(directions_.size());
   for (std::size_t k = 0; k < directions_.size(); ++k) {
-    const double t = world.cast(X_WS.translation, R_WS * directions_[k], s.max_range).range;
+    if (k % kGroup == 0) {  // the next group's bodies, culled once for its rays
+      const RayCone& cone = cones_[k / kGroup];
+      world.cull(X_WS.translation, R_WS * cone.axis, cone.half_angle, s.max_range, among_);
+    }
+    const double t = world.cast(X_WS.translation, R_WS * directions_[k], s.max_range, among_).range;
     if (t == kNoHit) {
       ranges[k] = kNoHit;
     } else if (t < s.min_range) {

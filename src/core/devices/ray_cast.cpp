@@ -156,9 +156,7 @@ RayWorld::RayWorld(const Model& model, const State& state, const std::vector<cha
   }
 }
 
-RayHit RayWorld::cast(const Vec3& o_W, const Vec3& d_W, double max_range) const {
-  RayHit hit;
-  double reach = max_range;
+void RayWorld::castScene(const Vec3& o_W, const Vec3& d_W, double& reach, RayHit& hit) const {
   for (const Sdf& shape : model_.scene()) {
     const double t = castRay(shape, o_W, d_W, reach);
     if (t < hit.range) {
@@ -166,25 +164,61 @@ RayHit RayWorld::cast(const Vec3& o_W, const Vec3& d_W, double max_range) const 
       hit.body = -1;
     }
   }
-  for (const Seen& b : seen_) {
-    // Its bounding sphere first: most rays pass most bodies by.
-    const Vec3 m = b.centre_W - o_W;
-    const double along = m.dot(d_W);
-    if (along + b.radius < 0.0 || along - b.radius > reach) continue;
-    if ((m - along * d_W).squaredNorm() > b.radius * b.radius) continue;
-    const Vec3 o_B = b.R_BW * (o_W - b.p_WB), d_B = b.R_BW * d_W;
-    double t0 = -kNoHit, t1 = kNoHit;  // then its box
-    for (int a = 0; a < 3; ++a) slab(o_B(a), d_B(a), b.body->solid_lo_B(a), b.body->solid_hi_B(a), t0, t1);
-    if (entry(t0, t1, reach) == kNoHit) continue;
-    for (const Sdf& part : b.body->solid_B) {
-      const double t = castRay(part, o_B, d_B, reach);
-      if (t < hit.range) {
-        hit.range = reach = t;
-        hit.body = b.index;
-      }
+}
+
+void RayWorld::castBody(const Seen& b, const Vec3& o_W, const Vec3& d_W, double& reach, RayHit& hit) {
+  // Its bounding sphere first: most rays pass most bodies by.
+  const Vec3 m = b.centre_W - o_W;
+  const double along = m.dot(d_W);
+  if (along + b.radius < 0.0 || along - b.radius > reach) return;
+  if ((m - along * d_W).squaredNorm() > b.radius * b.radius) return;
+  const Vec3 o_B = b.R_BW * (o_W - b.p_WB), d_B = b.R_BW * d_W;
+  double t0 = -kNoHit, t1 = kNoHit;  // then its box
+  for (int a = 0; a < 3; ++a) slab(o_B(a), d_B(a), b.body->solid_lo_B(a), b.body->solid_hi_B(a), t0, t1);
+  if (entry(t0, t1, reach) == kNoHit) return;
+  for (const Sdf& part : b.body->solid_B) {
+    const double t = castRay(part, o_B, d_B, reach);
+    if (t < hit.range) {
+      hit.range = reach = t;
+      hit.body = b.index;
     }
   }
+}
+
+RayHit RayWorld::cast(const Vec3& o_W, const Vec3& d_W, double max_range) const {
+  RayHit hit;
+  double reach = max_range;
+  castScene(o_W, d_W, reach, hit);
+  for (const Seen& b : seen_) castBody(b, o_W, d_W, reach, hit);
   return hit;
+}
+
+RayHit RayWorld::cast(const Vec3& o_W, const Vec3& d_W, double max_range, const std::vector<int>& among) const {
+  RayHit hit;
+  double reach = max_range;
+  castScene(o_W, d_W, reach, hit);
+  for (const int k : among) castBody(seen_[static_cast<std::size_t>(k)], o_W, d_W, reach, hit);
+  return hit;
+}
+
+void RayWorld::cull(const Vec3& o_W, const Vec3& axis_W, double half_angle, double max_range,
+                    std::vector<int>& among) const {
+  among.clear();
+  for (std::size_t k = 0; k < seen_.size(); ++k) {
+    const Seen& b = seen_[k];
+    const Vec3 m = b.centre_W - o_W;
+    const double distance = m.norm();
+    if (distance <= b.radius) {  // the origin inside its sphere
+      among.push_back(static_cast<int>(k));
+      continue;
+    }
+    if (distance - b.radius > max_range) continue;
+    // The sphere subtends asin(r / |m|) about m; a ray within half_angle of
+    // the axis can meet it when m is within the sum of the axis (1e-9 rad
+    // of margin for the rounding of the angles).
+    const double off_axis = std::acos(std::clamp(m.dot(axis_W) / distance, -1.0, 1.0));
+    if (off_axis <= half_angle + std::asin(b.radius / distance) + 1e-9) among.push_back(static_cast<int>(k));
+  }
 }
 
 RayHit castRay(const Model& model, const State& state, const Vec3& o_W, const Vec3& d_W, double max_range,

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <string>
 #include <vector>
 
 #include "../../test_util.h"
@@ -122,6 +124,118 @@ TEST(CastRay, SeesBodiesWhereTheirStatePutsThemUnlessSkipped) {
   const core::RayHit ground = castRay(w.model, w.state, Vec3(0, 0, 1), -kZ, 100.0);
   EXPECT_NEAR(ground.range, 1.0, 1e-15);
   EXPECT_EQ(ground.body, -1);
+}
+
+/// 60 cubes and balls at random poses around the origin, on the ground.
+struct Pile {
+  core::Model model;
+  core::State state;
+  Pile() : model(spec()), state(core::restState(model)) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> across(-6.0, 6.0), up(0.2, 3.0), turn(-M_PI, M_PI);
+    for (std::size_t i = 0; i < model.bodyCount(); ++i) {
+      core::LinkState at;
+      at.p_WL = Vec3(across(rng), across(rng), up(rng));
+      at.q_WL = Quat(Eigen::AngleAxisd(turn(rng), Vec3(turn(rng), turn(rng), turn(rng)).normalized()));
+      state.bodies[i] = core::bodyStateFromLink(model.body(i), at);
+    }
+  }
+  static core::ModelSpec spec() {
+    core::ModelSpec s;
+    for (int i = 0; i < 60; ++i) {
+      s.bodies.push_back(i % 2 == 0 ? boxBody(Vec3(0.3, 0.2, 0.4)) : ballBody(0.3));
+      s.bodies.back().name = "b" + std::to_string(i);
+    }
+    s.scene = {Sdf::plane(kZ)};
+    return s;
+  }
+};
+
+// A cull keeps every body a ray inside its cone can meet: those rays meet
+// what they meet against every body, bit for bit, while most bodies are
+// culled away.
+TEST(CastRay, ACulledConeMeetsWhatEveryBodyGives) {
+  const Pile p;
+  const core::RayWorld world(p.model, p.state);
+  const Vec3 o(0.1, -0.2, 1.0);
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> normal;
+  std::vector<int> among;
+  std::size_t hits = 0, kept = 0, cones = 0;
+  for (const double half_angle : {0.01, 0.05, 0.2, 0.6}) {
+    for (int c = 0; c < 40; ++c, ++cones) {
+      const Vec3 axis = Vec3(normal(rng), normal(rng), normal(rng)).normalized();
+      world.cull(o, axis, half_angle, 20.0, among);
+      kept += among.size();
+      // Rays inside the cone, out to its rim.
+      const Vec3 across = axis.unitOrthogonal();
+      for (int r = 0; r < 50; ++r) {
+        const double off = half_angle * (r == 0 ? 1.0 : std::abs(std::fmod(normal(rng), 1.0)));
+        const Vec3 d = Eigen::AngleAxisd(off, Eigen::AngleAxisd(normal(rng), axis) * across) * axis;
+        const core::RayHit all = world.cast(o, d, 20.0), culled = world.cast(o, d, 20.0, among);
+        EXPECT_EQ(culled.range, all.range);
+        EXPECT_EQ(culled.body, all.body);
+        hits += all.body >= 0 ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(hits, 400u);            // the rays do meet bodies
+  EXPECT_LT(kept, cones * 60 / 4);  // and most bodies are culled away
+}
+
+// A depth camera's and a lidar's images (cast by tiles and groups of rays,
+// each culled once) are those of casting every pixel against every body.
+TEST(CastRay, TilesOfRaysGiveTheImageEveryBodyGives) {
+  const Pile p;
+  const core::RayWorld world(p.model, p.state);
+  core::Pose X_WS;
+  X_WS.translation = Vec3(0.1, -0.2, 1.0);
+  X_WS.rotation = Quat(Eigen::AngleAxisd(0.7, kZ) * Eigen::AngleAxisd(0.2, kY));
+  core::DepthCameraSettings cs;
+  cs.width = 70;
+  cs.height = 50;
+  cs.max_depth = 20.0;
+  core::DepthCamera camera(cs);
+  std::vector<double> depth;
+  camera.capture(p.model, p.state, X_WS, {}, depth);
+  const Mat3 R_WS = X_WS.rotation.toRotationMatrix();
+  // The same infinity, or within rounding (the test builds its rays anew).
+  const auto same = [](double a, double b) { return a == b || std::abs(a - b) < 1e-12; };
+  int met = 0;
+  for (int v = 0; v < cs.height; ++v) {
+    for (int u = 0; u < cs.width; ++u) {
+      const Vec3 ray(1.0, -(u - camera.cx()) / camera.focal(), -(v - camera.cy()) / camera.focal());
+      const double t = world.cast(X_WS.translation, R_WS * ray.normalized(), cs.max_depth * ray.norm()).range;
+      const double z = t == kNoHit ? kNoHit : t / ray.norm();
+      const double expected = z == kNoHit ? kNoHit : z < cs.min_depth ? -kNoHit : z;
+      ASSERT_TRUE(same(depth[static_cast<std::size_t>(v * cs.width + u)], expected)) << u << ", " << v;
+      met += std::isfinite(expected) ? 1 : 0;
+    }
+  }
+  EXPECT_GT(met, 100);
+  core::LidarSettings ls;
+  ls.samples = 500;
+  ls.min_angle = -M_PI;
+  ls.max_angle = M_PI;
+  ls.vertical_samples = 3;
+  ls.vertical_min_angle = -0.3;
+  ls.vertical_max_angle = 0.3;
+  ls.max_range = 20.0;
+  core::Lidar lidar(ls);
+  std::vector<double> ranges;
+  lidar.scan(p.model, p.state, X_WS, {}, ranges);
+  int seen = 0;
+  for (int f = 0; f < 3; ++f) {
+    const double e = -0.3 + 0.3 * f;
+    for (int k = 0; k < ls.samples; ++k) {
+      const double a = -M_PI + k * 2.0 * M_PI / (ls.samples - 1);
+      const Vec3 d(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
+      const double t = world.cast(X_WS.translation, R_WS * d, ls.max_range).range;
+      ASSERT_TRUE(same(ranges[static_cast<std::size_t>(f * ls.samples + k)], t)) << f << ", " << k;
+      seen += std::isfinite(t) ? 1 : 0;
+    }
+  }
+  EXPECT_GT(seen, 100);
 }
 
 TEST(Lidar, ReadsAWallAsItsDistanceOverTheCosineAndRep117Beyond) {

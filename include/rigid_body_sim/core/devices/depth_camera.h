@@ -54,6 +54,15 @@ class DepthCamera {
   double focal_ = 0.0;
   std::vector<Vec3> rays_;         ///< per pixel, its unit direction in S
   std::vector<double> per_depth_;  ///< per pixel, range per unit depth (1 / the direction's x)
+  /// A square of pixels whose rays share one cone: the bodies they can meet
+  /// are culled once for all of them (RayWorld::cull).
+  struct Tile {
+    int u0, v0, u1, v1;  ///< its pixels: u0 <= u < u1, v0 <= v < v1
+    RayCone cone;        ///< its rays' in S
+    double reach;        ///< m per m of max_depth: its longest ray's range per unit depth
+  };
+  std::vector<Tile> tiles_;
+  std::vector<int> among_;  ///< one tile's bodies, reused
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};
 };

@@ -56,6 +56,11 @@ class Lidar {
   LidarSettings settings_;
   double increment_ = 0.0, vertical_increment_ = 0.0;
   std::vector<Vec3> directions_;  ///< per ray, in S
+  /// Each group of kGroup consecutive rays' cone: the bodies they can meet
+  /// are culled once for all of them (RayWorld::cull).
+  static constexpr std::size_t kGroup = 16;
+  std::vector<RayCone> cones_;
+  std::vector<int> among_;  ///< one group's bodies, reused
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};
 };
