@@ -5,10 +5,14 @@
 // NAME/joint_states from there and swings; one whose links' frames another
 // robot has is refused. A robot spawned with its controllers (from its
 // namespace, as a Gazebo user loads them, or from the request) is driven by
-// them, and deleted with its topics. Two copies of one URDF run side by side
-// under their tf_prefixes (two_copies.test).
+// them, and deleted with its topics. A robot described for Gazebo
+// (test/ros/gazebo_plugins.urdf) spawns with its markup's IMU, ground truth
+// and drive under its name. Two copies of one URDF run side by side under
+// their tf_prefixes (two_copies.test).
+#include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
+#include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Float64.h>
 
@@ -86,6 +90,47 @@ TEST_F(ArmEdits, ABodySpawnsBesideTheArmAndIsDeleted) {
   const double stamp = last_.header.stamp.toSec();
   wait(0.5);
   EXPECT_GT(last_.header.stamp.toSec(), stamp);
+}
+
+TEST_F(ArmEdits, ARobotDescribedForGazeboSpawnsWithItsMarkupsSensorsAndDrive) {
+  std::vector<sensor_msgs::Imu> imu;
+  std::vector<nav_msgs::Odometry> odom, truth;
+  ros::Subscriber imu_sub = nh_.subscribe<sensor_msgs::Imu>(
+      "/rover/imu", 100, [&](const sensor_msgs::Imu::ConstPtr& m) { imu.push_back(*m); });
+  ros::Subscriber odom_sub = nh_.subscribe<nav_msgs::Odometry>(
+      "/rover/odom", 100, [&](const nav_msgs::Odometry::ConstPtr& m) { odom.push_back(*m); });
+  ros::Subscriber truth_sub = nh_.subscribe<nav_msgs::Odometry>(
+      "/rover/ground_truth/state", 100, [&](const nav_msgs::Odometry::ConstPtr& m) { truth.push_back(*m); });
+  ros::Publisher cmd_vel = nh_.advertise<geometry_msgs::Twist>("/rover/cmd_vel", 10);
+  SpawnBody s;
+  s.request.name = "rover";
+  s.request.urdf_file = "package://rigid_body_sim/test/ros/gazebo_plugins.urdf";
+  s.request.pose.position.x = 3.0;
+  s.request.pose.position.z = 0.08;
+  s.request.pose.orientation.w = 1.0;
+  ASSERT_TRUE(ros::service::waitForService("/sim_node/spawn_body", 30000));
+  const SpawnBody::Response added = call("spawn_body", s).response;
+  ASSERT_TRUE(added.success) << added.message;
+  // Its IMU (gazebo_ros_imu, 100 Hz) reads +g up once it stands on its wheels.
+  ASSERT_TRUE(spinUntil([&] { return imu.size() >= 100 && !truth.empty() && !odom.empty(); }, 30.0));
+  EXPECT_EQ(imu.back().header.frame_id, "base_link");
+  EXPECT_NEAR(imu.back().linear_acceleration.z, 9.81, 0.1);
+  EXPECT_NEAR(truth.back().pose.pose.position.x, 3.0, 0.01);
+  // Its gazebo_ros_diff_drive: 0.3 m/s on /rover/cmd_vel for 2 s of sim time.
+  geometry_msgs::Twist forward;
+  forward.linear.x = 0.3;
+  const double until = truth.back().header.stamp.toSec() + 2.0;
+  while (ros::ok() && truth.back().header.stamp.toSec() < until) {
+    cmd_vel.publish(forward);
+    spinUntil([] { return false; }, 0.02);
+  }
+  EXPECT_NEAR(truth.back().twist.twist.linear.x, 0.3, 0.03 * 0.3);
+  EXPECT_NEAR(odom.back().twist.twist.linear.x, 0.3, 0.03 * 0.3);
+  EXPECT_GT(truth.back().pose.pose.position.x, 3.3);
+  rigid_body_sim::DeleteBody d;
+  d.request.name = "rover";
+  d = call("delete_body", d);
+  EXPECT_TRUE(d.response.success) << d.response.message;
 }
 
 // urdf/pendulum.urdf spawned as a Gazebo user spawns a robot with
