@@ -75,12 +75,16 @@ class Files {
   std::map<std::string, Described> files_;
 };
 
-/// Refuses a robot's velocity driver (`key`cmd_vel), not read yet.
-void refuseBodyDevices(const std::string& key, const std::string& robot, bool cmd_vel) {
-  if (cmd_vel) {
-    throw ConfigError("config key '" + key + "cmd_vel': robot '" + robot +
-                      "' does not read it yet (a body's driver, not a robot's: give it a DiffDriveController)");
+/// A robot's `cmd_vel` (config key `key`cmd_vel) into `controls`: refused
+/// for a robot fixed to the world, which has no base to drive.
+void addBaseDriver(const std::optional<core::DriverSettings>& cmd_vel, const core::ArticulationModel& model,
+                   const std::string& key, RobotControls& controls) {
+  if (!cmd_vel) return;
+  if (model.fixed_base) {
+    throw ConfigError("config key '" + key + "cmd_vel': robot '" + model.name +
+                      "' is fixed to the world (its root link is 'world'): no base to drive");
   }
+  controls.base_driver.emplace(*cmd_vel);
 }
 
 /// The warnings for the scene's bodies and robots that start inside the
@@ -161,9 +165,9 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     core::ArticulationModel model = std::get<core::ArticulationModel>(described.what);
     model.name = e.name;
     checkRobotSettings(config, e.name);
-    refuseBodyDevices(key + ".", e.name, e.cmd_vel.has_value());
     robot_starts.push_back(robotStart(model, e.initial, e.initial_joints, config.model.limits, key + ".initial"));
     controls.push_back(buildControls(allControllers(e.controllers, described.sensors), model));
+    addBaseDriver(e.cmd_vel, model, key + ".", controls.back());
     for (std::string& note : transmissionNotes(e.controllers, described.sensors.transmissions, model)) {
       notes.push_back(std::move(note));
     }
@@ -209,10 +213,10 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
   }
   core::ArticulationModel model = std::move(std::get<core::ArticulationModel>(described.what));
   checkRobotSettings(config, model.name);
-  refuseBodyDevices("", model.name, config.cmd_vel.has_value());
   core::ArticulationState start =
       robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
   RobotControls controls = buildControls(allControllers(config.controllers, described.sensors), model);
+  addBaseDriver(config.cmd_vel, model, "", controls);
   for (std::string& note : transmissionNotes(config.controllers, described.sensors.transmissions, model)) {
     notes.push_back(std::move(note));
   }

@@ -94,6 +94,12 @@ std::vector<ros::Subscriber> RobotCommands::subscribe(std::size_t r, const std::
     if (it != robot_names_.end()) then(static_cast<std::size_t>(it - robot_names_.begin()));
   };
   std::vector<ros::Subscriber> subscribers;
+  if (controls_[r].base_driver) {  // cmd_vel on the robot: its base driven as a body's
+    subscribers.push_back(nh_.subscribe<geometry_msgs::Twist>(
+        prefix + "cmd_vel", 10,
+        [this, at](const geometry_msgs::Twist::ConstPtr& m) { at([&](std::size_t k) { baseCommand(k, *m); }); }));
+    ROS_INFO("sim_node: robot '%s': its base driven by %s", name.c_str(), nh_.resolveName(prefix + "cmd_vel").c_str());
+  }
   const std::vector<core::JointControllerSpec>& specs = controls_[r].controllers.specs();
   for (std::size_t c = 0; c < specs.size(); ++c) {
     const std::string topic = prefix + specs[c].name + "/command";
@@ -294,10 +300,30 @@ void RobotCommands::loadsFor(const core::Simulation& sim, double t, std::vector<
       effort(j - 1) = std::clamp(effort(j - 1), -model.links[j].limits.effort, model.links[j].limits.effort);
     }
     loads[r].effort = effort;
+    if (controls_[r].base_driver) {  // its base's wrench toward cmd_vel
+      core::kinematics(model, sim.robots[r], kin_);
+      loads[r].wrench_L.assign(model.links.size(), core::Vec6::Zero());
+      loads[r].wrench_L[0] = core::baseLoad(*controls_[r].base_driver, model, kin_, t, dt);
+    }
     for (const std::string& trouble :
          watch_.observe(r, robot_names_[r], model, controls_[r].controllers, sim.robots[r], effort, dt)) {
       ROS_WARN("sim_node: %s", trouble.c_str());
     }
+  }
+}
+
+void RobotCommands::baseCommand(std::size_t r, const geometry_msgs::Twist& msg) {
+  const core::Vec3 v(msg.linear.x, msg.linear.y, msg.linear.z), w(msg.angular.x, msg.angular.y, msg.angular.z);
+  if (!v.allFinite() || !w.allFinite()) {
+    ROS_WARN_THROTTLE(1.0, "sim_node: cmd_vel for robot '%s' ignored: not finite", robot_names_[r].c_str());
+    return;
+  }
+  core::VelocityDriver& driver = *controls_[r].base_driver;
+  if (driver.command(v, w, time_.simTime()) && warned_.insert({robot_names_[r], "cmd_vel"}).second) {
+    ROS_WARN(
+        "sim_node: cmd_vel for robot '%s' clipped to cmd_vel.max_linear_speed %g m/s, max_angular_speed %g rad/s "
+        "(said once per robot)",
+        robot_names_[r].c_str(), driver.settings().max_linear_speed, driver.settings().max_angular_speed);
   }
 }
 

@@ -112,9 +112,6 @@ io::RobotControls requestedControls(const SpawnBody::Request& req, const ros::No
 void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf, const io::UrdfOptions& options,
                         const core::SpeedLimits& limits, double dt, const ros::NodeHandle& nh,
                         SpawnQueue::Spawn& spawn) {
-  if (!req.cmd_vel.empty()) {
-    throw std::invalid_argument("cmd_vel: a robot does not read it yet (a body's: give it a DiffDriveController)");
-  }
   io::RobotDevices config, markup;
   if (!req.imu.empty()) config.imus.push_back(io::parseImuText(req.imu, "imu", dt));
   if (!req.odom_noise.empty()) {
@@ -136,6 +133,10 @@ void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf,
       configureJoints(model, limits, req.joint_names, req.joint_positions, {}, spawn.robot_start);
   if (!problem.empty()) throw std::invalid_argument(problem);
   spawn.controls = requestedControls(req, nh, model, markup.controllers);
+  if (!req.cmd_vel.empty()) {
+    if (model.fixed_base) throw std::invalid_argument("cmd_vel: robot '" + req.name + "' is fixed to the world");
+    spawn.controls.base_driver.emplace(io::parseDriverText(req.cmd_vel, "cmd_vel"));
+  }
   spawn.frame_prefix = framePrefix(nh, req.name);
   core::Scene::RobotSpec robot{req.name, std::move(model)};
   if (req.own_friction) robot.friction = req.friction;

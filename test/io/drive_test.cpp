@@ -9,7 +9,9 @@
 #include <cmath>
 #include <string>
 
+#include "rigid_body_sim/core/articulations/articulation_dynamics.h"
 #include "rigid_body_sim/core/articulations/scene.h"
+#include "rigid_body_sim/core/devices/velocity_driver.h"
 #include "rigid_body_sim/io/articulation_loader.h"
 #include "rigid_body_sim/io/controllers.h"
 #include "rigid_body_sim/io/scene_loader.h"
@@ -216,6 +218,53 @@ TEST(DiffDriveController, ItsOdometryDriftsWhenAStepCommandSpinsTheWheels) {
   EXPECT_GT(drift, 0.05);
   EXPECT_LT(drift, 0.2);
   EXPECT_NEAR(yaw_rate, 0.6, 0.001 * 0.6);  // once the wheels grip, the base turns at the rate asked
+}
+
+// cmd_vel on a robot (a body's key): the whole robot, wheels and all, driven
+// as one body toward the commanded twist by a wrench on its base. Floating
+// in zero gravity, it reaches a twist of all six components, which its
+// momentum then holds (the wrench falls to nothing).
+TEST(BaseDriver, DrivesAFloatingRobotToTheCommandedTwist) {
+  const io::SimConfig c =
+      io::parseConfig(YAML::Load("dt: 0.001\ngravity: [0, 0, 0]\nscene: []\n"
+                                 "cmd_vel: {max_force: 100, max_torque: 50, timeout: 0}\n"));
+  io::SceneSetup world = io::loadScene(c, [] { return io::readUrdfFile(kUrdf + "diff_drive.urdf", ""); });
+  ASSERT_TRUE(world.controls.at(0).base_driver.has_value());
+  core::VelocityDriver& driver = *world.controls[0].base_driver;
+  const core::Vec3 v_L(0.3, 0.1, -0.05), w_L(0.1, -0.2, 0.5);
+  ASSERT_FALSE(driver.command(v_L, w_L, 0.0));
+  const core::ArticulationModel& model = world.scene.robots().at(0).model;
+  core::SceneWorkspace ws;
+  core::SceneLoads loads;
+  loads.robots.resize(1);
+  core::ArticulationKinematics kin;
+  core::Vec6 last = core::Vec6::Zero();
+  for (int n = 0; n < 2000; ++n) {
+    core::kinematics(model, world.state.robots[0], kin);
+    last = core::baseLoad(driver, model, kin, n * 1e-3, 1e-3);
+    loads.robots[0].wrench_L.assign(model.links.size(), core::Vec6::Zero());
+    loads.robots[0].wrench_L[0] = last;
+    core::stepScene(world.scene, world.state, loads, ws);
+  }
+  const core::LinkState base = core::baseLinkState(world.state.robots[0]);
+  const core::Vec3 v = base.q_WL.conjugate() * base.v_WL, w = base.q_WL.conjugate() * base.w_W;
+  EXPECT_LT((v - v_L).norm(), 1e-3 * v_L.norm()) << v.transpose();
+  EXPECT_LT((w - w_L).norm(), 1e-3 * w_L.norm()) << w.transpose();
+  // Held there by momentum: what it still pushes is the wheels' spin-up, a
+  // small share of the force 100 N and torque 50 N·m it may give.
+  EXPECT_LT(last.tail<3>().norm(), 1.0);
+  EXPECT_LT(last.head<3>().norm(), 1.0);
+}
+
+TEST(BaseDriver, ARobotFixedToTheWorldHasNoBaseToDrive) {
+  const io::SimConfig c = io::parseConfig(YAML::Load("cmd_vel: {}\n"));
+  try {
+    io::loadScene(c, [] { return io::readUrdfFile(kUrdf + "arm2.urdf", ""); });
+    ADD_FAILURE() << "cmd_vel on a fixed robot was accepted";
+  } catch (const io::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("config key 'cmd_vel': robot 'arm2' is fixed to the world"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

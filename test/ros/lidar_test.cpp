@@ -4,6 +4,7 @@
 // 1.9 m before a wall: the wall at its distance over the cosine, REP 117's
 // +inf where nothing is within range, the robot's own links unseen; the
 // depth camera's image; and what the IMUs on its links read at rest (REP 145).
+#include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
@@ -21,6 +22,7 @@
 #include <utility>
 
 #include "node_fixture.h"
+#include "rigid_body_sim/BodyStates.h"
 
 namespace {
 
@@ -178,6 +180,32 @@ TEST(RobotImu, OnAWheelRolledAQuarterTurnItsZPointsAlongTheAxle) {
   EXPECT_LT((quaternionOf(m.orientation) * Eigen::Vector3d::UnitZ() + Eigen::Vector3d::UnitY()).norm(), 0.02);
   EXPECT_NEAR(m.linear_acceleration.z, 0.0, 0.05);
   EXPECT_NEAR((m.header.stamp - before.header.stamp).toSec(), 0.02, 1e-6);  // rate 50
+}
+
+// cmd_vel on the robot (a body's key): its base, rolling on its free
+// wheels, driven to 0.2 m/s along its heading by a wrench, as a body is.
+// Registered last: it moves the base off its place before the wall.
+TEST(RobotBase, ItsCmdVelDrivesTheBaseAsABodysDrivesTheBody) {
+  ros::NodeHandle nh;
+  std::vector<sensor_msgs::Imu> imu;
+  ros::Subscriber sub =
+      nh.subscribe<sensor_msgs::Imu>("/imu", 100, [&](const sensor_msgs::Imu::ConstPtr& m) { imu.push_back(*m); });
+  rigid_body_sim::BodyStates states;
+  ros::Subscriber truth = nh.subscribe<rigid_body_sim::BodyStates>(
+      "/sim_node/body_states", 10, [&](const rigid_body_sim::BodyStates::ConstPtr& m) { states = *m; });
+  ros::Publisher cmd_vel = nh.advertise<geometry_msgs::Twist>("/cmd_vel", 10);
+  ASSERT_TRUE(spinUntil([&] { return !imu.empty() && !states.names.empty(); }, 30.0));
+  geometry_msgs::Twist forward;
+  forward.linear.x = 0.2;
+  const double until = imu.back().header.stamp.toSec() + 1.5;
+  while (ros::ok() && imu.back().header.stamp.toSec() < until) {
+    cmd_vel.publish(forward);
+    spinUntil([] { return false; }, 0.02);
+  }
+  ASSERT_EQ(states.twist_frames.at(0), "base_link");  // the twist in the base's axes
+  EXPECT_NEAR(states.twists.at(0).linear.x, 0.2, 0.01);
+  EXPECT_NEAR(states.twists[0].angular.z, 0.0, 0.01);
+  EXPECT_GT(states.poses.at(0).position.x, 0.15);
 }
 
 }  // namespace

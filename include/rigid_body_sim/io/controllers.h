@@ -3,10 +3,12 @@
 // (core/controllers/joint_control.h), which act through effort only. ROS-free.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rigid_body_sim/core/controllers/joint_control.h"
+#include "rigid_body_sim/core/devices/velocity_driver.h"
 #include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::io {
@@ -22,6 +24,9 @@ struct RobotControls {
   double joint_state_rate = 0.0;
   std::vector<core::DiffDrive> drives;    ///< its DiffDriveControllers, in the map's order
   std::vector<DriveTopics> drive_topics;  ///< per drive: what it publishes, on which frames
+  /// `cmd_vel` on the robot (a body's key): its floating base driven toward
+  /// the commanded twist by a wrench (core::baseLoad), not through wheels.
+  std::optional<core::VelocityDriver> base_driver;
 };
 
 /// The types this project runs, as ros_controllers names them.

@@ -54,7 +54,7 @@ bool listsRobots(const SimConfig& config);
 /// (io::robotStart), its links' surface from bodies[i].contact. Each URDF
 /// comes from `read` (default: readUrdfFile), once per name. Refused
 /// (ConfigError naming the key): joint values for a body, and for a robot
-/// the key it does not read yet (bodies[i].cmd_vel)
+/// fixed to the world its cmd_vel
 /// and the settings io::checkRobotSettings refuses.
 SceneSetup buildScene(const SimConfig& config, const UrdfReader& read = {});
 
@@ -62,8 +62,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read = {});
 /// (buildScene), or, when it has none, the one body or robot `single`
 /// gives (the node's robot_description) at the config's `initial`, a
 /// robot's joints at `initial.joint_positions` and `.joint_velocities`,
-/// named as its URDF names it. The top-level `cmd_vel` is refused for a
-/// robot, as its entry's is.
+/// named as its URDF names it.
 SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& single, const UrdfReader& read = {});
 
 }  // namespace rigid_body_sim::io

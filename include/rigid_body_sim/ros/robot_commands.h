@@ -3,11 +3,13 @@
 // Float64MultiArray for a group, trajectory_msgs/JointTrajectory for a
 // trajectory controller), the robot's `joint_command` (an Isaac
 // Sim style sensor_msgs/JointState, joints by name), its DiffDriveControllers'
-// cmd_vel and odometry (drive_ports.h), the efforts they give every step,
+// cmd_vel and odometry (drive_ports.h), a base's cmd_vel (a body's velocity
+// driver on the whole robot), the efforts and wrenches they give every step,
 // and their restart when a robot is put somewhere. The control itself is the
 // core's (core/controllers/joint_control.h), through effort only.
 #pragma once
 
+#include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
 #include <tf2_ros/transform_broadcaster.h>
@@ -90,6 +92,9 @@ class RobotCommands {
   /// dropped; no points: hold where the joints are. Dropped whole with a
   /// warning otherwise (joint_trajectory.h's checks, a stamp far ahead).
   void trajectory(std::size_t r, std::size_t c, const trajectory_msgs::JointTrajectory& msg);
+  /// A cmd_vel for robot r's base (its `cmd_vel` key): refused with a
+  /// warning when not finite, clipped to the driver's speeds (said once).
+  void baseCommand(std::size_t r, const geometry_msgs::Twist& msg);
 
  private:
   /// Robot r's controllers' command topics and its joint_command, under `prefix`.
@@ -114,6 +119,7 @@ class RobotCommands {
   std::vector<std::vector<std::unique_ptr<DrivePorts>>> drives_;  ///< per robot, per drive
   std::vector<geometry_msgs::TransformStamped> odom_tf_;          ///< this publication's
   tf2_ros::TransformBroadcaster tf_;
+  core::ArticulationKinematics kin_;  ///< a robot's, for its base driver's load (reused)
 };
 
 }  // namespace rigid_body_sim::node

@@ -46,13 +46,16 @@ bool VelocityDriver::active(double t) const {
 }
 
 BodyLoad VelocityDriver::load(const BodyModel& body, const BodyState& s, double t, double h) {
+  return load(linkState(body, s), body.mass, body.I_C_L, t, h);
+}
+
+BodyLoad VelocityDriver::load(const LinkState& link, double mass, const Mat3& I_C_L, double t, double h) {
   BodyLoad out;
   if (!active(t)) {
     v_integral_ = w_integral_ = Vec3::Zero();
     commanded_ = commanded_ && settings_.timeout == 0.0;
     return out;
   }
-  const LinkState link = linkState(body, s);
   // The frame the error is taken in: the link's own, or for a ground robot
   // its heading (the link's yaw about the world z).
   Quat q_WF = link.q_WL;
@@ -69,10 +72,10 @@ BodyLoad VelocityDriver::load(const BodyModel& body, const BodyState& s, double 
   const DriverSettings& k = settings_;
   // PI with conditional integration: the integral grows only while the
   // output is within its limit (no wind-up while saturated).
-  const Vec3 f_free = body.mass * (k.linear_gain * ev + k.linear_integral_gain * (v_integral_ + h * ev));
+  const Vec3 f_free = mass * (k.linear_gain * ev + k.linear_integral_gain * (v_integral_ + h * ev));
   if (f_free.norm() <= k.max_force) v_integral_ += h * ev;
-  const Vec3 f_F = clipped(body.mass * (k.linear_gain * ev + k.linear_integral_gain * v_integral_), k.max_force);
-  const Mat3 I_F = (q_WF.conjugate() * link.q_WL).toRotationMatrix() * body.I_C_L *
+  const Vec3 f_F = clipped(mass * (k.linear_gain * ev + k.linear_integral_gain * v_integral_), k.max_force);
+  const Mat3 I_F = (q_WF.conjugate() * link.q_WL).toRotationMatrix() * I_C_L *
                    (q_WF.conjugate() * link.q_WL).toRotationMatrix().transpose();
   const Vec3 t_free = I_F * (k.angular_gain * ew + k.angular_integral_gain * (w_integral_ + h * ew));
   if (t_free.norm() <= k.max_torque) w_integral_ += h * ew;
@@ -80,6 +83,35 @@ BodyLoad VelocityDriver::load(const BodyModel& body, const BodyState& s, double 
   out.force_W = q_WF * f_F;
   out.torque_W = q_WF * t_F;
   return out;
+}
+
+Vec6 baseLoad(VelocityDriver& driver, const ArticulationModel& model, const ArticulationKinematics& kin, double t,
+              double h) {
+  // The robot about its base's origin, in the base's axes: each link's
+  // inertia carried there (§11.3's composite, over every link).
+  const Placement& X_WB = kin.X_WL[0];
+  SpatialInertia all;
+  for (std::size_t k = 0; k < model.links.size(); ++k) {
+    const Placement& X_WL = kin.X_WL[k];
+    const Placement X_BL{X_WB.R_PC.transpose() * X_WL.R_PC, X_WB.R_PC.transpose() * (X_WL.p_PC - X_WB.p_PC)};
+    const SpatialInertia I_B = kin.I_L[k].toParent(X_BL);
+    all.mass += I_B.mass;
+    all.h += I_B.h;
+    all.I_O += I_B.I_O;
+  }
+  const Vec3 c_B = all.h / all.mass;  // the centre of mass
+  const Mat3 I_C_B = all.I_O - all.mass * (c_B.squaredNorm() * Mat3::Identity() - c_B * c_B.transpose());
+  LinkState base;
+  base.p_WL = X_WB.p_PC;
+  base.q_WL = Quat(X_WB.R_PC).normalized();
+  base.w_W = X_WB.R_PC * kin.V_L[0].head<3>();
+  base.v_WL = X_WB.R_PC * kin.V_L[0].tail<3>();
+  const BodyLoad load = driver.load(base, all.mass, I_C_B, t, h);
+  const Vec3 f_B = X_WB.R_PC.transpose() * load.force_W;
+  Vec6 wrench;
+  wrench.head<3>() = X_WB.R_PC.transpose() * load.torque_W + c_B.cross(f_B);  // the force acts through c
+  wrench.tail<3>() = f_B;
+  return wrench;
 }
 
 }  // namespace rigid_body_sim::core

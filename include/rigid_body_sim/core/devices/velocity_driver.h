@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "rigid_body_sim/core/articulations/articulation_dynamics.h"
 #include "rigid_body_sim/core/bodies/model.h"
 #include "rigid_body_sim/core/bodies/state.h"
 #include "rigid_body_sim/core/step/loads.h"
@@ -41,6 +42,10 @@ class VelocityDriver {
   /// The load of the step [t, t + h) for `body` in state `s`: zero before the
   /// first command and after the timeout (which also clears the integrals).
   BodyLoad load(const BodyModel& body, const BodyState& s, double t, double h);
+  /// The same for a link in state `link` carrying `mass` (kg) with inertia
+  /// I_C_L (kg·m², about its centre of mass, in the link's axes): a force
+  /// through that centre and a torque.
+  BodyLoad load(const LinkState& link, double mass, const Mat3& I_C_L, double t, double h);
 
   /// Whether a command is in force at t.
   bool active(double t) const;
@@ -53,5 +58,13 @@ class VelocityDriver {
   Vec3 v_cmd_ = Vec3::Zero(), w_cmd_ = Vec3::Zero();
   Vec3 v_integral_ = Vec3::Zero(), w_integral_ = Vec3::Zero();  ///< ∫e dt, in the frame the error is taken in
 };
+
+/// The driver's load on a robot's floating base (`cmd_vel` on a robot):
+/// the whole robot at `kin` taken as one body (its mass, centre of mass and
+/// inertia about it, with its joints as they are), the error on the base
+/// link's twist; as a wrench on the base link in its axes, moment about
+/// its origin (ArticulationLoads::wrench_L[0]: [moment; force]).
+Vec6 baseLoad(VelocityDriver& driver, const ArticulationModel& model, const ArticulationKinematics& kin, double t,
+              double h);
 
 }  // namespace rigid_body_sim::core
