@@ -304,6 +304,8 @@ void RobotCommands::loadsFor(const core::Simulation& sim, double t, std::vector<
       core::kinematics(model, sim.robots[r], kin_);
       loads[r].wrench_L.assign(model.links.size(), core::Vec6::Zero());
       loads[r].wrench_L[0] = core::baseLoad(*controls_[r].base_driver, model, kin_, t, dt);
+    } else {  // none (a robot deleted before it may have left its own here)
+      loads[r].wrench_L.clear();
     }
     for (const std::string& trouble :
          watch_.observe(r, robot_names_[r], model, controls_[r].controllers, sim.robots[r], effort, dt)) {

@@ -133,6 +133,41 @@ TEST_F(ArmEdits, ARobotDescribedForGazeboSpawnsWithItsMarkupsSensorsAndDrive) {
   EXPECT_TRUE(d.response.success) << d.response.message;
 }
 
+// A robot spawned with cmd_vel (its base driven as a body's), then another
+// without, then the first deleted: the second takes its place in the
+// world's order of robots and steps on without the first's base wrench
+// (which once stopped the step, sized for the other robot's links).
+TEST_F(ArmEdits, ADrivenRobotDeletedBeforeAnotherLeavesItNoWrench) {
+  SpawnBody sled;
+  sled.request.name = "sled";
+  sled.request.urdf_file = "package://rigid_body_sim/urdf/diff_drive.urdf";
+  sled.request.pose.position.x = -3.0;
+  sled.request.pose.position.z = 0.08;
+  sled.request.pose.orientation.w = 1.0;
+  sled.request.cmd_vel = "{planar: true, timeout: 0}";
+  ASSERT_TRUE(ros::service::waitForService("/sim_node/spawn_body", 30000));
+  ASSERT_TRUE(call("spawn_body", sled).response.success);
+  ros::Publisher cmd_vel = nh_.advertise<geometry_msgs::Twist>("/sled/cmd_vel", 10, true);
+  geometry_msgs::Twist slow;
+  slow.linear.x = 0.1;
+  cmd_vel.publish(slow);
+  const SpawnBody::Response other = spawn("other", "pendulum.urdf");
+  ASSERT_TRUE(other.success) << other.message;
+  wait(0.5);
+  rigid_body_sim::DeleteBody d;
+  d.request.name = "sled";
+  d = call("delete_body", d);
+  ASSERT_TRUE(d.response.success) << d.response.message;
+  sensor_msgs::JointState pendulum;
+  ros::Subscriber sub = nh_.subscribe<sensor_msgs::JointState>(
+      "/other/joint_states", 10, [&](const sensor_msgs::JointState::ConstPtr& m) { pendulum = *m; });
+  wait(1.0);  // the world steps on: the arm's joint_states advance
+  ASSERT_TRUE(spinUntil([&] { return !pendulum.name.empty(); }, 10.0));
+  EXPECT_GT(pendulum.header.stamp.toSec(), last_.header.stamp.toSec() - 0.5);
+  d.request.name = "other";
+  EXPECT_TRUE(call("delete_body", d).response.success);
+}
+
 // urdf/pendulum.urdf spawned as a Gazebo user spawns a robot with
 // controllers (rosparam load FILE /pend2, then spawn_model): its position
 // controller drives it to the commanded angle and its joint_state_controller
