@@ -1,6 +1,9 @@
 // What the readers of a URDF's Gazebo markup share: gazebo_markup.h.
 #include "gazebo_markup.h"
 
+#include <algorithm>
+#include <cctype>
+
 namespace rigid_body_sim::io::detail {
 
 std::string attribute(const TiXmlElement& e, const char* name) {
@@ -11,6 +14,16 @@ std::string attribute(const TiXmlElement& e, const char* name) {
 std::string childText(const TiXmlElement& parent, const char* name, const std::string& fallback) {
   const TiXmlElement* e = parent.FirstChildElement(name);
   return e != nullptr && e->GetText() != nullptr ? e->GetText() : fallback;
+}
+
+std::string childTopic(const TiXmlElement& parent, const char* name, const std::string& fallback,
+                       const std::string& where) {
+  std::string topic = childText(parent, name, fallback);
+  const bool named = !topic.empty() && std::all_of(topic.begin(), topic.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '/';
+  });
+  if (!named) throw std::invalid_argument(where + " <" + name + "> = '" + topic + "': no ROS topic name");
+  return topic;
 }
 
 bool childFlag(const TiXmlElement& parent, const char* name, bool fallback, const std::string& where) {

@@ -26,6 +26,11 @@ std::string attribute(const TiXmlElement& e, const char* name);
 /// The text of `parent`'s child `name`, or `fallback`.
 std::string childText(const TiXmlElement& parent, const char* name, const std::string& fallback);
 
+/// childText of a topic: refused (std::invalid_argument naming `where` and
+/// the element) unless ROS can name it: letters, digits, '_' and '/'.
+std::string childTopic(const TiXmlElement& parent, const char* name, const std::string& fallback,
+                       const std::string& where);
+
 /// `parent`'s child `name` as SDF's bool ("true", "1"; "false", "0"), or `fallback`.
 /// Throws std::invalid_argument naming `where` and the element for another text.
 bool childFlag(const TiXmlElement& parent, const char* name, bool fallback, const std::string& where);

@@ -117,8 +117,8 @@ ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
     unread("<plugin> libgazebo_ros_diff_drive.so <updateRate> 0 (read as 100 Hz)", e.name);
   }
   t.under_controller = false;
-  t.cmd_vel_topic = childText(plugin, "commandTopic", "cmd_vel");
-  t.odom_topic = childText(plugin, "odometryTopic", "odom");
+  t.cmd_vel_topic = childTopic(plugin, "commandTopic", "cmd_vel", e.key);
+  t.odom_topic = childTopic(plugin, "odometryTopic", "odom", e.key);
   t.odom_frame_id = childText(plugin, "odometryFrame", "odom");
   t.base_frame_id = childText(plugin, "robotBaseFrame", "base_footprint");
   t.enable_odom_tf = childFlag(plugin, "publishOdomTF", true, e.key);

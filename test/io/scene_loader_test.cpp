@@ -409,6 +409,21 @@ TEST(GazeboDrive, TheDiffDrivePluginIsADiffDriveControllerOnItsTopics) {
   EXPECT_NEAR(b.controls[0].drives[0].spec().wheel_radius, 0.06, 1e-12);
   EXPECT_EQ(b.controls[0].drives[0].spec().settings.max_wheel_torque, 5.0);  // the plugin's default
   EXPECT_EQ(b.controls[0].drive_topics.at(0).base_frame_id, "base_footprint");
+  // A topic ROS cannot name is refused at load, naming the element (it once
+  // reached the node's advertise, which throws).
+  io::UrdfText bad = io::readUrdfFile("diff_drive.urdf", kUrdf);
+  bad.xml.insert(bad.xml.rfind("</robot>"),
+                 "<gazebo><plugin name='w' filename='libgazebo_ros_diff_drive.so'><leftJoint>left_wheel_joint"
+                 "</leftJoint><rightJoint>right_wheel_joint</rightJoint><commandTopic>cmd vel</commandTopic>"
+                 "</plugin></gazebo>");
+  try {
+    io::loadScene(config(""), [&] { return bad; });
+    ADD_FAILURE() << "a command topic with a space was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("<plugin name=\"w\"> <commandTopic> = 'cmd vel': no ROS topic name"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(GazeboCameras, ADepthSensorWithTheKinectPluginIsADepthCameraWithItsMarkupsSettings) {
