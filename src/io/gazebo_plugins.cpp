@@ -139,7 +139,8 @@ ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
 
 bool readsModelPlugin(const TiXmlElement& plugin) {
   const std::string file = attribute(plugin, "filename");
-  return file == "libgazebo_ros_imu.so" || file == "libgazebo_ros_p3d.so" || file == "libgazebo_ros_diff_drive.so";
+  return file == "libgazebo_ros_imu.so" || file == "libgazebo_ros_p3d.so" || file == "libgazebo_ros_diff_drive.so" ||
+         file == "libgazebo_ros_control.so";
 }
 
 void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out) {
@@ -147,6 +148,15 @@ void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevi
   const std::string link = childText(plugin, "bodyName", "");
   if (file == "libgazebo_ros_diff_drive.so") {
     out.controllers.push_back(pluginDrive(plugin, unread));
+  } else if (file == "libgazebo_ros_control.so") {  // the controllers' namespace; they run every step
+    const std::string where = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
+    if (!childText(plugin, "robotNamespace", "").empty()) {  // empty: the root, as none
+      out.robot_namespace = childTopic(plugin, "robotNamespace", "", where);
+    }
+    if (plugin.FirstChildElement("controlPeriod") != nullptr) {
+      unread("<plugin> libgazebo_ros_control.so <controlPeriod> (the controllers run every step)",
+             attribute(plugin, "name"));
+    }
   } else if (link.empty()) {
     unread("<plugin> " + file + " without <bodyName> (Gazebo does not run it)", attribute(plugin, "name"));
   } else if (file == "libgazebo_ros_imu.so") {

@@ -1,7 +1,8 @@
 // The model plugins of a URDF's Gazebo markup that this project runs, read
 // as Gazebo reads them (private to io): `<gazebo><plugin filename=...>`
-// with gazebo_ros_imu (an IMU), gazebo_ros_p3d (a link's odometry) and
-// gazebo_ros_diff_drive (a DiffDriveController).
+// with gazebo_ros_imu (an IMU), gazebo_ros_p3d (a link's odometry),
+// gazebo_ros_diff_drive (a DiffDriveController) and gazebo_ros_control (its
+// `robotNamespace`).
 #pragma once
 
 #include <tinyxml.h>

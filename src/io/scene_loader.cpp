@@ -168,6 +168,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     robot_starts.push_back(robotStart(model, e.initial, e.initial_joints, config.model.limits, key + ".initial"));
     controls.push_back(buildControls(allControllers(e.controllers, described.sensors), model));
     addBaseDriver(e.cmd_vel, model, key + ".", controls.back());
+    controls.back().robot_namespace = described.sensors.robot_namespace;
     for (std::string& note : transmissionNotes(e.controllers, described.sensors.transmissions, model)) {
       notes.push_back(std::move(note));
     }
@@ -217,6 +218,7 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
       robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
   RobotControls controls = buildControls(allControllers(config.controllers, described.sensors), model);
   addBaseDriver(config.cmd_vel, model, "", controls);
+  controls.robot_namespace = described.sensors.robot_namespace;
   for (std::string& note : transmissionNotes(config.controllers, described.sensors.transmissions, model)) {
     notes.push_back(std::move(note));
   }

@@ -13,12 +13,13 @@
 namespace rigid_body_sim::node {
 
 RobotCommands::RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotControls> controls,
-                             const core::Simulation& sim, const NodeTime& time, bool several)
+                             const core::Simulation& sim, const NodeTime& time,
+                             const std::vector<std::string>& prefixes)
     : sim_(sim), time_(time), nh_(nh) {
   const std::vector<core::SceneRobot>& robots = sim.scene.robots();
   controls.resize(robots.size());
   for (std::size_t r = 0; r < robots.size(); ++r) {
-    addRobot(sim, r, several ? robots[r].name + "/" : "", framePrefix(nh_, robots[r].name), std::move(controls[r]));
+    addRobot(sim, r, prefixes.at(r), framePrefix(nh_, robots[r].name), std::move(controls[r]));
   }
 }
 

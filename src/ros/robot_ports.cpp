@@ -94,14 +94,19 @@ void checkRobotFrames(const std::vector<RobotPorts>& robots, const std::string& 
   }
 }
 
-RobotPublisher::RobotPublisher(const ros::NodeHandle& nh, const core::Scene& scene, bool several,
-                               std::string world_frame, double dt, double publish_rate,
-                               const std::function<double(std::size_t)>& rate)
+RobotPublisher::RobotPublisher(const ros::NodeHandle& nh, const core::Scene& scene,
+                               const std::vector<std::string>& prefixes, std::string world_frame, double dt,
+                               double publish_rate, const std::function<double(std::size_t)>& rate)
     : nh_(nh), world_frame_(std::move(world_frame)), dt_(dt) {
   for (const core::SceneRobot& robot : scene.robots()) {
     const double hz = rate(robots_.size()) > 0.0 ? rate(robots_.size()) : publish_rate;
-    addRobot(robot, several ? robot.name + "/" : "", hz, framePrefix(nh_, robot.name));
+    addRobot(robot, prefixes.at(robots_.size()), hz, framePrefix(nh_, robot.name));
   }
+}
+
+std::string robotTopicPrefix(const std::string& robot_namespace, const std::string& otherwise) {
+  if (robot_namespace.empty()) return otherwise;
+  return robot_namespace.back() == '/' ? robot_namespace : robot_namespace + "/";
 }
 
 void RobotPublisher::addRobot(const core::SceneRobot& robot, const std::string& prefix, double hz,

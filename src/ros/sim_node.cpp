@@ -145,9 +145,17 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
            listed.c_str());
 
   publisher_.emplace(nh_, pnh_, settings_, use_sim_time_);
-  commands_.emplace(nh_, std::move(start_controls_), sim_, time_, several);
-  robot_publisher_.emplace(nh_, sim_.scene, several, settings_.world_frame, model_.dt(), settings_.publish_rate,
-                           [this](std::size_t r) { return commands_->jointStateRate(r); });
+  // Each robot's controllers and joint_states: under its gazebo_ros_control
+  // robotNamespace, else as its other topics.
+  std::vector<std::string> control_prefixes;
+  start_controls_.resize(sim_.scene.robots().size());
+  for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
+    const std::string& name = sim_.scene.robots()[r].name;
+    control_prefixes.push_back(robotTopicPrefix(start_controls_[r].robot_namespace, several ? name + "/" : ""));
+  }
+  commands_.emplace(nh_, std::move(start_controls_), sim_, time_, control_prefixes);
+  robot_publisher_.emplace(nh_, sim_.scene, control_prefixes, settings_.world_frame, model_.dt(),
+                           settings_.publish_rate, [this](std::size_t r) { return commands_->jointStateRate(r); });
   checkRobotFrames(robot_publisher_->robots(), settings_.world_frame, ports_.frames());
   range_sensors_.emplace(nh_, model_.dt());
   link_imus_.emplace(nh_, model_.dt());
@@ -205,8 +213,9 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   const std::string prefix = spawn.request.name + "/";
   io::RobotControls& controls = spawn.controls;
   const double hz = controls.joint_state_rate > 0.0 ? controls.joint_state_rate : settings_.publish_rate;
-  robot_publisher_->addRobot(sim_.scene.robots()[r], prefix, hz, spawn.frame_prefix);
-  commands_->addRobot(sim_, r, prefix, spawn.frame_prefix, std::move(controls));
+  const std::string control_prefix = robotTopicPrefix(controls.robot_namespace, prefix);
+  robot_publisher_->addRobot(sim_.scene.robots()[r], control_prefix, hz, spawn.frame_prefix);
+  commands_->addRobot(sim_, r, control_prefix, spawn.frame_prefix, std::move(controls));
   robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
   range_sensors_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.lidars, spawn.sensors.cameras);
   link_imus_->addRobot(sim_, r, prefix, spawn.frame_prefix, spawn.sensors.imus);

@@ -133,6 +133,7 @@ void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf,
       configureJoints(model, limits, req.joint_names, req.joint_positions, {}, spawn.robot_start);
   if (!problem.empty()) throw std::invalid_argument(problem);
   spawn.controls = requestedControls(req, nh, model, markup.controllers);
+  spawn.controls.robot_namespace = markup.robot_namespace;
   if (!req.cmd_vel.empty()) {
     if (model.fixed_base) throw std::invalid_argument("cmd_vel: robot '" + req.name + "' is fixed to the world");
     spawn.controls.base_driver.emplace(io::parseDriverText(req.cmd_vel, "cmd_vel"));

@@ -376,7 +376,8 @@ TEST(GazeboDrive, TheDiffDrivePluginIsADiffDriveControllerOnItsTopics) {
       "<wheelDiameter>0.1</wheelDiameter><wheelTorque>3</wheelTorque><wheelAcceleration>2</wheelAcceleration>"
       "<commandTopic>base/cmd_vel</commandTopic><odometryTopic>/wheel_odom</odometryTopic>"
       "<robotBaseFrame>base_link</robotBaseFrame><publishOdomTF>false</publishOdomTF><updateRate>20</updateRate>"
-      "</plugin></gazebo>";
+      "</plugin></gazebo><gazebo><plugin name='gazebo_ros_control' filename='libgazebo_ros_control.so'>"
+      "<robotNamespace>/scout</robotNamespace></plugin></gazebo>";
   text.xml.insert(text.xml.rfind("</robot>"), plugin);
   const io::SceneSetup s = io::loadScene(config(""), [&] { return text; });
   ASSERT_EQ(s.controls.at(0).drives.size(), 1u);
@@ -395,6 +396,7 @@ TEST(GazeboDrive, TheDiffDrivePluginIsADiffDriveControllerOnItsTopics) {
   EXPECT_EQ(t.base_frame_id, "base_link");
   EXPECT_FALSE(t.enable_odom_tf);
   EXPECT_EQ(t.publish_rate, 20.0);
+  EXPECT_EQ(s.controls[0].robot_namespace, "/scout");  // gazebo_ros_control's
   // Its odometry is the wheels', not the truth the plugin's default reports: said.
   std::string notes;
   for (const std::string& n : s.notes) notes += n;
@@ -409,6 +411,7 @@ TEST(GazeboDrive, TheDiffDrivePluginIsADiffDriveControllerOnItsTopics) {
   EXPECT_NEAR(b.controls[0].drives[0].spec().wheel_radius, 0.06, 1e-12);
   EXPECT_EQ(b.controls[0].drives[0].spec().settings.max_wheel_torque, 5.0);  // the plugin's default
   EXPECT_EQ(b.controls[0].drive_topics.at(0).base_frame_id, "base_footprint");
+  EXPECT_TRUE(b.controls[0].robot_namespace.empty());  // no gazebo_ros_control: none
   // A topic ROS cannot name is refused at load, naming the element (it once
   // reached the node's advertise, which throws).
   io::UrdfText bad = io::readUrdfFile("diff_drive.urdf", kUrdf);

@@ -1,6 +1,7 @@
 // A wheeled base described for Gazebo, run unchanged (gazebo_plugins.test):
 // what a subscriber receives while geometry_msgs/Twist commands arrive on
-// /cmd_vel, as gazebo_ros_diff_drive reads them: the base turning at the
+// /gp/cmd_vel (gazebo_ros_control's robotNamespace), as gazebo_ros_diff_drive
+// reads them: the base turning at the
 // commanded twist on the p3d plugin's /ground_truth/state, the drive's
 // odometry on /odom, and the IMU plugin's /imu reading the turn's
 // centripetal acceleration and gravity as REP 145 says.
@@ -9,6 +10,7 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <sensor_msgs/Imu.h>
+#include <sensor_msgs/JointState.h>
 
 #include <cstdio>
 #include <vector>
@@ -24,13 +26,19 @@ TEST(GazeboPlugins, TheBaseDrivesByCmdVelAndItsOdometryP3dAndImuSayHow) {
   std::vector<nav_msgs::Odometry> odom, truth;
   std::vector<sensor_msgs::Imu> imu;
   ros::Subscriber odom_sub = nh.subscribe<nav_msgs::Odometry>(
-      "/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { odom.push_back(*m); });
+      "/gp/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { odom.push_back(*m); });
   ros::Subscriber truth_sub = nh.subscribe<nav_msgs::Odometry>(
       "/ground_truth/state", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { truth.push_back(*m); });
   ros::Subscriber imu_sub =
       nh.subscribe<sensor_msgs::Imu>("/imu", 1000, [&](const sensor_msgs::Imu::ConstPtr& m) { imu.push_back(*m); });
-  ros::Publisher cmd_vel = nh.advertise<geometry_msgs::Twist>("/cmd_vel", 10);
+  sensor_msgs::JointState joints;
+  ros::Subscriber joints_sub = nh.subscribe<sensor_msgs::JointState>(
+      "/gp/joint_states", 10, [&](const sensor_msgs::JointState::ConstPtr& m) { joints = *m; });
+  ros::Publisher cmd_vel = nh.advertise<geometry_msgs::Twist>("/gp/cmd_vel", 10);
   ASSERT_TRUE(spinUntil([&] { return !odom.empty() && !truth.empty() && !imu.empty(); }, 30.0));
+  // gazebo_ros_control's robotNamespace: the joint_states and the drive's topics under /gp.
+  ASSERT_TRUE(spinUntil([&] { return !joints.name.empty(); }, 10.0));
+  EXPECT_EQ(joints.name.size(), 2u);
   // 0.4 m/s and 0.5 rad/s, sent every 20 ms of wall time, for 3 s of sim time.
   geometry_msgs::Twist twist;
   twist.linear.x = 0.4;

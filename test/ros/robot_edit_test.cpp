@@ -98,10 +98,10 @@ TEST_F(ArmEdits, ARobotDescribedForGazeboSpawnsWithItsMarkupsSensorsAndDrive) {
   ros::Subscriber imu_sub = nh_.subscribe<sensor_msgs::Imu>(
       "/rover/imu", 100, [&](const sensor_msgs::Imu::ConstPtr& m) { imu.push_back(*m); });
   ros::Subscriber odom_sub = nh_.subscribe<nav_msgs::Odometry>(
-      "/rover/odom", 100, [&](const nav_msgs::Odometry::ConstPtr& m) { odom.push_back(*m); });
+      "/gp/odom", 100, [&](const nav_msgs::Odometry::ConstPtr& m) { odom.push_back(*m); });
   ros::Subscriber truth_sub = nh_.subscribe<nav_msgs::Odometry>(
       "/rover/ground_truth/state", 100, [&](const nav_msgs::Odometry::ConstPtr& m) { truth.push_back(*m); });
-  ros::Publisher cmd_vel = nh_.advertise<geometry_msgs::Twist>("/rover/cmd_vel", 10);
+  ros::Publisher cmd_vel = nh_.advertise<geometry_msgs::Twist>("/gp/cmd_vel", 10);  // its robotNamespace
   SpawnBody s;
   s.request.name = "rover";
   s.request.urdf_file = "package://rigid_body_sim/test/ros/gazebo_plugins.urdf";
@@ -116,7 +116,8 @@ TEST_F(ArmEdits, ARobotDescribedForGazeboSpawnsWithItsMarkupsSensorsAndDrive) {
   EXPECT_EQ(imu.back().header.frame_id, "base_link");
   EXPECT_NEAR(imu.back().linear_acceleration.z, 9.81, 0.1);
   EXPECT_NEAR(truth.back().pose.pose.position.x, 3.0, 0.01);
-  // Its gazebo_ros_diff_drive: 0.3 m/s on /rover/cmd_vel for 2 s of sim time.
+  // Its gazebo_ros_diff_drive, in its gazebo_ros_control's robotNamespace:
+  // 0.3 m/s on /gp/cmd_vel for 2 s of sim time.
   geometry_msgs::Twist forward;
   forward.linear.x = 0.3;
   const double until = truth.back().header.stamp.toSec() + 2.0;

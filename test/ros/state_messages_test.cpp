@@ -148,6 +148,16 @@ TEST(StateMessages, EveryBaseButTheWorldIsPlacedOnTf) {
   EXPECT_EQ(placedBase(fixed), "link_0");
 }
 
+// A robot's controllers and joint_states: under its gazebo_ros_control
+// robotNamespace when it has one, else as its other topics.
+TEST(StateMessages, ARobotsControlTopicsAreUnderItsRobotNamespace) {
+  EXPECT_EQ(robotTopicPrefix("/rrbot", "arm/"), "/rrbot/");
+  EXPECT_EQ(robotTopicPrefix("/rrbot/", ""), "/rrbot/");
+  EXPECT_EQ(robotTopicPrefix("rrbot", ""), "rrbot/");
+  EXPECT_EQ(robotTopicPrefix("/", "arm/"), "/");
+  EXPECT_EQ(robotTopicPrefix("", "arm/"), "arm/");
+}
+
 TEST(StateMessages, OdometryCarriesTheReportsCovariancesOrTheExactOnes) {
   core::OdomReport r;
   r.v_L = Vec3(0.5, 0, 0);

@@ -165,6 +165,9 @@ struct RobotDevices {
   /// run beside the config's `controllers`.
   std::vector<ControllerEntry> controllers;
   std::vector<TransmissionEntry> transmissions;  ///< the URDF's, to check the config's controllers against
+  /// gazebo_ros_control's `robotNamespace` ("": none): where the robot's
+  /// controllers and joint_states are, as gazebo_ros_control puts them.
+  std::string robot_namespace;
 };
 
 /// One entry of the `bodies` list: a body of the world.

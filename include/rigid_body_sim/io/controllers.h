@@ -27,6 +27,9 @@ struct RobotControls {
   /// `cmd_vel` on the robot (a body's key): its floating base driven toward
   /// the commanded twist by a wrench (core::baseLoad), not through wheels.
   std::optional<core::VelocityDriver> base_driver;
+  /// gazebo_ros_control's `robotNamespace` in the URDF's markup ("": none):
+  /// the namespace of the robot's controllers' topics and joint_states.
+  std::string robot_namespace;
 };
 
 /// The types this project runs, as ros_controllers names them.

@@ -35,13 +35,13 @@ class RobotCommands {
  public:
   RobotCommands(const RobotCommands&) = delete;  // its subscribers' callbacks hold `this`
   RobotCommands& operator=(const RobotCommands&) = delete;
-  /// Subscribes every controller's command on `nh` (under "NAME/" for each
-  /// robot when `several` things are in the world); the position and
+  /// Subscribes every controller's command on `nh` (under `prefixes[r]`
+  /// for robot r: robotTopicPrefix's); the position and
   /// trajectory controllers hold the joints where `sim` starts them. `sim`
   /// and `time` (the node's, which outlive this) are read when a
   /// trajectory arrives: where it starts, on which clock.
   RobotCommands(const ros::NodeHandle& nh, std::vector<io::RobotControls> controls, const core::Simulation& sim,
-                const NodeTime& time, bool several);
+                const NodeTime& time, const std::vector<std::string>& prefixes);
 
   /// Robot r of `sim`, added to the world (~spawn_body), with `controls`:
   /// their topics under `prefix`, the position and trajectory controllers

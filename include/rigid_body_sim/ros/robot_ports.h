@@ -69,13 +69,19 @@ std::vector<std::string> robotFrames(const core::ArticulationModel& robot, const
 void checkRobotFrames(const std::vector<RobotPorts>& robots, const std::string& world_frame,
                       const std::vector<std::string>& body_frames);
 
+/// The prefix of a robot's controllers' topics and joint_states: its
+/// gazebo_ros_control `robotNamespace` with a '/' after it ("/rrbot" ->
+/// "/rrbot/"), or `otherwise` ("NAME/" in a world, "" alone) when it has none.
+std::string robotTopicPrefix(const std::string& robot_namespace, const std::string& otherwise);
+
 class RobotPublisher {
  public:
-  /// Advertises each robot's joint_states on `nh` (under "NAME/" when
-  /// `several` things are in the world), at `rate(r)` Hz of sim time (its
+  /// Advertises each robot's joint_states on `nh` (under `prefixes[r]`,
+  /// robotTopicPrefix's), at `rate(r)` Hz of sim time (its
   /// joint_state_controller's), or `publish_rate` where that is 0.
-  RobotPublisher(const ros::NodeHandle& nh, const core::Scene& scene, bool several, std::string world_frame, double dt,
-                 double publish_rate, const std::function<double(std::size_t)>& rate);
+  RobotPublisher(const ros::NodeHandle& nh, const core::Scene& scene, const std::vector<std::string>& prefixes,
+                 std::string world_frame, double dt, double publish_rate,
+                 const std::function<double(std::size_t)>& rate);
 
   /// A robot added to the world (~spawn_body): its joint_states under
   /// `prefix`, at `hz` Hz of sim time, its frames after `frame_prefix`.
