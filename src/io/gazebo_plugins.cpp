@@ -75,7 +75,9 @@ OdometryEntry pluginOdometry(const TiXmlElement& plugin, const std::string& link
 /// limits, `updateRate` (100 Hz) as the odometry's, `commandTopic`
 /// ("cmd_vel"), `odometryTopic` ("odom"), `odometryFrame` ("odom"),
 /// `robotBaseFrame` ("base_footprint"), `publishOdomTF` (true), and the
-/// plugin's pose covariances. Its odometry is the wheels' here, whatever
+/// plugin's pose covariances. The last command is held (the plugin has no
+/// timeout; ros_controllers' 0.5 s would stop a base whose commander
+/// pauses). Its odometry is the wheels' here, whatever
 /// `odometrySource` says (the plugin's default, "world", reports the truth:
 /// said); `publishTf` false is said too.
 ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
@@ -93,6 +95,7 @@ ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
   numbers.at(&plugin, "wheelSeparation", separation);
   numbers.at(&plugin, "wheelDiameter", diameter);
   d.settings.max_wheel_torque = 5.0;
+  d.settings.cmd_vel_timeout = std::numeric_limits<double>::infinity();
   numbers.at(&plugin, "wheelTorque", d.settings.max_wheel_torque);
   numbers.at(&plugin, "wheelAcceleration", accel);
   numbers.at(&plugin, "updateRate", rate);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <limits>
 #include <string>
 
 #include "../test_util.h"
@@ -386,6 +387,7 @@ TEST(GazeboDrive, TheDiffDrivePluginIsADiffDriveControllerOnItsTopics) {
   EXPECT_EQ(d.wheel_separation, 0.4);
   EXPECT_EQ(d.wheel_radius, 0.05);
   EXPECT_EQ(d.settings.max_wheel_torque, 3.0);
+  EXPECT_EQ(d.settings.cmd_vel_timeout, std::numeric_limits<double>::infinity());  // the plugin holds it
   EXPECT_EQ(d.settings.linear.max_acceleration, 2.0);
   EXPECT_EQ(d.settings.angular.max_acceleration, 2.0 * 2.0 / 0.4);  // one wheel at +a, the other at -a
   const io::DriveTopics& t = s.controls[0].drive_topics.at(0);

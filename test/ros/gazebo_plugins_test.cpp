@@ -35,6 +35,7 @@ TEST(GazeboPlugins, TheBaseDrivesByCmdVelAndItsOdometryP3dAndImuSayHow) {
   ros::Subscriber joints_sub = nh.subscribe<sensor_msgs::JointState>(
       "/gp/joint_states", 10, [&](const sensor_msgs::JointState::ConstPtr& m) { joints = *m; });
   ros::Publisher cmd_vel = nh.advertise<geometry_msgs::Twist>("/gp/cmd_vel", 10);
+  ASSERT_TRUE(spinUntil([&] { return cmd_vel.getNumSubscribers() > 0; }, 30.0));  // the drive listens
   ASSERT_TRUE(spinUntil([&] { return !odom.empty() && !truth.empty() && !imu.empty(); }, 30.0));
   // gazebo_ros_control's robotNamespace: the joint_states and the drive's topics under /gp.
   ASSERT_TRUE(spinUntil([&] { return !joints.name.empty(); }, 10.0));

@@ -116,6 +116,7 @@ TEST_F(ArmEdits, ARobotDescribedForGazeboSpawnsWithItsMarkupsSensorsAndDrive) {
   EXPECT_EQ(imu.back().header.frame_id, "base_link");
   EXPECT_NEAR(imu.back().linear_acceleration.z, 9.81, 0.1);
   EXPECT_NEAR(truth.back().pose.pose.position.x, 3.0, 0.01);
+  ASSERT_TRUE(spinUntil([&] { return cmd_vel.getNumSubscribers() > 0; }, 30.0));  // the drive listens
   // Its gazebo_ros_diff_drive, in its gazebo_ros_control's robotNamespace:
   // 0.3 m/s on /gp/cmd_vel for 2 s of sim time.
   geometry_msgs::Twist forward;

@@ -88,7 +88,7 @@ DiffDrive::DiffDrive(const ArticulationModel& model, DiffDriveSpec spec) : spec_
                                     {k.right_wheel_radius_multiplier, "right_wheel_radius_multiplier"}}) {
     if (!positive(value)) fail(s, std::string(what) + " must be finite and > 0, got " + std::to_string(value));
   }
-  if (!(std::isfinite(k.cmd_vel_timeout) && k.cmd_vel_timeout >= 0.0)) fail(s, "cmd_vel_timeout must be >= 0");
+  if (!(k.cmd_vel_timeout >= 0.0)) fail(s, "cmd_vel_timeout must be >= 0 (infinite: held)");
   if (k.velocity_rolling_window_size < 1) fail(s, "velocity_rolling_window_size must be >= 1");
   checkLimits(s, k.linear, "linear/x");
   checkLimits(s, k.angular, "angular/z");

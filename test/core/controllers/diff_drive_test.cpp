@@ -165,6 +165,22 @@ TEST(DiffDrive, BrakesWhenTheCommandIsOlderThanItsTimeout) {
   EXPECT_FALSE(drive.command(0.1, std::numeric_limits<double>::infinity(), 1.3));
 }
 
+// gazebo_ros_diff_drive's way: an infinite timeout holds the last command.
+TEST(DiffDrive, AnInfiniteTimeoutHoldsTheLastCommand) {
+  const ArticulationModel model = twoWheels();
+  DiffDriveSpec s = spec();
+  s.gains = {{1.0, 0.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}};
+  s.settings.cmd_vel_timeout = std::numeric_limits<double>::infinity();
+  DiffDrive drive(model, s);
+  drive.restart(wheelsAt(model, 0.0, 0.0), true);
+  ASSERT_TRUE(drive.command(0.5, 0.0, 1.0));
+  Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
+  drive.efforts(wheelsAt(model, 0.0, 0.0), 1.0e4, kH, effort);
+  EXPECT_DOUBLE_EQ(effort(0), 5.0);  // 0.5 / 0.1 = 5 rad/s, a day later
+  s.settings.cmd_vel_timeout = std::nan("");
+  EXPECT_THROW(DiffDrive(model, s), std::invalid_argument);
+}
+
 TEST(DiffDrive, DefaultGainsPlaceBothPolesOfTheWheelLoopAt20Ms) {
   const ArticulationModel model = twoWheels();
   // J = 0.02 + 12 kg · 0.1² / 2 = 0.08 kg m²: p = 2 J / 0.02 = 8, i = J / 0.02² = 200.

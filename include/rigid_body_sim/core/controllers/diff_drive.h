@@ -39,7 +39,9 @@ struct DiffDriveSettings {
   double wheel_separation_multiplier = 1.0;
   double left_wheel_radius_multiplier = 1.0;
   double right_wheel_radius_multiplier = 1.0;
-  double cmd_vel_timeout = 0.5;           ///< s: an older command is zero (the base brakes)
+  /// s: an older command is zero (the base brakes); infinite: the last
+  /// command is held, as gazebo_ros_diff_drive does
+  double cmd_vel_timeout = 0.5;
   int velocity_rolling_window_size = 10;  ///< steps the odometry's velocity is averaged over
   bool open_loop = false;                 ///< odometry from the commands, not the wheels
   /// N·m: each wheel's effort at most this, beside its joint's limit
