@@ -37,6 +37,13 @@ core::ContactMethod contactMethod(const YAML::Node& node) {
        "unknown method '" + m + "' (impulse, penalty_quadratic, penalty_log_barrier, shape_matching)");
 }
 
+core::ArticulationIntegrator articulationIntegrator(const YAML::Node& node) {
+  const std::string m = node.IsScalar() ? node.as<std::string>() : show(node);
+  if (m == "verlet") return core::ArticulationIntegrator::kVerlet;
+  if (m == "symplectic_euler") return core::ArticulationIntegrator::kSymplecticEuler;
+  fail("articulation_integrator", "unknown integrator '" + m + "' (verlet, symplectic_euler)");
+}
+
 core::CombineRule combineRule(const YAML::Node& node, const std::string& key) {
   const std::string r = node.IsScalar() ? node.as<std::string>() : show(node);
   if (r == "min") return core::CombineRule::kMin;
@@ -67,6 +74,7 @@ void parseSetting(const core::SettingKey& k, const YAML::Node& node, core::Model
       return;
     case core::SettingKey::Kind::kChoice:
       if (key == "contact.method") m.contact.method = contactMethod(node);
+      if (key == "articulation_integrator") m.articulation_integrator = articulationIntegrator(node);
       if (key == "contact.friction_combine") m.contact.friction_combine = combineRule(node, key);
       if (key == "contact.restitution_combine") m.contact.restitution_combine = combineRule(node, key);
       return;
@@ -195,11 +203,28 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
   c.base_dir = base_dir;
   c.model.scene = {core::Sdf::plane(Vec3::UnitZ())};  // the ground, z = 0
   if (!root || root.IsNull()) return c;
-  requireKnownKeys(
-      root, "",
-      {"dt", "gravity", "gyroscopic", "damping", "initial", "scene", "contact", "sleep", "solver", "limits", "bodies",
-       "imu", "odom_noise", "cmd_vel", "controllers", "gazebo_ros_control", "urdf", "lidar", "depth_camera"});
-  parseSection(root, "", c.model);  // dt, gravity, gyroscopic
+  requireKnownKeys(root, "",
+                   {"dt",
+                    "gravity",
+                    "gyroscopic",
+                    "articulation_integrator",
+                    "damping",
+                    "initial",
+                    "scene",
+                    "contact",
+                    "sleep",
+                    "solver",
+                    "limits",
+                    "bodies",
+                    "imu",
+                    "odom_noise",
+                    "cmd_vel",
+                    "controllers",
+                    "gazebo_ros_control",
+                    "urdf",
+                    "lidar",
+                    "depth_camera"});
+  parseSection(root, "", c.model);  // dt, gravity, gyroscopic, articulation_integrator
   if (const YAML::Node urdf = root["urdf"]) {
     requireKnownKeys(urdf, "urdf", {"repair"});
     if (urdf["repair"]) c.urdf_repair = boolean(urdf["repair"], "urdf.repair");

@@ -301,6 +301,10 @@ bodies:
     EXPECT_EQ(parse(std::string("contact: {friction_combine: ") + name + "}").model.contact.friction_combine, rule);
   }
   expectRefused("contact: {friction_combine: harmonic}", {"'contact.friction_combine'", "unknown rule 'harmonic'"});
+  EXPECT_EQ(parse("").model.articulation_integrator, core::ArticulationIntegrator::kVerlet);
+  EXPECT_EQ(parse("articulation_integrator: symplectic_euler").model.articulation_integrator,
+            core::ArticulationIntegrator::kSymplecticEuler);
+  expectRefused("articulation_integrator: rk4", {"'articulation_integrator'", "unknown integrator 'rk4'"});
   expectRefused("bodies: [{name: a, urdf: x.urdf, contact: {friction: high}}]", {"'bodies[0].contact.friction'"});
   expectRefused("bodies: [{name: a, urdf: x.urdf, contact: {grip: 1}}]", {"'bodies[0].contact.grip'", "unknown key"});
 }

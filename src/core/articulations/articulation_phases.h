@@ -12,10 +12,10 @@ namespace rigid_body_sim::core::detail {
 
 /// Everything before the rows: the kinematics at the start (ws.kin), the
 /// factored A = M + h D (ws.llt), the velocity the step gives without
-/// rows (ws.next), the joints' momenta it carries (ws.rhs) and the floating
-/// base's whole momentum (ws.H_W).
+/// rows (ws.next) by `integrator`, the joints' momenta it carries (ws.rhs)
+/// and the floating base's whole momentum (ws.H_W).
 void predictArticulation(const ArticulationModel& model, const ArticulationState& state, const ArticulationLoads& loads,
-                         const Vec3& g_W, double h, ArticulationWorkspace& ws);
+                         const Vec3& g_W, double h, ArticulationIntegrator integrator, ArticulationWorkspace& ws);
 
 /// Everything after: the rows' generalized impulse Σ Jᵀλ (if any) into the
 /// momenta, the damping, the speed limits, q⁺ = q + h v⁺ and the base;

@@ -30,6 +30,9 @@ constexpr double kCorrectorRounding = 1e-9;
 /// to the prediction (a long, light chain rarely contracts: the passes
 /// would double its step's cost for nothing).
 constexpr int kPredictOnlySteps = 3;
+/// The Verlet step's passes: the first makes it second order, the next
+/// bring it to the symmetric (time-reversible) solution where they contract.
+constexpr int kVerletPasses = 3;
 
 bool samePose(const Pose& a, const Pose& b) {
   return a.translation == b.translation && a.rotation.coeffs() == b.rotation.coeffs();
@@ -83,10 +86,105 @@ bool limitSpeeds(const ArticulationModel& model, const SpeedLimits& limits, Eige
 
 }  // namespace
 
+namespace {
+
+/// Symplectic Euler's corrector (§11.5): p⁺ = p + h (τ + ∂T/∂q(q, u⁺)),
+/// implicit in u⁺ through ∂T/∂q, by fixed-point passes from the prediction
+/// (ws.predicted); where they do not contract (a fast or long, light
+/// chain), false: the prediction stands. The result in ws.next, the
+/// joints' momenta in ws.rhs.
+bool symplecticPasses(const ArticulationModel& model, double h, ArticulationWorkspace& ws) {
+  const int nj = model.jointCount();
+  Eigen::VectorXd& u_next = ws.next;
+  u_next = ws.predicted;
+  Eigen::VectorXd& corrected = ws.corrected;
+  Eigen::VectorXd& rhs = ws.rhs;
+  int& predict_only = ws.predict_only;
+  double last_change = std::numeric_limits<double>::infinity();
+  bool converged = false;
+  const int passes = predict_only > 0 ? 0 : kCorrectorPasses;
+  for (int pass = 0; pass < passes && !converged; ++pass) {
+    setTwists(model, u_next, ws.kin);
+    kineticEnergyGradient(model, ws.kin, ws.dynamics, ws.gradient);
+    rhs.tail(nj) = ws.p + h * (ws.force.tail(nj) + ws.gradient.tail(nj));
+    corrected = rhs;
+    ws.llt.solveInPlace(corrected);
+    const double change = (corrected - u_next).cwiseAbs().maxCoeff();
+    const double scale = 1.0 + corrected.cwiseAbs().maxCoeff();
+    if (!(change <= kCorrectorContraction * last_change)) {
+      converged = last_change <= kCorrectorRounding * scale;
+      break;
+    }
+    u_next.swap(corrected);
+    last_change = change;
+    converged = change <= kCorrectorTolerance * scale;
+  }
+  if (predict_only > 0) {
+    --predict_only;
+  } else if (!converged) {
+    predict_only = kPredictOnlySteps;
+  }
+  return converged;
+}
+
+/// Velocity Verlet with the step's velocity ū (§11.5): A (ū⁺ − ū) =
+/// h (τ − c(q, ½ (ū + ū⁺)) − D ū), the Coriolis terms at the velocity of
+/// the step's start, implicit in ū⁺; fixed-point passes from the
+/// prediction, at most kVerletPasses. A state not carried from the last
+/// step has its velocity at this instant: its ū is half a step back, and
+/// the step is explicit. False when the passes grow (the prediction stands).
+bool verletPasses(const ArticulationModel& model, const ArticulationLoads& loads, double h, bool fresh,
+                  ArticulationWorkspace& ws) {
+  const int nj = model.jointCount();
+  Eigen::VectorXd& u_next = ws.next;
+  Eigen::VectorXd& before = ws.before;
+  Eigen::VectorXd& step = ws.corrected;
+  // What the velocity gains over the step but for the Coriolis terms: the
+  // loads and the damping at ū.
+  const auto gain = [&](const Eigen::VectorXd& coriolis, Eigen::VectorXd& out) {
+    out = h * (ws.force - coriolis);
+    for (int i = 1; i <= nj; ++i) out(model.dofOf(i)) -= h * model.links[i].damping * before(model.dofOf(i));
+    ws.llt.solveInPlace(out);
+    out += before;
+  };
+  if (fresh) {
+    // ū = u − ½ h A⁻¹ (τ − c(q, u)), the loads without the step's impulses
+    // (they act over this step, not the last); c at u is then exact.
+    before = ws.u;
+    Eigen::VectorXd& half = ws.mid;
+    half = 0.5 * h * (ws.force - ws.bias);  // h first: 1e308 N·m over I < 1 would overflow
+    if (!loads.impulse_L.empty()) {
+      biasForces(model, ws.kin, Vec3::Zero(), loads.impulse_L, false, ws.dynamics, ws.gradient);
+      half += 0.5 * ws.gradient;  // the rest forces carry the wrenches' sign flipped
+    }
+    ws.llt.solveInPlace(half);
+    before -= half;
+    gain(ws.bias, u_next);
+    return true;
+  }
+  before = ws.u;
+  u_next = ws.predicted;
+  double last_change = std::numeric_limits<double>::infinity();
+  for (int pass = 0; pass < kVerletPasses; ++pass) {
+    ws.mid = 0.5 * (before + u_next);
+    setTwists(model, ws.mid, ws.kin);
+    biasForces(model, ws.kin, Vec3::Zero(), {}, true, ws.dynamics, ws.bias);
+    gain(ws.bias, step);
+    const double change = (step - u_next).cwiseAbs().maxCoeff();
+    if (!(change < last_change)) return false;  // growing: the passes diverge
+    u_next.swap(step);
+    if (change <= kCorrectorTolerance * (1.0 + u_next.cwiseAbs().maxCoeff())) break;
+    last_change = change;
+  }
+  return true;
+}
+
+}  // namespace
+
 namespace detail {
 
 void predictArticulation(const ArticulationModel& model, const ArticulationState& state, const ArticulationLoads& loads,
-                         const Vec3& g_W, double h, ArticulationWorkspace& ws) {
+                         const Vec3& g_W, double h, ArticulationIntegrator integrator, ArticulationWorkspace& ws) {
   ArticulationKinematics& kin = ws.kin;
   kinematics(model, state, kin);
   const int base = model.fixed_base ? 0 : 6;
@@ -142,49 +240,24 @@ void predictArticulation(const ArticulationModel& model, const ArticulationState
     H_W += h * kin.X_WL[0].forceToParent(force.head<6>());
     rhs.head<6>() = kin.X_WL[0].forceToChild(H_W);
   }
-  // The joints: symplectic Euler, p⁺ = p + h (τ + ∂T/∂q(q, u⁺)), implicit in
-  // u⁺ through ∂T/∂q. Predicted by the semi-implicit step in velocities
-  // (O(h²) from it), then corrected by fixed-point passes; where they do
-  // not contract (a fast or long, light chain), the prediction stands.
+  // The semi-implicit step in velocities, u⁺ = u + h A⁻¹ (τ − c(q, u) − D u):
+  // each integrator's first guess.
   Eigen::VectorXd& predicted = ws.predicted;
   biasForces(model, kin, Vec3::Zero(), {}, true, ws.dynamics, ws.bias);
   predicted = h * (force - ws.bias);
   for (int i = 1; i <= nj; ++i) predicted(model.dofOf(i)) -= h * model.links[i].damping * u(model.dofOf(i));
   llt.solveInPlace(predicted);
   predicted += u;
-  Eigen::VectorXd& u_next = ws.next;
-  u_next = predicted;
-  Eigen::VectorXd& corrected = ws.corrected;
-  double last_change = std::numeric_limits<double>::infinity();
-  bool converged = false;
-  const int passes = predict_only > 0 ? 0 : kCorrectorPasses;
-  for (int pass = 0; pass < passes && !converged; ++pass) {
-    setTwists(model, u_next, kin);
-    kineticEnergyGradient(model, kin, ws.dynamics, ws.gradient);
-    rhs.tail(nj) = p_joints + h * (force.tail(nj) + ws.gradient.tail(nj));
-    corrected = rhs;
-    llt.solveInPlace(corrected);
-    const double change = (corrected - u_next).cwiseAbs().maxCoeff();
-    const double scale = 1.0 + corrected.cwiseAbs().maxCoeff();
-    if (!(change <= kCorrectorContraction * last_change)) {
-      converged = last_change <= kCorrectorRounding * scale;
-      break;
-    }
-    u_next.swap(corrected);
-    last_change = change;
-    converged = change <= kCorrectorTolerance * scale;
-  }
-  if (predict_only > 0) {
-    --predict_only;
-  } else if (!converged) {
-    predict_only = kPredictOnlySteps;
-  }
-  if (!converged) {
-    // The prediction, its base twist put right so that the base's rows
-    // still hold the whole momentum exactly (a 6 × 6 solve).
-    u_next = predicted;
+  const bool converged = integrator == ArticulationIntegrator::kVerlet
+                             ? verletPasses(model, loads, h, !carriedStillHolds(state), ws)
+                             : symplecticPasses(model, h, ws);
+  if (!converged) ws.next = predicted;
+  if (integrator == ArticulationIntegrator::kVerlet || !converged) {
+    // The base twist put right so that the base's rows hold the whole
+    // momentum exactly (a 6 × 6 solve).
+    Eigen::VectorXd& u_next = ws.next;
     if (base) {
-      const Vec6 joints_part = A.bottomLeftCorner(nj, 6).transpose() * predicted.tail(nj);
+      const Vec6 joints_part = A.bottomLeftCorner(nj, 6).transpose() * u_next.tail(nj);
       u_next.head<6>() = A.topLeftCorner<6, 6>().llt().solve(rhs.head<6>() - joints_part);
     }
     rhs.tail(nj).noalias() = A.bottomRows(nj) * u_next;

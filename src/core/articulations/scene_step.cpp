@@ -46,7 +46,7 @@ void predictRobot(const World& world, std::size_t r, const ArticulationLoads& lo
     placeLinks(world, r, state, ws);
     return;
   }
-  detail::predictArticulation(m, rs, loads, world.model().gravity(), h, rw);
+  detail::predictArticulation(m, rs, loads, world.model().gravity(), h, world.model().articulationIntegrator(), rw);
   setTwists(m, rw.next, rw.kin);
   const SceneRobot& robot = world.robots()[r];
   detail::setLinkStates(world.model(), robot.link, rw.kin, static_cast<std::size_t>(robot.first_body),

@@ -114,6 +114,7 @@ Model::Model(const ModelSpec& spec)
       gravity_W_(spec.gravity_W),
       damping_(spec.damping),
       gyroscopic_(spec.gyroscopic),
+      articulation_integrator_(spec.articulation_integrator),
       scene_(spec.scene),
       contact_(spec.contact),
       sleep_(spec.sleep),
@@ -226,6 +227,7 @@ Model Model::retuned(const Tuning& t) const {
   ModelSpec spec;  // the settings in force, with the tuning's
   spec.dt = dt_;
   spec.gyroscopic = gyroscopic_;
+  spec.articulation_integrator = articulation_integrator_;
   spec.contact = contact_;
   spec.sleep = sleep_;
   spec.solver = solver_;

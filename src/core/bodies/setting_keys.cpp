@@ -66,6 +66,7 @@ std::vector<SettingKey> makeKeys() {
       number("dt", "s", ranges::kMinDt, ranges::kMaxDt, [](ModelSpec& m) { return &m.dt; }),
       gravity,
       flag("gyroscopic", [](ModelSpec& m) { return &m.gyroscopic; }),
+      choice("articulation_integrator", "verlet | symplectic_euler"),
       number("damping.linear", "1/s", 0, ranges::kMaxDecayRate, [](ModelSpec& m) { return &m.damping.linear; }),
       number("damping.angular", "1/s", 0, ranges::kMaxDecayRate, [](ModelSpec& m) { return &m.damping.angular; }),
       number("damping.linear_drag", "N*s/m", 0, kInf, [](ModelSpec& m) { return &m.damping.linear_drag; }),

@@ -118,7 +118,8 @@ TEST(JointControllers, EffortsStayWithinTheLimit) {
 
 // A wheel about z (gravity has no torque about it), inertia I, under a
 // velocity controller with gain p only: v_{n+1} = v_n + h p (ω − v_n) / I,
-// so v_n = ω (1 − (1 − h p / I)^n).
+// from v_1 = h p ω / (2 I) (the first step's velocity is at its middle,
+// §11.5), so v_n = ω (1 − (1 − h p / (2 I)) (1 − h p / I)^(n − 1)).
 TEST(JointControllers, VelocityPidSpinsAWheelUpAsTheFirstOrderLaw) {
   ArticulationModel model = test::oneJoint(JointType::Continuous, "wheel", "axle", Vec3::Zero(), Vec3::UnitZ());
   const double I = 0.02, p = 0.5, omega = 3.0;
@@ -135,7 +136,7 @@ TEST(JointControllers, VelocityPidSpinsAWheelUpAsTheFirstOrderLaw) {
   for (int n = 1; n <= 200; ++n) {
     ctl.efforts(s, n * kH, kH, loads.effort);
     run.step(loads);
-    ASSERT_NEAR(s.v(0), omega * (1.0 - std::pow(1.0 - kH * p / I, n)), 1e-12) << n;
+    ASSERT_NEAR(s.v(0), omega * (1.0 - (1.0 - 0.5 * kH * p / I) * std::pow(1.0 - kH * p / I, n - 1)), 1e-12) << n;
   }
 }
 

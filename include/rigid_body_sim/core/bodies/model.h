@@ -53,6 +53,8 @@ struct ModelSpec {
   /// integrates ω_{n+1} = ω_n + Δt I⁻¹ τ alone (docs/physics.md §5.6), which is only
   /// right for bodies with isotropic inertia (spheres, cubes).
   bool gyroscopic = true;
+  /// The articulations' integrator (§11.5).
+  ArticulationIntegrator articulation_integrator = ArticulationIntegrator::kVerlet;
   /// Static geometry the bodies collide with; empty means no contacts.
   /// (The config's default is the ground plane z = 0.)
   std::vector<Sdf> scene;
@@ -182,6 +184,7 @@ class Model {
   const Vec3& gravity() const { return gravity_W_; }
   const Damping& damping() const { return damping_; }
   bool gyroscopic() const { return gyroscopic_; }
+  ArticulationIntegrator articulationIntegrator() const { return articulation_integrator_; }
   const std::vector<Sdf>& scene() const { return scene_; }
   const ContactSettings& contact() const { return contact_; }
   const SleepSettings& sleep() const { return sleep_; }
@@ -242,6 +245,7 @@ class Model {
   Vec3 gravity_W_;
   Damping damping_;
   bool gyroscopic_;
+  ArticulationIntegrator articulation_integrator_;
   std::vector<Sdf> scene_;
   ContactSettings contact_;
   SleepSettings sleep_;

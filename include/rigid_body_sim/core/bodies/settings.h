@@ -60,6 +60,17 @@ inline double combine(CombineRule rule, double a, double b) {
   return a;
 }
 
+/// How an articulation's joints and floating base are integrated
+/// (docs/physics.md §11.5).
+enum class ArticulationIntegrator {
+  /// Second order: velocity Verlet, its velocity the step's (at the middle
+  /// of the step), the Coriolis terms at the velocity of the step's start.
+  kVerlet,
+  /// First order, symplectic: Euler on the joints' momenta, implicit in
+  /// the velocity through ∂T/∂q (this project's step before the Verlet one).
+  kSymplecticEuler,
+};
+
 struct ContactSettings {
   ContactMethod method = ContactMethod::kImpulse;
   /// The scene's surface, and every body's without its own (BodySpec).
