@@ -46,6 +46,7 @@ class BaseController : public Node {
         "/odom", 1000, [this](const nav_msgs::Odometry::ConstPtr& m) { noisy_.push_back(*m); });
     cmd_vel_ = nh_.advertise<geometry_msgs::Twist>("/base_controller/cmd_vel", 10);
     ASSERT_TRUE(spinUntil([&] { return !odom_.empty() && !truth_.empty(); }, 30.0));
+    ASSERT_TRUE(spinUntil([&] { return cmd_vel_.getNumSubscribers() > 0; }, 30.0));  // the controller listens
   }
 
   /// Sends (v, ω) every 20 ms of wall time (the timeout is 0.5 s of sim time at 4×) for `seconds` of sim time.

@@ -195,6 +195,7 @@ TEST(RobotBase, ItsCmdVelDrivesTheBaseAsABodysDrivesTheBody) {
       "/sim_node/body_states", 10, [&](const rigid_body_sim::BodyStates::ConstPtr& m) { states = *m; });
   ros::Publisher cmd_vel = nh.advertise<geometry_msgs::Twist>("/cmd_vel", 10);
   ASSERT_TRUE(spinUntil([&] { return !imu.empty() && !states.names.empty(); }, 30.0));
+  ASSERT_TRUE(spinUntil([&] { return cmd_vel.getNumSubscribers() > 0; }, 30.0));  // the drive listens
   geometry_msgs::Twist forward;
   forward.linear.x = 0.2;
   const double until = imu.back().header.stamp.toSec() + 1.5;
