@@ -119,6 +119,7 @@ struct ArticulationState {
     Pose X_WB;
     Vec6 V_B = Vec6::Zero();
     int predict_only = 0;  ///< steps left that skip the corrector, after one where it did not contract
+    Eigen::VectorXd gain;  ///< Verlet: what the dynamics alone changed the velocity by in the last step
   } carried;
 };
 

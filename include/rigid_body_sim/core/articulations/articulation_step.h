@@ -35,6 +35,7 @@ struct ArticulationWorkspace {
   Eigen::LLT<Eigen::MatrixXd> llt;
   Eigen::VectorXd u, p, force, bias, predicted, next, corrected, rhs, gradient, lift;
   Eigen::VectorXd before, mid;              ///< the Verlet step's ū of the last step, and ½ (ū + ū⁺)
+  Eigen::VectorXd gain;                     ///< the Verlet step's ū⁺ − ū by the dynamics alone (no rows)
   std::vector<Vec6> wrench_L;               ///< the loads' wrenches and impulses / h together
   Eigen::VectorXd row_impulse, row_pseudo;  ///< its part of the solve's impulse and pseudo velocity
   ArticulationState start;                  ///< where the step began, for the guard
