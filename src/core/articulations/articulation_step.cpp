@@ -35,6 +35,9 @@ constexpr int kPredictOnlySteps = 3;
 /// 4.4e-4 m g l over 200 s), one holds it (2.4e-5), three reach the
 /// symmetric solution (4.6e-6) at half again the cost.
 constexpr int kVerletPasses = 1;
+/// A floating base's Verlet twist: rounds to find the middle of the move.
+constexpr int kMiddleRounds = 8;
+constexpr double kMiddleTolerance = 1e-15;
 
 bool samePose(const Pose& a, const Pose& b) {
   return a.translation == b.translation && a.rotation.coeffs() == b.rotation.coeffs();
@@ -184,6 +187,32 @@ bool verletPasses(const ArticulationModel& model, const ArticulationLoads& loads
   return true;
 }
 
+/// Verlet's floating base (§11.5): its twist such that the step's velocity
+/// carries the whole momentum H_W (the step's, at its middle) where it
+/// acts, at the middle of the step's move: the joints half way, the base
+/// turned and moved by half the step at that twist. The middle depends on
+/// the twist a little: rounds until the twist stays put to rounding (at
+/// most kMiddleRounds).
+void middleMomentum(const ArticulationModel& model, const ArticulationState& state, double h,
+                    ArticulationWorkspace& ws) {
+  const int nj = model.jointCount();
+  Eigen::VectorXd& u_next = ws.next;
+  ArticulationState& middle = ws.middle;
+  middle = state;
+  for (int i = 1; i <= nj; ++i) middle.q(i - 1) = state.q(i - 1) + 0.5 * h * u_next(model.dofOf(i));
+  for (int round = 0; round < kMiddleRounds; ++round) {
+    middle.X_WB = advanceBase(state.X_WB, u_next.head<6>(), 0.5 * h);
+    kinematics(model, middle, ws.middle_kin);
+    massMatrix(model, ws.middle_kin, ws.dynamics, ws.middle_M);
+    const Vec6 H_B = ws.middle_kin.X_WL[0].forceToChild(ws.H_W);
+    const Vec6 joints_part = ws.middle_M.bottomLeftCorner(nj, 6).transpose() * u_next.tail(nj);
+    const Vec6 twist = ws.middle_M.topLeftCorner<6, 6>().llt().solve(H_B - joints_part);
+    const double change = (twist - u_next.head<6>()).cwiseAbs().maxCoeff();
+    u_next.head<6>() = twist;
+    if (change <= kMiddleTolerance * (1.0 + twist.cwiseAbs().maxCoeff())) break;
+  }
+}
+
 }  // namespace
 
 namespace detail {
@@ -241,7 +270,19 @@ void predictArticulation(const ArticulationModel& model, const ArticulationState
   // loads on it, exactly; its rows of M u⁺ are that, in the base's axes now.
   Eigen::VectorXd& rhs = ws.rhs;
   rhs.resize(model.dofCount());
+  const bool fresh = !carriedStillHolds(state);
   if (base) {
+    if (integrator == ArticulationIntegrator::kVerlet && fresh) {
+      // Verlet's momentum is the step's, at its middle: a state the caller
+      // set has its momentum now, half a step after the last step's middle
+      // (its loads without this step's impulses, as for the velocity).
+      Vec6 load = force.head<6>();
+      if (!loads.impulse_L.empty()) {
+        biasForces(model, kin, Vec3::Zero(), loads.impulse_L, false, ws.dynamics, ws.gradient);
+        load += ws.gradient.head<6>() / h;  // the rest forces carry the wrenches' sign flipped
+      }
+      H_W -= 0.5 * h * kin.X_WL[0].forceToParent(load);
+    }
     H_W += h * kin.X_WL[0].forceToParent(force.head<6>());
     rhs.head<6>() = kin.X_WL[0].forceToChild(H_W);
   }
@@ -249,7 +290,6 @@ void predictArticulation(const ArticulationModel& model, const ArticulationState
   // each integrator's first guess. Verlet's, carried on, takes c at the
   // step's start instead, u + ½ (the last step's gain): O(h²) from its
   // solution, which makes it second order without a pass.
-  const bool fresh = !carriedStillHolds(state);
   const bool extrapolated =
       integrator == ArticulationIntegrator::kVerlet && !fresh && state.carried.gain.size() == u.size();
   if (extrapolated) {
@@ -265,7 +305,10 @@ void predictArticulation(const ArticulationModel& model, const ArticulationState
   const bool converged = integrator == ArticulationIntegrator::kVerlet ? verletPasses(model, loads, h, fresh, ws)
                                                                        : symplecticPasses(model, h, ws);
   if (!converged) ws.next = predicted;
-  if (integrator == ArticulationIntegrator::kVerlet || !converged) {
+  if (integrator == ArticulationIntegrator::kVerlet) {
+    if (base) middleMomentum(model, state, h, ws);
+    rhs.tail(nj).noalias() = A.bottomRows(nj) * ws.next;
+  } else if (!converged) {
     // The base twist put right so that the base's rows hold the whole
     // momentum exactly (a 6 × 6 solve).
     Eigen::VectorXd& u_next = ws.next;

@@ -34,8 +34,11 @@ struct ArticulationWorkspace {
   Eigen::MatrixXd A;
   Eigen::LLT<Eigen::MatrixXd> llt;
   Eigen::VectorXd u, p, force, bias, predicted, next, corrected, rhs, gradient, lift;
-  Eigen::VectorXd before, mid;              ///< the Verlet step's ū of the last step, and ½ (ū + ū⁺)
-  Eigen::VectorXd gain;                     ///< the Verlet step's ū⁺ − ū by the dynamics alone (no rows)
+  Eigen::VectorXd before, mid;  ///< the Verlet step's ū of the last step, and ½ (ū + ū⁺)
+  Eigen::VectorXd gain;         ///< the Verlet step's ū⁺ − ū by the dynamics alone (no rows)
+  ArticulationState middle;     ///< a floating base's Verlet step: the middle of its move
+  ArticulationKinematics middle_kin;
+  Eigen::MatrixXd middle_M;
   std::vector<Vec6> wrench_L;               ///< the loads' wrenches and impulses / h together
   Eigen::VectorXd row_impulse, row_pseudo;  ///< its part of the solve's impulse and pseudo velocity
   ArticulationState start;                  ///< where the step began, for the guard
