@@ -4,6 +4,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/articulations/articulation.cpp
   ${RBS_SOURCE_ROOT}/src/core/articulations/articulation_contacts.cpp
   ${RBS_SOURCE_ROOT}/src/core/articulations/articulation_dynamics.cpp
+  ${RBS_SOURCE_ROOT}/src/core/articulations/articulation_integrators.cpp
   ${RBS_SOURCE_ROOT}/src/core/articulations/articulation_step.cpp
   ${RBS_SOURCE_ROOT}/src/core/step/barrier.cpp
   ${RBS_SOURCE_ROOT}/src/core/bodies/body_geometry.cpp
