@@ -124,6 +124,7 @@ void middleMomentum(const ArticulationModel& model, const ArticulationState& sta
   ArticulationState& middle = ws.middle;
   middle = state;
   for (int i = 1; i <= nj; ++i) middle.q(i - 1) = state.q(i - 1) + 0.5 * h * u_next(model.dofOf(i));
+  double last_change = std::numeric_limits<double>::infinity();
   for (int round = 0; round < kMiddleRounds; ++round) {
     middle.X_WB = advanceBase(state.X_WB, u_next.head<6>(), 0.5 * h);
     kinematics(model, middle, ws.middle_kin);
@@ -133,7 +134,9 @@ void middleMomentum(const ArticulationModel& model, const ArticulationState& sta
     const Vec6 twist = ws.middle_M.topLeftCorner<6, 6>().llt().solve(H_B - joints_part);
     const double change = (twist - u_next.head<6>()).cwiseAbs().maxCoeff();
     u_next.head<6>() = twist;
-    if (change <= kMiddleTolerance * (1.0 + twist.cwiseAbs().maxCoeff())) break;
+    // Done at the tolerance, or where the rounds stall at rounding.
+    if (change <= kMiddleTolerance * (1.0 + twist.cwiseAbs().maxCoeff()) || change >= last_change) break;
+    last_change = change;
   }
 }
 

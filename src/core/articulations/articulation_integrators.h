@@ -30,8 +30,8 @@ bool verletPasses(const ArticulationModel& model, const ArticulationLoads& loads
 /// carries the whole momentum H_W (the step's, at its middle) where it
 /// acts, at the middle of the step's move: the joints half way, the base
 /// turned and moved by half the step at that twist. The middle depends on
-/// the twist a little: rounds until the twist stays put to rounding (at
-/// most kMiddleRounds).
+/// the twist a little: rounds until the twist stays put (to 1e-15, or
+/// where it stops shrinking at rounding; at most kMiddleRounds).
 void middleMomentum(const ArticulationModel& model, const ArticulationState& state, double h,
                     ArticulationWorkspace& ws);
 
