@@ -67,6 +67,7 @@ set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/transmissions.cpp
   ${RBS_SOURCE_ROOT}/src/io/mesh_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/scene_config.cpp
+  ${RBS_SOURCE_ROOT}/src/io/setting_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/device_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/controller_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/controllers.cpp
