@@ -43,17 +43,26 @@ void kinematics(const ArticulationModel& model, const ArticulationState& state, 
   kin.V_L.resize(n);
   kin.S_L.resize(n);
   kin.I_L.resize(n);
+  kin.X_BL.resize(n);
+  kin.S_B.resize(n);
+  kin.I_B.resize(n);
   for (int i = 0; i < n; ++i) kin.I_L[i] = SpatialInertia::of(model.links[i].mass);
   kin.X_PL[0] = Placement::of(state.X_WB);
   kin.X_WL[0] = kin.X_PL[0];
   kin.V_L[0] = model.fixed_base ? Vec6::Zero() : state.V_B;
   kin.S_L[0] = Vec6::Zero();
+  kin.X_BL[0] = Placement();
+  kin.S_B[0] = Vec6::Zero();
+  kin.I_B[0] = kin.I_L[0];
   for (int i = 1; i < n; ++i) {
     const ArticulatedLink& link = model.links[i];
     kin.X_PL[i] = jointPlacement(link, state.q(i - 1));
     kin.X_WL[i] = kin.X_WL[link.parent] * kin.X_PL[i];
     kin.S_L[i] = motionAxis(link);
     kin.V_L[i] = kin.X_PL[i].motionToChild(kin.V_L[link.parent]) + kin.S_L[i] * state.v(i - 1);
+    kin.X_BL[i] = kin.X_BL[link.parent] * kin.X_PL[i];
+    kin.S_B[i] = kin.X_BL[i].motionToParent(kin.S_L[i]);
+    kin.I_B[i] = kin.I_L[i].toParent(kin.X_BL[i]);
   }
 }
 
@@ -94,27 +103,24 @@ Eigen::MatrixXd massMatrix(const ArticulationModel& model, const ArticulationKin
 
 void massMatrix(const ArticulationModel& model, const ArticulationKinematics& kin, DynamicsScratch& scratch,
                 Eigen::MatrixXd& M) {
+  // In the base's frame B, where a subtree's inertia is the plain sum of
+  // its links' and M's entries are dot products (§11.3).
   const int n = static_cast<int>(model.links.size());
   std::vector<SpatialInertia>& Ic = scratch.composite;
-  Ic.assign(kin.I_L.begin(), kin.I_L.end());
-  // Composite inertias, leaves first: I^c_p += Xᵀ I^c_i X (X: parent to child).
-  for (int i = n - 1; i > 0; --i) Ic[model.links[i].parent] += Ic[i].toParent(kin.X_PL[i]);
+  Ic.assign(kin.I_B.begin(), kin.I_B.end());
+  for (int i = n - 1; i > 0; --i) Ic[model.links[i].parent] += Ic[i];
   M.setZero(model.dofCount(), model.dofCount());
   if (!model.fixed_base) M.topLeftCorner<6, 6>() = Ic[0].matrix();
   for (int i = 1; i < n; ++i) {
-    // The force that accelerates joint i's subtree at unit rate, carried
-    // towards the root: its projection on each ancestor's axis is M's entry.
-    Vec6 F = Ic[i] * kin.S_L[i];
+    // The force that accelerates joint i's subtree at unit rate: its
+    // projection on each ancestor's axis is M's entry.
+    const Vec6 F = Ic[i] * kin.S_B[i];
     const int di = model.dofOf(i);
-    M(di, di) = kin.S_L[i].dot(F);
-    int j = i;
-    while (model.links[j].parent > 0) {
-      F = kin.X_PL[j].forceToParent(F);
-      j = model.links[j].parent;
-      M(di, model.dofOf(j)) = M(model.dofOf(j), di) = kin.S_L[j].dot(F);
+    M(di, di) = kin.S_B[i].dot(F);
+    for (int j = model.links[i].parent; j > 0; j = model.links[j].parent) {
+      M(di, model.dofOf(j)) = M(model.dofOf(j), di) = kin.S_B[j].dot(F);
     }
     if (!model.fixed_base) {
-      F = kin.X_PL[j].forceToParent(F);
       M.block<6, 1>(0, di) = F;
       M.block<1, 6>(di, 0) = F.transpose();
     }
@@ -189,6 +195,53 @@ Eigen::VectorXd restForces(const ArticulationModel& model, const ArticulationKin
 void biasForces(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
                 const std::vector<Vec6>& wrench_L, bool moving, DynamicsScratch& scratch, Eigen::VectorXd& out) {
   newtonEuler(model, kin, nullptr, g_W, wrench_L, moving, scratch, out);
+}
+
+void biasForcesAt(const ArticulationModel& model, const ArticulationKinematics& kin, const Eigen::VectorXd& u,
+                  const Vec3& g_W, const std::vector<Vec6>& wrench_L, DynamicsScratch& scratch, Eigen::VectorXd& out) {
+  // In the base's frame B (§11.4): a link's twist is its parent's plus its
+  // joint's, and a subtree's force the plain sum of its links'.
+  const int n = static_cast<int>(model.links.size());
+  std::vector<Vec6>& v = scratch.v;
+  std::vector<Vec6>& a = scratch.a;
+  std::vector<Vec6>& f = scratch.f;
+  v.resize(n);
+  a.resize(n);
+  f.resize(n);
+  v[0] = model.fixed_base ? Vec6::Zero() : Vec6(u.head<6>());
+  a[0].head<3>().setZero();
+  a[0].tail<3>() = -(kin.X_WL[0].R_PC.transpose() * g_W);  // gravity as the base's acceleration upwards
+  for (int i = 0; i < n; ++i) {
+    const SpatialInertia& I = kin.I_B[i];
+    if (i > 0) {
+      const int parent = model.links[i].parent;
+      const Vec6 joint = kin.S_B[i] * u(model.dofOf(i));  // Sᵢ vᵢ
+      v[i] = v[parent] + joint;
+      a[i] = a[parent] + crossMotion(v[i], joint);
+    }
+    f[i] = I * a[i] + crossForce(v[i], I * v[i]);
+    if (!wrench_L.empty()) f[i] -= kin.X_BL[i].forceToParent(wrench_L[i]);
+  }
+  out.resize(model.dofCount());
+  for (int i = n - 1; i > 0; --i) {
+    out(model.dofOf(i)) = kin.S_B[i].dot(f[i]);
+    f[model.links[i].parent] += f[i];
+  }
+  if (!model.fixed_base) out.head<6>() = f[0];
+}
+
+Vec6 loadWrench_W(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
+                  const std::vector<Vec6>& wrench_L) {
+  Vec6 total = Vec6::Zero();
+  for (std::size_t i = 0; i < model.links.size(); ++i) {
+    const Placement& X = kin.X_WL[i];
+    const MassProperties& mp = model.links[i].mass;
+    const Vec3 weight = mp.mass * g_W;
+    total.head<3>() += (X.p_PC + X.R_PC * mp.p_FC).cross(weight);
+    total.tail<3>() += weight;
+    if (!wrench_L.empty()) total += X.forceToParent(wrench_L[i]);
+  }
+  return total;
 }
 
 Eigen::VectorXd forwardDynamics(const ArticulationModel& model, const ArticulationState& state,

@@ -69,16 +69,16 @@ bool symplecticPasses(const ArticulationModel& model, double h, ArticulationWork
   return converged;
 }
 
-bool verletPasses(const ArticulationModel& model, const ArticulationLoads& loads, double h, bool fresh,
-                  ArticulationWorkspace& ws) {
+bool verletPasses(const ArticulationModel& model, const ArticulationLoads& loads, const Vec3& g_W,
+                  const std::vector<Vec6>& wrench_L, double h, bool fresh, ArticulationWorkspace& ws) {
   const int nj = model.jointCount();
   Eigen::VectorXd& u_next = ws.next;
   Eigen::VectorXd& before = ws.before;
   Eigen::VectorXd& step = ws.corrected;
-  // What the velocity gains over the step but for the Coriolis terms: the
-  // loads and the damping at ū.
-  const auto gain = [&](const Eigen::VectorXd& coriolis, Eigen::VectorXd& out) {
-    out = h * (ws.force - coriolis);
+  // What the velocity gains over the step: the efforts, the bias (gravity,
+  // the wrenches and the Coriolis terms) and the damping at ū.
+  const auto gain = [&](const Eigen::VectorXd& bias, Eigen::VectorXd& out) {
+    out = h * (ws.force - bias);
     for (int i = 1; i <= nj; ++i) out(model.dofOf(i)) -= h * model.links[i].damping * before(model.dofOf(i));
     ws.llt.solveInPlace(out);
     out += before;
@@ -104,8 +104,7 @@ bool verletPasses(const ArticulationModel& model, const ArticulationLoads& loads
   double last_change = std::numeric_limits<double>::infinity();
   for (int pass = 0; pass < kVerletPasses; ++pass) {
     ws.mid = 0.5 * (before + u_next);
-    setTwists(model, ws.mid, ws.kin);
-    biasForces(model, ws.kin, Vec3::Zero(), {}, true, ws.dynamics, ws.bias);
+    biasForcesAt(model, ws.kin, ws.mid, g_W, wrench_L, ws.dynamics, ws.bias);
     gain(ws.bias, step);
     const double change = (step - u_next).cwiseAbs().maxCoeff();
     if (!(change < last_change)) break;  // growing: the passes diverge; the last stands

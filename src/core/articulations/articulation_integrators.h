@@ -17,14 +17,15 @@ namespace rigid_body_sim::core::detail {
 bool symplecticPasses(const ArticulationModel& model, double h, ArticulationWorkspace& ws);
 
 /// Velocity Verlet with the step's velocity ū (§11.5): A (ū⁺ − ū) =
-/// h (τ − c(q, ½ (ū + ū⁺)) − D ū), the Coriolis terms at the velocity of
+/// h (τ − c(q, ½ (ū + ū⁺)) − D ū), c with gravity g_W and the wrenches
+/// `wrench_L` (ws.force holds the efforts alone), the Coriolis terms at the velocity of
 /// the step's start, implicit in ū⁺; kVerletPasses fixed-point passes from
 /// the prediction (ws.predicted), stopped early when they grow. A state not
 /// carried from the last step has its velocity at this instant: its ū is
 /// half a step back, and the step is explicit. ws.gain is what the step
 /// changed ū by, for the next step's prediction.
-bool verletPasses(const ArticulationModel& model, const ArticulationLoads& loads, double h, bool fresh,
-                  ArticulationWorkspace& ws);
+bool verletPasses(const ArticulationModel& model, const ArticulationLoads& loads, const Vec3& g_W,
+                  const std::vector<Vec6>& wrench_L, double h, bool fresh, ArticulationWorkspace& ws);
 
 /// Verlet's floating base (§11.5): its twist such that the step's velocity
 /// carries the whole momentum H_W (the step's, at its middle) where it

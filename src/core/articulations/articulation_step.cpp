@@ -113,8 +113,15 @@ void predictArticulation(const ArticulationModel& model, const ArticulationState
     }
     wrench_L = &ws.wrench_L;
   }
-  biasForces(model, kin, g_W, *wrench_L, false, ws.dynamics, force);
-  force = -force;
+  // Verlet takes gravity and the wrenches in the bias's pass (below), each
+  // time it evaluates the bias; symplectic Euler here, once.
+  const bool verlet = integrator == ArticulationIntegrator::kVerlet;
+  if (verlet) {
+    force.setZero(model.dofCount());
+  } else {
+    biasForces(model, kin, g_W, *wrench_L, false, ws.dynamics, force);
+    force = -force;
+  }
   if (loads.effort.size() > 0) {
     for (int i = 1; i <= nj; ++i) {
       const double limit = model.links[i].limits.effort;
@@ -127,40 +134,40 @@ void predictArticulation(const ArticulationModel& model, const ArticulationState
   rhs.resize(model.dofCount());
   const bool fresh = !carriedStillHolds(state);
   if (base) {
-    if (integrator == ArticulationIntegrator::kVerlet && fresh) {
+    const Vec6 load_W = verlet ? loadWrench_W(model, kin, g_W, *wrench_L) : kin.X_WL[0].forceToParent(force.head<6>());
+    if (verlet && fresh) {
       // Verlet's momentum is the step's, at its middle: a state the caller
       // set has its momentum now, half a step after the last step's middle
       // (its loads without this step's impulses, as for the velocity).
-      Vec6 load = force.head<6>();
-      if (!loads.impulse_L.empty()) {
-        biasForces(model, kin, Vec3::Zero(), loads.impulse_L, false, ws.dynamics, ws.gradient);
-        load += ws.gradient.head<6>() / h;  // the rest forces carry the wrenches' sign flipped
-      }
-      H_W -= 0.5 * h * kin.X_WL[0].forceToParent(load);
+      H_W -= 0.5 * h * (loads.impulse_L.empty() ? load_W : loadWrench_W(model, kin, g_W, loads.wrench_L));
     }
-    H_W += h * kin.X_WL[0].forceToParent(force.head<6>());
+    H_W += h * load_W;
     rhs.head<6>() = kin.X_WL[0].forceToChild(H_W);
   }
   // The semi-implicit step in velocities, u⁺ = u + h A⁻¹ (τ − c(q, u) − D u):
   // each integrator's first guess. Verlet's, carried on, takes c at the
   // step's start instead, u + ½ (the last step's gain): O(h²) from its
   // solution, which makes it second order without a pass.
-  const bool extrapolated =
-      integrator == ArticulationIntegrator::kVerlet && !fresh && state.carried.gain.size() == u.size();
-  if (extrapolated) {
-    ws.mid = u + 0.5 * state.carried.gain;
-    setTwists(model, ws.mid, kin);
+  if (verlet) {
+    const bool extrapolated = !fresh && state.carried.gain.size() == u.size();
+    if (extrapolated) {
+      ws.mid = u + 0.5 * state.carried.gain;
+    } else {
+      ws.mid = u;
+    }
+    biasForcesAt(model, kin, ws.mid, g_W, *wrench_L, ws.dynamics, ws.bias);
+  } else {
+    biasForces(model, kin, Vec3::Zero(), {}, true, ws.dynamics, ws.bias);
   }
   Eigen::VectorXd& predicted = ws.predicted;
-  biasForces(model, kin, Vec3::Zero(), {}, true, ws.dynamics, ws.bias);
   predicted = h * (force - ws.bias);
   for (int i = 1; i <= nj; ++i) predicted(model.dofOf(i)) -= h * model.links[i].damping * u(model.dofOf(i));
   llt.solveInPlace(predicted);
   predicted += u;
-  const bool converged = integrator == ArticulationIntegrator::kVerlet ? verletPasses(model, loads, h, fresh, ws)
-                                                                       : symplecticPasses(model, h, ws);
+  const bool converged =
+      verlet ? verletPasses(model, loads, g_W, *wrench_L, h, fresh, ws) : symplecticPasses(model, h, ws);
   if (!converged) ws.next = predicted;
-  if (integrator == ArticulationIntegrator::kVerlet) {
+  if (verlet) {
     if (base) middleMomentum(model, state, h, ws);
     rhs.tail(nj).noalias() = A.bottomRows(nj) * ws.next;
   } else if (!converged) {

@@ -47,8 +47,9 @@ void predictRobot(const World& world, std::size_t r, const ArticulationLoads& lo
     return;
   }
   detail::predictArticulation(m, rs, loads, world.model().gravity(), h, world.model().articulationIntegrator(), rw);
-  setTwists(m, rw.next, rw.kin);
   const SceneRobot& robot = world.robots()[r];
+  if (robot.link.empty()) return;  // no link is a body: none to place
+  setTwists(m, rw.next, rw.kin);
   detail::setLinkStates(world.model(), robot.link, rw.kin, static_cast<std::size_t>(robot.first_body),
                         state.bodies.bodies);
 }

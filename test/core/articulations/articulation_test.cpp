@@ -101,6 +101,37 @@ TEST(ArticulationDynamics, MassMatrixColumnsAreInverseDynamicsDifferences) {
   }
 }
 
+// The bias in the base's frame (biasForcesAt, the Verlet step's) is the bias
+// in each link's own frame, twists, gravity and wrenches alike; the loads'
+// whole wrench is the base rows of the rest forces, carried to W.
+TEST(ArticulationDynamics, TheBiasInTheBaseFrameIsTheBiasInTheLinksFrames) {
+  std::mt19937 rng(23);
+  for (int trial = 0; trial < 40; ++trial) {
+    const ArticulationModel model = randomTree(rng, 1 + trial % 8, trial % 2 == 0, trial % 4 < 2);
+    ArticulationState state = randomState(rng, model);
+    std::vector<Vec6> wrench_L(model.links.size());
+    for (Vec6& w : wrench_L) w << test::randomVec(rng, 3.0), test::randomVec(rng, 3.0);
+    ArticulationKinematics kin = kinematics(model, state);
+    const Eigen::VectorXd u = generalizedVelocity(model, state);
+    const Eigen::VectorXd want = biasForces(model, kin, kGravity, wrench_L);
+    DynamicsScratch scratch;
+    Eigen::VectorXd got;
+    biasForcesAt(model, kin, u, kGravity, wrench_L, scratch, got);
+    EXPECT_LT(relativeError(got, want), 1e-12) << "trial " << trial;
+    // At another velocity than the state's: the kinematics' twists unused.
+    const Eigen::VectorXd other = Eigen::VectorXd::NullaryExpr(
+        model.dofCount(), [&] { return std::uniform_real_distribution<double>(-3.0, 3.0)(rng); });
+    biasForcesAt(model, kin, other, kGravity, {}, scratch, got);
+    setTwists(model, other, kin);
+    EXPECT_LT(relativeError(got, biasForces(model, kin, kGravity)), 1e-12) << "trial " << trial;
+    if (!model.fixed_base) {
+      const Vec6 rest_B = -restForces(model, kin, kGravity, wrench_L).head<6>();
+      const Vec6 want_W = kin.X_WL[0].forceToParent(rest_B);
+      EXPECT_LT(relativeError(loadWrench_W(model, kin, kGravity, wrench_L), want_W), 1e-12) << "trial " << trial;
+    }
+  }
+}
+
 // ∂T/∂q at held velocities, against central differences of T = ½ uᵀ M(q) u.
 TEST(ArticulationDynamics, KineticEnergyGradientIsTheDerivativeOfT) {
   std::mt19937 rng(13);

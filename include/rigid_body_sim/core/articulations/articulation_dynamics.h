@@ -18,6 +18,11 @@ struct ArticulationKinematics {
   std::vector<Vec6> V_L;            ///< each link's twist in W, expressed in its own axes
   std::vector<Vec6> S_L;            ///< each joint's motion axis in its link's axes (the base's unused)
   std::vector<SpatialInertia> I_L;  ///< each link's inertia about its origin, its axes
+  // The same in one frame for all, the base's B (§11.3): sums down and up
+  // the tree then need no transforms.
+  std::vector<Placement> X_BL;      ///< each link in the base's frame
+  std::vector<Vec6> S_B;            ///< each joint's motion axis in B (the base's unused)
+  std::vector<SpatialInertia> I_B;  ///< each link's inertia about B's origin, B's axes
 };
 
 /// The child link's placement in its parent at joint position q (§11.2):
@@ -32,7 +37,7 @@ void kinematics(const ArticulationModel& model, const ArticulationState& state, 
 /// Memory the in-place forms below reuse (results never depend on it).
 struct DynamicsScratch {
   std::vector<SpatialInertia> composite;
-  std::vector<Vec6> a, f;
+  std::vector<Vec6> a, f, v;
 };
 
 /// Sets the twists of `kin` for the generalized velocity u (its placements kept).
@@ -69,6 +74,18 @@ Eigen::VectorXd restForces(const ArticulationModel& model, const ArticulationKin
 /// biasForces (moving) or restForces (not) into `out`.
 void biasForces(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
                 const std::vector<Vec6>& wrench_L, bool moving, DynamicsScratch& scratch, Eigen::VectorXd& out);
+
+/// biasForces with gravity and the wrenches at the generalized velocity u
+/// instead of the twists of `kin` (whose placements and axes it takes, and
+/// whose twists it leaves): the twists are carried down the tree in the
+/// same Newton-Euler pass.
+void biasForcesAt(const ArticulationModel& model, const ArticulationKinematics& kin, const Eigen::VectorXd& u,
+                  const Vec3& g_W, const std::vector<Vec6>& wrench_L, DynamicsScratch& scratch, Eigen::VectorXd& out);
+
+/// The loads' whole wrench on the articulation: gravity on every link and
+/// `wrench_L` (as biasForces takes them), about W's origin in world axes.
+Vec6 loadWrench_W(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
+                  const std::vector<Vec6>& wrench_L);
 
 /// Forward dynamics: u̇ = M⁻¹ (τ − c).
 Eigen::VectorXd forwardDynamics(const ArticulationModel& model, const ArticulationState& state,

@@ -29,6 +29,13 @@ struct Placement {
     out.tail<3>() = R_PC.transpose() * (m_P.tail<3>() - p_PC.cross(m_P.head<3>()));
     return out;
   }
+  /// A motion vector given in C (about C's origin), re-expressed in P.
+  Vec6 motionToParent(const Vec6& m_C) const {
+    Vec6 out;
+    out.head<3>() = R_PC * m_C.head<3>();
+    out.tail<3>() = R_PC * m_C.tail<3>() + p_PC.cross(out.head<3>());
+    return out;
+  }
   /// A force vector given in C (moment about C's origin), re-expressed in P.
   Vec6 forceToParent(const Vec6& f_C) const {
     Vec6 out;
