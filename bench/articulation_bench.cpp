@@ -128,18 +128,19 @@ Engine ours(const ChainSpec& c) {
 }
 
 /// Our kernels on MuJoCo's algorithm, from the public dynamics API: the
-/// kinematics, M by composite rigid bodies, its Cholesky factor, the bias
-/// by recursive Newton-Euler, then v += h M⁻¹(−c) and q += h v. What a step
+/// kinematics, M by composite rigid bodies, its factor along the tree, the
+/// bias by recursive Newton-Euler, then v += h M⁻¹(−c) and q += h v. What a step
 /// of ours costs without the symplectic corrector's passes, the momenta it
 /// carries and the rows: the part of the step MuJoCo's Euler also does.
 Engine oursKernels(const ChainSpec& c) {
   return chainEngine(c, [](const ArticulationModel& m, ArticulationState& s, ArticulationWorkspace& ws, const Vec3& g) {
     kinematics(m, s, ws.kin);
     massMatrix(m, ws.kin, ws.dynamics, ws.A);
-    ws.llt.compute(ws.A);
-    biasForces(m, ws.kin, g, {}, true, ws.dynamics, ws.bias);
+    ws.factor.compute(ws.A, m);
     ws.u = generalizedVelocity(m, s);
-    ws.u.noalias() -= kDt * ws.llt.solve(ws.bias);
+    biasForcesAt(m, ws.kin, ws.u, g, {}, ws.dynamics, ws.bias);
+    ws.factor.solveInPlace(ws.bias);
+    ws.u -= kDt * ws.bias;
     setGeneralizedVelocity(m, ws.u, s);
     s.q += kDt * s.v;
   });

@@ -40,6 +40,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/articulations/scene_sleep.cpp
   ${RBS_SOURCE_ROOT}/src/core/articulations/scene_solve.cpp
   ${RBS_SOURCE_ROOT}/src/core/articulations/scene_step.cpp
+  ${RBS_SOURCE_ROOT}/src/core/articulations/tree_factor.cpp
   ${RBS_SOURCE_ROOT}/src/core/bodies/sdf.cpp
   ${RBS_SOURCE_ROOT}/src/core/bodies/sdf_grid.cpp
   ${RBS_SOURCE_ROOT}/src/core/bodies/sdf_surface.cpp

@@ -50,7 +50,7 @@ bool symplecticPasses(const ArticulationModel& model, double h, ArticulationWork
     kineticEnergyGradient(model, ws.kin, ws.dynamics, ws.gradient);
     rhs.tail(nj) = ws.p + h * (ws.force.tail(nj) + ws.gradient.tail(nj));
     corrected = rhs;
-    ws.llt.solveInPlace(corrected);
+    ws.factor.solveInPlace(corrected);
     const double change = (corrected - u_next).cwiseAbs().maxCoeff();
     const double scale = 1.0 + corrected.cwiseAbs().maxCoeff();
     if (!(change <= kCorrectorContraction * last_change)) {
@@ -80,7 +80,7 @@ bool verletPasses(const ArticulationModel& model, const ArticulationLoads& loads
   const auto gain = [&](const Eigen::VectorXd& bias, Eigen::VectorXd& out) {
     out = h * (ws.force - bias);
     for (int i = 1; i <= nj; ++i) out(model.dofOf(i)) -= h * model.links[i].damping * before(model.dofOf(i));
-    ws.llt.solveInPlace(out);
+    ws.factor.solveInPlace(out);
     out += before;
   };
   if (fresh) {
@@ -93,7 +93,7 @@ bool verletPasses(const ArticulationModel& model, const ArticulationLoads& loads
       biasForces(model, ws.kin, Vec3::Zero(), loads.impulse_L, false, ws.dynamics, ws.gradient);
       half += 0.5 * ws.gradient;  // the rest forces carry the wrenches' sign flipped
     }
-    ws.llt.solveInPlace(half);
+    ws.factor.solveInPlace(half);
     before -= half;
     gain(ws.bias, u_next);
     ws.gain = u_next - before;

@@ -11,7 +11,7 @@
 namespace rigid_body_sim::core::detail {
 
 /// Everything before the rows: the kinematics at the start (ws.kin), the
-/// factored A = M + h D (ws.llt), the velocity the step gives without
+/// factored A = M + h D (ws.factor), the velocity the step gives without
 /// rows (ws.next) by `integrator`, the joints' momenta it carries (ws.rhs)
 /// and the floating base's whole momentum (ws.H_W).
 void predictArticulation(const ArticulationModel& model, const ArticulationState& state, const ArticulationLoads& loads,

@@ -83,13 +83,18 @@ void predictArticulation(const ArticulationModel& model, const ArticulationState
   massMatrix(model, kin, ws.dynamics, A);
   Eigen::VectorXd& u = ws.u;
   u = generalizedVelocity(model, state);
-  // The momenta at the start: carried from the last step, or from the velocities.
+  // The momenta at the start: carried from the last step, or from the
+  // velocities. Verlet carries the base's alone (H_W); symplectic Euler
+  // the joints' too.
+  const bool verlet = integrator == ArticulationIntegrator::kVerlet;
+  ws.carries_joint_momenta = !verlet;
+  const bool fresh = !(carriedStillHolds(state) && (verlet || state.carried.p.size() == nj));
   Eigen::VectorXd& p_joints = ws.p;
   Vec6& H_W = ws.H_W;
   H_W.setZero();
   int& predict_only = ws.predict_only;
   predict_only = 0;
-  if (carriedStillHolds(state)) {
+  if (!fresh) {
     p_joints = state.carried.p;
     H_W = state.carried.H_W;
     predict_only = state.carried.predict_only;
@@ -99,8 +104,7 @@ void predictArticulation(const ArticulationModel& model, const ArticulationState
     if (base) H_W = kin.X_WL[0].forceToParent(ws.rhs.head<6>());
   }
   for (int i = 1; i <= nj; ++i) A(model.dofOf(i), model.dofOf(i)) += h * model.links[i].damping;
-  ws.llt.compute(A);
-  const Eigen::LLT<Eigen::MatrixXd>& llt = ws.llt;
+  ws.factor.compute(A, model);
   // The generalized forces at rest: gravity, the wrenches on the links and
   // the efforts, each clipped to its joint's limit.
   Eigen::VectorXd& force = ws.force;
@@ -115,7 +119,6 @@ void predictArticulation(const ArticulationModel& model, const ArticulationState
   }
   // Verlet takes gravity and the wrenches in the bias's pass (below), each
   // time it evaluates the bias; symplectic Euler here, once.
-  const bool verlet = integrator == ArticulationIntegrator::kVerlet;
   if (verlet) {
     force.setZero(model.dofCount());
   } else {
@@ -132,7 +135,6 @@ void predictArticulation(const ArticulationModel& model, const ArticulationState
   // loads on it, exactly; its rows of M u⁺ are that, in the base's axes now.
   Eigen::VectorXd& rhs = ws.rhs;
   rhs.resize(model.dofCount());
-  const bool fresh = !carriedStillHolds(state);
   if (base) {
     const Vec6 load_W = verlet ? loadWrench_W(model, kin, g_W, *wrench_L) : kin.X_WL[0].forceToParent(force.head<6>());
     if (verlet && fresh) {
@@ -162,14 +164,13 @@ void predictArticulation(const ArticulationModel& model, const ArticulationState
   Eigen::VectorXd& predicted = ws.predicted;
   predicted = h * (force - ws.bias);
   for (int i = 1; i <= nj; ++i) predicted(model.dofOf(i)) -= h * model.links[i].damping * u(model.dofOf(i));
-  llt.solveInPlace(predicted);
+  ws.factor.solveInPlace(predicted);
   predicted += u;
   const bool converged =
       verlet ? verletPasses(model, loads, g_W, *wrench_L, h, fresh, ws) : symplecticPasses(model, h, ws);
   if (!converged) ws.next = predicted;
   if (verlet) {
     if (base) middleMomentum(model, state, h, ws);
-    rhs.tail(nj).noalias() = A.bottomRows(nj) * ws.next;
   } else if (!converged) {
     // The base twist put right so that the base's rows hold the whole
     // momentum exactly (a 6 × 6 solve).
@@ -193,11 +194,11 @@ void finishArticulation(const ArticulationModel& model, const SpeedLimits& limit
   Vec6& H_W = ws.H_W;
   // The rows' impulses: the joints' act on the joints only, so the whole
   // articulation's momentum changes by the contacts' alone.
-  if (impulse != nullptr) {
-    rhs.tail(nj) += impulse->tail(nj);
-    if (base) H_W += kin.X_WL[0].forceToParent(impulse->head<6>());
+  if (impulse != nullptr && base) H_W += kin.X_WL[0].forceToParent(impulse->head<6>());
+  if (ws.carries_joint_momenta) {
+    if (impulse != nullptr) rhs.tail(nj) += impulse->tail(nj);
+    for (int i = 1; i <= nj; ++i) rhs(model.dofOf(i)) -= h * model.links[i].damping * u_next(model.dofOf(i));
   }
-  for (int i = 1; i <= nj; ++i) rhs(model.dofOf(i)) -= h * model.links[i].damping * u_next(model.dofOf(i));
   // Slowed to the limits, the velocities no longer carry the momenta: the
   // next step takes them from the velocities.
   const bool limited = limitSpeeds(model, limits, u_next);
@@ -227,7 +228,11 @@ void finishArticulation(const ArticulationModel& model, const SpeedLimits& limit
   }
   ArticulationState::Carried& c = state.carried;
   c.valid = !limited;
-  c.p = rhs.tail(nj);
+  if (ws.carries_joint_momenta) {
+    c.p = rhs.tail(nj);
+  } else {
+    c.p.resize(0);
+  }
   c.H_W = H_W;
   c.q = state.q;
   c.v = state.v;

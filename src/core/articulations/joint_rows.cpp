@@ -62,8 +62,8 @@ void buildJointRows(const ArticulationModel& model, const ArticulationState& sta
 }
 
 void respond(const CoordinateBlock& block, const Columns& J, Columns& response) {
-  if (block.llt != nullptr) {
-    response = block.llt->solve(J);
+  if (block.factor != nullptr) {
+    response = block.factor->solve(J);
     return;
   }
   response.resize(6, 3);
@@ -89,7 +89,7 @@ void solveRows(const SolverSettings& settings, const std::vector<CoordinateBlock
     Eigen::VectorXd J = Eigen::VectorXd::Zero(block.size);
     J(row.dof) = row.sign;
     if (row.other >= 0) J(row.other) += row.coefficient;
-    row.response = block.llt->solve(J);
+    row.response = block.factor->solve(J);
     row.mass = 1.0 / J.dot(row.response);
     row.impulse = 0.0;
   }

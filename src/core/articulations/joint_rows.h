@@ -14,6 +14,7 @@
 #include "rigid_body_sim/core/articulations/articulation.h"
 #include "rigid_body_sim/core/articulations/articulation_contacts.h"
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
+#include "rigid_body_sim/core/articulations/tree_factor.h"
 #include "rigid_body_sim/core/bodies/state.h"
 #include "rigid_body_sim/core/contacts/contact.h"
 #include "rigid_body_sim/core/step/workspace.h"
@@ -31,9 +32,9 @@ using Columns = Eigen::Matrix<double, Eigen::Dynamic, 3>;
 struct CoordinateBlock {
   int offset = 0;  ///< where the block starts in u
   int size = 0;
-  const Eigen::LLT<Eigen::MatrixXd>* llt = nullptr;  ///< a robot's factored A; null for a free body
-  double inv_mass = 0.0;                             ///< a free body's, 1/kg
-  Mat3 inv_inertia_W = Mat3::Zero();                 ///< a free body's, 1/(kg·m²)
+  const TreeFactor* factor = nullptr;  ///< a robot's factored A; null for a free body
+  double inv_mass = 0.0;               ///< a free body's, 1/kg
+  Mat3 inv_inertia_W = Mat3::Zero();   ///< a free body's, 1/(kg·m²)
 };
 
 /// A⁻¹ J for columns J over one block's coordinates.

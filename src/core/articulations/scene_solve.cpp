@@ -119,7 +119,7 @@ void solveRobotIslands(const World& world, WorldState& state, double h, WorldWor
   for (std::size_t r = 0; r < robots.size(); ++r) {
     const int n = robots[r].model.dofCount();
     if (n == 0 || state.robots[r].asleep) continue;  // a sleeping robot is ground
-    solve.blocks.push_back({offset, n, &ws.robots[r].llt});
+    solve.blocks.push_back({offset, n, &ws.robots[r].factor});
     solve.robot_offset[r] = offset;
     offset += n;
   }

@@ -269,6 +269,27 @@ TEST(ArticulationStep, DoublePendulumEnergyDoesNotDrift) {
 // A disc spinning on a vertical joint with damping b: each step multiplies
 // its speed by I/(I + h b) exactly (implicit), close to e^(−b t / I); any b
 // is stable and never reverses the spin.
+// Verlet carries no joint momenta: a state it stepped, stepped on by
+// symplectic Euler (the setting changed between steps), is taken afresh,
+// its momenta from its velocities, as a state the caller set.
+TEST(ArticulationStep, SymplecticEulerTakesAVerletStateAfresh) {
+  std::mt19937 rng(29);
+  const ArticulationModel model = randomTree(rng, 4, true, false);
+  ModelSpec euler;
+  euler.articulation_integrator = ArticulationIntegrator::kSymplecticEuler;
+  LoneRobot verlet(model, kGravity, 1e-3), carried(model, kGravity, 1e-3, {}, euler),
+      afresh(model, kGravity, 1e-3, {}, euler);
+  ArticulationState state = restState(model);
+  state.q.setConstant(0.7);
+  for (int k = 0; k < 50; ++k) ASSERT_TRUE(verlet.step(state));
+  ArticulationState set = state;
+  set.carried = {};
+  ASSERT_TRUE(carried.step(state));
+  ASSERT_TRUE(afresh.step(set));
+  EXPECT_EQ(state.q, set.q);
+  EXPECT_EQ(state.v, set.v);
+}
+
 TEST(ArticulationStep, DampingDecaysAsTheClosedForm) {
   ArticulationModel model = planarChain({2.0}, {1.0}, {0.0}, {0.5});
   model.links[1].axis_J = Vec3::UnitZ();

@@ -113,7 +113,7 @@ struct ArticulationState {
   /// them from the velocities again.
   struct Carried {
     bool valid = false;
-    Eigen::VectorXd p;        ///< the joints' momenta ∂T/∂q̇
+    Eigen::VectorXd p;        ///< the joints' momenta ∂T/∂q̇ (symplectic Euler's; Verlet carries none)
     Vec6 H_W = Vec6::Zero();  ///< total momentum, world axes, about W's origin (floating base)
     Eigen::VectorXd q, v;
     Pose X_WB;

@@ -10,6 +10,7 @@
 
 #include "rigid_body_sim/core/articulations/articulation.h"
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
+#include "rigid_body_sim/core/articulations/tree_factor.h"
 #include "rigid_body_sim/core/bodies/settings.h"
 #include "rigid_body_sim/core/bodies/state.h"
 
@@ -32,7 +33,7 @@ struct ArticulationWorkspace {
   ArticulationKinematics kin;
   DynamicsScratch dynamics;
   Eigen::MatrixXd A;
-  Eigen::LLT<Eigen::MatrixXd> llt;
+  TreeFactor factor;  ///< of A
   Eigen::VectorXd u, p, force, bias, predicted, next, corrected, rhs, gradient, lift;
   Eigen::VectorXd before, mid;  ///< the Verlet step's ū of the last step, and ½ (ū + ū⁺)
   Eigen::VectorXd gain;         ///< the Verlet step's ū⁺ − ū by the dynamics alone (no rows)
@@ -45,6 +46,7 @@ struct ArticulationWorkspace {
   bool speed_limited = false;               ///< the last step slowed something to the speed limits
   Vec6 H_W = Vec6::Zero();                  ///< the floating base's rows: the whole momentum, world axes, within a step
   int predict_only = 0;                     ///< within a step: the steps left that skip the corrector
+  bool carries_joint_momenta = false;       ///< within a step: the integrator carries the joints' momenta (rhs)
 };
 
 /// The base pose after h seconds at twist V_B (in the base's axes): the
