@@ -123,14 +123,16 @@ void middleMomentum(const ArticulationModel& model, const ArticulationState& sta
   ArticulationState& middle = ws.middle;
   middle = state;
   for (int i = 1; i <= nj; ++i) middle.q(i - 1) = state.q(i - 1) + 0.5 * h * u_next(model.dofOf(i));
+  // M in the base's axes depends on the joints alone (§11.3): one M for
+  // every round, which only turns the momentum into the base's axes.
+  kinematics(model, middle, ws.middle_kin);
+  massMatrix(model, ws.middle_kin, ws.dynamics, ws.middle_M);
+  const Eigen::LLT<Mat6> base(ws.middle_M.topLeftCorner<6, 6>());
+  const Vec6 joints_part = ws.middle_M.bottomLeftCorner(nj, 6).transpose() * u_next.tail(nj);
   double last_change = std::numeric_limits<double>::infinity();
   for (int round = 0; round < kMiddleRounds; ++round) {
-    middle.X_WB = advanceBase(state.X_WB, u_next.head<6>(), 0.5 * h);
-    kinematics(model, middle, ws.middle_kin);
-    massMatrix(model, ws.middle_kin, ws.dynamics, ws.middle_M);
-    const Vec6 H_B = ws.middle_kin.X_WL[0].forceToChild(ws.H_W);
-    const Vec6 joints_part = ws.middle_M.bottomLeftCorner(nj, 6).transpose() * u_next.tail(nj);
-    const Vec6 twist = ws.middle_M.topLeftCorner<6, 6>().llt().solve(H_B - joints_part);
+    const Placement X_WB = Placement::of(advanceBase(state.X_WB, u_next.head<6>(), 0.5 * h));
+    const Vec6 twist = base.solve(X_WB.forceToChild(ws.H_W) - joints_part);
     const double change = (twist - u_next.head<6>()).cwiseAbs().maxCoeff();
     u_next.head<6>() = twist;
     // Done at the tolerance, or where the rounds stall at rounding.
