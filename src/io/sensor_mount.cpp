@@ -123,10 +123,9 @@ void mountCameras(const std::vector<DepthCameraEntry>& entries, const core::Arti
                   std::vector<RobotCamera>& out) {
   for (const DepthCameraEntry& e : entries) {
     checkTopic(e.topic, e.key);
-    for (const std::string* t : {&e.image_topic, &e.info_topic, &e.points_topic}) {
-      checkTopic(*t, e.key);
-      if (t->front() == '/') throw ConfigError(e.key + ": topic '" + *t + "' is under the camera's namespace");
-    }
+    // Each under the camera's namespace, or from the root ('/...') as
+    // Gazebo's camera plugins allow (ROS resolves such a name as it is).
+    for (const std::string* t : {&e.image_topic, &e.info_topic, &e.points_topic}) checkTopic(*t, e.key);
     checkRate(e.rate, e.key);
     try {  // a URDF's markup is checked here; the config's was when it was read
       core::checkDepthCamera(e.settings);

@@ -127,9 +127,11 @@ void RangeSensors::addRobot(const std::string& robot, const std::string& prefix,
         core::DepthCamera(c.entry.settings), c.link, c.X_LS, 1, c.entry.millimetres, frame_prefix + frame, {}, {}, {}};
     p.every = std::max(1LL, std::llround(1.0 / (c.entry.rate * dt_)));
     const std::string ns = (c.entry.topic.front() == '/' ? c.entry.topic : prefix + c.entry.topic) + "/";
-    p.image = CountedPublisher::advertise<sensor_msgs::Image>(nh_, ns + c.entry.image_topic, 2);
-    p.info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(nh_, ns + c.entry.info_topic, 2);
-    p.points = CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh_, ns + c.entry.points_topic, 2);
+    // A topic from the root stays there, as in Gazebo's camera plugins.
+    const auto under = [&ns](const std::string& topic) { return topic.front() == '/' ? topic : ns + topic; };
+    p.image = CountedPublisher::advertise<sensor_msgs::Image>(nh_, under(c.entry.image_topic), 2);
+    p.info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(nh_, under(c.entry.info_topic), 2);
+    p.points = CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh_, under(c.entry.points_topic), 2);
     ROS_INFO("sim_node: robot '%s': a depth camera of %d x %d on '%s', %s{%s, %s, %s} at %g Hz", robot.c_str(),
              c.entry.settings.width, c.entry.settings.height, p.frame.c_str(), nh_.resolveName(ns).c_str(),
              c.entry.image_topic.c_str(), c.entry.info_topic.c_str(), c.entry.points_topic.c_str(), c.entry.rate);

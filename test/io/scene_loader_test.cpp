@@ -462,6 +462,15 @@ TEST(GazeboCameras, ADepthSensorWithTheKinectPluginIsADepthCameraWithItsMarkupsS
   std::string notes;
   for (const std::string& n : s.notes) notes += n;
   EXPECT_NE(notes.find("its colour or IR image (depth only here)"), std::string::npos) << notes;
+  // Topics from the root, as Unitree's go1 names them, are kept there (the
+  // plugin's node handle is in the camera's namespace; ROS resolves a name
+  // from the root as it is). They were refused.
+  std::string rooted = kinect;
+  rooted.replace(rooted.find("depth/image_raw"), 15, "/camera_face/depth/image_raw");
+  rooted.replace(rooted.find("depth/points"), 12, "/cam1/point_cloud_face");
+  const io::SceneSetup r = io::loadScene(config(""), [&] { return laserRobot(rooted); });
+  EXPECT_EQ(r.sensors.at(0).cameras.at(0).entry.image_topic, "/camera_face/depth/image_raw");
+  EXPECT_EQ(r.sensors[0].cameras[0].entry.points_topic, "/cam1/point_cloud_face");
   // A size no camera can have is refused, naming the markup.
   std::string bad = kinect;
   bad.replace(bad.find("<width>160"), 10, "<width>0");

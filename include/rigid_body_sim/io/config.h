@@ -72,7 +72,8 @@ struct DepthCameraEntry {
   core::Pose pose;               ///< the camera in that link's frame
   std::string frame_id;          ///< the images' tf frame, after the robot's tf_prefix; "": the link's
   std::string topic = "camera";  ///< the namespace of the three topics below
-  /// Under `topic`: the image, its CameraInfo, its points (as Gazebo's openni_kinect names them).
+  /// Under `topic` (or from the root, "/..."): the image, its CameraInfo, its points (as Gazebo's openni_kinect names
+  /// them).
   std::string image_topic = "depth/image_raw", info_topic = "depth/camera_info", points_topic = "depth/points";
   double rate = 30.0;        ///< Hz of sim time
   bool millimetres = false;  ///< `encoding`: 16UC1 (mm, 0 where none) instead of 32FC1 (m)
