@@ -90,15 +90,12 @@ void mountOdometry(const std::vector<OdometryEntry>& entries, const core::Articu
         throw ConfigError(err.what());
       }
     }
-    RobotOdometry mounted{e, -1};
+    RobotOdometry mounted{e, -1, {}};
     mounted.entry.rate = rate;
     mounted.entry.link = e.link.empty() ? model.links[0].name : e.link;
-    core::Pose X_LS;
-    mount(model, mounted.entry.link, core::Pose{}, e.key, mounted.link, X_LS);
-    if (model.links[static_cast<std::size_t>(mounted.link)].name != mounted.entry.link) {
-      throw ConfigError(e.key + ": link '" + e.link + "' is fixed to '" +
-                        model.links[static_cast<std::size_t>(mounted.link)].name + "': give the moving link");
-    }
+    // A link lumped into a moving one (hyq's trunk, tiago's base_link):
+    // its frame's odometry, at its place in the moving link.
+    mount(model, mounted.entry.link, core::Pose{}, e.key, mounted.link, mounted.X_LS);
     out.push_back(std::move(mounted));
   }
 }

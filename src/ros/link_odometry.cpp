@@ -20,6 +20,7 @@ void LinkOdometry::addRobot(const std::string& robot, const std::string& prefix,
     const io::OdometryEntry& e = o.entry;
     Port p;
     p.link = o.link;
+    p.X_LS = o.X_LS;
     p.every = std::max(1LL, std::llround(1.0 / ((e.rate > 0.0 ? e.rate : publish_rate_) * dt_)));
     p.child = frame_prefix + e.link;
     if (e.noise) p.noise.emplace(*e.noise);
@@ -55,7 +56,7 @@ void LinkOdometry::publish(const core::Simulation& sim, long long steps, double 
         core::kinematics(sim.scene.robots()[r].model, sim.robots[r], kin_);
         placed = true;
       }
-      const core::LinkState link = linkStateOf(kin_, p.link);
+      const core::LinkState link = core::frameState(linkStateOf(kin_, p.link), p.X_LS);
       const core::OdomReport report = p.noise ? p.noise->report(link, t - p.last) : core::exactOdom(link);
       p.last = t;
       if (!ros::ok()) continue;

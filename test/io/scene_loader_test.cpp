@@ -345,9 +345,18 @@ TEST(GazeboOdometry, TheP3dPluginIsALinksOdometryWithItsNoise) {
       "<topicName>ground_truth/state</topicName><frameName>world</frameName><updateRate>50</updateRate>"
       "<gaussianNoise>0.01</gaussianNoise></plugin></gazebo>"
       "<gazebo><plugin name='wheel' filename='libgazebo_ros_p3d.so'><bodyName>wheel</bodyName>"
-      "<frameName>base_link</frameName><xyzOffsets>0 0 1</xyzOffsets></plugin></gazebo>";
+      "<frameName>base_link</frameName><xyzOffsets>0 0 1</xyzOffsets></plugin></gazebo>"
+      // On a link lumped into the base (as hyq's trunk and tiago's base_link
+      // are): that frame's odometry. It refused the whole robot before.
+      "<gazebo><plugin name='laser' filename='libgazebo_ros_p3d.so'><bodyName>laser_link</bodyName>"
+      "<topicName>laser_truth</topicName></plugin></gazebo>";
   const io::SceneSetup s = io::loadScene(config(""), [&] { return laserRobot(p3d); });
-  ASSERT_EQ(s.sensors.at(0).odometry.size(), 2u);
+  ASSERT_EQ(s.sensors.at(0).odometry.size(), 3u);
+  const io::RobotOdometry& laser = s.sensors[0].odometry[2];
+  EXPECT_EQ(laser.entry.link, "laser_link");
+  EXPECT_EQ(laser.link, 0);
+  EXPECT_EQ(laser.X_LS.translation, Vec3(0.1, 0.0, 0.2));
+  EXPECT_EQ(s.sensors[0].odometry[0].X_LS.translation, Vec3::Zero());
   const io::RobotOdometry& base = s.sensors[0].odometry[0];
   EXPECT_EQ(base.link, 0);
   EXPECT_EQ(base.entry.topic, "ground_truth/state");

@@ -34,10 +34,12 @@ struct RobotImu {
   int link = 0;
 };
 
-/// Odometry of link `link` of a robot (entry.link: its name).
+/// Odometry of the frame entry.link names: a moving link, `link`, or a
+/// link lumped into it, at X_LS in it.
 struct RobotOdometry {
   OdometryEntry entry;
   int link = 0;
+  core::Pose X_LS;
 };
 
 /// Every sensor of one robot, on its links.

@@ -40,6 +40,7 @@ class LinkOdometry {
  private:
   struct Port {
     int link = 0;
+    core::Pose X_LS;  ///< the reported frame in that link
     long long every = 1;
     std::string child;  ///< the link's frame: the twist's axes
     std::optional<core::OdomNoise> noise;

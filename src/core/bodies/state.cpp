@@ -15,6 +15,15 @@ LinkState linkState(const BodyModel& body, const BodyState& s) {
   return link;
 }
 
+LinkState frameState(const LinkState& link, const Pose& X_LS) {
+  LinkState frame = link;
+  const Vec3 r_W = link.q_WL * X_LS.translation;
+  frame.p_WL = link.p_WL + r_W;
+  frame.q_WL = Quat(link.q_WL * X_LS.rotation).normalized();
+  frame.v_WL = link.v_WL + link.w_W.cross(r_W);
+  return frame;
+}
+
 BodyState bodyStateFromLink(const BodyModel& body, const LinkState& link) {
   BodyState s;
   s.q_WB = (link.q_WL * body.q_LB).normalized();

@@ -46,8 +46,8 @@ void validateImu(const ImuSettings& s, double dt, const std::string& key) {
 ImuReading exactImuReading(const LinkState& previous, const LinkState& now, const Pose& X_LS, const Vec3& gravity_W,
                            double period) {
   const auto at = [&](const LinkState& link) {
-    const Vec3 r_W = link.q_WL * X_LS.translation;
-    return std::make_pair(Quat(link.q_WL * X_LS.rotation).normalized(), Vec3(link.v_WL + link.w_W.cross(r_W)));
+    const LinkState sensor = frameState(link, X_LS);
+    return std::make_pair(sensor.q_WL, sensor.v_WL);
   };
   const auto [q0, v0] = at(previous);
   const auto [q1, v1] = at(now);

@@ -75,5 +75,23 @@ TEST(State, AtRestMeansAsleepOrStillForTheSleepTime) {
   EXPECT_TRUE(core::atRest(model, s));
 }
 
+// A frame fixed in a link: a link at (1, 2, 3) turned a quarter about z,
+// spinning at 2 rad/s about z and moving at (0, 0, 1) m/s; the frame 0.5 m
+// along the link's x (world y) and turned a quarter more is at (1, 2.5, 3),
+// turned a half, and moves at ω × r = (−1, 0, 0) more.
+TEST(State, AFrameFixedInALinkMovesWithIt) {
+  core::LinkState link;
+  link.p_WL = core::Vec3(1.0, 2.0, 3.0);
+  link.q_WL = core::Quat(Eigen::AngleAxisd(M_PI / 2, core::Vec3::UnitZ()));
+  link.w_W = core::Vec3(0.0, 0.0, 2.0);
+  link.v_WL = core::Vec3(0.0, 0.0, 1.0);
+  const core::Pose X_LS{core::Quat(Eigen::AngleAxisd(M_PI / 2, core::Vec3::UnitZ())), core::Vec3(0.5, 0.0, 0.0)};
+  const core::LinkState frame = core::frameState(link, X_LS);
+  EXPECT_LT((frame.p_WL - core::Vec3(1.0, 2.5, 3.0)).norm(), 1e-15);
+  EXPECT_LT(frame.q_WL.angularDistance(core::Quat(Eigen::AngleAxisd(M_PI, core::Vec3::UnitZ()))), 1e-15);
+  EXPECT_LT((frame.v_WL - core::Vec3(-1.0, 0.0, 1.0)).norm(), 1e-15);
+  EXPECT_EQ(frame.w_W, link.w_W);
+}
+
 }  // namespace
 }  // namespace rigid_body_sim::test

@@ -92,6 +92,10 @@ struct LinkState {
 /// Link pose and twist of a body.
 LinkState linkState(const BodyModel& body, const BodyState& s);
 
+/// The pose and twist of a frame S fixed in a link at X_LS (S's origin
+/// moves at v + ω × r, r the offset in world axes).
+LinkState frameState(const LinkState& link, const Pose& X_LS);
+
 /// The body state whose link frame has the given pose and twist.
 BodyState bodyStateFromLink(const BodyModel& body, const LinkState& link);
 
