@@ -62,6 +62,7 @@ urdf::ModelInterfaceSharedPtr Lumper::parse(const std::string& xml) {
   unread_markup_ = std::move(parsed.unread_markup);
   if (options_.sensors != nullptr) {
     *options_.sensors = std::move(parsed.sensors);
+    dropStillDrives(*parsed.model, options_.sensors->controllers);
   } else {  // a body's, or a load that runs no sensors
     for (auto& [kind, names] : parsed.sensor_markup) {
       std::vector<std::string>& all = unread_markup_[kind];
@@ -78,6 +79,24 @@ urdf::ModelInterfaceSharedPtr Lumper::parse(const std::string& xml) {
   }
   if (!parsed.model->getRoot()) fail("no root link");
   return std::move(parsed.model);
+}
+
+void Lumper::dropStillDrives(const urdf::ModelInterface& urdf, std::vector<ControllerEntry>& controllers) {
+  const auto moves = [&urdf](const std::string& joint) {
+    const urdf::JointConstSharedPtr j = urdf.getJoint(joint);
+    return j && j->type != urdf::Joint::FIXED;
+  };
+  // gazebo_ros_diff_drive on a wheel the URDF fixes (MATLAB's and Adept's
+  // pioneer3dx): Gazebo lumps the joint away and the plugin fails to load,
+  // the robot runs without it; so here, said.
+  const auto still = [&](const ControllerEntry& c) {
+    if (!c.drive || c.key.rfind("<gazebo>", 0) != 0) return false;  // the config's are refused, naming the key
+    if (std::all_of(c.joints.begin(), c.joints.end(), moves)) return false;
+    unread_markup_["<plugin> libgazebo_ros_diff_drive.so on a joint that does not move (Gazebo does not run it)"]
+        .push_back(c.name);
+    return true;
+  };
+  controllers.erase(std::remove_if(controllers.begin(), controllers.end(), still), controllers.end());
 }
 
 core::MassProperties Lumper::part(const urdf::Link& link, const Pose& X_LK) {

@@ -124,6 +124,9 @@ class Lumper {
   /// One note naming the markup nothing here reads (unread_markup_;
   /// urdf_load_notes.cpp, with fail() and finish()).
   void noteUnreadMarkup() const;
+  /// Drops the Gazebo markup's drives on a joint the URDF fixes or lacks,
+  /// said as unread markup (Gazebo's plugin fails to load on them).
+  void dropStillDrives(const urdf::ModelInterface& urdf, std::vector<ControllerEntry>& controllers);
 
   std::string source_;
   std::string base_dir_;

@@ -377,6 +377,22 @@ TEST(GazeboOdometry, TheP3dPluginIsALinksOdometryWithItsNoise) {
   EXPECT_NE(notes.find("libgazebo_ros_p3d.so <xyzOffsets>"), std::string::npos) << notes;
 }
 
+// A drive on a joint the URDF fixes (MATLAB's and Adept's pioneer3dx): Gazebo
+// lumps the joint away and the plugin fails to load; the robot runs without
+// it, and that is said. It refused the whole robot before.
+TEST(GazeboDrive, ADrivePluginOnAFixedJointIsSaidAndNotRun) {
+  const std::string drive =
+      "<gazebo><plugin name='wheels' filename='libgazebo_ros_diff_drive.so'><leftJoint>laser_mount</leftJoint>"
+      "<rightJoint>axle</rightJoint></plugin></gazebo>";
+  const io::SceneSetup s = io::loadScene(config(""), [&] { return laserRobot(drive); });
+  EXPECT_TRUE(s.controls.empty() || s.controls[0].drives.empty());
+  std::string notes;
+  for (const std::string& n : s.notes) notes += n;
+  EXPECT_NE(notes.find("libgazebo_ros_diff_drive.so on a joint that does not move (Gazebo does not run it) ('wheels')"),
+            std::string::npos)
+      << notes;
+}
+
 TEST(GazeboDrive, TheDiffDrivePluginIsADiffDriveControllerOnItsTopics) {
   // urdf/diff_drive.urdf's base with the plugin as a Gazebo user writes it.
   io::UrdfText text = io::readUrdfFile("diff_drive.urdf", kUrdf);
