@@ -29,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include "median.h"
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
 #include "rigid_body_sim/core/articulations/articulation_step.h"
 #include "rigid_body_sim/core/articulations/scene.h"
@@ -45,6 +46,8 @@
 #endif
 
 namespace {
+
+using rigid_body_sim::bench::median;
 
 using namespace rigid_body_sim::core;
 
@@ -293,11 +296,6 @@ Roller mujocoRolling() {
           }};
 }
 #endif
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 }  // namespace
 

@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "median.h"
 #include "rigid_body_sim/core/articulations/scene.h"
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/io/scene_loader.h"
@@ -34,6 +35,8 @@
 #endif
 
 namespace {
+
+using rigid_body_sim::bench::median;
 
 using namespace rigid_body_sim;
 
@@ -146,11 +149,6 @@ Drop mujoco(const Args& a) {
           [data] { return data->ncon; }, static_cast<int>(a.seconds / 1e-3 + 0.5)};
 }
 #endif
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 }  // namespace
 

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "median.h"
 #include "rigid_body_sim/core/devices/depth_camera.h"
 #include "rigid_body_sim/core/devices/lidar.h"
 #include "rigid_body_sim/io/scene_loader.h"
@@ -31,6 +32,8 @@ namespace core = rigid_body_sim::core;
 namespace io = rigid_body_sim::io;
 
 namespace {
+
+using rigid_body_sim::bench::median;
 
 struct Sensor {
   const char* name;
@@ -115,11 +118,6 @@ Sensor::Scan cameraScan(int w, int h, double hfov) {
                        double& sum) {
     return timed([&](std::vector<double>& r) { camera->capture(m, st, X, skip, r); }, *out, sum);
   };
-}
-
-double median(std::vector<double> x) {
-  std::sort(x.begin(), x.end());
-  return x[x.size() / 2];
 }
 
 }  // namespace
