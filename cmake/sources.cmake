@@ -66,6 +66,7 @@ set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/joint_start.cpp
   ${RBS_SOURCE_ROOT}/src/io/sensor_mount.cpp
   ${RBS_SOURCE_ROOT}/src/io/transmissions.cpp
+  ${RBS_SOURCE_ROOT}/src/io/mesh_files.cpp
   ${RBS_SOURCE_ROOT}/src/io/mesh_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/scene_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/setting_config.cpp

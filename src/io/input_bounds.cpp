@@ -1,5 +1,8 @@
 #include "rigid_body_sim/io/input_bounds.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/exceptions.h>
 #include <yaml-cpp/parser.h>
@@ -8,7 +11,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -18,6 +20,12 @@ namespace rigid_body_sim::io {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// A cap in words: "256 MiB", "16 MiB", or "10 bytes".
+std::string capText(std::uintmax_t bytes) {
+  constexpr std::uintmax_t kMiB = 1u << 20;
+  return bytes >= kMiB && bytes % kMiB == 0 ? std::to_string(bytes / kMiB) + " MiB" : std::to_string(bytes) + " bytes";
+}
 
 /// A YAML event handler that refuses aliases, anchors and repeated keys,
 /// and counts depth. yaml-cpp keeps one of two equal keys in a map without
@@ -161,31 +169,44 @@ std::string fileProblem(const std::string& path, std::uintmax_t max_bytes) {
   if (!fs::is_regular_file(status)) return "'" + path + "' is not a regular file (a device, pipe or socket)";
   const std::uintmax_t size = fs::file_size(path, ec);
   if (ec) return "'" + path + "': " + ec.message();
-  if (size > max_bytes) {
-    return "'" + path + "' is " + std::to_string(size) + " bytes, more than the " + std::to_string(max_bytes) +
-           " this input may have";
-  }
+  // The cap, not the size: a refusal must not tell a caller how big a file is.
+  if (size > max_bytes) return "'" + path + "' holds more than the " + capText(max_bytes) + " this input may have";
   return "";
 }
 
 std::string readFile(const std::string& path, std::uintmax_t max_bytes) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read '" + path + "': " + std::strerror(errno));
+  // Opened without blocking and checked again on the descriptor: a file
+  // swapped for a FIFO after fileProblem() looked would block an ifstream
+  // for good (and the spawn thread with it).
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error("cannot read '" + path + "': " + std::strerror(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    throw std::runtime_error("'" + path + "' is not a regular file (a device, pipe or socket)");
+  }
   // In chunks, up to one byte past the cap: a buffer of the cap's size for
   // every file (16 MiB, written through) cost 16 MiB of peak memory and of
   // writing per URDF, 160 GB of it for a world of 10,000 bodies.
   std::string bytes;
   constexpr std::size_t kChunk = 1 << 16;
-  while (in && bytes.size() <= max_bytes) {
+  while (bytes.size() <= max_bytes) {
     const std::size_t at = bytes.size();
     bytes.resize(at + kChunk);
-    in.read(bytes.data() + at, static_cast<std::streamsize>(kChunk));
-    bytes.resize(at + static_cast<std::size_t>(in.gcount()));
+    const ssize_t got = ::read(fd, bytes.data() + at, kChunk);
+    if (got < 0 && errno == EINTR) {
+      bytes.resize(at);
+      continue;
+    }
+    if (got < 0) throw std::runtime_error("cannot read '" + path + "': " + std::strerror(errno));
+    bytes.resize(at + static_cast<std::size_t>(got));
+    if (got == 0) break;
   }
-  if (in.bad()) throw std::runtime_error("cannot read '" + path + "': " + std::strerror(errno));
   if (bytes.size() > max_bytes) {
-    throw std::runtime_error("'" + path + "' holds more than the " + std::to_string(max_bytes) +
-                             " bytes this input may have");
+    throw std::runtime_error("'" + path + "' holds more than the " + capText(max_bytes) + " this input may have");
   }
   return bytes;
 }
@@ -236,15 +257,16 @@ std::size_t notUtf8At(const std::string& text) {
 std::string xmlProblem(const std::string& xml) {
   // TinyXML, which urdfdom parses with, reads a C string: it would stop at
   // a NUL byte and the rest of the text would be dropped unread.
-  if (const std::size_t nul = xml.find('\0'); nul != std::string::npos) {
-    return "byte " + std::to_string(nul) + " is NUL: a URDF is text (the parser would stop there, the rest unread)";
+  // (Where, it does not say: a file's contents are not told to a caller,
+  // and /proc/self/environ's first NUL was the length of a variable.)
+  if (xml.find('\0') != std::string::npos) {
+    return "it holds a NUL byte: a URDF is text (the parser would stop there, the rest unread)";
   }
   // And after an XML declaration it steps over a character by the length
   // its first byte announces: a character cut short by the end of the text
   // took it past the end (urdf_fuzzer, under ASan, in CI).
-  if (const std::size_t at = notUtf8At(xml); at != std::string::npos) {
-    return "byte " + std::to_string(at) + " is not UTF-8: a URDF is UTF-8 text, XML's default";
-  }
+  if (notUtf8At(xml) != std::string::npos)
+    return "it holds bytes that are not UTF-8: a URDF is UTF-8 text, XML's default";
   int depth = 0;
   int links = 0;
   for (std::size_t at = xml.find('<'); at != std::string::npos; at = xml.find('<', at)) {

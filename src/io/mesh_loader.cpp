@@ -13,6 +13,7 @@
 #include <regex>
 #include <sstream>
 
+#include "mesh_files.h"
 #include "rigid_body_sim/io/input_bounds.h"
 
 namespace rigid_body_sim::io {
@@ -60,6 +61,11 @@ std::string resolveMeshUri(const std::string& uri, const std::string& base_dir) 
   const auto slash = rest.find('/');
   if (slash == std::string::npos) throw MeshError("mesh '" + uri + "': expected package://NAME/PATH");
   const std::string name = rest.substr(0, slash), path = rest.substr(slash + 1);
+  // A path inside the package: '..' would step out of it, and a refusal
+  // would then tell a caller where the package is installed.
+  for (const fs::path& part : fs::path(path)) {
+    if (part == "..") throw MeshError("'" + uri + "': package://NAME/PATH may not leave the package ('..')");
+  }
   if (const char* env = std::getenv("ROS_PACKAGE_PATH")) {
     std::stringstream roots(env);
     for (std::string root; std::getline(roots, root, ':');) {
@@ -133,28 +139,37 @@ void configure(Assimp::Importer& importer) {
 // Bake node transforms into the vertices (DAE files carry them); triangles only.
 constexpr unsigned kImportSteps = aiProcess_PreTransformVertices | aiProcess_Triangulate;
 
+/// Imports `bytes` (the mesh at `path`, or from memory when `path` is
+/// empty), every file assimp opens for it through detail::MeshFiles.
+core::TriangleMesh import(const std::string& path, std::string bytes, const std::string& format,
+                          const core::Vec3& scale) {
+  const std::string shown = path.empty() ? "<" + format + " bytes>" : path;
+  // A count a header declares is checked before any reader allocates by it.
+  const std::string header_problem = meshProblem(bytes, format);
+  if (!header_problem.empty()) throw MeshError("mesh '" + shown + "': " + header_problem);
+  Assimp::Importer importer;
+  configure(importer);
+  const std::size_t size = bytes.size();
+  auto* files = new detail::MeshFiles(path, std::move(bytes), InputCaps::kMeshBytes);
+  importer.SetIOHandler(files);  // the importer owns it
+  const aiScene* scene = path.empty() ? importer.ReadFileFromMemory(files->bytes(), size, kImportSteps, format.c_str())
+                                      : importer.ReadFile(path, kImportSteps);
+  if (!files->refusal().empty()) throw MeshError("mesh '" + shown + "' " + files->refusal());
+  return fromScene(scene, importer, shown, scale);
+}
+
 }  // namespace
 
 core::TriangleMesh loadMesh(const std::string& path, const core::Vec3& scale) {
   std::string extension = fs::path(path).extension().string();
   if (!extension.empty()) extension.erase(0, 1);
-  // The bytes are read twice (here, then by assimp), so that a count a
-  // header declares is checked before any reader allocates by it.
-  const std::string header_problem = meshProblem(readInput<MeshError>(path, InputCaps::kMeshBytes, "mesh"), extension);
-  if (!header_problem.empty()) throw MeshError("mesh '" + path + "': " + header_problem);
-  Assimp::Importer importer;
-  configure(importer);
-  return fromScene(importer.ReadFile(path, kImportSteps), importer, path, scale);
+  // assimp reads these bytes, not the file again: what was checked is what is read.
+  return import(path, readInput<MeshError>(path, InputCaps::kMeshBytes, "mesh"), extension, scale);
 }
 
 core::TriangleMesh loadMeshBytes(const std::string& bytes, const std::string& format, const core::Vec3& scale) {
   if (bytes.size() > InputCaps::kMeshBytes) throw MeshError("mesh bytes: more than the cap");
-  const std::string problem = meshProblem(bytes, format);
-  if (!problem.empty()) throw MeshError("mesh <" + format + " bytes>: " + problem);
-  Assimp::Importer importer;
-  configure(importer);
-  const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportSteps, format.c_str());
-  return fromScene(scene, importer, "<" + format + " bytes>", scale);
+  return import("", bytes, format, scale);
 }
 
 }  // namespace rigid_body_sim::io

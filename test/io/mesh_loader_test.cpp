@@ -4,6 +4,7 @@
 
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
@@ -94,6 +95,35 @@ TEST(MeshLoader, AHeaderThatDeclaresMoreThanTheFileHoldsIsRefusedBeforeAnyReader
                                   {"tet.off", "the format 'off' is not read here"});
 }
 
+// The files a mesh names are checked as the mesh is, or not read: an OBJ's
+// mtllib on a FIFO blocked ~spawn_body for good (and every spawn after it),
+// a 79-byte OBJ naming a 1.5 GB .mtl took 1.58 GB. Such a mesh is refused,
+// naming the file and why; one beside it is read; a missing one is gone
+// without, as assimp goes.
+TEST(MeshLoader, AFileTheMeshNamesIsCheckedAsTheMeshIsOrNotRead) {
+  const fs::path dir = tempDir("named_files");
+  fs::create_directories(dir / "sub");
+  const auto obj = [&](const std::string& name, const std::string& mtllib) {
+    writeTetrahedronObj(dir / "sub" / name);
+    std::ofstream(dir / "sub" / name, std::ios::app) << "mtllib " << mtllib << "\n";
+    return (dir / "sub" / name).string();
+  };
+  std::ofstream(dir / "sub" / "fine.mtl") << "newmtl red\nKd 1 0 0\n";
+  EXPECT_EQ(io::loadMesh(obj("beside.obj", "fine.mtl"), Vec3::Ones()).vertices.size(), 4u);
+  EXPECT_EQ(io::loadMesh(obj("missing.obj", "nowhere.mtl"), Vec3::Ones()).vertices.size(), 4u);
+  ASSERT_EQ(::mkfifo((dir / "sub" / "pipe.mtl").c_str(), 0600), 0);
+  expectThrowsWith<io::MeshError>([&] { io::loadMesh(obj("fifo.obj", "pipe.mtl"), Vec3::Ones()); },
+                                  {"fifo.obj", "names a file", "pipe.mtl", "not a regular file"});
+  // Over the mesh's cap (a sparse file: nothing is written, nothing read).
+  std::ofstream(dir / "sub" / "huge.mtl").close();
+  fs::resize_file(dir / "sub" / "huge.mtl", io::InputCaps::kMeshBytes + 1);
+  expectThrowsWith<io::MeshError>([&] { io::loadMesh(obj("huge.obj", "huge.mtl"), Vec3::Ones()); },
+                                  {"huge.obj", "names a file ('huge.mtl') that holds more than the 256 MiB"});
+  std::ofstream(dir / "outside.mtl") << "newmtl red\nKd 1 0 0\n";
+  expectThrowsWith<io::MeshError>([&] { io::loadMesh(obj("up.obj", "../outside.mtl"), Vec3::Ones()); },
+                                  {"up.obj", "outside its own folder"});
+}
+
 TEST(MeshLoader, ReadsColladaAsRosDoesWhateverItsUpAxis) {
   // A Collada copy of the tetrahedron (assimp's exporter), then the same file
   // declaring Z_UP: ROS tools read the coordinates as they are, and so do we.
@@ -135,6 +165,17 @@ TEST(MeshLoader, ResolvesFilePackageAndRelativeUris) {
             (dir / "ws" / "my_pkg" / "meshes/a.stl").string());
   expectThrowsWith<io::MeshError>([] { io::resolveMeshUri("package://nobody/a.stl", "/tmp"); },
                                   {"package://nobody/a.stl", "package 'nobody' not found"});
+  // Not out of the package: a refusal of package://rigid_body_sim/../x.obj
+  // told a spawn's caller where the package is installed.
+  for (const char* uri : {"package://my_pkg/../x.obj", "package://my_pkg/meshes/../../x.obj"}) {
+    try {
+      io::resolveMeshUri(uri, (dir / "ws" / "my_pkg" / "urdf").string());
+      ADD_FAILURE() << uri << " resolved";
+    } catch (const io::MeshError& e) {
+      EXPECT_NE(std::string(e.what()).find("may not leave the package ('..')"), std::string::npos) << e.what();
+      EXPECT_EQ(std::string(e.what()).find(dir.string()), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(UrdfCollision, ShapesArePosedInTheRootLinkFrame) {
