@@ -3,7 +3,10 @@
 // repaired_robot.urdf holds every class), then the model of the body and
 // a few steps; and the same bytes as a robot (the articulation loader:
 // refused, or a model that a few steps on the ground, alone and in a scene
-// with a box, leave finite, the guards undoing any step that would not).
+// with a box, leave finite, the guards undoing any step that would not);
+// and as the node loads a robot, its Gazebo markup's sensors and drives
+// with it (seeds gazebo_*.urdf, many_sensors.urdf): refused, or devices
+// fuzz::checkDevices finds sound.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -71,6 +74,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     stepped(robot, false);
     stepped(robot, true);
   } catch (const rigid_body_sim::io::UrdfError&) {
+  }
+  try {
+    const rigid_body_sim::io::SimConfig config;
+    const rigid_body_sim::io::SceneSetup setup = rigid_body_sim::io::loadScene(config, [&] {
+      return rigid_body_sim::io::UrdfText{xml, "fuzz.urdf", ""};
+    });
+    rigid_body_sim::fuzz::checkDevices(setup, config.device_memory);
+  } catch (const std::exception&) {  // a refusal, whatever its kind, names what it refused
   }
   rigid_body_sim::core::ModelSpec spec;
   try {

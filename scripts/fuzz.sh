@@ -31,8 +31,8 @@ for t in "${targets[@]}"; do
   mkdir -p "$corpus"
   echo "fuzz: $t for $seconds s (log: ${dir#"$PWD"/}/$t.log)" >&2
   # Leak checks stay on (but for assimp's own, fuzz/lsan.supp); -rss_limit_mb
-  # bounds a unit's memory, -timeout its time.
-  (cd "$RBS_ROOT" && LSAN_OPTIONS=suppressions=$RBS_ROOT/fuzz/lsan.supp "$dir/build/$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  # bounds a unit's memory, -timeout its time, -max_len lets an input be long enough to declare many sensors.
+  (cd "$RBS_ROOT" && LSAN_OPTIONS=suppressions=$RBS_ROOT/fuzz/lsan.supp "$dir/build/$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
     -artifact_prefix="$dir/artifacts/$t-" -print_final_stats=1 "$corpus" ${seeds[$t]}) >"$dir/$t.log" 2>&1 &
   pids[$t]=$!
 done

@@ -28,6 +28,8 @@ using core::Quat;
 using core::Vec3;
 using namespace yaml_fields;
 
+constexpr int kMaxDeviceMemoryMiB = 1 << 20;  ///< devices.memory's largest: 1 TiB
+
 /// A map from joint name to a number, in the file's order; names unique.
 void jointValues(const YAML::Node& node, const std::string& key, std::vector<std::pair<std::string, double>>& out) {
   if (!node.IsMap()) fail(key, "expected a map from joint name to a number, got " + show(node));
@@ -149,12 +151,24 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
                     "controllers",
                     "gazebo_ros_control",
                     "urdf",
+                    "devices",
                     "lidar",
                     "depth_camera"});
   parseSection(root, "", c.model);  // dt, gravity, gyroscopic, articulation_integrator
   if (const YAML::Node urdf = root["urdf"]) {
     requireKnownKeys(urdf, "urdf", {"repair"});
     if (urdf["repair"]) c.urdf_repair = boolean(urdf["repair"], "urdf.repair");
+  }
+  if (const YAML::Node devices = root["devices"]) {
+    requireKnownKeys(devices, "devices", {"memory"});
+    if (devices["memory"]) {
+      const int mib = integer(devices["memory"], "devices.memory");
+      if (mib < 1 || mib > kMaxDeviceMemoryMiB) {
+        fail("devices.memory",
+             "must be within [1, " + std::to_string(kMaxDeviceMemoryMiB) + "] MiB, got " + show(devices["memory"]));
+      }
+      c.device_memory = static_cast<std::uintmax_t>(mib) << 20;
+    }
   }
   parseSection(root, "damping", c.model);
   if (root["initial"]) parseInitial(root["initial"], c.initial, c.initial_joints);
@@ -224,12 +238,36 @@ SimConfig parseConfigWithBodies(const YAML::Node& root, std::size_t count,
   }
 }
 
+std::string shownName(const std::string& text) {
+  std::string out = text.substr(0, kMaxShownLength);
+  for (char& c : out) {
+    if (c < 0x20 || c > 0x7e) c = '?';
+  }
+  if (text.size() > kMaxShownLength) out += "... (" + std::to_string(text.size()) + " characters)";
+  return out;
+}
+
+std::string frameIdProblem(const std::string& frame) {
+  if (frame.empty()) return "is empty: a tf frame id names a frame";
+  const bool ok = std::all_of(frame.begin(), frame.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-' || c == '.' || c == '/';
+  });
+  if (!ok || frame.size() > kMaxShownLength) {
+    return "'" + shownName(frame) + "' is no tf frame id: letters, digits, '_', '-', '.' and '/', at most " +
+           std::to_string(kMaxShownLength);
+  }
+  if (frame.front() == '/')
+    return "'" + frame + "' starts with '/', which tf2 refuses in a frame id: write '" + frame.substr(1) + "'";
+  return {};
+}
+
 std::string bodyNameProblem(const std::string& name) {
   if (name.empty()) return "name is empty: give the body a name";
   const bool letters = std::all_of(name.begin(), name.end(),
                                    [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; });
   if (!letters || std::isalpha(static_cast<unsigned char>(name.front())) == 0 || name.size() > kMaxBodyNameLength) {
-    return "name '" + name + "': a body's name starts with a letter and holds only letters, digits and '_', at most " +
+    return "name '" + shownName(name) +
+           "': a body's name starts with a letter and holds only letters, digits and '_', at most " +
            std::to_string(kMaxBodyNameLength) + " (it names topics and tf frames)";
   }
   return {};

@@ -47,7 +47,7 @@ ImuEntry parseImu(const YAML::Node& node, const std::string& path) {
   ImuEntry imu;
   core::ImuSettings& s = imu.settings;
   imu.key = path;
-  if (node["frame_id"]) imu.frame_id = text(node["frame_id"], path + ".frame_id");
+  if (node["frame_id"]) imu.frame_id = frameId(node["frame_id"], path + ".frame_id");
   if (node["link"]) imu.link = text(node["link"], path + ".link");
   if (node["topic"]) imu.topic = text(node["topic"], path + ".topic");
   if (node["pose"]) {
@@ -96,7 +96,7 @@ DepthCameraEntry parseDepthCamera(const YAML::Node& node, const std::string& pat
   if (!node["link"]) fail(path + ".link", "is missing: the robot's link the camera looks from");
   c.link = text(node["link"], path + ".link");
   if (node["topic"]) c.topic = text(node["topic"], path + ".topic");
-  if (node["frame_id"]) c.frame_id = text(node["frame_id"], path + ".frame_id");
+  if (node["frame_id"]) c.frame_id = frameId(node["frame_id"], path + ".frame_id");
   if (node["pose"]) c.pose = parsePose(node["pose"], path + ".pose");
   if (node["encoding"]) {
     const std::string e = text(node["encoding"], path + ".encoding");
@@ -135,7 +135,7 @@ LidarEntry parseLidar(const YAML::Node& node, const std::string& path) {
   if (!node["link"]) fail(path + ".link", "is missing: the robot's link the lidar scans from");
   l.link = text(node["link"], path + ".link");
   if (node["topic"]) l.topic = text(node["topic"], path + ".topic");
-  if (node["frame_id"]) l.frame_id = text(node["frame_id"], path + ".frame_id");
+  if (node["frame_id"]) l.frame_id = frameId(node["frame_id"], path + ".frame_id");
   if (node["pose"]) l.pose = parsePose(node["pose"], path + ".pose");
   core::LidarSettings& s = l.settings;
   readNumbers(node, path,

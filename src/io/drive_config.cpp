@@ -51,6 +51,9 @@ core::TwistLimiter parseLimits(const YAML::Node& node, const std::string& path, 
       fail(join(at, max), "is missing: " + has + " is true (ros_controllers would hold the " + b.what + " to 0)");
     }
     if (*b.has && *b.lo > *b.hi) fail(join(at, min), "must be <= " + max);
+    // A pair not holding 0 turns a zero command into a drive: the base would move with no cmd_vel.
+    if (*b.has && *b.hi < 0.0) fail(join(at, max), "must be >= 0: a zero command would drive the base");
+    if (*b.has && *b.lo > 0.0) fail(join(at, min), "must be <= 0: a zero command would drive the base");
   }
   return l;
 }
@@ -145,8 +148,8 @@ DiffDriveEntry parseDiffDrive(const YAML::Node& body, const std::string& key) {
   if (body["twist_covariance_diagonal"]) {
     t.twist_covariance_diagonal = covariance(body["twist_covariance_diagonal"], join(key, "twist_covariance_diagonal"));
   }
-  if (body["base_frame_id"]) t.base_frame_id = text(body["base_frame_id"], join(key, "base_frame_id"));
-  if (body["odom_frame_id"]) t.odom_frame_id = text(body["odom_frame_id"], join(key, "odom_frame_id"));
+  if (body["base_frame_id"]) t.base_frame_id = frameId(body["base_frame_id"], join(key, "base_frame_id"));
+  if (body["odom_frame_id"]) t.odom_frame_id = frameId(body["odom_frame_id"], join(key, "odom_frame_id"));
   if (t.base_frame_id == t.odom_frame_id) fail(join(key, "odom_frame_id"), "is base_frame_id: tf needs two frames");
   for (const auto& [k, field] : {std::pair<const char*, bool*>{"enable_odom_tf", &t.enable_odom_tf},
                                  {"publish_cmd", &t.publish_cmd},

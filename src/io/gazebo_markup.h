@@ -5,12 +5,10 @@
 
 #include <tinyxml.h>
 
-#include <cmath>
-#include <cstdlib>
 #include <functional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rigid_body_sim/core/bodies/geometry.h"
@@ -26,6 +24,13 @@ std::string attribute(const TiXmlElement& e, const char* name);
 /// The text of `parent`'s child `name`, or `fallback`.
 std::string childText(const TiXmlElement& parent, const char* name, const std::string& fallback);
 
+/// childText of a tf frame id: one leading '/' dropped (as gazebo_ros's
+/// tf::resolve drops it), the rest refused (std::invalid_argument naming
+/// `where` and the element) unless io::frameIdProblem finds none; "" when
+/// not given and `fallback` is "".
+std::string childFrame(const TiXmlElement& parent, const char* name, const std::string& fallback,
+                       const std::string& where);
+
 /// childText of a topic: refused (std::invalid_argument naming `where` and
 /// the element) unless ROS can name it: letters, digits, '_' and '/'.
 std::string childTopic(const TiXmlElement& parent, const char* name, const std::string& fallback,
@@ -38,42 +43,42 @@ bool childFlag(const TiXmlElement& parent, const char* name, bool fallback, cons
 /// SDF's `<pose>` x y z roll pitch yaw: a translation, then fixed-axis rotations about x, y, z.
 core::Pose sdfPose(const std::vector<double>& p);
 
+/// The range a number of the markup must be in: [lo, hi], or (lo, hi] when
+/// `lo_open`; `unit` for the refusal ("Hz"). The bounds come from
+/// core/bodies/ranges.h, as the config's keys do.
+struct Bounds {
+  double lo;
+  double hi;
+  bool lo_open = false;
+  const char* unit = "";
+  /// "> 0 N*m", ">= 0", "within [0.01, 10000] Hz".
+  std::string words() const;
+};
+
+/// At most the first 60 characters of a markup's text, for a refusal.
+std::string shownText(const char* text);
+
 /// Reads the numbers of elements under one sensor or plugin, each error naming its path.
 class Numbers {
  public:
   explicit Numbers(std::string where) : where_(std::move(where)) {}
   /// The numbers of `e`'s text (`count` of them), or throws naming `path`.
-  std::vector<double> read(const TiXmlElement& e, const std::string& path, std::size_t count) const {
-    const char* text = e.GetText();
-    std::istringstream in(text != nullptr ? text : "");
-    std::vector<double> out;
-    std::string word;
-    while (in >> word) {
-      char* end = nullptr;
-      const double x = std::strtod(word.c_str(), &end);
-      if (end == word.c_str() || *end != '\0' || !std::isfinite(x)) fail(path, text);
-      out.push_back(x);
-    }
-    if (out.size() != count) fail(path, text);
-    return out;
-  }
+  std::vector<double> read(const TiXmlElement& e, const std::string& path, std::size_t count) const;
   /// `path` (a/b/c) under `root`, if there, into `x`.
   void at(const TiXmlElement* root, const std::string& path, double& x) const {
     if (const TiXmlElement* e = find(root, path)) x = read(*e, path, 1)[0];
   }
-  static const TiXmlElement* find(const TiXmlElement* root, const std::string& path) {
-    std::istringstream parts(path);
-    std::string part;
-    const TiXmlElement* e = root;
-    while (e != nullptr && std::getline(parts, part, '/')) e = e->FirstChildElement(part.c_str());
-    return e;
-  }
+  /// The same, refused naming `path` unless within `bounds`.
+  void at(const TiXmlElement* root, const std::string& path, double& x, const Bounds& bounds) const;
+  /// A rate (Hz), if there, into `hz`: 0 (Gazebo's "as fast as it can"),
+  /// or within the publish rates of core/bodies/ranges.h.
+  void rate(const TiXmlElement* root, const std::string& path, double& hz) const;
+  /// A whole number (no fraction) within `bounds`, if there, into `n`.
+  void count(const TiXmlElement* root, const std::string& path, int& n, const Bounds& bounds) const;
+  static const TiXmlElement* find(const TiXmlElement* root, const std::string& path);
 
  private:
-  [[noreturn]] void fail(const std::string& path, const char* text) const {
-    throw std::invalid_argument(where_ + " <" + path + "> = '" + (text != nullptr ? text : "") +
-                                "': not the number(s) Gazebo reads there");
-  }
+  [[noreturn]] void fail(const std::string& path, const char* text, const std::string& why) const;
   std::string where_;
 };
 

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "drive_config.h"
+#include "rigid_body_sim/core/bodies/ranges.h"
 
 namespace rigid_body_sim::io::detail {
 
@@ -23,12 +24,12 @@ ImuEntry pluginImu(const TiXmlElement& plugin, const std::string& link, const Un
   imu.link = link;
   const Numbers numbers(imu.key);
   double rate = 0.0, sigma = 0.0;
-  numbers.at(&plugin, "updateRate", rate);
-  numbers.at(&plugin, "gaussianNoise", sigma);
+  numbers.rate(&plugin, "updateRate", rate);
+  numbers.at(&plugin, "gaussianNoise", sigma, Bounds{0.0, std::numeric_limits<double>::infinity(), false, "(sigma)"});
   imu.settings.rate = rate > 0.0 ? rate : std::numeric_limits<double>::infinity();
   imu.settings.gyro_noise = imu.settings.accel_noise = sigma;
   imu.topic = childText(plugin, "topicName", "/default_imu");
-  imu.frame_id = childText(plugin, "frameName", imu.link);
+  imu.frame_id = childFrame(plugin, "frameName", imu.link, imu.key);
   if (plugin.FirstChildElement("rpyOffset") != nullptr || plugin.FirstChildElement("rpyOffsets") != nullptr) {
     unread("<plugin> libgazebo_ros_imu.so <rpyOffset>", imu.link);
   }
@@ -46,8 +47,8 @@ OdometryEntry pluginOdometry(const TiXmlElement& plugin, const std::string& link
   o.link = link;
   const Numbers numbers(o.key);
   double rate = 0.0, sigma = 0.0;
-  numbers.at(&plugin, "updateRate", rate);
-  numbers.at(&plugin, "gaussianNoise", sigma);
+  numbers.rate(&plugin, "updateRate", rate);
+  numbers.at(&plugin, "gaussianNoise", sigma, Bounds{0.0, std::numeric_limits<double>::infinity(), false, "(sigma)"});
   o.rate = rate > 0.0 ? rate : std::numeric_limits<double>::infinity();
   if (sigma > 0.0) o.noise = core::OdomNoiseSettings{sigma, sigma, sigma, sigma, 0.0, 0.0, 0.0, 0};
   o.topic = childText(plugin, "topicName", "odom");
@@ -92,13 +93,16 @@ ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
   e.joint_list = true;
   const Numbers numbers(e.key);
   double separation = 0.0, diameter = 0.0, accel = 0.0, rate = 100.0;
-  numbers.at(&plugin, "wheelSeparation", separation);
-  numbers.at(&plugin, "wheelDiameter", diameter);
+  const double inf = std::numeric_limits<double>::infinity();
+  // A torque <= 0 once reached std::clamp(u, 5, -5), undefined, and drove the base with no command.
+  const Bounds size{0.0, core::ranges::kMaxExtent, true, "m"}, torque{0.0, inf, true, "N*m"};
+  numbers.at(&plugin, "wheelSeparation", separation, size);
+  numbers.at(&plugin, "wheelDiameter", diameter, size);
   d.settings.max_wheel_torque = 5.0;
-  d.settings.cmd_vel_timeout = std::numeric_limits<double>::infinity();
-  numbers.at(&plugin, "wheelTorque", d.settings.max_wheel_torque);
-  numbers.at(&plugin, "wheelAcceleration", accel);
-  numbers.at(&plugin, "updateRate", rate);
+  d.settings.cmd_vel_timeout = inf;
+  numbers.at(&plugin, "wheelTorque", d.settings.max_wheel_torque, torque);
+  numbers.at(&plugin, "wheelAcceleration", accel, Bounds{0.0, inf, false, "m/s^2 (0: none)"});
+  numbers.rate(&plugin, "updateRate", rate);
   if (plugin.FirstChildElement("wheelSeparation") != nullptr) d.wheel_separation = separation;
   if (plugin.FirstChildElement("wheelDiameter") != nullptr) d.wheel_radius = 0.5 * diameter;
   if (accel > 0.0) {
@@ -116,14 +120,14 @@ ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
   DriveTopics& t = d.topics;
   if (rate > 0.0) {
     t.publish_rate = rate;
-  } else {
+  } else {  // within the rates or 0
     unread("<plugin> libgazebo_ros_diff_drive.so <updateRate> 0 (read as 100 Hz)", e.name);
   }
   t.under_controller = false;
   t.cmd_vel_topic = childTopic(plugin, "commandTopic", "cmd_vel", e.key);
   t.odom_topic = childTopic(plugin, "odometryTopic", "odom", e.key);
-  t.odom_frame_id = childText(plugin, "odometryFrame", "odom");
-  t.base_frame_id = childText(plugin, "robotBaseFrame", "base_footprint");
+  t.odom_frame_id = childFrame(plugin, "odometryFrame", "odom", e.key);
+  t.base_frame_id = childFrame(plugin, "robotBaseFrame", "base_footprint", e.key);
   t.enable_odom_tf = childFlag(plugin, "publishOdomTF", true, e.key);
   t.pose_covariance_diagonal = {1e-5, 1e-5, 1e12, 1e12, 1e12, 1e-3};  // the plugin's
   if (!childFlag(plugin, "publishTf", true, e.key)) {

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "gazebo_plugins.h"
+#include "rigid_body_sim/core/bodies/ranges.h"
 
 namespace rigid_body_sim::io::detail {
 
@@ -55,8 +56,8 @@ ImuEntry sensorImu(const TiXmlElement& s, const TiXmlElement& plugin, const std:
   core::ImuSettings& c = imu.settings;
   if (const TiXmlElement* pose = s.FirstChildElement("pose")) c.X_LS = sdfPose(numbers.read(*pose, "pose", 6));
   double sensor_rate = 0.0, plugin_rate = 1.0;
-  numbers.at(&s, "update_rate", sensor_rate);
-  Numbers(imu.key + " <plugin>").at(&plugin, "updateRateHZ", plugin_rate);
+  numbers.rate(&s, "update_rate", sensor_rate);
+  Numbers(imu.key + " <plugin>").rate(&plugin, "updateRateHZ", plugin_rate);
   const auto every = [](double hz) { return hz > 0.0 ? hz : std::numeric_limits<double>::infinity(); };
   c.rate = std::min(every(sensor_rate), every(plugin_rate));  // capped at one a step when mounted
   double sigma = 0.0, own = 0.0;
@@ -70,7 +71,7 @@ ImuEntry sensorImu(const TiXmlElement& s, const TiXmlElement& plugin, const std:
   c.gyro_noise = c.accel_noise = std::hypot(sigma, own);
   c.orientation_noise = sigma;
   imu.topic = childText(plugin, "topicName", "imu_data");
-  imu.frame_id = childText(plugin, "frameName", "");
+  imu.frame_id = childFrame(plugin, "frameName", "", imu.key + " <plugin>");
   double offset = 0.0;
   for (const char* name : {"rpyOffset", "rpyOffsets"}) {
     if (const TiXmlElement* e = plugin.FirstChildElement(name)) {
@@ -98,30 +99,28 @@ DepthCameraEntry sensorCamera(const TiXmlElement& s, const TiXmlElement& plugin,
   const Numbers numbers(c.key), own(c.key + " <plugin>");
   core::DepthCameraSettings& k = c.settings;
   if (const TiXmlElement* pose = s.FirstChildElement("pose")) c.pose = sdfPose(numbers.read(*pose, "pose", 6));
-  numbers.at(&s, "update_rate", c.rate);
+  numbers.rate(&s, "update_rate", c.rate);
   if (c.rate == 0.0) {  // Gazebo's "as fast as it renders": 30 Hz here, said
     c.rate = 30.0;
     unread("<sensor type=\"depth\"> <update_rate> 0 (read as 30 Hz)", link);
   }
   const TiXmlElement* camera = s.FirstChildElement("camera");
-  double width = k.width, height = k.height, near = 0.1, far = 10.0, cutoff = 0.4, cutoff_max = 5.0;
+  double near = 0.1, far = 10.0, cutoff = 0.4, cutoff_max = 5.0;
   numbers.at(camera, "horizontal_fov", k.hfov);
-  numbers.at(camera, "image/width", width);
-  numbers.at(camera, "image/height", height);
+  numbers.count(camera, "image/width", k.width, Bounds{1.0, core::ranges::kMaxPixels});
+  numbers.count(camera, "image/height", k.height, Bounds{1.0, core::ranges::kMaxPixels});
   numbers.at(camera, "clip/near", near);
   numbers.at(camera, "clip/far", far);
   numbers.at(camera, "noise/stddev", k.noise);
   own.at(&plugin, "pointCloudCutoff", cutoff);
   own.at(&plugin, "pointCloudCutoffMax", cutoff_max);
-  k.width = static_cast<int>(std::lround(std::clamp(width, 0.0, 1e7)));
-  k.height = static_cast<int>(std::lround(std::clamp(height, 0.0, 1e7)));
   k.min_depth = std::max(near, cutoff);
   k.max_depth = std::min(far, cutoff_max);
   c.topic = childText(plugin, "cameraName", "camera");
   c.image_topic = childText(plugin, "depthImageTopicName", "depth/image_raw");
   c.info_topic = childText(plugin, "depthImageCameraInfoTopicName", "depth/camera_info");
   c.points_topic = childText(plugin, "pointCloudTopicName", "points");
-  c.frame_id = childText(plugin, "frameName", "");
+  c.frame_id = childFrame(plugin, "frameName", "", c.key + " <plugin>");
   unread("<sensor type=\"depth\"> its colour or IR image (depth only here)", link);
   return c;
 }
@@ -159,7 +158,7 @@ RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
       c.samples = 640;
       c.min_range = 0.0;  // <range><min> and <max> are required in SDF
       if (const TiXmlElement* pose = s->FirstChildElement("pose")) l.pose = sdfPose(numbers.read(*pose, "pose", 6));
-      numbers.at(s, "update_rate", l.rate);
+      numbers.rate(s, "update_rate", l.rate);
       if (l.rate == 0.0) {  // Gazebo's "every physics step": 10 Hz here, said
         l.rate = 10.0;
         unread("<sensor> <update_rate> 0 (read as 10 Hz)", link);
@@ -170,10 +169,18 @@ RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
             std::tuple{"vertical", &c.vertical_samples, &c.vertical_min_angle, &c.vertical_max_angle}}) {
         const std::string at = std::string("scan/") + axis + "/";
         if (Numbers::find(ray, std::string("scan/") + axis) == nullptr) continue;
-        double n = *samples, resolution = 1.0;
-        numbers.at(ray, at + "samples", n);
-        numbers.at(ray, at + "resolution", resolution);
-        *samples = static_cast<int>(std::lround(n * resolution));  // Gazebo: samples × resolution readings
+        // Gazebo: samples × resolution readings. Read as a count, not a
+        // double cast to int: 4294967297 once wrapped to one ray.
+        int n = *samples;
+        double resolution = 1.0;
+        numbers.count(ray, at + "samples", n, Bounds{1.0, core::ranges::kMaxRays});
+        numbers.at(ray, at + "resolution", resolution, Bounds{0.0, core::ranges::kMaxRays, true});
+        const double readings = std::round(n * resolution);
+        if (!(readings >= 1.0 && readings <= core::ranges::kMaxRays)) {
+          throw std::invalid_argument(l.key + " <" + at + "samples> x <resolution>: " + std::to_string(readings) +
+                                      " readings, not within [1, 1e6]");
+        }
+        *samples = static_cast<int>(readings);
         numbers.at(ray, at + "min_angle", *lo);
         numbers.at(ray, at + "max_angle", *hi);
       }
@@ -184,9 +191,7 @@ RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
       numbers.at(ray, "noise/mean", mean);
       if (mean != 0.0) unread("<sensor> <noise><mean>", link);
       if (const TiXmlElement* t = plugin->FirstChildElement("topicName"); t && t->GetText()) l.topic = t->GetText();
-      if (const TiXmlElement* f = plugin->FirstChildElement("frameName"); f && f->GetText()) {
-        l.frame_id = f->GetText();
-      }
+      l.frame_id = childFrame(*plugin, "frameName", "", l.key + " <plugin>");
       if (kind == 2) {  // the Velodyne plugin's own range and noise
         if (l.topic == "scan") l.topic = "points";
         const Numbers own(l.key + " <plugin>");

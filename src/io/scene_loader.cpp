@@ -135,6 +135,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
   std::vector<int> entry;
   std::vector<RobotControls> controls;
   std::vector<RobotSensors> sensors;
+  DeviceMemory memory{config.device_memory};
   for (std::size_t i = 0; i < config.bodies.size(); ++i) {
     const BodyEntry& e = config.bodies[i];
     const std::string key = "bodies[" + std::to_string(i) + "]";
@@ -173,7 +174,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
       notes.push_back(std::move(note));
     }
     sensors.push_back(mountSensors(configSensors(e.imu, e.odom_noise, e.lidars, e.cameras, key + "."),
-                                   described.sensors, model, spec.dt));
+                                   described.sensors, model, spec.dt, memory));
     entry.push_back(-1 - static_cast<int>(robots.size()));
     robots.push_back({e.name, std::move(model), e.friction, e.restitution});
   }
@@ -222,8 +223,9 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
   for (std::string& note : transmissionNotes(config.controllers, described.sensors.transmissions, model)) {
     notes.push_back(std::move(note));
   }
+  DeviceMemory memory{config.device_memory};
   RobotSensors sensors = mountSensors(configSensors(config.imu, config.odom_noise, config.lidars, config.cameras, ""),
-                                      described.sensors, model, config.model.dt);
+                                      described.sensors, model, config.model.dt, memory);
   core::ModelSpec spec = config.model;
   spec.bodies.clear();
   const std::string name = model.name;

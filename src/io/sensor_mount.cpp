@@ -33,6 +33,11 @@ bool poseIn(const core::ArticulatedLink& link, const std::string& name, core::Po
 /// and X_LS of `pose` in `link` in j's frame; refused naming `key`.link.
 void mount(const core::ArticulationModel& model, const std::string& link, const core::Pose& pose,
            const std::string& key, int& j, core::Pose& X_LS) {
+  // As an IMU's: a sensor 1e39 m up published a cloud point at -inf.
+  if (!(pose.translation.norm() <= core::ranges::kMaxExtent)) {
+    throw ConfigError("config key '" + key + ".pose': the sensor is more than " +
+                      std::to_string(static_cast<int>(core::ranges::kMaxExtent)) + " m from its link");
+  }
   j = -1;
   for (std::size_t i = 0; i < model.links.size() && j < 0; ++i) {
     if (poseIn(model.links[i], link, X_LS)) j = static_cast<int>(i);
@@ -100,8 +105,11 @@ void mountOdometry(const std::vector<OdometryEntry>& entries, const core::Articu
   }
 }
 
-void mountLidars(const std::vector<LidarEntry>& entries, const core::ArticulationModel& model,
-                 std::vector<RobotLidar>& out) {
+/// "12 MiB" (rounded up).
+std::string mib(std::uintmax_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
+
+void mountLidars(const std::vector<LidarEntry>& entries, const core::ArticulationModel& model, DeviceMemory& memory,
+                 RobotSensors& out) {
   for (const LidarEntry& e : entries) {
     try {  // a URDF's markup is checked here; the config's was when it was read
       core::checkLidar(e.settings);
@@ -112,12 +120,15 @@ void mountLidars(const std::vector<LidarEntry>& entries, const core::Articulatio
     checkTopic(e.topic, e.key);
     RobotLidar mounted{e, -1, {}};
     mount(model, e.link, e.pose, e.key, mounted.link, mounted.X_LS);
-    out.push_back(std::move(mounted));
+    const std::uintmax_t bytes = core::lidarBytes(e.settings);
+    memory.take(bytes, e.key);
+    out.bytes += bytes;
+    out.lidars.push_back(std::move(mounted));
   }
 }
 
 void mountCameras(const std::vector<DepthCameraEntry>& entries, const core::ArticulationModel& model,
-                  std::vector<RobotCamera>& out) {
+                  DeviceMemory& memory, RobotSensors& out) {
   for (const DepthCameraEntry& e : entries) {
     checkTopic(e.topic, e.key);
     // Each under the camera's namespace, or from the root ('/...') as
@@ -131,7 +142,10 @@ void mountCameras(const std::vector<DepthCameraEntry>& entries, const core::Arti
     }
     RobotCamera mounted{e, -1, {}};
     mount(model, e.link, e.pose, e.key, mounted.link, mounted.X_LS);
-    out.push_back(std::move(mounted));
+    const std::uintmax_t bytes = core::depthCameraBytes(e.settings);
+    memory.take(bytes, e.key);
+    out.bytes += bytes;
+    out.cameras.push_back(std::move(mounted));
   }
 }
 
@@ -158,14 +172,29 @@ void mountImus(const std::vector<ImuEntry>& entries, const core::ArticulationMod
 
 }  // namespace
 
+void DeviceMemory::take(std::uintmax_t bytes, const std::string& key) {
+  if (bytes > budget || used > budget - bytes) {
+    throw ConfigError("config key '" + key + "': the device would hold " + mib(bytes) +
+                      ", and the devices may hold devices.memory = " + mib(budget) + " in all (" + mib(used) +
+                      " of it counted before this one): give it fewer rays or pixels, or raise devices.memory");
+  }
+  used += bytes;
+}
+
 RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup, const core::ArticulationModel& model,
-                          double dt) {
+                          double dt, DeviceMemory& memory) {
   RobotSensors out;
-  for (const auto& [sensors, from_markup] : {std::pair{&config, false}, std::pair{&markup, true}}) {
-    mountImus(sensors->imus, model, dt, from_markup, out.imus);
-    mountLidars(sensors->lidars, model, out.lidars);
-    mountCameras(sensors->cameras, model, out.cameras);
-    mountOdometry(sensors->odometry, model, dt, from_markup, out.odometry);
+  const std::uintmax_t before = memory.used;
+  try {
+    for (const auto& [sensors, from_markup] : {std::pair{&config, false}, std::pair{&markup, true}}) {
+      mountImus(sensors->imus, model, dt, from_markup, out.imus);
+      mountLidars(sensors->lidars, model, memory, out);
+      mountCameras(sensors->cameras, model, memory, out);
+      mountOdometry(sensors->odometry, model, dt, from_markup, out.odometry);
+    }
+  } catch (...) {
+    memory.used = before;  // refused: none of this robot's devices is counted
+    throw;
   }
   return out;
 }

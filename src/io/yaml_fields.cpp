@@ -108,4 +108,10 @@ std::string text(const YAML::Node& node, const std::string& key) {
   return node.as<std::string>();
 }
 
+std::string frameId(const YAML::Node& node, const std::string& key) {
+  std::string frame = text(node, key);
+  if (const std::string problem = frameIdProblem(frame); !problem.empty()) fail(key, problem);
+  return frame;
+}
+
 }  // namespace rigid_body_sim::io::yaml_fields

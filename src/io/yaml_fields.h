@@ -27,6 +27,7 @@ core::Vec3 vec3(const YAML::Node& node, const std::string& key);     ///< [x, y,
 bool boolean(const YAML::Node& node, const std::string& key);
 /// `path.rpy` or `path.quaternion` ([x, y, z, w], unit within 1e-3), or the identity.
 core::Quat orientation(const YAML::Node& node, const std::string& path);
-std::string text(const YAML::Node& node, const std::string& key);  ///< non-empty
+std::string text(const YAML::Node& node, const std::string& key);     ///< non-empty
+std::string frameId(const YAML::Node& node, const std::string& key);  ///< a tf frame id (io::frameIdProblem)
 
 }  // namespace rigid_body_sim::io::yaml_fields

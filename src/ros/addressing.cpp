@@ -1,5 +1,7 @@
 #include "rigid_body_sim/ros/addressing.h"
 
+#include "rigid_body_sim/io/config.h"
+
 namespace rigid_body_sim::node {
 
 std::optional<int> Addressing::body(const std::string& name, std::string& error) const {
@@ -12,7 +14,7 @@ std::optional<int> Addressing::body(const std::string& name, std::string& error)
   const BodyDirectory& directory = ports_.directory();
   if (const auto found = directory.byName(name)) return found;
   error = name.empty() ? "there are several bodies: give body (" + directory.names() + ")"
-                       : "unknown body '" + name + "' (the bodies: " + directory.names() + ")";
+                       : "unknown body '" + io::shownName(name) + "' (the bodies: " + directory.names() + ")";
   return std::nullopt;
 }
 
@@ -20,8 +22,8 @@ std::optional<Axes> Addressing::axes(const std::string& frame, int body, std::st
   if (isWorld(frame)) return Axes{};
   if (frame == ports_[body].frame || frame == sim_.model().body(body).link) return Axes{core::Frame::kBody, -1};
   if (const auto other = ports_.directory().byFrame(frame)) return Axes{core::Frame::kWorld, *other};
-  error = "unknown frame '" + frame + "' (use '" + world_frame_ + "', the body's frame '" + ports_[body].frame + "'" +
-          (ports_.size() > 1 ? " or another body's tf frame" : "") + ")";
+  error = "unknown frame '" + io::shownName(frame) + "' (use '" + world_frame_ + "', the body's frame '" +
+          ports_[body].frame + "'" + (ports_.size() > 1 ? " or another body's tf frame" : "") + ")";
   return std::nullopt;
 }
 
@@ -40,7 +42,7 @@ std::optional<core::Pose> Addressing::pose(const std::string& frame, std::string
     const core::LinkState link = core::linkState(sim_.model().body(*body), sim_.state.bodies[*body]);
     return core::Pose{link.q_WL, link.p_WL};
   }
-  error = "frame: unknown frame '" + frame + "' (use '" + world_frame_ + "'" +
+  error = "frame: unknown frame '" + io::shownName(frame) + "' (use '" + world_frame_ + "'" +
           (ports_.size() == 0 ? "" : " or a body's tf frame" + ports_.directory().frames()) + ")";
   return std::nullopt;
 }

@@ -41,7 +41,8 @@ std::optional<std::size_t> JointRequests::robot(const std::string& name, std::st
     if (robots[r].name == name) return r;
   }
   error = "model_name: " +
-          (name.empty() ? std::string("there are several robots, or none: give one") : "no robot '" + name + "'") +
+          (name.empty() ? std::string("there are several robots, or none: give one")
+                        : "no robot '" + io::shownName(name) + "'") +
           " (the robots: " + robotNames(sim_.scene) + ")";
   return std::nullopt;
 }
@@ -60,9 +61,9 @@ std::optional<std::pair<std::size_t, int>> JointRequests::joint(const std::strin
     ++matches;
   }
   if (matches == 1) return found;
-  error = "joint_name: " +
-          (matches > 1 ? "several robots have a joint '" + name + "': give ROBOT/" + name
-                       : "no robot has a moving joint '" + name + "' (the robots: " + robotNames(sim_.scene) + ")");
+  error = "joint_name: " + (matches > 1 ? "several robots have a joint '" + name + "': give ROBOT/" + name
+                                        : "no robot has a moving joint '" + io::shownName(name) +
+                                              "' (the robots: " + robotNames(sim_.scene) + ")");
   return std::nullopt;
 }
 
@@ -84,7 +85,7 @@ std::string configureJoints(const core::ArticulationModel& model, const core::Sp
     const std::string at = "[" + std::to_string(k) + "]";
     const int j = linkOf(model, name);
     if (j < 0) {
-      return "joint_names" + at + ": robot '" + model.name + "' has no moving joint '" + name + "'" +
+      return "joint_names" + at + ": robot '" + model.name + "' has no moving joint '" + io::shownName(name) + "'" +
              core::heldJointNote(model, name);
     }
     const core::ArticulatedLink& link = model.links[j];

@@ -122,6 +122,7 @@ void RangeSensors::addRobot(const std::string& robot, const std::string& prefix,
                             const std::vector<io::RobotLidar>& lidars, const std::vector<io::RobotCamera>& cameras) {
   std::vector<CameraPort> camera_ports;
   for (const io::RobotCamera& c : cameras) {
+    bytes_ += core::depthCameraBytes(c.entry.settings);
     const std::string& frame = c.entry.frame_id.empty() ? c.entry.link : c.entry.frame_id;
     CameraPort p{
         core::DepthCamera(c.entry.settings), c.link, c.X_LS, 1, c.entry.millimetres, frame_prefix + frame, {}, {}, {}};
@@ -140,6 +141,7 @@ void RangeSensors::addRobot(const std::string& robot, const std::string& prefix,
   cameras_.push_back(std::move(camera_ports));
   std::vector<Port> ports;
   for (const io::RobotLidar& l : lidars) {
+    bytes_ += core::lidarBytes(l.entry.settings);
     const std::string& frame = l.entry.frame_id.empty() ? l.entry.link : l.entry.frame_id;
     Port p{core::Lidar(l.entry.settings), l.link, l.X_LS, l.entry.rate, 1, frame_prefix + frame, {}};
     p.every = std::max(1LL, std::llround(1.0 / (l.entry.rate * dt_)));
@@ -153,6 +155,13 @@ void RangeSensors::addRobot(const std::string& robot, const std::string& prefix,
     ports.push_back(std::move(p));
   }
   robots_.push_back(std::move(ports));
+}
+
+void RangeSensors::removeRobot(std::size_t r) {
+  for (const Port& p : robots_.at(r)) bytes_ -= core::lidarBytes(p.lidar.settings());
+  for (const CameraPort& p : cameras_.at(r)) bytes_ -= core::depthCameraBytes(p.camera.settings());
+  robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r));
+  cameras_.erase(cameras_.begin() + static_cast<std::ptrdiff_t>(r));
 }
 
 void RangeSensors::restart() {

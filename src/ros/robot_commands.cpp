@@ -52,8 +52,10 @@ std::vector<std::unique_ptr<DrivePorts>> RobotCommands::openDrives(std::size_t r
       if (it == robot_names_.end()) return;
       core::DiffDrive& drive = controls_[static_cast<std::size_t>(it - robot_names_.begin())].drives[d];
       if (!drive.command(v, w, time_.simTime())) {
-        ROS_WARN_THROTTLE(kWarnPeriod, "sim_node: robot '%s': controller '%s': a cmd_vel not finite: dropped",
-                          name.c_str(), drive.spec().name.c_str());
+        ROS_WARN_THROTTLE(
+            kWarnPeriod,
+            "sim_node: robot '%s': controller '%s': a cmd_vel not finite or beyond 1e4 m/s or rad/s: dropped",
+            name.c_str(), drive.spec().name.c_str());
       }
     };
     out.push_back(
@@ -152,8 +154,8 @@ void RobotCommands::command(std::size_t r, std::size_t c, const std::vector<doub
   std::vector<core::Clipped> clipped;
   if (!controllers.command(c, values, clipped)) {
     ROS_WARN_THROTTLE(kWarnPeriod,
-                      "sim_node: robot '%s': controller '%s': a command of %zu values, %zu expected and each finite: "
-                      "dropped",
+                      "sim_node: robot '%s': controller '%s': a command of %zu values, %zu expected and each finite "
+                      "and not absurd (core/bodies/ranges.h): dropped",
                       robot_names_[r].c_str(), spec.name.c_str(), values.size(), spec.joints.size());
     return;
   }

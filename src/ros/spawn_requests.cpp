@@ -58,7 +58,7 @@ io::UrdfText readRequestedUrdf(const SpawnBody::Request& req, const ros::NodeHan
       where = "urdf_param '" + nh.resolveName(req.urdf_param) + "'";
       if (!nh.getParam(req.urdf_param, xml)) throw std::invalid_argument(where + ": not set, or holds no string");
     } catch (const ros::InvalidNameException& e) {
-      throw std::invalid_argument("urdf_param '" + req.urdf_param + "': not a parameter name (" + e.what() + ")");
+      throw std::invalid_argument("urdf_param '" + io::shownName(req.urdf_param) + "': not a parameter name");
     }
     return {xml, where, ""};
   }
@@ -110,7 +110,7 @@ io::RobotControls requestedControls(const SpawnBody::Request& req, const ros::No
 /// (the base where the loop puts it), its controllers. Throws std::exception
 /// naming the field.
 void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf, const io::UrdfOptions& options,
-                        const core::SpeedLimits& limits, double dt, const ros::NodeHandle& nh,
+                        const core::SpeedLimits& limits, double dt, const ros::NodeHandle& nh, io::DeviceMemory memory,
                         SpawnQueue::Spawn& spawn) {
   io::RobotDevices config, markup;
   if (!req.imu.empty()) config.imus.push_back(io::parseImuText(req.imu, "imu", dt));
@@ -122,7 +122,7 @@ void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf,
   with_sensors.sensors = &markup;
   core::ArticulationModel model = io::loadArticulationString(urdf.xml, urdf.source, urdf.base_dir, with_sensors);
   model.name = req.name;
-  spawn.sensors = io::mountSensors(config, markup, model, dt);
+  spawn.sensors = io::mountSensors(config, markup, model, dt, memory);
   if (model.fixed_base &&
       (fromVector3(req.twist.linear) != core::Vec3::Zero() || fromVector3(req.twist.angular) != core::Vec3::Zero())) {
     throw std::invalid_argument("twist: robot '" + req.name +
@@ -159,7 +159,10 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
   try {
     const io::UrdfText urdf = readRequestedUrdf(req, nh_, params_.sim.base_dir);
     if (io::describesRobot(urdf.xml, urdf.source)) {
-      loadRequestedRobot(req, urdf, options, spawn_limits_, dt_, nh_, spawn);
+      // Its devices counted on top of those built so far (a delete on the loop may lower that meanwhile).
+      loadRequestedRobot(req, urdf, options, spawn_limits_, dt_, nh_,
+                         io::DeviceMemory{params_.sim.device_memory, range_sensors_ ? range_sensors_->bytes() : 0},
+                         spawn);
       spawn.request = req;
       res = spawns_.submit(std::move(spawn), [] { return ros::ok(); });  // the loop adds it at its next tick
       tellRepairs(notes, res);

@@ -101,10 +101,23 @@ TEST(DiffDriveController, RefusalsNameTheKey) {
           "'controllers.base.linear.x.max_velocity': is missing: has_velocity_limits is true");
   refused(drive + ", linear: {y: {}}}}", "controllers.base.linear");
   refused(drive + ", wheel_radius: -1}}", "'controllers.base.wheel_radius'");
+  // Limit pairs that do not hold 0 drove the base 2.5-5.3 m with no command.
+  refused(drive + ", linear: {x: {has_velocity_limits: true, max_velocity: -0.5, min_velocity: -1}}}}",
+          "'controllers.base.linear.x.max_velocity': must be >= 0: a zero command would drive the base");
+  refused(drive + ", linear: {x: {has_velocity_limits: true, max_velocity: 2, min_velocity: 1}}}}",
+          "'controllers.base.linear.x.min_velocity': must be <= 0");
+  refused(drive + ", linear: {x: {has_acceleration_limits: true, max_acceleration: -1, min_acceleration: -2}}}}",
+          "'controllers.base.linear.x.max_acceleration': must be >= 0");
+  refused(drive + ", angular: {z: {has_jerk_limits: true, max_jerk: -1, min_jerk: -2}}}}",
+          "'controllers.base.angular.z.max_jerk': must be >= 0");
   refused(drive + ", publish_rate: 1e300}}", "'controllers.base.publish_rate': must be within");
   refused(drive + ", pose_covariance_diagonal: [1, 2]}}", "'controllers.base.pose_covariance_diagonal'");
   refused(drive + ", publish_joint_trajectory_controller_state: true}}", "control_msgs");
   refused(drive + ", odom_frame_id: base_link}}", "'controllers.base.odom_frame_id'");
+  // Frame ids as tf2 takes them.
+  refused(drive + ", base_frame_id: 'bad frame#!'}}",
+          "'controllers.base.base_frame_id': 'bad frame#!' is no tf frame id: letters, digits");
+  refused(drive + ", odom_frame_id: /odom}}", "'controllers.base.odom_frame_id': '/odom' starts with '/'");
   refused(drive + ", cmd_vel_timout: 1}}", "cmd_vel_timout");
   refused(drive +
               "}, spin: {type: velocity_controllers/JointVelocityController, joint: left_wheel_joint,"

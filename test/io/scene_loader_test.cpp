@@ -10,6 +10,7 @@
 #include <string>
 
 #include "../test_util.h"
+#include "rigid_body_sim/core/devices/depth_camera.h"
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/io/transmissions.h"
 #include "rigid_body_sim/io/urdf_loader.h"
@@ -124,7 +125,7 @@ TEST(SceneLoader, RefusesWhatAnEntryWouldNotRead) {
           "'bodies[0].lidar.samples'");
   refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, lidar: {link: caster, beams: 3}}\n", "beams");
   refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, depth_camera: {link: caster, hfov: 3.2}}\n",
-          "'bodies[0].depth_camera': hfov must be within (0, pi) rad");
+          "'bodies[0].depth_camera': hfov must be within [0.001, pi) rad");
   refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, depth_camera: {link: caster, encoding: rgb8}}\n",
           "'bodies[0].depth_camera.encoding': 'rgb8': 32FC1 (m) or 16UC1 (mm)");
   refused("bodies:\n  - {name: rover, urdf: diff_drive.urdf, depth_camera: {link: lens}}\n",
@@ -296,6 +297,120 @@ TEST(GazeboLidars, ANumberTheMarkupCannotHoldIsRefusedNamingIt) {
   }
 }
 
+// Counts and rates the markup gives are read as Gazebo's types and ranges,
+// or refused naming the element: <samples>4294967297</samples> wrapped to one
+// ray, -360 with <resolution>-1</resolution> was read as 360; a lidar's
+// angles of ±1e39 and a range of 1e39 reached LaserScan as inf; a pose of
+// 1e300 m was taken.
+TEST(GazeboLidars, ACountRateOrRangeGazeboWouldNotHoldIsRefusedNamingIt) {
+  const auto refusal = [](const std::string& from, const std::string& to) -> std::string {
+    std::string markup = kLaser;
+    const std::size_t at = markup.find(from);
+    if (at == std::string::npos) return "(no '" + from + "' in the markup)";
+    markup.replace(at, from.size(), to);
+    try {
+      io::loadScene(config(""), [&] { return laserRobot(markup); });
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  const std::string sensor = "<sensor name=\"front\"> ";
+  const struct {
+    const char *from, *to, *why;
+  } cases[] = {
+      {"<samples>180", "<samples>4294967297", "<scan/horizontal/samples> = '4294967297': must be within [1, 1e+06]"},
+      {"<samples>180", "<samples>-360", "<scan/horizontal/samples> = '-360'"},
+      {"<samples>180", "<samples>180.5", "<scan/horizontal/samples> = '180.5': must be a whole number"},
+      {"<resolution>2", "<resolution>-1", "<scan/horizontal/resolution> = '-1': must be within (0, 1e+06]"},
+      {"<resolution>2", "<resolution>1e6", "x <resolution>"},
+      {"<min_angle>-1.5", "<min_angle>-1e39", "min_angle and max_angle must be within [-2 pi, 2 pi]"},
+      {"<max>12", "<max>1e39", "max_range must be <= 1e5 m"},
+      {"<update_rate>20", "<update_rate>1e9", "<update_rate> = '1e9': must be 0"},
+      {"<update_rate>20", "<update_rate>-1", "<update_rate> = '-1': must be 0"},
+      {"<pose>0 0 0.05", "<pose>0 0 1e39", "the sensor is more than 1000 m from its link"},
+  };
+  for (const auto& c : cases) {
+    const std::string got = refusal(c.from, c.to);
+    EXPECT_NE(got.find(c.why), std::string::npos) << c.to << ": " << got;
+    EXPECT_NE(got.find("front"), std::string::npos) << c.to << ": " << got;
+  }
+  EXPECT_EQ(refusal("<update_rate>20", "<update_rate>0"), "(accepted)");  // Gazebo's "every step": 10 Hz, said
+  // A frame id tf2 would not take; a leading '/' is dropped, as gazebo_ros's tf::resolve drops it.
+  EXPECT_NE(refusal("<frameName>laser_link", "<frameName>bad frame#!")
+                .find("<plugin> <frameName>: 'bad frame#!' is no tf frame id"),
+            std::string::npos);
+  std::string slash = kLaser;
+  slash.replace(slash.find("<frameName>laser_link"), 21, "<frameName>/laser_link");
+  const io::SceneSetup s = io::loadScene(config(""), [&] { return laserRobot(slash); });
+  EXPECT_EQ(s.sensors.at(0).lidars.at(0).entry.frame_id, "laser_link");
+}
+
+// A depth camera's image size is a count, its field of view SDF's range.
+TEST(GazeboCameras, ASizeOrFieldOfViewGazeboWouldNotHoldIsRefusedNamingIt) {
+  const auto camera = [](const std::string& fov, const std::string& width) {
+    return "<gazebo reference='base_link'><sensor type='depth' name='cam'><camera><horizontal_fov>" + fov +
+           "</horizontal_fov><image><width>" + width +
+           "</width><height>48</height></image></camera><plugin name='k' filename='libgazebo_ros_openni_kinect.so'/>"
+           "</sensor></gazebo>";
+  };
+  const auto refusal = [](const std::string& markup) -> std::string {
+    try {
+      io::loadScene(config(""), [&] { return laserRobot(markup); });
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  EXPECT_NE(refusal(camera("1e-320", "64")).find("hfov must be within [0.001, pi)"), std::string::npos);
+  EXPECT_NE(refusal(camera("1", "-64")).find("<image/width> = '-64'"), std::string::npos);
+  EXPECT_NE(refusal(camera("1", "64.5")).find("must be a whole number"), std::string::npos);
+  EXPECT_NE(refusal(camera("1", "1e10")).find("<image/width> = '1e10'"), std::string::npos);
+  EXPECT_EQ(refusal(camera("1", "64")), "(accepted)");
+}
+
+// What the lidars and depth cameras may hold (devices.memory) is counted
+// before any is built: 40 depth cameras of 2000 x 2000 once ended the node
+// in std::bad_alloc naming no key; a URDF with 400 took 5.8 GB.
+TEST(DeviceMemory, EachLidarAndCameraIsCountedBeforeItIsBuiltAndRefusedBeyondTheBudget) {
+  std::string cameras = "[";
+  for (int k = 0; k < 8; ++k) cameras += std::string(k ? ", " : "") + "{link: base_link, width: 2000, height: 2000}";
+  cameras += "]";
+  try {
+    io::loadScene(config("depth_camera: " + cameras), [&] { return laserRobot(""); });
+    ADD_FAILURE() << "eight 2000 x 2000 cameras in the default 1024 MiB";
+  } catch (const io::ConfigError& e) {
+    // 2000 x 2000 x 80 bytes = 306 MiB each: the fourth is beyond 1024 MiB.
+    EXPECT_NE(std::string(e.what()).find("config key 'depth_camera[3]': the device would hold 306 MiB"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("devices.memory = 1024 MiB in all (916 MiB of it counted before"),
+              std::string::npos)
+        << e.what();
+  }
+  const io::SceneSetup s =
+      io::loadScene(config("devices: {memory: 4096}\ndepth_camera: " + cameras), [&] { return laserRobot(""); });
+  EXPECT_EQ(s.sensors.at(0).cameras.size(), 8u);
+  EXPECT_EQ(s.sensors[0].bytes, 8u * core::depthCameraBytes(s.sensors[0].cameras[0].entry.settings));
+  // One device beyond the budget by itself, in markup: refused naming it.
+  try {
+    io::loadScene(config("devices: {memory: 16}"), [&] { return laserRobot(kLaser); });
+    SUCCEED();  // 360 rays: well within 16 MiB
+    std::string big = kLaser;
+    big.replace(big.find("<samples>180"), 12, "<samples>500000");
+    io::loadScene(config("devices: {memory: 16}"), [&] { return laserRobot(big); });
+    ADD_FAILURE() << "a lidar of 1e6 rays in 16 MiB";
+  } catch (const io::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("<sensor name=\"front\">': the device would hold"), std::string::npos)
+        << e.what();
+  }
+  // The key itself is checked.
+  for (const char* bad :
+       {"devices: {memory: 0}", "devices: {memory: 1e9}", "devices: {memory: 1.5}", "devices: {memroy: 10}"}) {
+    EXPECT_THROW(config(bad), io::ConfigError) << bad;
+  }
+}
+
 TEST(GazeboImus, AnImuSensorOrTheImuModelPluginIsAnImuWithItsMarkupsSettings) {
   const std::string sensor =
       "<gazebo reference='laser_link'><sensor type='imu' name='imu'><update_rate>50</update_rate>"
@@ -456,6 +571,43 @@ TEST(GazeboDrive, TheDiffDrivePluginIsADiffDriveControllerOnItsTopics) {
   }
 }
 
+// Values the plugin would take but that make no drive: refused at load,
+// naming the element. wheelTorque -5 reached std::clamp(u, 5, -5) and drove
+// the base at 1.8 m/s with no command; updateRate 1e-300 and 1e9 published
+// odometry at every step; wheelAcceleration -1 was dropped without a word; a
+// wheelSeparation of 0 was said to be "not given".
+TEST(GazeboDrive, AValueNoDriveCanHaveIsRefusedNamingItsElement) {
+  const auto refusal = [](const std::string& element) -> std::string {
+    io::UrdfText text = io::readUrdfFile("diff_drive.urdf", kUrdf);
+    text.xml.insert(text.xml.rfind("</robot>"),
+                    "<gazebo><plugin name='w' filename='libgazebo_ros_diff_drive.so'><leftJoint>left_wheel_joint"
+                    "</leftJoint><rightJoint>right_wheel_joint</rightJoint>" +
+                        element + "</plugin></gazebo>");
+    try {
+      io::loadScene(config(""), [&] { return text; });
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  const std::pair<const char*, const char*> cases[] = {
+      {"<wheelTorque>-5</wheelTorque>", "<wheelTorque> = '-5': must be > 0 N*m"},
+      {"<wheelTorque>0</wheelTorque>", "<wheelTorque> = '0': must be > 0 N*m"},
+      {"<wheelAcceleration>-1</wheelAcceleration>", "<wheelAcceleration> = '-1': must be >= 0"},
+      {"<updateRate>1e-300</updateRate>", "<updateRate> = '1e-300': must be 0 (as fast as it can) or within [0.01"},
+      {"<updateRate>1e9</updateRate>", "<updateRate> = '1e9': must be 0"},
+      {"<updateRate>-50</updateRate>", "<updateRate> = '-50': must be 0"},
+      {"<wheelSeparation>0</wheelSeparation>", "<wheelSeparation> = '0': must be within (0, 1000] m"},
+      {"<wheelSeparation>-0.3</wheelSeparation>", "<wheelSeparation> = '-0.3'"},
+      {"<wheelDiameter>-0.1</wheelDiameter>", "<wheelDiameter> = '-0.1'"},
+  };
+  for (const auto& [element, why] : cases) {
+    const std::string got = refusal(element);
+    EXPECT_NE(got.find(std::string("<plugin name=\"w\"> ") + why), std::string::npos) << element << ": " << got;
+  }
+  EXPECT_EQ(refusal("<wheelTorque>20</wheelTorque><updateRate>0</updateRate>"), "(accepted)");
+}
+
 TEST(GazeboCameras, ADepthSensorWithTheKinectPluginIsADepthCameraWithItsMarkupsSettings) {
   const std::string kinect =
       "<gazebo reference='laser_link'><sensor type='depth' name='kinect'><update_rate>15</update_rate>"
@@ -496,14 +648,17 @@ TEST(GazeboCameras, ADepthSensorWithTheKinectPluginIsADepthCameraWithItsMarkupsS
   const io::SceneSetup r = io::loadScene(config(""), [&] { return laserRobot(rooted); });
   EXPECT_EQ(r.sensors.at(0).cameras.at(0).entry.image_topic, "/camera_face/depth/image_raw");
   EXPECT_EQ(r.sensors[0].cameras[0].entry.points_topic, "/cam1/point_cloud_face");
-  // A size no camera can have is refused, naming the markup.
+  // A size no camera can have is refused, naming the markup (as the markup's
+  // reader reads the count, before any camera is mounted).
   std::string bad = kinect;
   bad.replace(bad.find("<width>160"), 10, "<width>0");
   try {
     io::loadScene(config(""), [&] { return laserRobot(bad); });
     ADD_FAILURE() << "a camera 0 pixels wide was accepted";
-  } catch (const io::ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("<sensor name=\"kinect\">"), std::string::npos) << e.what();
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("<sensor name=\"kinect\"> <image/width> = '0': must be within [1, 4e+06]"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -20,6 +20,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "node_fixture.h"
@@ -465,6 +466,37 @@ TEST_F(BadUrdf, NodeExitsNamingTheProblem) {
   const auto [code, out] = runNode("/bad_param", good);
   EXPECT_EQ(code, 1) << out;
   EXPECT_NE(out.find("dt = -0.001"), std::string::npos) << out;
+}
+
+/// A robot on two wheels with `sensors` in its base's Gazebo markup.
+std::string sensorRobot(const std::string& sensors) {
+  const std::string inertial = std::string("<inertial><mass value='1'/>") + kInertia + "</inertial>";
+  return "<robot name='r'><link name='base'>" + inertial + kCollision +
+         "</link><joint name='axle' type='continuous'><parent link='base'/><child link='wheel'/>"
+         "<axis xyz='0 1 0'/></joint><link name='wheel'>" +
+         inertial + "</link><gazebo reference='base'>" + sensors + "</gazebo></robot>";
+}
+/// A ray sensor `name` of `fans` fans of 90 rays, on topic 'scan'.
+std::string raySensor(const std::string& name, int fans) {
+  return "<sensor type='ray' name='" + name +
+         "'><ray><scan><horizontal><samples>90</samples><min_angle>-1</min_angle><max_angle>1</max_angle>"
+         "</horizontal><vertical><samples>" +
+         std::to_string(fans) +
+         "</samples></vertical></scan><range><min>0.1</min><max>10</max></range></ray><plugin name='p' "
+         "filename='libgazebo_ros_laser.so'><topicName>scan</topicName></plugin></sensor>";
+}
+
+// The lidars and cameras beyond devices.memory stop the node naming the
+// key, before any is built (40 depth cameras ended it in std::bad_alloc).
+TEST_F(BadUrdf, DevicesBeyondTheirMemoryStopTheNodeNamingThem) {
+  // One lidar of 90 x 4000 rays (about 24 MiB) over a budget of 1 MiB.
+  ros::param::set("/small_memory/sim_node/devices/memory", 1);
+  const auto [code, out] = runNode("/small_memory", sensorRobot(raySensor("flat", 4000)));
+  EXPECT_EQ(code, 1) << out;
+  EXPECT_NE(out.find("<sensor name=\"flat\">': the device would hold 24 MiB, and the devices may hold "
+                     "devices.memory = 1 MiB in all"),
+            std::string::npos)
+      << out;
 }
 
 TEST_F(BadUrdf, ARepairedUrdfStartsAndSaysWhatWasRepairedOnce) {

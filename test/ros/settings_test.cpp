@@ -44,7 +44,7 @@ std::map<std::string, YAML::Node> defaultYamlKeys() {
   std::map<std::string, YAML::Node> keys;
   for (const auto& entry : root) {
     const std::string name = entry.first.as<std::string>();
-    if (name == "initial" || name == "scene" || name == "urdf") continue;
+    if (name == "initial" || name == "scene" || name == "urdf" || name == "devices") continue;
     if (entry.second.IsMap()) {
       for (const auto& inner : entry.second) keys[name + "." + inner.first.as<std::string>()] = inner.second;
     } else {
@@ -88,6 +88,14 @@ TEST(Settings, TheUrdfKeyIsTheLoadersDefault) {
   EXPECT_FALSE(rigid_body_sim::io::parseConfig(YAML::Load("urdf: {repair: false}"), "").urdf_repair);
   EXPECT_THROW(rigid_body_sim::io::parseConfig(YAML::Load("urdf: {repiar: false}"), ""),
                rigid_body_sim::io::ConfigError);
+}
+
+TEST(Settings, TheDevicesKeyIsTheConfigsDefault) {
+  const YAML::Node root = YAML::LoadFile(std::string(RBS_SOURCE_DIR) + "/config/default.yaml");
+  ASSERT_TRUE(root["devices"].IsMap());
+  ASSERT_EQ(root["devices"].size(), 1u);
+  EXPECT_EQ(root["devices"]["memory"].as<std::uintmax_t>() << 20, rigid_body_sim::io::SimConfig().device_memory);
+  EXPECT_EQ(rigid_body_sim::io::parseConfig(YAML::Load("devices: {memory: 3}"), "").device_memory, 3u << 20);
 }
 
 TEST(Settings, EveryKeyOfTheDefaultConfigIsOneSettingWithItsDefault) {

@@ -112,5 +112,20 @@ TEST(WorldEdits, ADeleteTakesTheBodyOutOfEveryTable) {
   EXPECT_EQ(w.told, (std::vector<std::string>{"added", "removed a"}));
 }
 
+// A refusal echoes at most 200 characters of a name it was given: a delete
+// once echoed a 100 KB name back in full.
+TEST(WorldEdits, ARefusalShowsAtMost200CharactersOfAName) {
+  Edits w;
+  DeleteBody::Request req;
+  DeleteBody::Response res;
+  req.name = std::string(100000, 'x');
+  req.name[7] = '\n';
+  w.edits.deleteBody(req, res);
+  EXPECT_FALSE(res.success);
+  EXPECT_LT(res.message.size(), 300u) << res.message.size();
+  EXPECT_NE(res.message.find("unknown body 'xxxxxxx?xxx"), std::string::npos) << res.message.substr(0, 300);
+  EXPECT_NE(res.message.find("... (100000 characters)'"), std::string::npos) << res.message.substr(0, 300);
+}
+
 }  // namespace
 }  // namespace rigid_body_sim::node

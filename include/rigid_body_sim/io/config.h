@@ -6,6 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -210,6 +211,10 @@ struct SimConfig {
   /// urdf.repair: read the URDFs as Gazebo and KDL do, repairing what a
   /// strict reading refuses (io::UrdfOptions); false refuses it.
   bool urdf_repair = true;
+  /// devices.memory (given in MiB): the bytes the world's lidars and depth
+  /// cameras may hold in all, each counted before it is built
+  /// (io::DeviceMemory). 1 GiB: three 2000 x 2000 depth cameras, a laptop's share.
+  std::uintmax_t device_memory = std::uintmax_t{1024} << 20;
   /// The config file's folder (parseConfig's base_dir): package:// URDFs are
   /// also looked for above it, so a package's own worlds load without ROS.
   std::string base_dir;
@@ -224,6 +229,17 @@ struct SimConfig {
 /// config's bodies[i].name and for spawn_body's name.
 std::string bodyNameProblem(const std::string& name);
 inline constexpr std::size_t kMaxBodyNameLength = 64;
+
+/// A name or text a caller gave, as a message shows it: at most
+/// kMaxShownLength characters (then "... (N characters)"), every byte that
+/// is not printable ASCII as '?'. A delete once echoed a 100 KB name back.
+std::string shownName(const std::string& text);
+inline constexpr std::size_t kMaxShownLength = 200;
+
+/// "" if `frame` may be a tf frame id a config or markup gives, else why
+/// not, as tf2 requires: not empty, not starting with '/', and only
+/// letters, digits, '_', '-', '.' and '/' ("bad frame#!" was taken).
+std::string frameIdProblem(const std::string& frame);
 
 SimConfig parseConfig(const YAML::Node& root, const std::string& base_dir = "");
 

@@ -4,6 +4,7 @@
 // usually is), at its pose there. ROS-free.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,19 @@ struct RobotSensors {
   std::vector<RobotLidar> lidars;
   std::vector<RobotCamera> cameras;
   std::vector<RobotOdometry> odometry;
+  std::uintmax_t bytes = 0;  ///< what its lidars and cameras may hold (core::lidarBytes, core::depthCameraBytes)
+};
+
+/// What the lidars and depth cameras of a world may hold (config key
+/// `devices.memory`) and what those counted so far hold. Each is counted
+/// before it is built: 40 depth cameras once ended the node in
+/// std::bad_alloc, and a spawn of 400 took 5.8 GB before it was refused.
+struct DeviceMemory {
+  std::uintmax_t budget = 0;  ///< bytes
+  std::uintmax_t used = 0;    ///< bytes
+  /// Counts `bytes` for the device at `key`, or refuses it (ConfigError
+  /// naming `key` and devices.memory), `used` unchanged.
+  void take(std::uintmax_t bytes, const std::string& key);
 };
 
 /// `config`'s sensors and then `markup`'s (a URDF's Gazebo markup: checked
@@ -60,7 +74,9 @@ struct RobotSensors {
 /// odometry's rate outside the publish rates, a topic ROS cannot name.
 /// An odometry's link "" is the base; it cannot be a lumped link (its
 /// twist is a moving link's).
+/// Each lidar and camera is counted in `memory` first (refused, naming its
+/// key, beyond it).
 RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup, const core::ArticulationModel& model,
-                          double dt);
+                          double dt, DeviceMemory& memory);
 
 }  // namespace rigid_body_sim::io

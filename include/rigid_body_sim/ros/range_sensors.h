@@ -16,6 +16,8 @@
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/PointCloud2.h>
 
+#include <atomic>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -51,10 +53,11 @@ class RangeSensors {
   void addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
                 const std::vector<io::RobotLidar>& lidars, const std::vector<io::RobotCamera>& cameras = {});
   /// Robot r deleted: its sensors' topics close; the later robots move down by one.
-  void removeRobot(std::size_t r) {
-    robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r));
-    cameras_.erase(cameras_.begin() + static_cast<std::ptrdiff_t>(r));
-  }
+  void removeRobot(std::size_t r);
+  /// Bytes the lidars and cameras of every robot may hold (core::lidarBytes,
+  /// core::depthCameraBytes): what a spawn's devices are counted on top of.
+  /// Read on the spawn thread, changed on the loop's.
+  std::uintmax_t bytes() const { return bytes_.load(); }
   /// After a reset: each lidar's noise from its seed again.
   void restart();
   /// The scans due at step `steps` of `sim`'s state, stamped `stamp`.
@@ -87,6 +90,7 @@ class RangeSensors {
   double dt_;
   std::vector<std::vector<Port>> robots_;
   std::vector<std::vector<CameraPort>> cameras_;  ///< per robot
+  std::atomic<std::uintmax_t> bytes_{0};
   // Reused by every scan.
   core::ArticulationKinematics kin_;
   std::vector<double> ranges_, depth_;

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "rigid_body_sim/core/bodies/ranges.h"
+
 namespace rigid_body_sim::core {
 
 double TwistLimiter::limit(double v, double v0, double v1, double dt) const {
@@ -43,10 +45,13 @@ namespace {
 
 bool positive(double x) { return std::isfinite(x) && x > 0.0; }
 
+/// Each limit pair finite and holding 0 between its bounds: a pair above or
+/// below 0 would turn a zero command into a drive (ros_controllers would
+/// clamp a stopped base to min_velocity > 0 and drive it off).
 void checkLimits(const DiffDriveSpec& s, const TwistLimiter& l, const char* axis) {
   const auto pair = [&](bool on, double lo, double hi, const char* what) {
-    if (on && !(std::isfinite(lo) && std::isfinite(hi) && lo <= hi)) {
-      fail(s, std::string(axis) + ": min_" + what + " and max_" + what + " must be finite, min <= max");
+    if (on && !(std::isfinite(lo) && std::isfinite(hi) && lo <= 0.0 && 0.0 <= hi)) {
+      fail(s, std::string(axis) + ": min_" + what + " and max_" + what + " must be finite, min <= 0 <= max");
     }
   };
   pair(l.has_velocity_limits, l.min_velocity, l.max_velocity, "velocity");
@@ -89,6 +94,7 @@ DiffDrive::DiffDrive(const ArticulationModel& model, DiffDriveSpec spec) : spec_
     if (!positive(value)) fail(s, std::string(what) + " must be finite and > 0, got " + std::to_string(value));
   }
   if (!(k.cmd_vel_timeout >= 0.0)) fail(s, "cmd_vel_timeout must be >= 0 (infinite: held)");
+  if (!(k.max_wheel_torque > 0.0)) fail(s, "max_wheel_torque must be > 0 N*m (infinite: the joints' limits alone)");
   if (k.velocity_rolling_window_size < 1) fail(s, "velocity_rolling_window_size must be >= 1");
   checkLimits(s, k.linear, "linear/x");
   checkLimits(s, k.angular, "angular/z");
@@ -109,7 +115,8 @@ DiffDrive::DiffDrive(const ArticulationModel& model, DiffDriveSpec spec) : spec_
 }
 
 bool DiffDrive::command(double linear, double angular, double t) {
-  if (!std::isfinite(linear) || !std::isfinite(angular) || !std::isfinite(t)) return false;
+  const auto within = [](double x) { return std::abs(x) <= ranges::kMaxCommandSpeed; };  // NaN is not
+  if (!within(linear) || !within(angular) || !std::isfinite(t)) return false;
   linear_ = linear;
   angular_ = angular;
   stamp_ = t;

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "rigid_body_sim/core/bodies/ranges.h"
+
 namespace rigid_body_sim::core {
 
 double Pid::command(double error, double rate, double dt) {
@@ -84,11 +86,32 @@ int JointControllers::ownerOf(int joint) const {
   return joint >= 0 && joint < static_cast<int>(owner_.size()) ? owner_[joint] : -1;
 }
 
+namespace {
+
+/// The most a command of `mode` may be (ranges.h): 1e308 is finite, but a
+/// PID made inf and NaN of it.
+double mostOf(ControlMode mode) {
+  switch (mode) {
+    case ControlMode::kEffort:
+      return ranges::kMaxCommandEffort;
+    case ControlMode::kVelocity:
+      return ranges::kMaxCommandSpeed;
+    case ControlMode::kPosition:
+    case ControlMode::kTrajectory:
+      break;
+  }
+  return ranges::kMaxCommandPosition;
+}
+
+bool sane(ControlMode mode, double value) { return std::abs(value) <= mostOf(mode); }  // NaN is not
+
+}  // namespace
+
 bool JointControllers::command(std::size_t c, const std::vector<double>& values, std::vector<Clipped>& clipped) {
   const JointControllerSpec& spec = specs_.at(c);
   if (spec.mode == ControlMode::kTrajectory || values.size() != spec.joints.size()) return false;
   for (const double v : values) {
-    if (!std::isfinite(v)) return false;
+    if (!sane(spec.mode, v)) return false;
   }
   for (std::size_t k = 0; k < values.size(); ++k) {
     target_[c][k] = withinLimits(spec.joints[k], spec.mode, values[k], clipped);
@@ -129,6 +152,7 @@ std::string JointControllers::commandJoint(int joint, ControlMode mode, double v
            kNames[static_cast<int>(mode)];
   }
   if (!std::isfinite(value)) return "not finite";
+  if (!sane(mode, value)) return "absurd: its size is beyond " + std::to_string(mostOf(mode));
   std::size_t k = 0;
   while (spec.joints[k] != joint) ++k;
   target_[c][k] = withinLimits(joint, mode, value, clipped);

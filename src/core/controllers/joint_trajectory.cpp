@@ -3,6 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <tuple>
+
+#include "rigid_body_sim/core/bodies/ranges.h"
 
 namespace rigid_body_sim::core {
 
@@ -50,21 +54,26 @@ std::string JointTrajectory::check(const std::vector<TrajectoryPoint>& points, s
   for (std::size_t i = 0; i < points.size(); ++i) {
     const TrajectoryPoint& p = points[i];
     const std::string at = "points[" + std::to_string(i) + "]";
-    if (!(std::isfinite(p.time) && p.time >= 0.0)) return at + ".time_from_start must be finite and >= 0";
+    if (!(p.time >= 0.0 && p.time <= ranges::kMaxDuration))
+      return at + ".time_from_start must be finite and >= 0, at most 1e6 s";
     if (i > 0 && !(p.time > points[i - 1].time)) return at + ".time_from_start must be after the point before's";
     if (p.position.size() != joints) {
       return at + ".positions has " + std::to_string(p.position.size()) + " values for " + std::to_string(joints) +
              " joints";
     }
-    for (const auto& [field, values] : {std::pair<const char*, const std::vector<double>*>{"positions", &p.position},
-                                        {"velocities", &p.velocity},
-                                        {"accelerations", &p.acceleration}}) {
+    for (const auto& [field, values, most] : {std::tuple<const char*, const std::vector<double>*, double>{
+                                                  "positions", &p.position, ranges::kMaxCommandPosition},
+                                              {"velocities", &p.velocity, ranges::kMaxCommandSpeed},
+                                              {"accelerations", &p.acceleration, ranges::kMaxCommandAcceleration}}) {
       if (!values->empty() && values->size() != joints) {
         return at + "." + field + " has " + std::to_string(values->size()) + " values for " + std::to_string(joints) +
                " joints (none, or one per joint)";
       }
       for (std::size_t k = 0; k < values->size(); ++k) {
         if (!std::isfinite((*values)[k])) return at + "." + field + "[" + std::to_string(k) + "] is not finite";
+        if (!(std::abs((*values)[k]) <= most)) {  // 1e308 is finite, but its spline is not
+          return at + "." + field + "[" + std::to_string(k) + "] is absurd: its size is beyond " + std::to_string(most);
+        }
       }
     }
     if (!p.acceleration.empty() && p.velocity.empty()) return at + " has accelerations without velocities";

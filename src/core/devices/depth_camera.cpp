@@ -6,17 +6,29 @@
 #include <stdexcept>
 #include <string>
 
+#include "rigid_body_sim/core/bodies/ranges.h"
+
 namespace rigid_body_sim::core {
 
 void checkDepthCamera(const DepthCameraSettings& s) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("depth camera: " + what); };
   if (s.width < 1 || s.height < 1) fail("width and height must be >= 1");
-  if (static_cast<double>(s.width) * s.height > 4e6) fail("width x height must be <= 4e6 pixels");
-  if (!(s.hfov > 0.0 && s.hfov < M_PI)) fail("hfov must be within (0, pi) rad");
+  if (static_cast<double>(s.width) * s.height > ranges::kMaxPixels) fail("width x height must be <= 4e6 pixels");
+  // Narrower, the focal length overflows: 1e-320 rad gave CameraInfo's K and P as inf.
+  if (!(s.hfov >= ranges::kMinFieldOfView && s.hfov < M_PI)) fail("hfov must be within [0.001, pi) rad");
   if (!(std::isfinite(s.max_depth) && s.min_depth >= 0.0 && s.min_depth < s.max_depth)) {
     fail("depths must be 0 <= min_depth < max_depth, finite");
   }
+  if (!(s.max_depth <= ranges::kMaxSensorRange)) fail("max_depth must be <= 1e5 m");
   if (!(std::isfinite(s.noise) && s.noise >= 0.0)) fail("noise must be finite and >= 0");
+}
+
+std::uintmax_t depthCameraBytes(const DepthCameraSettings& s) {
+  // A ray (3 doubles), its range per unit depth and its depth (doubles), and
+  // the image (4 bytes) and cloud (16) messages twice (built, then serialized).
+  const std::uintmax_t pixels =
+      static_cast<std::uintmax_t>(std::max(s.width, 0)) * static_cast<std::uintmax_t>(std::max(s.height, 0));
+  return pixels * (sizeof(Vec3) + 2 * sizeof(double) + 2 * (4 + 16));
 }
 
 DepthCamera::DepthCamera(const DepthCameraSettings& settings) : settings_(settings), rng_(settings.seed) {

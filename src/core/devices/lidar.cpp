@@ -7,17 +7,25 @@
 #include <string>
 #include <tuple>
 
+#include "rigid_body_sim/core/bodies/ranges.h"
+
 namespace rigid_body_sim::core {
 
 void checkLidar(const LidarSettings& s) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("lidar: " + what); };
   if (s.samples < 1) fail("samples must be >= 1");
   if (s.vertical_samples < 1) fail("vertical_samples must be >= 1");
-  if (static_cast<double>(s.samples) * s.vertical_samples > 1e6) fail("samples x vertical_samples must be <= 1e6");
+  if (static_cast<double>(s.samples) * s.vertical_samples > ranges::kMaxRays) {
+    fail("samples x vertical_samples must be <= 1e6");
+  }
   for (const auto& [lo, hi, what] :
        {std::tuple{s.min_angle, s.max_angle, "min_angle and max_angle"},
         std::tuple{s.vertical_min_angle, s.vertical_max_angle, "vertical_min_angle and vertical_max_angle"}}) {
     if (!(std::isfinite(lo) && std::isfinite(hi) && lo <= hi)) fail(std::string(what) + " must be finite, min <= max");
+  }
+  // LaserScan's angles are float32: a finite 1e39 or 1e308 was published as inf.
+  if (!(s.min_angle >= -ranges::kMaxScanAngle && s.max_angle <= ranges::kMaxScanAngle)) {
+    fail("min_angle and max_angle must be within [-2 pi, 2 pi] rad");
   }
   if (!(s.vertical_min_angle >= -M_PI / 2 && s.vertical_max_angle <= M_PI / 2)) {
     fail("vertical angles must be within [-pi/2, pi/2]");
@@ -25,7 +33,17 @@ void checkLidar(const LidarSettings& s) {
   if (!(std::isfinite(s.max_range) && s.min_range >= 0.0 && s.min_range < s.max_range)) {
     fail("ranges must be 0 <= min_range < max_range, finite");
   }
+  if (!(s.max_range <= ranges::kMaxSensorRange)) fail("max_range must be <= 1e5 m");
   if (!(std::isfinite(s.noise) && s.noise >= 0.0)) fail("noise must be finite and >= 0");
+}
+
+std::uintmax_t lidarBytes(const LidarSettings& s) {
+  // A direction (3 doubles), a range (a double), a group's cone per 16 rays,
+  // and the message twice (built, then serialized by roscpp).
+  const std::uintmax_t rays = static_cast<std::uintmax_t>(std::max(s.samples, 0)) *
+                              static_cast<std::uintmax_t>(std::max(s.vertical_samples, 0));
+  const std::uintmax_t message = s.vertical_samples > 1 ? 16 : 4;
+  return rays * (sizeof(Vec3) + sizeof(double) + sizeof(RayCone) / 16 + 1 + 2 * message);
 }
 
 Lidar::Lidar(const LidarSettings& settings) : settings_(settings), rng_(settings.seed) {

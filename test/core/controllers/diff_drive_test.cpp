@@ -230,6 +230,78 @@ TEST(DiffDrive, RefusesWhatCannotDrive) {
   refused(s, "one set of PID gains per wheel");
 }
 
+// Settings under which a zero command drives the base are refused: a torque
+// cap <= 0 (std::clamp(u, 5, -5) is undefined, and drove a base at 1.8 m/s),
+// a limit pair wholly above or below 0 (the limiter holds a stopped base to
+// it, and drove one 2.5-5.3 m with no command).
+TEST(DiffDrive, RefusesSettingsUnderWhichAZeroCommandDrives) {
+  const ArticulationModel model = twoWheels();
+  const auto refused = [&](const DiffDriveSpec& s, const std::string& what) {
+    try {
+      DiffDrive drive(model, s);
+      ADD_FAILURE() << "accepted; expected: " << what;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  for (const double torque : {-5.0, 0.0, std::nan("")}) {
+    DiffDriveSpec s = spec();
+    s.settings.max_wheel_torque = torque;
+    refused(s, "max_wheel_torque must be > 0");
+  }
+  const struct { double lo, hi; } pairs[] = {{-1.0, -0.5}, {1.0, 2.0}, {-2.0, -1.0}};
+  for (const auto& p : pairs) {
+    for (const char* which : {"velocity", "acceleration", "jerk"}) {
+      DiffDriveSpec s = spec();
+      TwistLimiter& l = std::string(which) == "jerk" ? s.settings.angular : s.settings.linear;
+      const std::string w = which;
+      bool& has = w == "velocity"       ? l.has_velocity_limits
+                  : w == "acceleration" ? l.has_acceleration_limits
+                                        : l.has_jerk_limits;
+      double& lo = w == "velocity" ? l.min_velocity : w == "acceleration" ? l.min_acceleration : l.min_jerk;
+      double& hi = w == "velocity" ? l.max_velocity : w == "acceleration" ? l.max_acceleration : l.max_jerk;
+      has = true;
+      lo = p.lo;
+      hi = p.hi;
+      refused(s, "min_" + w + " and max_" + w + " must be finite, min <= 0 <= max");
+    }
+  }
+  // A pair holding 0, even at a bound, is taken, and a zero command gives zero effort.
+  DiffDriveSpec s = spec();
+  s.gains = {{1.0, 0.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}};
+  s.settings.linear.has_velocity_limits = true;
+  s.settings.linear.min_velocity = 0.0;
+  s.settings.linear.max_velocity = 1.0;
+  DiffDrive drive(model, s);
+  drive.restart(wheelsAt(model, 0.0, 0.0), true);
+  Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
+  drive.efforts(wheelsAt(model, 0.0, 0.0), kH, kH, effort);
+  EXPECT_EQ(effort(0), 0.0);
+  EXPECT_EQ(effort(1), 0.0);
+}
+
+// Wheels without a <limit> (legal URDF: no effort or speed limit) and a
+// finite cmd_vel of 1e308: the wheel speeds overflowed to inf, the PID's rate
+// to NaN, and NaN efforts were published. Such a command is refused; the
+// largest one taken gives finite efforts.
+TEST(DiffDrive, AnAbsurdCommandIsRefusedAndUnlimitedWheelsStayFinite) {
+  ArticulationModel model = twoWheels();
+  for (int j : {1, 2}) model.links[j].limits = JointLimits{};
+  ASSERT_TRUE(std::isinf(model.links[1].limits.effort));
+  DiffDriveSpec s = spec();
+  s.settings.max_wheel_torque = std::numeric_limits<double>::infinity();  // a DiffDriveController's
+  DiffDrive drive(model, s);
+  drive.restart(wheelsAt(model, 0.0, 0.0), true);
+  EXPECT_FALSE(drive.command(1e308, -1e308, 0.0));
+  EXPECT_FALSE(drive.command(0.0, 1e5, 0.0));
+  ASSERT_TRUE(drive.command(1e4, -1e4, 0.0));
+  Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
+  for (int k = 1; k <= 100; ++k) {
+    drive.efforts(wheelsAt(model, 0.0, 0.0), k * kH, kH, effort);
+    ASSERT_TRUE(effort.allFinite()) << "step " << k << ": " << effort.transpose();
+  }
+}
+
 TEST(DiffDrive, ARestartReadsTheWheelsAfreshAndForgetsTheCommand) {
   const ArticulationModel model = twoWheels();
   DiffDriveSpec s = spec();

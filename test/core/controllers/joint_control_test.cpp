@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 #include "../articulations/articulation_models.h"
@@ -168,6 +169,34 @@ TEST(JointControllers, CommandsAreClippedToTheLimitsAndNonFiniteOnesRefused) {
   EXPECT_EQ(clipped[0].what, "velocity");
   velocity.efforts(s, 0.0, kH, effort);
   EXPECT_DOUBLE_EQ(effort(0), -2.0);
+}
+
+// A joint with no <limit> (legal for a continuous joint) has no bound to
+// clip a command to: a finite 1e308 made the PID's effort inf and its rate
+// NaN. Commands beyond ranges.h's kMaxCommand* are refused, changing
+// nothing; the largest taken keep every effort finite.
+TEST(JointControllers, AbsurdCommandsAreRefusedAndUnlimitedJointsStayFinite) {
+  ArticulationModel model = test::oneJoint(JointType::Continuous, "wheel", "axle", Vec3::Zero(), Vec3::UnitZ());
+  model.links[1].mass.mass = 1.0;
+  model.links[1].mass.I_C_F = Vec3(0.01, 0.01, 0.02).asDiagonal();
+  checkArticulation(model);
+  ASSERT_TRUE(std::isinf(model.links[1].limits.effort) && std::isinf(model.links[1].limits.velocity));
+  const PidGains g{10.0, 1.0, 0.1, 1e3};
+  for (const auto& [mode, absurd, most] :
+       {std::tuple{ControlMode::kEffort, 1e7, 1e6}, std::tuple{ControlMode::kVelocity, 1e308, 1e4},
+        std::tuple{ControlMode::kPosition, -1e308, 1e6}}) {
+    JointControllers ctl(model, {{"c", mode, {1}, {g}}});
+    std::vector<Clipped> clipped;
+    EXPECT_FALSE(ctl.command(0, {absurd}, clipped));
+    EXPECT_EQ(ctl.commandJoint(1, mode, absurd, clipped).rfind("absurd", 0), 0u);
+    ASSERT_TRUE(ctl.command(0, {most}, clipped));
+    ArticulationState s = restState(model);
+    Eigen::VectorXd effort;
+    for (int k = 1; k <= 50; ++k) {
+      ctl.efforts(s, k * kH, kH, effort);
+      ASSERT_TRUE(effort.allFinite()) << "mode " << static_cast<int>(mode) << ", step " << k;
+    }
+  }
 }
 
 TEST(JointControllers, RefusesWhatItCannotDrive) {

@@ -139,6 +139,11 @@ TEST(JointTrajectory, CheckNamesTheProblem) {
       {{at(1.0, {0.0, nan})}, "points[0].positions[1] is not finite"},
       {{at(1.0, {0.0, 0.0}, {0.0, INFINITY})}, "points[0].velocities[1] is not finite"},
       {{at(1.0, {0.0, 0.0}, {}, {0.0, 0.0})}, "points[0] has accelerations without velocities"},
+      // Finite but absurd: their splines overflowed.
+      {{at(1e300, {0.0, 0.0})}, "points[0].time_from_start must be finite and >= 0, at most 1e6 s"},
+      {{at(1.0, {1e308, -1e308})}, "points[0].positions[0] is absurd"},
+      {{at(1.0, {0.0, 0.0}, {0.0, 1e5})}, "points[0].velocities[1] is absurd"},
+      {{at(1.0, {0.0, 0.0}, {0.0, 0.0}, {1e300, 0.0})}, "points[0].accelerations[0] is absurd"},
   };
   for (const auto& c : cases) {
     const std::string problem = JointTrajectory::check(c.points, 2);

@@ -6,6 +6,7 @@
 #include "rigid_body_sim/core/devices/ray_cast.h"
 
 #include <gtest/gtest.h>
+#include <malloc.h>
 
 #include <cmath>
 #include <random>
@@ -341,6 +342,83 @@ TEST(Lidar, RefusesSettingsNamingTheField) {
   s.samples = 2000;
   s.vertical_samples = 1000;
   refused(s, "<= 1e6");
+  // Finite, but beyond what LaserScan's float32 fields hold: published as ±inf once.
+  for (const double a : {1e308, 1e39, 7.0}) {
+    s = {};
+    s.min_angle = -a;
+    s.max_angle = a;
+    refused(s, "min_angle and max_angle must be within [-2 pi, 2 pi]");
+  }
+  s = {};
+  s.max_range = 1e39;
+  refused(s, "max_range must be <= 1e5 m");
+  s = {};
+  s.min_angle = -2.0 * M_PI;  // a full turn each way is still taken
+  s.max_angle = 2.0 * M_PI;
+  s.max_range = 1e5;
+  EXPECT_NO_THROW(core::Lidar{s});
+}
+
+// Settings whose CameraInfo or cloud would hold inf are refused: an hfov of
+// 1e-320 rad made the focal length, K and P, inf. SDF's own narrowest,
+// 1e-3 rad, gives a focal length a float32 holds.
+TEST(DepthCamera, RefusesSettingsWhoseMessagesWouldNotBeFinite) {
+  core::DepthCameraSettings s;
+  s.hfov = 1e-320;
+  EXPECT_THROW(core::DepthCamera{s}, std::invalid_argument);
+  s.hfov = 0.5e-3;
+  EXPECT_THROW(core::DepthCamera{s}, std::invalid_argument);
+  s.hfov = 1e-3;
+  const core::DepthCamera narrow(s);
+  EXPECT_LT(narrow.focal(), 1e6);
+  s = {};
+  s.max_depth = 1e39;
+  try {
+    core::DepthCamera camera(s);
+    ADD_FAILURE() << "max_depth 1e39 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("max_depth must be <= 1e5 m"), std::string::npos) << e.what();
+  }
+}
+
+// What a device is counted as before it is built (the node's devices.memory)
+// covers what it allocates: measured on the heap, it holds at least what the
+// device's own arrays take and no more than the count.
+TEST(DeviceBytes, CoverWhatTheLidarAndTheCameraAllocate) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "a sanitizer's allocator keeps no mallinfo";
+#endif
+  const auto heap = [] {  // in use: small blocks, and large ones malloc maps apart
+    const struct mallinfo2 m = mallinfo2();
+    return static_cast<std::uintmax_t>(m.uordblks + m.hblkhd);
+  };
+  core::ModelSpec spec;
+  const core::Model model(spec);
+  const core::State state = core::restState(model);
+  core::LidarSettings l;
+  l.samples = 2000;
+  l.vertical_samples = 50;
+  const std::uintmax_t before_lidar = heap();
+  {
+    core::Lidar lidar(l);
+    std::vector<double> ranges;
+    lidar.scan(model, state, core::Pose{}, {}, ranges);
+    const std::uintmax_t used = heap() - before_lidar;
+    EXPECT_LE(used, core::lidarBytes(l));
+    EXPECT_GE(used, core::lidarBytes(l) / 3) << "the count is far above what the lidar holds";
+  }
+  core::DepthCameraSettings c;
+  c.width = 400;
+  c.height = 300;
+  const std::uintmax_t before_camera = heap();
+  {
+    core::DepthCamera camera(c);
+    std::vector<double> depth;
+    camera.capture(model, state, core::Pose{}, {}, depth);
+    const std::uintmax_t used = heap() - before_camera;
+    EXPECT_LE(used, core::depthCameraBytes(c));
+    EXPECT_GE(used, core::depthCameraBytes(c) / 3) << "the count is far above what the camera holds";
+  }
 }
 
 TEST(DepthCamera, ReadsAPlaneAtAnAngleAsItsDepthPerPixel) {

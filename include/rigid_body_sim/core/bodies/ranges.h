@@ -24,6 +24,24 @@ constexpr double kMinRate = 0.01;
 constexpr double kMaxPublishRate = 1e4;
 constexpr double kMaxDuration = 1e6;  ///< s: the sleep time, and the node's durations (11 days)
 
+// -- a sensor (its messages hold float32 ranges and angles: these keep every
+// value a setting yields finite in them)
+constexpr double kMaxScanAngle = 2.0 * 3.14159265358979323846;  ///< rad: |a lidar's angle|, a full turn
+constexpr double kMaxSensorRange = 1e5;  ///< m: a lidar's max_range, a camera's max_depth (100 km)
+/// rad: a camera's narrowest horizontal field of view (SDF's own minimum,
+/// sdformat's camera.sdf: 1e-320 gave a focal length of inf)
+constexpr double kMinFieldOfView = 1e-3;
+constexpr double kMaxRays = 1e6;    ///< a lidar's rays, all fans
+constexpr double kMaxPixels = 4e6;  ///< a depth camera's width × height
+
+// -- what a controller is commanded (a topic's message; beyond: dropped as
+// absurd, since 1e308 is finite but overflows the wheel speeds and the PID
+// into inf and NaN)
+constexpr double kMaxCommandPosition = 1e6;      ///< rad or m: a position command, a trajectory point
+constexpr double kMaxCommandSpeed = 1e4;         ///< rad/s or m/s: a velocity command, a cmd_vel's v and ω
+constexpr double kMaxCommandAcceleration = 1e8;  ///< rad/s² or m/s²: a trajectory point's
+constexpr double kMaxCommandEffort = 1e6;        ///< N·m or N: an effort command (as apply_joint_effort's)
+
 // -- a body
 constexpr double kMinMass = 1e-6;          ///< kg (a milligram)
 constexpr double kMaxMass = 1e7;           ///< kg (10,000 t)

@@ -84,7 +84,8 @@ class DiffDrive {
   /// Throws std::invalid_argument naming the controller: no wheels, unequal
   /// counts, a wheel that is no moving joint of `model`, a mimic joint, named
   /// twice; a separation, radius or multiplier not finite and > 0, a
-  /// timeout < 0, a window < 1, gains not one per wheel or not finite ≥ 0.
+  /// timeout < 0, a window < 1, a wheel torque not > 0, a limit pair not
+  /// finite with min ≤ 0 ≤ max, gains not one per wheel or not finite ≥ 0.
   DiffDrive(const ArticulationModel& model, DiffDriveSpec spec);
 
   const DiffDriveSpec& spec() const { return spec_; }
@@ -96,7 +97,7 @@ class DiffDrive {
   double rightRadius() const { return right_radius_; }
 
   /// A cmd_vel received at `t` (s of sim time): v (m/s), ω (rad/s). Not
-  /// finite: refused (false), nothing changes.
+  /// finite or beyond ranges::kMaxCommandSpeed: refused (false), nothing changes.
   bool command(double linear, double angular, double t);
   /// The step [t, t + dt) from `state`: the command limited and turned into
   /// wheel speeds, each wheel's PID effort written to `effort` (per joint,

@@ -84,12 +84,13 @@ class JointControllers {
 
   /// Sets controller c's command, one value per joint. Refused (returns
   /// false and changes nothing) when the count is wrong or a value is not
-  /// finite, or c follows trajectories; `clipped` gets the values held to a limit.
+  /// finite or beyond ranges.h's kMaxCommand* for its mode, or c follows
+  /// trajectories; `clipped` gets the values held to a limit.
   bool command(std::size_t c, const std::vector<double>& values, std::vector<Clipped>& clipped);
 
   /// Sets the target of `joint` (a link index) alone, within its owner,
   /// whose mode must be `mode`; returns "" or why it was refused (no
-  /// owner, another mode, not finite), and then nothing has changed.
+  /// owner, another mode, not finite, absurd), and then nothing has changed.
   std::string commandJoint(int joint, ControlMode mode, double value, std::vector<Clipped>& clipped);
 
   /// Trajectory controller c follows `points` (its joints' order; times

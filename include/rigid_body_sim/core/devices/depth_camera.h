@@ -28,9 +28,15 @@ struct DepthCameraSettings {
 };
 
 /// Throws std::invalid_argument naming the field: a size < 1 or more than
-/// 4·10⁶ pixels, hfov not in (0, π), depths not 0 ≤ min < max finite,
-/// noise not finite ≥ 0.
+/// 4·10⁶ pixels, hfov not in [10⁻³, π), depths not 0 ≤ min < max ≤ 10⁵ m,
+/// noise not finite ≥ 0 (core/bodies/ranges.h).
 void checkDepthCamera(const DepthCameraSettings& s);
+
+/// Bytes a depth camera of `s` may hold at once, counted before it is built
+/// (the node's device budget): per pixel its ray, its depth, and its image
+/// (32FC1) and point cloud (16-byte points) messages with their serialized
+/// copies.
+std::uintmax_t depthCameraBytes(const DepthCameraSettings& s);
 
 class DepthCamera {
  public:

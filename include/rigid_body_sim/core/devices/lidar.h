@@ -30,9 +30,16 @@ struct LidarSettings {
 };
 
 /// Throws std::invalid_argument naming the field: samples or fans < 1 or
-/// more than 10⁶ rays in all, angles not finite or min > max, ranges not
-/// 0 ≤ min < max finite, noise not finite ≥ 0.
+/// more than 10⁶ rays in all, angles not finite or min > max, horizontal
+/// ones beyond ±2π, vertical ones beyond ±π/2, ranges not 0 ≤ min < max ≤
+/// 10⁵ m, noise not finite ≥ 0 (core/bodies/ranges.h).
 void checkLidar(const LidarSettings& s);
+
+/// Bytes a lidar of `s` may hold at once, counted before it is built (the
+/// node's device budget): per ray its direction and range, and the scan's
+/// message with its serialized copy (a LaserScan's float, or a
+/// PointCloud2's 16-byte point when it has several fans).
+std::uintmax_t lidarBytes(const LidarSettings& s);
 
 class Lidar {
  public:
