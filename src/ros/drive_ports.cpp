@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "rigid_body_sim/ros/conversions.h"
+#include "rigid_body_sim/ros/topic_claims.h"
 
 namespace rigid_body_sim::node {
 
@@ -49,8 +50,8 @@ DrivePorts::DrivePorts(ros::NodeHandle& nh, const std::string& prefix, const std
                        const io::DriveTopics& topics, DriveFrames frames, long long every,
                        const std::function<void(double, double)>& command)
     : topics_(topics), frames_(std::move(frames)), every_(std::max(1LL, every)) {
-  const std::string ns = topics_.under_controller ? prefix + name + "/" : prefix;
-  const auto topic = [&](const std::string& t) { return t.front() == '/' ? t : ns + t; };
+  const std::string ns = driveNamespace(prefix, name, topics_);
+  const auto topic = [&](const std::string& t) { return deviceTopic(ns, t); };
   const std::string cmd_vel = topic(topics_.cmd_vel_topic), odom = topic(topics_.odom_topic);
   odom_ = CountedPublisher::advertise<nav_msgs::Odometry>(nh, odom, 100);
   if (topics_.publish_cmd)

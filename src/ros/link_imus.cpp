@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "rigid_body_sim/ros/conversions.h"
+#include "rigid_body_sim/ros/topic_claims.h"
 
 namespace rigid_body_sim::node {
 namespace {
@@ -55,7 +56,7 @@ void LinkImus::addRobot(const core::Simulation& sim, std::size_t r, const std::s
            std::max(1LL, std::llround(1.0 / (e.settings.rate * dt_))),
            frame_prefix + e.frame_id,
            {}};
-    const std::string topic = e.topic.front() == '/' ? e.topic : prefix + e.topic;
+    const std::string topic = deviceTopic(prefix, e.topic);
     p.publisher = CountedPublisher::advertise<sensor_msgs::Imu>(nh_, topic, 100);
     ROS_INFO("sim_node: IMU on '%s' link '%s', frame '%s', on %s at %g Hz", sim.scene.robots()[r].name.c_str(),
              e.link.c_str(), p.frame.c_str(), nh_.resolveName(topic).c_str(),

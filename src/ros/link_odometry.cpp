@@ -9,13 +9,14 @@
 
 #include "rigid_body_sim/ros/link_imus.h"
 #include "rigid_body_sim/ros/state_publisher.h"
+#include "rigid_body_sim/ros/topic_claims.h"
 
 namespace rigid_body_sim::node {
 
 void LinkOdometry::addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
                             const std::vector<io::RobotOdometry>& odometry) {
   std::vector<Port> ports;
-  const auto resolved = [&](const std::string& topic) { return topic.front() == '/' ? topic : prefix + topic; };
+  const auto resolved = [&](const std::string& topic) { return deviceTopic(prefix, topic); };
   for (const io::RobotOdometry& o : odometry) {
     const io::OdometryEntry& e = o.entry;
     Port p;

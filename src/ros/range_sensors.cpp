@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "rigid_body_sim/ros/topic_claims.h"
+
 namespace rigid_body_sim::node {
 
 namespace {
@@ -127,12 +129,11 @@ void RangeSensors::addRobot(const std::string& robot, const std::string& prefix,
     CameraPort p{
         core::DepthCamera(c.entry.settings), c.link, c.X_LS, 1, c.entry.millimetres, frame_prefix + frame, {}, {}, {}};
     p.every = std::max(1LL, std::llround(1.0 / (c.entry.rate * dt_)));
-    const std::string ns = (c.entry.topic.front() == '/' ? c.entry.topic : prefix + c.entry.topic) + "/";
-    // A topic from the root stays there, as in Gazebo's camera plugins.
-    const auto under = [&ns](const std::string& topic) { return topic.front() == '/' ? topic : ns + topic; };
-    p.image = CountedPublisher::advertise<sensor_msgs::Image>(nh_, under(c.entry.image_topic), 2);
-    p.info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(nh_, under(c.entry.info_topic), 2);
-    p.points = CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh_, under(c.entry.points_topic), 2);
+    const std::array<std::string, 3> topics = cameraTopics(prefix, c.entry);  // image, info, points
+    const std::string ns = deviceTopic(prefix, c.entry.topic) + "/";
+    p.image = CountedPublisher::advertise<sensor_msgs::Image>(nh_, topics[0], 2);
+    p.info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(nh_, topics[1], 2);
+    p.points = CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh_, topics[2], 2);
     ROS_INFO("sim_node: robot '%s': a depth camera of %d x %d on '%s', %s{%s, %s, %s} at %g Hz", robot.c_str(),
              c.entry.settings.width, c.entry.settings.height, p.frame.c_str(), nh_.resolveName(ns).c_str(),
              c.entry.image_topic.c_str(), c.entry.info_topic.c_str(), c.entry.points_topic.c_str(), c.entry.rate);
@@ -146,7 +147,7 @@ void RangeSensors::addRobot(const std::string& robot, const std::string& prefix,
     Port p{core::Lidar(l.entry.settings), l.link, l.X_LS, l.entry.rate, 1, frame_prefix + frame, {}};
     p.every = std::max(1LL, std::llround(1.0 / (l.entry.rate * dt_)));
     const bool cloud = l.entry.settings.vertical_samples > 1;
-    const std::string topic = l.entry.topic.front() == '/' ? l.entry.topic : prefix + l.entry.topic;  // absolute
+    const std::string topic = deviceTopic(prefix, l.entry.topic);
     p.publisher = cloud ? CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh_, topic, 10)
                         : CountedPublisher::advertise<sensor_msgs::LaserScan>(nh_, topic, 10);
     ROS_INFO("sim_node: robot '%s': a lidar of %zu rays on '%s', %s on %s at %g Hz", robot.c_str(), p.lidar.rayCount(),

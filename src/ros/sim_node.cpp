@@ -149,9 +149,17 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   // robotNamespace, else as its other topics.
   std::vector<std::string> control_prefixes;
   start_controls_.resize(sim_.scene.robots().size());
+  start_sensors_.resize(sim_.scene.robots().size());
   for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
     const std::string& name = sim_.scene.robots()[r].name;
     control_prefixes.push_back(robotTopicPrefix(start_controls_[r].robot_namespace, several ? name + "/" : ""));
+    // One topic, one publisher: checked before anything is advertised.
+    const std::vector<TopicClaims::Claim> topics =
+        robotTopics(several ? name + "/" : "", control_prefixes.back(), start_sensors_.at(r), start_controls_[r]);
+    if (const std::string problem = topic_claims_.problem(topics); !problem.empty()) {
+      throw io::ConfigError("robot '" + name + "': " + problem);
+    }
+    topic_claims_.take(name, topics);
   }
   commands_.emplace(nh_, std::move(start_controls_), sim_, time_, control_prefixes);
   robot_publisher_.emplace(nh_, sim_.scene, control_prefixes, settings_.world_frame, model_.dt(),
@@ -160,7 +168,6 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   range_sensors_.emplace(nh_, model_.dt());
   link_imus_.emplace(nh_, model_.dt());
   link_odometry_.emplace(nh_, model_.dt(), settings_.publish_rate, settings_.world_frame);
-  start_sensors_.resize(sim_.scene.robots().size());
   for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
     robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
     const std::string& name = sim_.scene.robots()[r].name;

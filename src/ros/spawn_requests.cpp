@@ -163,6 +163,8 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
       loadRequestedRobot(req, urdf, options, spawn_limits_, dt_, nh_,
                          io::DeviceMemory{params_.sim.device_memory, range_sensors_ ? range_sensors_->bytes() : 0},
                          spawn);
+      spawn.topics = robotTopics(req.name + "/", robotTopicPrefix(spawn.controls.robot_namespace, req.name + "/"),
+                                 spawn.sensors, spawn.controls);
       spawn.request = req;
       res = spawns_.submit(std::move(spawn), [] { return ros::ok(); });  // the loop adds it at its next tick
       tellRepairs(notes, res);

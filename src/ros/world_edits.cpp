@@ -51,6 +51,7 @@ void WorldEdits::deleteRobot(std::size_t r, DeleteBody::Response& res) {
   const auto start = std::chrono::steady_clock::now();
   // Its links, state, start and timed efforts; what its links touched wakes.
   sim_.removeRobot(r);
+  topics_.release(name);
   hooks_.robot_removed(r, name);  // its topics and controllers
   if (settings_.report_timing) {
     pacer_.recordDelete(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -128,6 +129,11 @@ SpawnBody::Response WorldEdits::insertRobot(SpawnQueue::Spawn& spawn) {
       return res;
     }
   }
+  // One topic, one publisher: none of its publishers' topics may be taken.
+  if (const std::string problem = topics_.problem(spawn.topics); !problem.empty()) {
+    res.message = "name '" + req.name + "': " + problem;
+    return res;
+  }
   const auto base = requestedStart(req, res.message);
   if (!base) return res;
   core::ArticulationState start = spawn.robot_start;
@@ -144,6 +150,7 @@ SpawnBody::Response WorldEdits::insertRobot(SpawnQueue::Spawn& spawn) {
   }
   controllers = controllers.empty() ? " (no controllers: apply_joint_effort drives it)"
                                     : ", controllers " + controllers + " on '" + req.name + "/CONTROLLER/command'";
+  topics_.take(req.name, spawn.topics);
   hooks_.robot_added(spawn);
   res.success = true;
   res.message = "robot '" + req.name + "' added at t = " + time_.text() + ": " +

@@ -499,6 +499,20 @@ TEST_F(BadUrdf, DevicesBeyondTheirMemoryStopTheNodeNamingThem) {
       << out;
 }
 
+// One topic, one publisher: two sensors on one topic stop the node naming
+// both (roscpp logged "already advertised", the start-up line still claimed
+// the topic, and the second sensor published nothing).
+TEST_F(BadUrdf, TwoSensorsOnOneTopicStopTheNodeNamingBoth) {
+  // A LaserScan and a PointCloud2 lidar on 'scan'.
+  const auto [code, out] = runNode("/two_on_scan", sensorRobot(raySensor("flat", 1) + raySensor("tall", 4)));
+  EXPECT_EQ(code, 1) << out;
+  EXPECT_NE(out.find("robot 'r': <gazebo reference=\"base\"> <sensor name=\"tall\">: topic '/two_on_scan/scan' is "
+                     "also its <gazebo reference=\"base\"> <sensor name=\"flat\">'s (one topic, one publisher"),
+            std::string::npos)
+      << out;
+  EXPECT_EQ(out.find("already advertised"), std::string::npos) << out;
+}
+
 TEST_F(BadUrdf, ARepairedUrdfStartsAndSaysWhatWasRepairedOnce) {
   // PR2's sensor mount (0.001 + 0.001 < 0.01) and a frame without
   // <inertial>: the node starts (and runs until the timeout ends it),

@@ -129,8 +129,26 @@ TEST_F(ArmEdits, ARobotDescribedForGazeboSpawnsWithItsMarkupsSensorsAndDrive) {
   EXPECT_NEAR(truth.back().twist.twist.linear.x, 0.3, 0.03 * 0.3);
   EXPECT_NEAR(odom.back().twist.twist.linear.x, 0.3, 0.03 * 0.3);
   EXPECT_GT(truth.back().pose.pose.position.x, 3.3);
+  // One topic, one publisher: a copy in the same robotNamespace would
+  // publish its joint_states and odometry on the first one's topics (the
+  // two interleaved without a word): refused, naming both, the world
+  // unchanged; once the first is deleted, its topics are free.
+  s.request.name = "rover_copy";
+  s.request.pose.position.y = 3.0;
+  ros::param::set("/rover_copy/tf_prefix", "rover_copy");  // its frames its own: only the topics clash
+  const SpawnBody::Response copy = call("spawn_body", s).response;
+  EXPECT_FALSE(copy.success);
+  EXPECT_NE(copy.message.find("name 'rover_copy': joint_states: topic '/gp/joint_states' is taken by 'rover' "
+                              "joint_states (one topic, one publisher"),
+            std::string::npos)
+      << copy.message;
   rigid_body_sim::DeleteBody d;
   d.request.name = "rover";
+  d = call("delete_body", d);
+  EXPECT_TRUE(d.response.success) << d.response.message;
+  const SpawnBody::Response after = call("spawn_body", s).response;
+  EXPECT_TRUE(after.success) << after.message;
+  d.request.name = "rover_copy";
   d = call("delete_body", d);
   EXPECT_TRUE(d.response.success) << d.response.message;
 }

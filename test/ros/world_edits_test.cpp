@@ -2,7 +2,8 @@
 // an absurd twist is refused and changes nothing; one that fits joins the
 // simulation, the ports and the names together, posed in the frame it
 // names; a delete takes a body out of all of them and the later ones move
-// down; the node hears of each edit once.
+// down; the node hears of each edit once. A robot's topics are claimed
+// once each (TopicClaims).
 #include "rigid_body_sim/ros/world_edits.h"
 
 #include <gtest/gtest.h>
@@ -26,6 +27,7 @@ struct Edits : test::PartsWorld {
   Pacer pacer;
   std::vector<std::string> told;
   std::optional<RobotPublisher> robots;
+  TopicClaims topics{[](const std::string& t) { return t; }};
   WorldEdits edits{
       sim,
       ports,
@@ -34,6 +36,7 @@ struct Edits : test::PartsWorld {
       settings,
       time,
       pacer,
+      topics,
       {[this] { told.push_back("added"); }, [this](const std::string& n) { told.push_back("removed " + n); },
        [this](SpawnQueue::Spawn& s) { told.push_back("robot added " + s.request.name); },
        [this](std::size_t, const std::string& n) { told.push_back("robot removed " + n); }}};
@@ -125,6 +128,44 @@ TEST(WorldEdits, ARefusalShowsAtMost200CharactersOfAName) {
   EXPECT_LT(res.message.size(), 300u) << res.message.size();
   EXPECT_NE(res.message.find("unknown body 'xxxxxxx?xxx"), std::string::npos) << res.message.substr(0, 300);
   EXPECT_NE(res.message.find("... (100000 characters)'"), std::string::npos) << res.message.substr(0, 300);
+}
+
+// One topic, one publisher: a robot's topics (as the port classes name
+// them) are refused where another robot holds one, or two of its own share
+// one (a lidar and a depth camera on 'scan' once started, the second never
+// published), naming both; they are free again once their robot is gone.
+TEST(TopicClaims, ATakenTopicIsRefusedNamingBothAndFreedWithItsRobot) {
+  TopicClaims claims([](const std::string& t) { return t.front() == '/' ? t : "/ns/" + t; });
+  io::RobotSensors sensors;
+  io::RobotLidar lidar;
+  lidar.entry.topic = "/scan";
+  lidar.entry.key = "lidar[0]";
+  sensors.lidars.push_back(lidar);
+  io::RobotCamera camera;
+  camera.entry.key = "depth_camera[0]";
+  camera.entry.topic = "cam";
+  camera.entry.points_topic = "/points";
+  sensors.cameras.push_back(camera);
+  const io::RobotControls controls;
+  const std::vector<TopicClaims::Claim> a = robotTopics("a/", "a/", sensors, controls);
+  ASSERT_EQ(a.size(), 5u);  // joint_states, the lidar, the camera's three
+  EXPECT_EQ(a[0].topic, "a/joint_states");
+  EXPECT_EQ(a[1].topic, "/scan");  // from the root, as given
+  EXPECT_EQ(a[2].topic, "a/cam/depth/image_raw");
+  EXPECT_EQ(a[3].topic, "a/cam/depth/camera_info");
+  EXPECT_EQ(a[4].topic, "/points");
+  EXPECT_EQ(claims.problem(a), "");
+  claims.take("a", a);
+  const std::vector<TopicClaims::Claim> b = robotTopics("b/", "b/", sensors, controls);
+  EXPECT_EQ(claims.problem(b),
+            "lidar[0]: topic '/scan' is taken by 'a' lidar[0] (one topic, one publisher: name another topic)");
+  // Two of one robot's on one topic (resolved alike: 'x' under /ns/ is '/ns/x').
+  sensors.lidars[0].entry.topic = "/ns/b/cam/depth/camera_info";
+  EXPECT_EQ(claims.problem(robotTopics("b/", "b/", sensors, controls)),
+            "depth_camera[0]: topic '/ns/b/cam/depth/camera_info' is also its lidar[0]'s (one topic, one publisher: "
+            "name another topic)");
+  claims.release("a");
+  EXPECT_EQ(claims.problem(b), "");
 }
 
 }  // namespace

@@ -53,6 +53,7 @@
 #include "rigid_body_sim/ros/spawn_queue.h"
 #include "rigid_body_sim/ros/state_publisher.h"
 #include "rigid_body_sim/ros/state_requests.h"
+#include "rigid_body_sim/ros/topic_claims.h"
 #include "rigid_body_sim/ros/world_edits.h"
 
 namespace rigid_body_sim::node {
@@ -122,6 +123,8 @@ class SimNode {
   double rebaseClock();
 
   ros::NodeHandle nh_, pnh_;
+  /// Every robot's publishers' topics, one publisher each (topic_claims.h).
+  TopicClaims topic_claims_{[this](const std::string& topic) { return nh_.resolveName(topic); }};
   NodeParams params_;
   const NodeSettings& settings_ = params_.node;  ///< ~physics changes params_.node
   /// The robots' controllers as the world was loaded, until commands_ takes them.
@@ -155,6 +158,7 @@ class SimNode {
                           params_.node,
                           time_,
                           pacer_,
+                          topic_claims_,
                           {[this] { afterSpawn(); }, [this](const std::string& name) { afterDelete(name); },
                            [this](SpawnQueue::Spawn& spawn) { afterRobotSpawn(spawn); },
                            [this](std::size_t r, const std::string& name) { afterRobotDelete(r, name); }}};

@@ -19,6 +19,7 @@
 #include "rigid_body_sim/io/controllers.h"
 #include "rigid_body_sim/io/sensor_mount.h"
 #include "rigid_body_sim/ros/body_ports.h"
+#include "rigid_body_sim/ros/topic_claims.h"
 
 namespace rigid_body_sim::node {
 
@@ -33,9 +34,10 @@ class SpawnQueue {
     /// joint_names set them (the base placed by the loop).
     std::optional<core::Scene::RobotSpec> robot;
     core::ArticulationState robot_start;
-    io::RobotControls controls;  ///< the robot's, read and checked on the spawn thread
-    std::string frame_prefix;    ///< its frames' tf_prefix, "" or "PREFIX/" (framePrefix)
-    io::RobotSensors sensors;    ///< the robot's: the request's imu, its URDF's Gazebo markup
+    io::RobotControls controls;              ///< the robot's, read and checked on the spawn thread
+    std::string frame_prefix;                ///< its frames' tf_prefix, "" or "PREFIX/" (framePrefix)
+    io::RobotSensors sensors;                ///< the robot's: the request's imu, its URDF's Gazebo markup
+    std::vector<TopicClaims::Claim> topics;  ///< its publishers' (robotTopics), claimed before it is added
   };
   /// Adds a spawn to the world, or says why not (loop thread).
   using Insert = std::function<SpawnBody::Response(Spawn&)>;

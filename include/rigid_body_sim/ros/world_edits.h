@@ -20,6 +20,7 @@
 #include "rigid_body_sim/ros/robot_ports.h"
 #include "rigid_body_sim/ros/sim_clock.h"
 #include "rigid_body_sim/ros/spawn_queue.h"
+#include "rigid_body_sim/ros/topic_claims.h"
 
 namespace rigid_body_sim::node {
 
@@ -38,9 +39,12 @@ class WorldEdits {
   };
 
   /// Reads the robots' frames from `robots` (when made), the node's time
-  /// from `time`; records each edit's cost in `pacer` under ~report_timing.
+  /// from `time`; a robot's topics are claimed in `topics` before it is
+  /// added, and dropped with it; records each edit's cost in `pacer` under
+  /// ~report_timing.
   WorldEdits(core::Simulation& sim, PortRegistry& ports, const std::optional<RobotPublisher>& robots,
-             const Addressing& address, const NodeSettings& settings, const NodeTime& time, Pacer& pacer, Hooks hooks)
+             const Addressing& address, const NodeSettings& settings, const NodeTime& time, Pacer& pacer,
+             TopicClaims& topics, Hooks hooks)
       : sim_(sim),
         ports_(ports),
         robots_(robots),
@@ -48,6 +52,7 @@ class WorldEdits {
         settings_(settings),
         time_(time),
         pacer_(pacer),
+        topics_(topics),
         hooks_(std::move(hooks)) {}
 
   /// Adds every spawn queued since the last call, answering each.
@@ -81,6 +86,7 @@ class WorldEdits {
   const NodeSettings& settings_;
   const NodeTime& time_;
   Pacer& pacer_;
+  TopicClaims& topics_;
   Hooks hooks_;
 };
 
