@@ -48,6 +48,7 @@ core::LinkState linkStateOf(const core::ArticulationKinematics& kin, int link) {
 void LinkImus::addRobot(const core::Simulation& sim, std::size_t r, const std::string& prefix,
                         const std::string& frame_prefix, const std::vector<io::RobotImu>& imus) {
   core::kinematics(sim.scene.robots()[r].model, sim.robots[r], kin_);
+  ros::NodeHandle& nh = *handles_.emplace_back(ownHandle(nh_));
   std::vector<Port> ports;
   for (const io::RobotImu& m : imus) {
     const io::ImuEntry& e = m.entry;
@@ -57,7 +58,7 @@ void LinkImus::addRobot(const core::Simulation& sim, std::size_t r, const std::s
            frame_prefix + e.frame_id,
            {}};
     const std::string topic = deviceTopic(prefix, e.topic);
-    p.publisher = CountedPublisher::advertise<sensor_msgs::Imu>(nh_, topic, 100);
+    p.publisher = CountedPublisher::advertise<sensor_msgs::Imu>(nh, topic, 100);
     ROS_INFO("sim_node: IMU on '%s' link '%s', frame '%s', on %s at %g Hz", sim.scene.robots()[r].name.c_str(),
              e.link.c_str(), p.frame.c_str(), nh_.resolveName(topic).c_str(),
              1.0 / (static_cast<double>(p.every) * dt_));

@@ -15,6 +15,7 @@ namespace rigid_body_sim::node {
 
 void LinkOdometry::addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
                             const std::vector<io::RobotOdometry>& odometry) {
+  ros::NodeHandle& nh = *handles_.emplace_back(ownHandle(nh_));
   std::vector<Port> ports;
   const auto resolved = [&](const std::string& topic) { return deviceTopic(prefix, topic); };
   for (const io::RobotOdometry& o : odometry) {
@@ -25,9 +26,9 @@ void LinkOdometry::addRobot(const std::string& robot, const std::string& prefix,
     p.every = std::max(1LL, std::llround(1.0 / ((e.rate > 0.0 ? e.rate : publish_rate_) * dt_)));
     p.child = frame_prefix + e.link;
     if (e.noise) p.noise.emplace(*e.noise);
-    p.odom = CountedPublisher::advertise<nav_msgs::Odometry>(nh_, resolved(e.topic), 10);
+    p.odom = CountedPublisher::advertise<nav_msgs::Odometry>(nh, resolved(e.topic), 10);
     if (!e.ground_truth.empty()) {
-      p.truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh_, resolved(e.ground_truth), 10);
+      p.truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh, resolved(e.ground_truth), 10);
     }
     ROS_INFO("sim_node: odometry of '%s' link '%s' on %s at %g Hz%s", robot.c_str(), e.link.c_str(),
              nh_.resolveName(resolved(e.topic)).c_str(), 1.0 / (static_cast<double>(p.every) * dt_),

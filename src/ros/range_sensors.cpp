@@ -122,6 +122,7 @@ sensor_msgs::PointCloud2 depthCloudMessage(const core::DepthCamera& camera, cons
 
 void RangeSensors::addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
                             const std::vector<io::RobotLidar>& lidars, const std::vector<io::RobotCamera>& cameras) {
+  ros::NodeHandle& nh = *handles_.emplace_back(ownHandle(nh_));
   std::vector<CameraPort> camera_ports;
   for (const io::RobotCamera& c : cameras) {
     bytes_ += core::depthCameraBytes(c.entry.settings);
@@ -131,9 +132,9 @@ void RangeSensors::addRobot(const std::string& robot, const std::string& prefix,
     p.every = std::max(1LL, std::llround(1.0 / (c.entry.rate * dt_)));
     const std::array<std::string, 3> topics = cameraTopics(prefix, c.entry);  // image, info, points
     const std::string ns = deviceTopic(prefix, c.entry.topic) + "/";
-    p.image = CountedPublisher::advertise<sensor_msgs::Image>(nh_, topics[0], 2);
-    p.info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(nh_, topics[1], 2);
-    p.points = CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh_, topics[2], 2);
+    p.image = CountedPublisher::advertise<sensor_msgs::Image>(nh, topics[0], 2);
+    p.info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(nh, topics[1], 2);
+    p.points = CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh, topics[2], 2);
     ROS_INFO("sim_node: robot '%s': a depth camera of %d x %d on '%s', %s{%s, %s, %s} at %g Hz", robot.c_str(),
              c.entry.settings.width, c.entry.settings.height, p.frame.c_str(), nh_.resolveName(ns).c_str(),
              c.entry.image_topic.c_str(), c.entry.info_topic.c_str(), c.entry.points_topic.c_str(), c.entry.rate);
@@ -148,8 +149,8 @@ void RangeSensors::addRobot(const std::string& robot, const std::string& prefix,
     p.every = std::max(1LL, std::llround(1.0 / (l.entry.rate * dt_)));
     const bool cloud = l.entry.settings.vertical_samples > 1;
     const std::string topic = deviceTopic(prefix, l.entry.topic);
-    p.publisher = cloud ? CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh_, topic, 10)
-                        : CountedPublisher::advertise<sensor_msgs::LaserScan>(nh_, topic, 10);
+    p.publisher = cloud ? CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh, topic, 10)
+                        : CountedPublisher::advertise<sensor_msgs::LaserScan>(nh, topic, 10);
     ROS_INFO("sim_node: robot '%s': a lidar of %zu rays on '%s', %s on %s at %g Hz", robot.c_str(), p.lidar.rayCount(),
              p.frame.c_str(), cloud ? "sensor_msgs/PointCloud2" : "sensor_msgs/LaserScan",
              nh_.resolveName(topic).c_str(), p.rate);
@@ -163,6 +164,7 @@ void RangeSensors::removeRobot(std::size_t r) {
   for (const CameraPort& p : cameras_.at(r)) bytes_ -= core::depthCameraBytes(p.camera.settings());
   robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r));
   cameras_.erase(cameras_.begin() + static_cast<std::ptrdiff_t>(r));
+  handles_.erase(handles_.begin() + static_cast<std::ptrdiff_t>(r));  // after what it opened
 }
 
 void RangeSensors::restart() {

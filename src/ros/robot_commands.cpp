@@ -32,6 +32,7 @@ void RobotCommands::addRobot(const core::Simulation& sim, std::size_t r, const s
   joint_names_.push_back(std::move(joints));
   controls_.push_back(std::move(controls));
   applied_.emplace_back();
+  handles_.push_back(ownHandle(nh_));
   subscribers_.push_back(subscribe(r, prefix));
   drives_.push_back(openDrives(r, prefix, frame_prefix));
   restart(sim, r, true);
@@ -58,8 +59,8 @@ std::vector<std::unique_ptr<DrivePorts>> RobotCommands::openDrives(std::size_t r
             name.c_str(), drive.spec().name.c_str());
       }
     };
-    out.push_back(
-        std::make_unique<DrivePorts>(nh_, prefix, controls.drives[d].spec().name, topics, frames, every, command));
+    out.push_back(std::make_unique<DrivePorts>(*handles_.at(r), prefix, controls.drives[d].spec().name, topics, frames,
+                                               every, command));
   }
   return out;
 }
@@ -97,8 +98,9 @@ std::vector<ros::Subscriber> RobotCommands::subscribe(std::size_t r, const std::
     if (it != robot_names_.end()) then(static_cast<std::size_t>(it - robot_names_.begin()));
   };
   std::vector<ros::Subscriber> subscribers;
+  ros::NodeHandle& nh = *handles_.at(r);
   if (controls_[r].base_driver) {  // cmd_vel on the robot: its base driven as a body's
-    subscribers.push_back(nh_.subscribe<geometry_msgs::Twist>(
+    subscribers.push_back(nh.subscribe<geometry_msgs::Twist>(
         prefix + "cmd_vel", 10,
         [this, at](const geometry_msgs::Twist::ConstPtr& m) { at([&](std::size_t k) { baseCommand(k, *m); }); }));
     ROS_INFO("sim_node: robot '%s': its base driven by %s", name.c_str(), nh_.resolveName(prefix + "cmd_vel").c_str());
@@ -107,18 +109,18 @@ std::vector<ros::Subscriber> RobotCommands::subscribe(std::size_t r, const std::
   for (std::size_t c = 0; c < specs.size(); ++c) {
     const std::string topic = prefix + specs[c].name + "/command";
     if (specs[c].mode == core::ControlMode::kTrajectory) {
-      subscribers.push_back(nh_.subscribe<trajectory_msgs::JointTrajectory>(
+      subscribers.push_back(nh.subscribe<trajectory_msgs::JointTrajectory>(
           topic, 10, [this, at, c](const trajectory_msgs::JointTrajectory::ConstPtr& m) {
             at([&](std::size_t k) { trajectory(k, c, *m); });
           }));
     } else if (controls_[r].group[c] != 0) {
-      subscribers.push_back(nh_.subscribe<std_msgs::Float64MultiArray>(
+      subscribers.push_back(nh.subscribe<std_msgs::Float64MultiArray>(
           topic, 10, [this, at, c](const std_msgs::Float64MultiArray::ConstPtr& m) {
             at([&](std::size_t k) { command(k, c, m->data); });
           }));
     } else {
       subscribers.push_back(
-          nh_.subscribe<std_msgs::Float64>(topic, 10, [this, at, c](const std_msgs::Float64::ConstPtr& m) {
+          nh.subscribe<std_msgs::Float64>(topic, 10, [this, at, c](const std_msgs::Float64::ConstPtr& m) {
             at([&](std::size_t k) { command(k, c, {m->data}); });
           }));
     }
@@ -126,7 +128,7 @@ std::vector<ros::Subscriber> RobotCommands::subscribe(std::size_t r, const std::
              nh_.resolveName(topic).c_str());
   }
   if (!specs.empty()) {
-    subscribers.push_back(nh_.subscribe<sensor_msgs::JointState>(
+    subscribers.push_back(nh.subscribe<sensor_msgs::JointState>(
         prefix + "joint_command", 10,
         [this, at](const sensor_msgs::JointState::ConstPtr& m) { at([&](std::size_t k) { jointCommand(k, *m); }); }));
   }
@@ -138,6 +140,7 @@ void RobotCommands::removeRobot(std::size_t r) {
   const auto erase = [r](auto& per_robot) { per_robot.erase(per_robot.begin() + static_cast<std::ptrdiff_t>(r)); };
   erase(subscribers_);  // its topics unsubscribed
   erase(drives_);
+  erase(handles_);  // after what it opened
   erase(controls_);
   erase(robot_names_);
   erase(joint_names_);

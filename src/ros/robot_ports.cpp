@@ -118,7 +118,8 @@ void RobotPublisher::addRobot(const core::SceneRobot& robot, const std::string& 
   p.frames = robotFrames(robot.model, frame_prefix);
   const std::string base = placedBase(robot.model);
   p.base_frame = base.empty() ? "" : frame_prefix + base;
-  p.joint_states = CountedPublisher::advertise<sensor_msgs::JointState>(nh_, p.prefix + "joint_states", 10);
+  p.nh = ownHandle(nh_);
+  p.joint_states = CountedPublisher::advertise<sensor_msgs::JointState>(*p.nh, p.prefix + "joint_states", 10);
   p.every = std::max(1LL, std::llround(1.0 / (hz * dt_)));
   robots_.push_back(std::move(p));
 }

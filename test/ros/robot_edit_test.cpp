@@ -7,17 +7,23 @@
 // namespace, as a Gazebo user loads them, or from the request) is driven by
 // them, and deleted with its topics. A robot described for Gazebo
 // (test/ros/gazebo_plugins.urdf) spawns with its markup's IMU, ground truth
-// and drive under its name. Two copies of one URDF run side by side under
-// their tf_prefixes (two_copies.test).
+// and drive under its name; a copy in its robotNamespace is refused (one
+// topic, one publisher). Three hundred spawns and deletes of a robot with
+// sensors leave the node's memory flat. Two copies of one URDF run side by
+// side under their tf_prefixes (two_copies.test).
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
+#include <ros/master.h>
+#include <ros/network.h>
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Float64.h>
+#include <xmlrpcpp/XmlRpcClient.h>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -151,6 +157,76 @@ TEST_F(ArmEdits, ARobotDescribedForGazeboSpawnsWithItsMarkupsSensorsAndDrive) {
   d.request.name = "rover_copy";
   d = call("delete_body", d);
   EXPECT_TRUE(d.response.success) << d.response.message;
+}
+
+/// sim_node's process id, as rosnode info asks it: the node's own XML-RPC getPid.
+int simNodePid() {
+  XmlRpc::XmlRpcValue args, result, uri;
+  args[0] = ros::this_node::getName();
+  args[1] = "/sim_node";
+  if (!ros::master::execute("lookupNode", args, result, uri, true)) return -1;
+  std::string host;
+  uint32_t port = 0;
+  if (!ros::network::splitURI(uri, host, port)) return -1;
+  XmlRpc::XmlRpcClient client(host.c_str(), static_cast<int>(port), "/");
+  XmlRpc::XmlRpcValue ask, answer;
+  ask[0] = ros::this_node::getName();
+  if (!client.execute("getPid", ask, answer) || answer.size() < 3) return -1;
+  return static_cast<int>(answer[2]);
+}
+
+/// Its resident memory (VmRSS), kB.
+long residentKb(int pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string key;
+  long kb = -1;
+  while (status >> key) {
+    if (key == "VmRSS:") status >> kb;
+    status.ignore(1 << 12, '\n');
+  }
+  return kb;
+}
+
+// Spawns and deletes of a robot with sensors and a drive leave the node's
+// memory where it was (docs/ros_api.md: within 1 % over 300 cycles). Each
+// spawn once left its topics' 264-byte blocks in the node's own
+// NodeHandles, 2.5 KB a cycle with no plateau (0.5 MB per 200 cycles of a
+// rover with a lidar, a depth camera and a controller); each robot now
+// opens them through a handle of its own.
+TEST_F(ArmEdits, SpawnsAndDeletesOfARobotWithSensorsLeaveTheNodesMemoryFlat) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "ASan's quarantine holds what is freed: the node's memory says nothing here";
+#endif
+  const int pid = simNodePid();
+  ASSERT_GT(pid, 0);
+  SpawnBody s;
+  s.request.name = "cycled";
+  s.request.urdf_file = "package://rigid_body_sim/urdf/diff_drive_lidar.urdf";
+  s.request.pose.position.x = -3.0;
+  s.request.pose.position.z = 0.1;
+  s.request.pose.orientation.w = 1.0;
+  s.request.controllers =
+      "{base: {type: diff_drive_controller/DiffDriveController, left_wheel: left_wheel_joint, "
+      "right_wheel: right_wheel_joint}}";
+  rigid_body_sim::DeleteBody d;
+  d.request.name = "cycled";
+  ASSERT_TRUE(ros::service::waitForService("/sim_node/spawn_body", 30000));
+  const auto cycles = [&](int n) {
+    for (int k = 0; k < n; ++k) {
+      const SpawnBody::Response added = call("spawn_body", s).response;
+      ASSERT_TRUE(added.success) << added.message;
+      ASSERT_TRUE(call("delete_body", d).response.success);
+    }
+  };
+  cycles(50);  // the allocator's pools and roscpp's caches, once
+  const long warm = residentKb(pid);
+  cycles(300);
+  const long after = residentKb(pid);
+  ASSERT_GT(warm, 0);
+  // 1 % over all 300 (the leak took about 2 %), room for the allocator's steps.
+  EXPECT_LE(after - warm, warm / 100) << "300 cycles: " << warm << " kB, then " << after << " kB";
+  RecordProperty("rss_kb_warm", static_cast<int>(warm));
+  RecordProperty("rss_kb_after_300", static_cast<int>(after));
 }
 
 // A robot spawned with cmd_vel (its base driven as a body's), then another

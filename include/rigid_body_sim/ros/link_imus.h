@@ -9,6 +9,7 @@
 #include <sensor_msgs/Imu.h>
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,7 +37,10 @@ class LinkImus {
   void addRobot(const core::Simulation& sim, std::size_t r, const std::string& prefix, const std::string& frame_prefix,
                 const std::vector<io::RobotImu>& imus);
   /// Robot r deleted: its IMUs' topics close; the later robots move down by one.
-  void removeRobot(std::size_t r) { robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r)); }
+  void removeRobot(std::size_t r) {
+    robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r));
+    handles_.erase(handles_.begin() + static_cast<std::ptrdiff_t>(r));  // after what it opened
+  }
   /// Robot r was put somewhere (set_model_configuration, a reset): the next
   /// period of each of its IMUs starts now (a jump is no acceleration).
   void restart(const core::Simulation& sim, std::size_t r);
@@ -55,7 +59,8 @@ class LinkImus {
   ros::NodeHandle nh_;
   double dt_;
   std::vector<std::vector<Port>> robots_;
-  core::ArticulationKinematics kin_;  ///< reused by every sample
+  std::vector<std::shared_ptr<ros::NodeHandle>> handles_;  ///< per robot, its own (ownHandle)
+  core::ArticulationKinematics kin_;                       ///< reused by every sample
 };
 
 }  // namespace rigid_body_sim::node

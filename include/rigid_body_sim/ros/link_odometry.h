@@ -9,6 +9,7 @@
 #include <ros/ros.h>
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,7 +32,10 @@ class LinkOdometry {
   void addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
                 const std::vector<io::RobotOdometry>& odometry);
   /// Robot r deleted: its topics close; the later robots move down by one.
-  void removeRobot(std::size_t r) { robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r)); }
+  void removeRobot(std::size_t r) {
+    robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r));
+    handles_.erase(handles_.begin() + static_cast<std::ptrdiff_t>(r));  // after what it opened
+  }
   /// After a reset: each drift from zero.
   void restart();
   /// The reports due at step `steps` of `sim`'s state (sim time t), stamped `stamp`.
@@ -52,7 +56,8 @@ class LinkOdometry {
   double dt_, publish_rate_;
   std::string world_frame_;
   std::vector<std::vector<Port>> robots_;
-  core::ArticulationKinematics kin_;  ///< reused by every report
+  std::vector<std::shared_ptr<ros::NodeHandle>> handles_;  ///< per robot, its own (ownHandle)
+  core::ArticulationKinematics kin_;                       ///< reused by every report
 };
 
 }  // namespace rigid_body_sim::node

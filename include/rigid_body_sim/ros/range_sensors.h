@@ -18,6 +18,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -89,7 +90,8 @@ class RangeSensors {
   ros::NodeHandle nh_;
   double dt_;
   std::vector<std::vector<Port>> robots_;
-  std::vector<std::vector<CameraPort>> cameras_;  ///< per robot
+  std::vector<std::vector<CameraPort>> cameras_;           ///< per robot
+  std::vector<std::shared_ptr<ros::NodeHandle>> handles_;  ///< per robot, its own (ownHandle)
   std::atomic<std::uintmax_t> bytes_{0};
   // Reused by every scan.
   core::ArticulationKinematics kin_;

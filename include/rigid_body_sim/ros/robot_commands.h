@@ -113,8 +113,9 @@ class RobotCommands {
   std::vector<std::string> robot_names_;
   std::vector<std::vector<std::string>> joint_names_;  ///< per robot, per link
   std::vector<Eigen::VectorXd> applied_;
-  std::set<std::pair<std::string, std::string>> warned_;  ///< (robot/joint, limit) clipped once
-  ControllerWatch watch_;                                 ///< saturated or pressing controllers, said once
+  std::set<std::pair<std::string, std::string>> warned_;   ///< (robot/joint, limit) clipped once
+  ControllerWatch watch_;                                  ///< saturated or pressing controllers, said once
+  std::vector<std::shared_ptr<ros::NodeHandle>> handles_;  ///< per robot, its own (ownHandle)
   std::vector<std::vector<ros::Subscriber>> subscribers_;
   std::vector<std::vector<std::unique_ptr<DrivePorts>>> drives_;  ///< per robot, per drive
   std::vector<geometry_msgs::TransformStamped> odom_tf_;          ///< this publication's

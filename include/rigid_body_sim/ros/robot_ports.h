@@ -11,6 +11,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,7 @@ struct RobotPorts {
   /// Its base link's frame, or "" for a robot fixed to the world (the
   /// URDF's root is then `world`, and robot_state_publisher roots it there).
   std::string base_frame;
+  std::shared_ptr<ros::NodeHandle> nh;  ///< its own (ownHandle), for its topics
   CountedPublisher joint_states;
   long long every = 1;  ///< joint_states every this many steps
 };
