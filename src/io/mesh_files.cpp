@@ -20,7 +20,19 @@ MeshFiles::MeshFiles(const std::string& path, std::string bytes, std::uintmax_t 
   std::error_code ec;
   path_ = fs::absolute(path, ec).lexically_normal();
   folder_ = fs::weakly_canonical(path_.parent_path(), ec);
-  if (ec) folder_.clear();
+  if (ec) {
+    folder_.clear();
+    return;
+  }
+  // The mesh's package, if it is in one: its files may name a sibling
+  // folder's (meshes/visual/x.obj naming ../materials/x.mtl).
+  for (fs::path dir = folder_; !dir.empty(); dir = dir.parent_path()) {
+    if (fs::is_regular_file(dir / "package.xml", ec)) {
+      folder_ = dir;
+      break;
+    }
+    if (dir == dir.root_path()) break;
+  }
 }
 
 bool MeshFiles::isMesh(const std::string& file) const {
@@ -37,7 +49,9 @@ std::string MeshFiles::problem(const std::string& file) const {
   if (ec) return "names a file ('" + name + "') that cannot be resolved";
   const auto [in_folder, in_real] = std::mismatch(folder_.begin(), folder_.end(), real.begin(), real.end());
   if (in_folder != folder_.end()) {
-    return "names a file ('" + name + "') outside its own folder: the files a mesh names must be beside it or below";
+    return "names a file ('" + name +
+           "') outside its own folder and package: the files a mesh names must be beside it or below, or in its "
+           "package";
   }
   const fs::file_status status = fs::status(real, ec);
   if (!ec && fs::is_regular_file(status) && fs::file_size(real, ec) > left_ && !ec) {

@@ -2,7 +2,8 @@
 // itself, from the bytes already read and checked, and the files the mesh
 // names (an OBJ's `mtllib`, a texture) only when they pass the checks the
 // mesh passed: a regular file, within the bytes the mesh's cap leaves, and
-// in the mesh's folder or below it. assimp's own file system opened
+// in the mesh's folder or below it, or in its ROS package (the nearest
+// folder above it with a package.xml). assimp's own file system opened
 // whatever a mesh named: a FIFO as an OBJ's material file blocked the spawn
 // thread for good, a 1.5 GB `.mtl` took 1.58 GB beside a 79-byte OBJ.
 #pragma once
@@ -42,7 +43,7 @@ class MeshFiles : public Assimp::IOSystem {
   std::string problem(const std::string& file) const;
 
   std::filesystem::path path_;    ///< the mesh's, absolute and normal
-  std::filesystem::path folder_;  ///< its folder, canonical; empty for bytes from memory
+  std::filesystem::path folder_;  ///< its package's or its folder, canonical; empty for bytes from memory
   std::string bytes_;
   std::list<std::string> named_;  ///< the bytes of each file it named, alive while assimp reads
   std::uintmax_t cap_;            ///< bytes the mesh and its files may hold together

@@ -121,7 +121,10 @@ TEST(MeshLoader, AFileTheMeshNamesIsCheckedAsTheMeshIsOrNotRead) {
                                   {"huge.obj", "names a file ('huge.mtl') that holds more than the 256 MiB"});
   std::ofstream(dir / "outside.mtl") << "newmtl red\nKd 1 0 0\n";
   expectThrowsWith<io::MeshError>([&] { io::loadMesh(obj("up.obj", "../outside.mtl"), Vec3::Ones()); },
-                                  {"up.obj", "outside its own folder"});
+                                  {"up.obj", "outside its own folder and package"});
+  // In a package, a sibling folder's file is its own (meshes/x.obj naming ../materials/x.mtl).
+  std::ofstream(dir / "package.xml") << "<package><name>named</name></package>";
+  EXPECT_EQ(io::loadMesh(obj("sibling.obj", "../outside.mtl"), Vec3::Ones()).vertices.size(), 4u);
 }
 
 TEST(MeshLoader, ReadsColladaAsRosDoesWhateverItsUpAxis) {

@@ -324,7 +324,7 @@ TEST(GazeboLidars, ACountRateOrRangeGazeboWouldNotHoldIsRefusedNamingIt) {
       {"<samples>180", "<samples>180.5", "<scan/horizontal/samples> = '180.5': must be a whole number"},
       {"<resolution>2", "<resolution>-1", "<scan/horizontal/resolution> = '-1': must be within (0, 1e+06]"},
       {"<resolution>2", "<resolution>1e6", "x <resolution>"},
-      {"<min_angle>-1.5", "<min_angle>-1e39", "min_angle and max_angle must be within [-2 pi, 2 pi]"},
+      {"<min_angle>-1.5", "<min_angle>-1e39", "min_angle and max_angle must be within [-4 pi, 4 pi]"},
       {"<max>12", "<max>1e39", "max_range must be <= 1e5 m"},
       {"<update_rate>20", "<update_rate>1e9", "<update_rate> = '1e9': must be 0"},
       {"<update_rate>20", "<update_rate>-1", "<update_rate> = '-1': must be 0"},

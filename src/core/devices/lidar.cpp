@@ -25,7 +25,7 @@ void checkLidar(const LidarSettings& s) {
   }
   // LaserScan's angles are float32: a finite 1e39 or 1e308 was published as inf.
   if (!(s.min_angle >= -ranges::kMaxScanAngle && s.max_angle <= ranges::kMaxScanAngle)) {
-    fail("min_angle and max_angle must be within [-2 pi, 2 pi] rad");
+    fail("min_angle and max_angle must be within [-4 pi, 4 pi] rad");
   }
   if (!(s.vertical_min_angle >= -M_PI / 2 && s.vertical_max_angle <= M_PI / 2)) {
     fail("vertical angles must be within [-pi/2, pi/2]");

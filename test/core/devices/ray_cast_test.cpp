@@ -343,19 +343,22 @@ TEST(Lidar, RefusesSettingsNamingTheField) {
   s.vertical_samples = 1000;
   refused(s, "<= 1e6");
   // Finite, but beyond what LaserScan's float32 fields hold: published as ±inf once.
-  for (const double a : {1e308, 1e39, 7.0}) {
+  for (const double a : {1e308, 1e39, 13.0}) {
     s = {};
     s.min_angle = -a;
     s.max_angle = a;
-    refused(s, "min_angle and max_angle must be within [-2 pi, 2 pi]");
+    refused(s, "min_angle and max_angle must be within [-4 pi, 4 pi]");
   }
   s = {};
   s.max_range = 1e39;
   refused(s, "max_range must be <= 1e5 m");
   s = {};
-  s.min_angle = -2.0 * M_PI;  // a full turn each way is still taken
-  s.max_angle = 2.0 * M_PI;
+  s.min_angle = 0.0;  // TurtleBot3's LDS: a full turn, rounded up past 2 pi
+  s.max_angle = 6.28319;
   s.max_range = 1e5;
+  EXPECT_NO_THROW(core::Lidar{s});
+  s.min_angle = -4.0 * M_PI;  // two turns each way are still taken
+  s.max_angle = 4.0 * M_PI;
   EXPECT_NO_THROW(core::Lidar{s});
 }
 

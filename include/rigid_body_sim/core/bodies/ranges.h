@@ -26,7 +26,9 @@ constexpr double kMaxDuration = 1e6;  ///< s: the sleep time, and the node's dur
 
 // -- a sensor (its messages hold float32 ranges and angles: these keep every
 // value a setting yields finite in them)
-constexpr double kMaxScanAngle = 2.0 * 3.14159265358979323846;  ///< rad: |a lidar's angle|, a full turn
+/// rad: |a lidar's angle|, two turns. Not one: real markup rounds a full
+/// turn up (TurtleBot3's <max_angle>6.28319</max_angle>, over 2π by 5e-6).
+constexpr double kMaxScanAngle = 4.0 * 3.14159265358979323846;
 constexpr double kMaxSensorRange = 1e5;  ///< m: a lidar's max_range, a camera's max_depth (100 km)
 /// rad: a camera's narrowest horizontal field of view (SDF's own minimum,
 /// sdformat's camera.sdf: 1e-320 gave a focal length of inf)

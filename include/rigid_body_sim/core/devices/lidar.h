@@ -31,7 +31,7 @@ struct LidarSettings {
 
 /// Throws std::invalid_argument naming the field: samples or fans < 1 or
 /// more than 10⁶ rays in all, angles not finite or min > max, horizontal
-/// ones beyond ±2π, vertical ones beyond ±π/2, ranges not 0 ≤ min < max ≤
+/// ones beyond ±4π, vertical ones beyond ±π/2, ranges not 0 ≤ min < max ≤
 /// 10⁵ m, noise not finite ≥ 0 (core/bodies/ranges.h).
 void checkLidar(const LidarSettings& s);
 
