@@ -3,6 +3,8 @@
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
 
 #include <Eigen/Cholesky>
+#include <cmath>
+#include <limits>
 
 namespace rigid_body_sim::core {
 
@@ -99,6 +101,14 @@ Eigen::MatrixXd massMatrix(const ArticulationModel& model, const ArticulationKin
   Eigen::MatrixXd M;
   massMatrix(model, kin, scratch, M);
   return M;
+}
+
+double jointResponse(const ArticulationModel& model, const ArticulationKinematics& kin, int link) {
+  const Eigen::LLT<Eigen::MatrixXd> llt(massMatrix(model, kin));
+  if (llt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
+  Eigen::VectorXd unit = Eigen::VectorXd::Unit(model.dofCount(), model.dofOf(link));
+  const double r = unit.dot(llt.solve(unit));
+  return std::isfinite(r) && r > 0.0 ? r : std::numeric_limits<double>::infinity();
 }
 
 void massMatrix(const ArticulationModel& model, const ArticulationKinematics& kin, DynamicsScratch& scratch,

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "rigid_body_sim/core/articulations/articulation_dynamics.h"
 #include "rigid_body_sim/core/bodies/ranges.h"
 
 namespace rigid_body_sim::core {
@@ -85,6 +86,8 @@ DiffDrive::DiffDrive(const ArticulationModel& model, DiffDriveSpec spec) : spec_
     seen.push_back(j);
     limits_.push_back(link.limits);
   }
+  const ArticulationKinematics rest = kinematics(model, restState(model));
+  for (const int j : wheels_) response_.push_back(jointResponse(model, rest, j));
   const DiffDriveSettings& k = s.settings;
   for (const auto& [value, what] : {std::pair<double, const char*>{s.wheel_separation, "wheel_separation"},
                                     {s.wheel_radius, "wheel_radius"},
@@ -194,9 +197,8 @@ void DiffDrive::efforts(const ArticulationState& state, double t, double dt, Eig
     const JointLimits& lim = limits_[n];
     const double target = std::clamp(n < spec_.left.size() ? left_speed : right_speed, -lim.velocity, lim.velocity);
     const int j = all[n];
-    const double u = pids_[n].command(target - state.v(j - 1), dt);
     const double most = std::min(lim.effort, k.max_wheel_torque);
-    effort(j - 1) = std::clamp(u, -most, most);
+    effort(j - 1) = pids_[n].servo(target - state.v(j - 1), dt, response_[n], most);
   }
 }
 

@@ -23,6 +23,16 @@ double Pid::command(double error, double dt) {
   return command(error, rate, dt);
 }
 
+double Pid::servo(double error, double dt, double response, double limit) {
+  const double before = integral_;
+  const double stiffness = gains_.p * dt * response;  // 0 · ∞ (no gain on a massless joint) is none
+  const double u = command(error, dt) / (1.0 + (std::isnan(stiffness) ? 0.0 : stiffness));
+  if (std::abs(u) <= limit) return u;
+  // Held: the integral takes back what pushed it further that way.
+  if ((u > 0.0) == (error > 0.0)) integral_ = before;
+  return std::clamp(u, -limit, limit);
+}
+
 void Pid::reset() {
   integral_ = 0.0;
   last_error_ = 0.0;

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "../articulations/articulation_models.h"
+#include "rigid_body_sim/core/articulations/articulation_dynamics.h"
 
 namespace rigid_body_sim::core {
 namespace {
@@ -45,6 +46,15 @@ ArticulationModel twoWheels() {
   checkArticulation(model);
   return model;
 }
+
+/// How fast twoWheels()'s wheel turns per unit impulse on its axle with
+/// nothing touching, (M⁻¹)ᵢᵢ: the wheel (I_w = 0.02 kg m² about its axle) and
+/// the base (I_b = 10 (0.5² + 0.1²) / 12 about y; the other wheel turns
+/// freely on the same axis, its mass on it) turn against each other, so
+/// r = 1 / I_w + 1 / I_b (1/(kg m²)).
+constexpr double kResponse = 1.0 / 0.02 + 12.0 / (10.0 * (0.25 + 0.01));
+/// What the wheel's servo divides its PID's effort by at gain p (§11.12).
+double implicitBy(double p) { return 1.0 + p * kH * kResponse; }
 
 DiffDriveSpec spec(double radius = 0.1) {
   DiffDriveSpec s;
@@ -135,8 +145,9 @@ TEST(DiffDrive, AsksEachWheelForTheSpeedOfItsSide) {
   Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
   drive.efforts(wheelsAt(model, 0.0, 0.0, 1.0, 0.0), kH, kH, effort);
   // Left (0.2 − 1 · 0.6 / 2) / 0.1 = −1 rad/s against 1 rad/s turning; right (0.2 + 0.3) / 0.05 = 10 rad/s.
-  EXPECT_DOUBLE_EQ(effort(0), 0.5 * (-1.0 - 1.0));
-  EXPECT_DOUBLE_EQ(effort(1), 0.5 * 10.0);
+  // Each PID's effort as the servo takes it, implicit in its p.
+  EXPECT_NEAR(effort(0), 0.5 * (-1.0 - 1.0) / implicitBy(0.5), 1e-12);
+  EXPECT_NEAR(effort(1), 0.5 * 10.0 / implicitBy(0.5), 1e-12);
   EXPECT_DOUBLE_EQ(drive.limitedLinear(), 0.2);
   EXPECT_DOUBLE_EQ(drive.limitedAngular(), 1.0);
   // A command fast enough to pass the effort limit is held to it (5 N m).
@@ -156,7 +167,7 @@ TEST(DiffDrive, BrakesWhenTheCommandIsOlderThanItsTimeout) {
   ASSERT_TRUE(drive.command(0.5, 0.0, 1.0));  // received at t = 1 s
   Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
   drive.efforts(wheelsAt(model, 0.0, 0.0), 1.25, kH, effort);
-  EXPECT_DOUBLE_EQ(effort(0), 5.0);  // 0.5 / 0.1 = 5 rad/s: still in time
+  EXPECT_NEAR(effort(0), 5.0 / implicitBy(1.0), 1e-12);  // 0.5 / 0.1 = 5 rad/s: still in time
   drive.efforts(wheelsAt(model, 0.0, 0.0), 1.2501, kH, effort);
   EXPECT_DOUBLE_EQ(effort(0), 0.0);
   EXPECT_DOUBLE_EQ(drive.limitedLinear(), 0.0);
@@ -176,9 +187,16 @@ TEST(DiffDrive, AnInfiniteTimeoutHoldsTheLastCommand) {
   ASSERT_TRUE(drive.command(0.5, 0.0, 1.0));
   Eigen::VectorXd effort = Eigen::VectorXd::Zero(2);
   drive.efforts(wheelsAt(model, 0.0, 0.0), 1.0e4, kH, effort);
-  EXPECT_DOUBLE_EQ(effort(0), 5.0);  // 0.5 / 0.1 = 5 rad/s, a day later
+  EXPECT_NEAR(effort(0), 5.0 / implicitBy(1.0), 1e-12);  // 0.5 / 0.1 = 5 rad/s, a day later
   s.settings.cmd_vel_timeout = std::nan("");
   EXPECT_THROW(DiffDrive(model, s), std::invalid_argument);
+}
+
+TEST(DiffDrive, ItsServosAreImplicitInHowFastTheFreeWheelAnswers) {
+  const ArticulationModel model = twoWheels();
+  const ArticulationKinematics rest = kinematics(model, restState(model));
+  EXPECT_NEAR(jointResponse(model, rest, 1), kResponse, 1e-12 * kResponse);
+  EXPECT_NEAR(jointResponse(model, rest, 2), kResponse, 1e-12 * kResponse);
 }
 
 TEST(DiffDrive, DefaultGainsPlaceBothPolesOfTheWheelLoopAt20Ms) {

@@ -55,6 +55,12 @@ Eigen::MatrixXd massMatrix(const ArticulationModel& model, const ArticulationKin
 void massMatrix(const ArticulationModel& model, const ArticulationKinematics& kin, DynamicsScratch& scratch,
                 Eigen::MatrixXd& M);
 
+/// How fast joint `link`'s speed answers an impulse on it, (M⁻¹)ᵢᵢ (1/(kg·m²)
+/// or 1/kg) at this state, with nothing touching: its greatest answer, as
+/// contacts and loads on the other links only slow it (§11.12). Infinite
+/// when M is singular there.
+double jointResponse(const ArticulationModel& model, const ArticulationKinematics& kin, int link);
+
 /// Recursive Newton-Euler (§11.4): the generalized forces that give the
 /// generalized accelerations `udot` at this state under gravity g_W (m/s²),
 /// with external wrenches `wrench_L` on the links (each in its link's axes,

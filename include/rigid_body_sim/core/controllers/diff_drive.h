@@ -3,7 +3,9 @@
 // §11.12): a body twist (v, ω) becomes the two sides' wheel speeds, within
 // its speed, acceleration and jerk limits and zero once the command is
 // older than its timeout; each wheel tracks its speed through a PID on
-// effort (never by setting the joint); the odometry is integrated from the
+// effort (never by setting the joint), implicit in its proportional term
+// and held from winding up, so it stays stable when a wheel lifts or
+// slips (Pid::servo); the odometry is integrated from the
 // wheels' joint positions, so it drifts when a wheel slips, as a real
 // one's does. ROS-free: the node feeds the twist and publishes the odometry.
 #pragma once
@@ -129,6 +131,9 @@ class DiffDrive {
   std::vector<int> wheels_;          ///< left then right
   std::vector<JointLimits> limits_;  ///< per wheel, left then right
   std::vector<Pid> pids_;            ///< per wheel, left then right
+  /// Per wheel, how fast its speed answers an impulse with nothing touching
+  /// (jointResponse at the robot's rest), which its servo is implicit in.
+  std::vector<double> response_;
   double separation_ = 0.0, left_radius_ = 0.0, right_radius_ = 0.0;
   // The command: as received, and the last two as limited.
   double linear_ = 0.0, angular_ = 0.0, stamp_ = 0.0;

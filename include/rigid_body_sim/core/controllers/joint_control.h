@@ -34,6 +34,13 @@ class Pid {
   /// The effort for error e, its rate the change since the last call over dt
   /// (0 on the first), as Pid::computeCommand(error, dt).
   double command(double error, double dt);
+  /// A speed loop's effort (docs/physics.md §11.12), as command(error, dt)
+  /// but stable for any gains on a joint whose speed changes by at most
+  /// `response` (1/(kg·m²) or 1/kg: rad/s per N·m·s) per unit impulse: the
+  /// proportional term is implicit, taken on the speed the effort itself
+  /// leaves, so the effort is divided by 1 + p dt response; it is held to
+  /// ±`limit`, and while it is held the integral does not grow (anti-windup).
+  double servo(double error, double dt, double response, double limit);
   /// Forgets the integral and the last error.
   void reset();
   const PidGains& gains() const { return gains_; }
