@@ -133,6 +133,7 @@ void holdMassless(core::ArticulationModel& model, detail::Lumper& lumper) {
     for (core::FixedLink& f : link.fixed_links) to.fixed_links.push_back(std::move(f));
     for (core::CollisionShape& shape : link.collision) {
       shape.X_LS = X_HL[i] * shape.X_LS;
+      if (!shape.friction) shape.friction = link.surface_friction;  // the held link's own surface
       to.collision.push_back(std::move(shape));
     }
     model.held.push_back({link.joint, q});

@@ -156,7 +156,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
       checkStart(e.initial, config.model.limits, key + ".initial");
       core::BodySpec b = *body;
       b.name = e.name;
-      if (e.friction) b.friction = e.friction;  // else its URDF's <mu1>, or the scene's
+      if (e.friction) core::setBodyFriction(b, *e.friction);  // else its URDF's <mu1>, or the scene's
       b.restitution = e.restitution;
       entry.push_back(static_cast<int>(spec.bodies.size()));
       spec.bodies.push_back(std::move(b));

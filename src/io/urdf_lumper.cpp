@@ -279,7 +279,14 @@ void Lumper::collect(const urdf::Link& root, LinkGroup& group, bool allow_moving
     const auto [link, X_LK] = todo.back();
     todo.pop_back();
     if (!(massless_root && link == &root)) group.parts.push_back(part(*link, X_LK));
+    const std::size_t first_shape = group.shapes.size();
     collisions(*link, X_LK, group.shapes);
+    // A link lumped in keeps its own surface on its shapes (Gazebo's
+    // <gazebo reference> is per link); the root's is the body's.
+    if (link != &root) {
+      const std::optional<double> own = surfaceFriction(link->name);
+      for (std::size_t s = first_shape; s < group.shapes.size(); ++s) group.shapes[s].friction = own;
+    }
     const std::size_t first_child = todo.size();
     for (const auto& joint : link->child_joints) {
       const auto child = std::find_if(link->child_links.begin(), link->child_links.end(),

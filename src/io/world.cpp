@@ -62,7 +62,7 @@ World buildWorld(const SimConfig& config, const BodyLoader& load) {
       body = file->second;
     }
     body.name = entry.name;
-    if (entry.friction) body.friction = entry.friction;  // else its URDF's <mu1>, or the scene's
+    if (entry.friction) core::setBodyFriction(body, *entry.friction);  // else its URDF's <mu1>, or the scene's
     body.restitution = entry.restitution;
     spec.bodies.push_back(body);
   }

@@ -178,7 +178,7 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
     }
     core::BodySpec spec = io::loadUrdfString(urdf.xml, urdf.source, urdf.base_dir, options);
     spec.name = req.name;
-    if (req.own_friction) spec.friction = req.friction;
+    if (req.own_friction) core::setBodyFriction(spec, req.friction);
     if (req.own_restitution) spec.restitution = req.restitution;
     spawn.body = builder_.build(spec);
   } catch (const std::exception& e) {

@@ -8,6 +8,7 @@
 
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "../test_util.h"
 #include "rigid_body_sim/core/devices/depth_camera.h"
@@ -89,6 +90,38 @@ bodies:
   EXPECT_EQ(w.model.body(0).friction, 0.2);
   EXPECT_EQ(w.model.body(1).friction, 0.9);
   EXPECT_EQ(w.model.body(2).friction, 0.6);
+}
+
+// A link lumped into a body keeps its own surface on its shapes (TurtleBot3's
+// caster, a box on a fixed link with <mu1>0.1</mu1>, took its base's before):
+// a sled whose root link (mu 1) rides on a runner link's box (mu 0.1) slides
+// at the runner's mu, slowing by mu g; an entry's own friction is the whole
+// body's.
+TEST(SceneLoader, ALumpedLinkKeepsItsOwnFrictionOnItsShapes) {
+  const std::string sled =
+      "<robot name='sled'><link name='seat'><inertial><mass value='1'/><inertia ixx='0.01' iyy='0.01' izz='0.01' "
+      "ixy='0' ixz='0' iyz='0'/></inertial><collision><origin xyz='0 0 0.2'/><geometry><box size='0.2 0.2 0.2'/>"
+      "</geometry></collision></link><joint name='fix' type='fixed'><parent link='seat'/><child link='runner'/>"
+      "</joint><link name='runner'><collision><origin xyz='0 0 0.01'/><geometry><box size='0.4 0.2 0.02'/>"
+      "</geometry></collision></link><gazebo reference='seat'><mu1>1</mu1><mu2>1</mu2></gazebo>"
+      "<gazebo reference='runner'><mu1>0.1</mu1><mu2>0.1</mu2></gazebo></robot>";
+  const io::SimConfig c = config(R"(
+contact: {friction: 1.0}
+bodies:
+  - {name: a, urdf: sled.urdf, initial: {linear_velocity: [1, 0, 0]}}
+  - {name: b, urdf: sled.urdf, initial: {position: [0, 2, 0], linear_velocity: [1, 0, 0]}, contact: {friction: 0.8}}
+)");
+  io::SceneSetup s = io::buildScene(c, [&](const io::BodyEntry& e) -> io::UrdfText { return {sled, e.urdf, ""}; });
+  const core::BodyModel& a = s.scene.model().body(0);
+  EXPECT_EQ(a.friction, 1.0);
+  EXPECT_EQ(std::vector<double>(a.surface_friction), std::vector<double>{0.1});
+  EXPECT_TRUE(s.scene.model().body(1).surface_friction.empty());
+  core::SceneWorkspace ws;
+  core::SceneLoads loads;
+  for (int n = 0; n < 500; ++n) core::stepScene(s.scene, s.state, loads, ws);
+  // v = 1 - mu g t at t = 0.5 s: 0.5095 m/s on the runner's 0.1; the entry's 0.8 stops it at 0.13 s.
+  EXPECT_NEAR(s.state.bodies.bodies[0].v_WB.x(), 1.0 - 0.1 * 9.81 * 0.5, 0.005);
+  EXPECT_NEAR(s.state.bodies.bodies[1].v_WB.x(), 0.0, 1e-3);
 }
 
 TEST(SceneLoader, RefusesWhatAnEntryWouldNotRead) {

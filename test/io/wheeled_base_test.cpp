@@ -74,8 +74,10 @@ TEST(CasterBase, HoldsStillAtZeroAndDrivesAtTheCommandedSpeedBothWays) {
     EXPECT_NEAR(moved.x(), 4.0 * v, 0.05 * 4.0 * std::abs(v)) << v;  // the truth within 5 %
     // Its 1 m/s^2 is a little more than mu 0.1 grips with: the wheels slip for
     // the first 0.2 s, and the two wheels' loads are not quite equal in the
-    // contact solve of its rigid rims, so it turns by up to 0.024 rad then.
-    EXPECT_NEAR(base.yaw(), 0.0, 0.03) << v;
+    // contact solve of its rigid rims, so it turns by 0.005 rad then. With
+    // the caster dragging at its base's mu (0.5, before a lumped link kept
+    // its own), 0.024 rad.
+    EXPECT_NEAR(base.yaw(), 0.0, 0.01) << v;
     EXPECT_NEAR(moved.y(), 4.0 * v * std::sin(base.yaw()), 0.002) << v;
     // Told to stop (the plugin holds its last command), it stops.
     base.run(1.0, 0.0);

@@ -130,7 +130,7 @@ void setBodyPoint(const Vec3& r_W, const Mat3& directions, double sign, Columns&
 }
 
 void aimContact(const Model& bodies, const Contact& contact, double h, const Eigen::VectorXd& u, ContactRows& c) {
-  c.friction = bodies.friction(contact.body, contact.other);
+  c.friction = bodies.friction(contact.body, contact.point, contact.other);
   c.speed = std::max(bodies.limits().max_linear_speed, bodies.limits().max_angular_speed);
   c.separation = contact.separation;
   c.target = contact.separation > 0.0 ? -contact.separation / h : 0.0;

@@ -3,6 +3,9 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
 
 #include "rigid_body_sim/core/bodies/ranges.h"
 #include "rigid_body_sim/core/bodies/sdf_grid.h"
@@ -56,6 +59,23 @@ std::vector<BodyModel::PointGroup> groupExtremePoints(std::vector<ContactPoint>&
   return groups;
 }
 
+/// The surface `shape`'s points name (ContactPoint::surface): 0 the body's,
+/// else its own friction's place in `surfaces` plus one (added if new).
+std::uint8_t shapeSurface(const BodySpec& spec, const CollisionShape& shape, std::vector<double>& surfaces) {
+  if (!shape.friction) return 0;
+  const double mu = *shape.friction;
+  detail::requireWithin(mu, 0.0, ranges::kMaxFriction, "body '" + spec.name + "': " + shape.name + " friction", "");
+  auto at = std::find(surfaces.begin(), surfaces.end(), mu);
+  if (at == surfaces.end()) {
+    if (surfaces.size() == std::numeric_limits<std::uint8_t>::max()) {
+      detail::fail("body '" + spec.name + "'", shape.name,
+                   "its shapes have more than 255 frictions of their own (give them fewer)");
+    }
+    at = surfaces.insert(surfaces.end(), mu);
+  }
+  return static_cast<std::uint8_t>(at - surfaces.begin() + 1);
+}
+
 }  // namespace
 
 /// Samples the body's collision shapes into contact points in B, and the
@@ -73,10 +93,13 @@ void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, co
   }
   std::vector<ContactPoint> points;
   std::vector<RoundFeature> round;
+  std::vector<double> surfaces;  // the shapes' own frictions, each once
   for (const CollisionShape& shape : spec.collision) {
     ShapeSamples samples = sampleShape(shape, X_BL, contact.sample_spacing, sample_round);
+    const std::uint8_t surface = shapeSurface(spec, shape, surfaces);
     for (ContactPoint& p : samples.points) {
       if (p.round >= 0) p.round += static_cast<int>(round.size());
+      p.surface = surface;
     }
     points.insert(points.end(), samples.points.begin(), samples.points.end());
     round.insert(round.end(), samples.round.begin(), samples.round.end());
@@ -113,6 +136,7 @@ void buildContactPoints(const BodySpec& spec, const ContactSettings& contact, co
     if (eig.eigenvalues()(0) > 1e-12 * std::max(1.0, eig.eigenvalues()(2))) b.points_inv_spread = spread.inverse();
   }
   b.contact_points = std::move(points);
+  b.surface_friction = std::move(surfaces);
   b.round = std::move(round);
   b.rim_points = std::move(rims);
   b.extreme_x = std::move(x);
@@ -191,7 +215,7 @@ bool sameGeometry(const BodySpec& a, const BodySpec& b) {
     const CollisionShape &x = a.collision[i], &y = b.collision[i];
     if (x.kind != y.kind || x.X_LS.rotation.coeffs() != y.X_LS.rotation.coeffs() ||
         x.X_LS.translation != y.X_LS.translation || x.size != y.size || x.radius != y.radius || x.length != y.length ||
-        x.mesh.vertices != y.mesh.vertices || x.mesh.triangles != y.mesh.triangles) {
+        x.mesh.vertices != y.mesh.vertices || x.mesh.triangles != y.mesh.triangles || x.friction != y.friction) {
       return false;
     }
   }
@@ -202,6 +226,7 @@ bool sameGeometry(const BodySpec& a, const BodySpec& b) {
 /// shared, not copied.
 void shareGeometry(const BodyModel& twin, BodyModel& body) {
   body.contact_points = twin.contact_points;
+  body.surface_friction = twin.surface_friction;
   body.extreme_points = twin.extreme_points;
   body.round = twin.round;
   body.rim_points = twin.rim_points;

@@ -10,6 +10,11 @@
 #include "validate.h"
 
 namespace rigid_body_sim::core {
+void setBodyFriction(BodySpec& spec, double mu) {
+  spec.friction = mu;
+  for (CollisionShape& shape : spec.collision) shape.friction.reset();
+}
+
 namespace {
 
 /// A collision shape's size and place: finite, and at most kMaxExtent.

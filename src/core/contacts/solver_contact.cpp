@@ -60,7 +60,7 @@ void prepareContact(const Model& model, const State& state, const StepScratch& s
   c.body = contact.body;
   c.other = contact.other;
   c.normal_W = n;
-  c.friction = model.friction(c.body, c.other);
+  c.friction = model.friction(c.body, contact.point, c.other);
   c.restitution = model.restitution(c.body, c.other);
   // A pair that pressed on each other last step meets again plastically:
   // a rocking block's new corner, a box tipping onto its face (Housner).

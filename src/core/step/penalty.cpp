@@ -38,7 +38,7 @@ void accumulatePenaltyForces(const Model& model, const State& state, const Works
     const double vn = c.normal_W.dot(u);
     fn = std::max(fn - cs.penalty_damping * vn, 0.0);
     const Vec3 vt = u - vn * c.normal_W;
-    const double mu = model.friction(c.body, c.other);
+    const double mu = model.friction(c.body, c.point, c.other);
     const Vec3 f = fn * c.normal_W - (mu * fn / std::max(vt.norm(), stiction_speed)) * vt;
     if (c.body == body) {
       force_W += f;

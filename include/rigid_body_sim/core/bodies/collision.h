@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct CollisionShape {
   double length = 0.0;       ///< cylinder, capsule: along z (m; a capsule's segment, without its caps)
   TriangleMesh mesh;         ///< kPoints: the mesh, scaled, in the shape frame (m)
   std::string name;          ///< where it came from, for messages
+  /// Its own surface's μ_T: a link lumped into the body with friction of
+  /// its own (Gazebo's <mu1>, <mu2> on that link). Unset: the body's.
+  std::optional<double> friction;
 };
 
 /// A round edge or core of a shape, found exactly rather than sampled
@@ -53,6 +57,9 @@ struct ContactPoint {
   /// deepest (three hold a cylinder standing on its cap). Of a segment or
   /// side: which end of the stretch that bears. Otherwise 0.
   std::int8_t phase = 0;
+  /// Its shape's surface: 0 the body's, k > 0 BodyModel::surface_friction[k − 1]
+  /// (a shape with friction of its own).
+  std::uint8_t surface = 0;
   /// Its round feature (an index into the body's round features; into
   /// ShapeSamples::round for sampleShape()), or −1: the point is r_B. For a
   /// round feature r_B is the feature's centre.

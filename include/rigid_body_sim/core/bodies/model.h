@@ -43,6 +43,10 @@ struct BodySpec {
   int collision_group = -1;
 };
 
+/// Gives the whole body the friction `mu` (a config entry's, a spawn's):
+/// its shapes' own surfaces (lumped links') give way to it.
+void setBodyFriction(BodySpec& spec, double mu);
+
 /// Creation settings of the whole model.
 struct ModelSpec {
   std::vector<BodySpec> bodies;
@@ -109,8 +113,11 @@ struct alignas(64) BodyModel {
   Quat q_LB = Quat::Identity();           ///< principal axes B in L
   Mat3 I_C_L = Mat3::Identity();          ///< inertia about the centre of mass in L axes, as given
   std::vector<CollisionShape> collision;  ///< the collision shapes in L, as given (for drawing)
-  std::vector<FixedLink> fixed_links;     ///< frames fixed to the body (for tf)
-  int collision_group = -1;               ///< BodySpec::collision_group
+  /// The μ_T of the shapes with a surface of their own, which their contact
+  /// points name (ContactPoint::surface); empty when none has.
+  SharedArray<double> surface_friction;
+  std::vector<FixedLink> fixed_links;  ///< frames fixed to the body (for tf)
+  int collision_group = -1;            ///< BodySpec::collision_group
   /// Shape matching: the mean of the contact points (B) and (Σ r̄ r̄ᵀ)⁻¹ of
   /// the points about it; empty when the points do not span three dimensions.
   Vec3 points_centroid_B = Vec3::Zero();
@@ -221,6 +228,15 @@ class Model {
   /// scene), by the contact settings' combine rules.
   double friction(int body, int other) const {
     return combine(contact_.friction_combine, bodies_[body].friction,
+                   other < 0 ? contact_.friction : bodies_[other].friction);
+  }
+  /// friction(body, other) for `body`'s contact point `point` (ContactKey's):
+  /// its shape's own surface when it has one (a lumped link's), else the
+  /// body's (a box pair's own points, point < 0, too).
+  double friction(int body, int point, int other) const {
+    const BodyModel& b = bodies_[body];
+    const std::uint8_t s = point >= 0 ? b.contact_points[static_cast<std::size_t>(point)].surface : 0;
+    return combine(contact_.friction_combine, s == 0 ? b.friction : b.surface_friction[s - 1u],
                    other < 0 ? contact_.friction : bodies_[other].friction);
   }
   double restitution(int body, int other) const {
