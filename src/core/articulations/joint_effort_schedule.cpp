@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "rigid_body_sim/core/step/loads.h"
+
 namespace rigid_body_sim::core {
 
 void JointEffortSchedule::add(std::size_t robot, int joint, double effort, double start, double end) {
@@ -12,9 +14,8 @@ void JointEffortSchedule::add(std::size_t robot, int joint, double effort, doubl
 void JointEffortSchedule::addEfforts(std::size_t robot, double t, double h, Eigen::VectorXd& effort) const {
   for (const Entry& e : entries_) {
     if (e.robot != robot) continue;
-    const double overlap = std::min(e.end, t + h) - std::max(e.start, t);
-    if (!(overlap > 0.0)) continue;
-    effort(e.joint - 1) += e.effort * std::min(overlap / h, 1.0);
+    const double fraction = stepFraction(e.start, e.end, t, h);
+    if (fraction > 0.0) effort(e.joint - 1) += e.effort * fraction;
   }
 }
 

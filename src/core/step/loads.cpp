@@ -1,6 +1,18 @@
 #include "rigid_body_sim/core/step/loads.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace rigid_body_sim::core {
+
+double stepFraction(double start, double end, double t, double h) {
+  const double tol = 1e-9 * h, t_end = t + h;
+  const auto snap = [&](double s) { return std::abs(s - t) <= tol ? t : std::abs(s - t_end) <= tol ? t_end : s; };
+  const double from = std::max(snap(start), t), to = std::min(snap(end), t_end);
+  if (!(to > from)) return 0.0;
+  if (from == t && to == t_end) return 1.0;
+  return std::min((to - from) / h, 1.0);
+}
 
 void addWrench(const BodyModel& body, BodyLoad& load, const Wrench& wrench) {
   const Vec3 torque = wrench.torque + wrench.point.cross(wrench.force);  // about the centre of mass

@@ -89,13 +89,12 @@ void WrenchSchedule::dropFinished(double t) {
 void WrenchSchedule::loadsFor(const Model& model, const State& state, double t, double h, Loads& out) const {
   out.clear();
   const auto add = [&](const Entry& e) {
-    const double overlap = std::min(e.end, t + h) - std::max(e.start, t);
-    if (!(overlap > 0.0)) return;
+    const double fraction = stepFraction(e.start, e.end, t, h);
+    if (!(fraction > 0.0)) return;
     if (out.empty()) out.resize(model.bodyCount());
     Wrench w = e.axes_body < 0
                    ? e.wrench
                    : inWorldAxes(e.wrench, linkState(model.body(e.axes_body), state.bodies[e.axes_body]).q_WL);
-    const double fraction = std::min(overlap / h, 1.0);
     w.force *= fraction;
     w.torque *= fraction;
     addWrench(model.body(e.body), out[e.body], w);

@@ -25,6 +25,19 @@ TEST(JointEffortSchedule, EachStepTakesItsShareOfTheWindow) {
   EXPECT_NEAR(delivered, 4.0 * 0.002, 1e-15);  // effort × duration
 }
 
+TEST(JointEffortSchedule, AWindowOnTheStepGridActsOnWholeStepsWhateverTheRounding) {
+  // Starts and steps are n·kH, formed apart: (n − 1)·kH + kH is not always n·kH.
+  for (long long n = 1; n < 100000; n += 3) {
+    JointEffortSchedule s;
+    s.add(0, 1, 5.0, static_cast<double>(n) * kH, static_cast<double>(n + 2) * kH);
+    for (long long k = n - 1; k <= n + 2; ++k) {
+      Eigen::VectorXd effort = Eigen::VectorXd::Zero(1);
+      s.addEfforts(0, static_cast<double>(k) * kH, kH, effort);
+      ASSERT_EQ(effort(0), k == n || k == n + 1 ? 5.0 : 0.0) << "n = " << n << ", step " << k;
+    }
+  }
+}
+
 TEST(JointEffortSchedule, UntilClearedAndDropped) {
   JointEffortSchedule s;
   s.add(0, 1, 1.0, 0.0);  // until cleared

@@ -44,6 +44,34 @@ TEST(WrenchSchedule, DeliversForceTimesDurationOffTheStepGrid) {
   EXPECT_EQ(schedule.size(), 0u);
 }
 
+TEST(WrenchSchedule, AWindowOnAStepBoundaryActsOnWholeStepsWhateverTheRounding) {
+  // The node gives a start of n·dt (a stamp on the step grid) and steps from
+  // t = k·dt; (n − 1)·dt + dt is not always n·dt in floating point. The step
+  // before the window gets nothing, the steps inside it the whole force.
+  const double dt = 1e-3;
+  const core::Model model(spec(shippedBox(), dt, Vec3::Zero()));
+  const core::State rest = stateOf(model, core::LinkState{});
+  core::Loads loads;
+  int off_grid = 0;
+  for (long long n = 1; n < 200000; n += 7) {
+    const double start = static_cast<double>(n) * dt, end = static_cast<double>(n + 50) * dt;
+    const double before = static_cast<double>(n - 1) * dt, last = static_cast<double>(n + 49) * dt;
+    if (before + dt != start || last + dt != end) ++off_grid;
+    core::WrenchSchedule schedule;
+    schedule.add(0, push(2.0), start, end);
+    schedule.loadsFor(model, rest, before, dt, loads);
+    ASSERT_TRUE(loads.empty() || loads[0].force_W.isZero()) << "n = " << n << ": " << loads[0].force_W.x();
+    for (const double t : {start, last}) {
+      schedule.loadsFor(model, rest, t, dt, loads);
+      ASSERT_FALSE(loads.empty()) << "n = " << n;
+      ASSERT_EQ(loads[0].force_W.x(), 2.0) << "n = " << n << ", t = " << t;
+    }
+    schedule.loadsFor(model, rest, end, dt, loads);
+    ASSERT_TRUE(loads.empty() || loads[0].force_W.isZero()) << "n = " << n << ": " << loads[0].force_W.x();
+  }
+  EXPECT_GT(off_grid, 0) << "no case of the rounding this test is about";
+}
+
 TEST(WrenchSchedule, WrenchesAddAndClearPerBody) {
   const core::Model model(spec(shippedBox(), 1e-3, Vec3::Zero()));
   const core::State rest = stateOf(model, core::LinkState{});

@@ -49,6 +49,13 @@ struct BodyLoad {
 /// One BodyLoad per body, or empty for no external loads.
 using Loads = std::vector<BodyLoad>;
 
+/// The fraction of the step [t, t + h) that the window [start, end) covers,
+/// in [0, 1]: what a load given over that window delivers in this step.
+/// Ends within a billionth of a step of the step's own are taken as on them,
+/// since both are sums of dt formed in different ways ((n − 1)·dt + dt is not
+/// always n·dt): a window on the step grid acts on whole steps, exactly.
+double stepFraction(double start, double end, double t, double h);
+
 /// Adds a wrench to a body's load: τ = τ₀ + r × F about the centre of mass,
 /// kept in the wrench's frame (docs/physics.md §3).
 void addWrench(const BodyModel& body, BodyLoad& load, const Wrench& wrench);
