@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "mesh_files.h"
@@ -32,20 +33,44 @@ std::string packageName(const fs::path& dir) {
   return std::regex_search(s, m, std::regex("<name>\\s*([^<\\s]+)\\s*</name>")) ? m[1].str() : "";
 }
 
-/// A package directory named `name` under `root` (root itself, a child, or a grandchild).
+/// Where the crawl for a package stops (rospack's rules): a package does not
+/// hold packages, CATKIN_IGNORE and rospack_nosubdirs close a folder, and
+/// hidden folders (.git) are passed by. Depth and folder count are bounded,
+/// so a ROS_PACKAGE_PATH of / ends; symbolic links are followed once.
+struct PackageCrawl {
+  static constexpr int kMaxDepth = 100;               // rospack's is 1000
+  static constexpr std::size_t kMaxFolders = 200000;  // folders read per root
+  const std::string& name;
+  std::set<fs::path> seen;  // canonical folders already crawled
+
+  /// The package folder named `name` at or below `dir`, or "".
+  std::string find(const fs::path& dir, int depth) {
+    std::error_code ec;
+    if (depth > kMaxDepth || seen.size() >= kMaxFolders) return "";
+    if (!seen.insert(fs::canonical(dir, ec)).second || ec) return "";
+    if (fs::exists(dir / "CATKIN_IGNORE", ec)) return "";
+    if (fs::exists(dir / "package.xml", ec)) return packageName(dir) == name ? dir.string() : "";
+    if (fs::exists(dir / "rospack_nosubdirs", ec)) return "";
+    std::vector<fs::path> children;  // in name order: the same package whatever the file system's order
+    for (const auto& child : fs::directory_iterator(dir, ec)) {
+      const std::string leaf = child.path().filename().string();
+      if (!leaf.empty() && leaf[0] != '.' && child.is_directory(ec)) children.push_back(child.path());
+    }
+    std::sort(children.begin(), children.end());
+    for (const fs::path& child : children) {
+      std::string found = find(child, depth + 1);
+      if (!found.empty()) return found;
+    }
+    return "";
+  }
+};
+
+/// A package folder named `name` at or below `root`, as rospack finds it.
 std::string findPackage(const fs::path& root, const std::string& name) {
   std::error_code ec;
   if (!fs::is_directory(root, ec)) return "";
-  if (packageName(root) == name) return root.string();
-  if (packageName(root / name) == name) return (root / name).string();
-  for (const auto& child : fs::directory_iterator(root, ec)) {
-    if (!child.is_directory(ec)) continue;
-    if (packageName(child.path()) == name) return child.path().string();
-    for (const auto& grandchild : fs::directory_iterator(child.path(), ec)) {
-      if (grandchild.is_directory(ec) && packageName(grandchild.path()) == name) return grandchild.path().string();
-    }
-  }
-  return "";
+  PackageCrawl crawl{name, {}};
+  return crawl.find(root, 0);
 }
 
 }  // namespace

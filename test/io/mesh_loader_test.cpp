@@ -181,6 +181,34 @@ TEST(MeshLoader, ResolvesFilePackageAndRelativeUris) {
   }
 }
 
+TEST(MeshLoader, FindsAPackageAtAnyDepthAsRospackCrawls) {
+  const fs::path dir = tempDir("crawl");
+  const auto package = [&](const fs::path& at, const std::string& name) {
+    fs::create_directories(dir / at);
+    std::ofstream(dir / at / "package.xml") << "<package><name>" << name << "</name></package>";
+  };
+  // Husky's and Jackal's layout: a clone of the repository in a workspace.
+  package("ws/src/husky/husky_description", "husky_description");
+  // Copies rospack does not see: ignored, hidden, inside another package.
+  package("ws/src/a_ignored/robot_description", "robot_description");
+  std::ofstream(dir / "ws/src/a_ignored/CATKIN_IGNORE");
+  package("ws/src/.git/robot_description", "robot_description");
+  package("ws/src/husky/husky_description/robot_description", "robot_description");
+  package("ws/src/z_kept/deeper/still/robot_description", "robot_description");
+  fs::create_directory_symlink(dir / "ws", dir / "ws/src/loop");  // a cycle ends
+  ::setenv("ROS_PACKAGE_PATH", (dir / "ws").c_str(), 1);
+  EXPECT_EQ(io::resolveMeshUri("package://husky_description/meshes/base.stl", ""),
+            (dir / "ws/src/husky/husky_description/meshes/base.stl").string());
+  EXPECT_EQ(io::resolveMeshUri("package://robot_description/a.dae", ""),
+            (dir / "ws/src/z_kept/deeper/still/robot_description/a.dae").string());
+  // The first entry of ROS_PACKAGE_PATH that has it.
+  package("other/robot_description", "robot_description");
+  ::setenv("ROS_PACKAGE_PATH", ((dir / "other").string() + ":" + (dir / "ws").string()).c_str(), 1);
+  EXPECT_EQ(io::resolveMeshUri("package://robot_description/a.dae", ""),
+            (dir / "other/robot_description/a.dae").string());
+  ::unsetenv("ROS_PACKAGE_PATH");
+}
+
 TEST(UrdfCollision, ShapesArePosedInTheRootLinkFrame) {
   const std::string xml = R"(<robot name="r">
     <link name="base">

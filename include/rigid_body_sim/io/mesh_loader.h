@@ -15,8 +15,11 @@ class MeshError : public std::runtime_error {
 };
 
 /// The file a URDF mesh reference points to:
-///  - package://NAME/PATH: NAME is looked up in ROS_PACKAGE_PATH (a directory
-///    NAME, or any directory whose package.xml says <name>NAME</name>), then
+///  - package://NAME/PATH: NAME is looked up in ROS_PACKAGE_PATH, at any
+///    depth below each entry, as rospack crawls (the folder whose package.xml
+///    says <name>NAME</name>; not inside another package, nor below a
+///    CATKIN_IGNORE or rospack_nosubdirs, nor in hidden folders; the first
+///    entry that has it, and in one entry the first in name order), then
 ///    upward from `base_dir` (so a package's own URDFs resolve without ROS);
 ///  - file:///ABS/PATH: that path;
 ///  - a relative path: relative to `base_dir` (the URDF file's folder).
