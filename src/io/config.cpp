@@ -351,7 +351,7 @@ YAML::Node loadYamlText(const std::string& text, const std::string& source) {
   const std::string problem = yamlProblem(text);
   if (!problem.empty()) throw ConfigError(source + ": " + problem);
   try {
-    return YAML::Load(text);
+    return loadSplittingSequence(text, "", {}).root;
   } catch (const YAML::Exception& e) {
     throw ConfigError(source + " is not valid YAML: " + e.what());
   }

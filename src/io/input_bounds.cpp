@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -27,9 +28,11 @@ std::string capText(std::uintmax_t bytes) {
   return bytes >= kMiB && bytes % kMiB == 0 ? std::to_string(bytes / kMiB) + " MiB" : std::to_string(bytes) + " bytes";
 }
 
-/// A YAML event handler that refuses aliases, anchors and repeated keys,
-/// and counts depth. yaml-cpp keeps one of two equal keys in a map without
-/// a word ({rate: 100, rate: 200}): a half-read file.
+/// A YAML event handler that refuses repeated keys and alias bombs, and
+/// counts depth. yaml-cpp keeps one of two equal keys in a map without a
+/// word ({rate: 100, rate: 200}): a half-read file. An alias counts as the
+/// nodes its anchor holds (aliases within included), so nested aliases that
+/// would expand exponentially are refused before any tree is built.
 class ShapeCheck : public YAML::EventHandler {
  public:
   std::string problem;
@@ -37,16 +40,23 @@ class ShapeCheck : public YAML::EventHandler {
 
   void OnDocumentStart(const YAML::Mark&) override { ++documents; }
   void OnDocumentEnd() override {}
-  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override {
-    anchored(mark, anchor);
-    node(mark, "~");
-  }
-  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override {
-    refuse(mark, "an alias (*name): aliases are refused (an alias bomb expands exponentially); write the value out");
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { leaf(mark, anchor, "~"); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+    if (!open_.empty() && open_.back().map && open_.back().key_next) {
+      refuse(mark, "an alias (*name) as a key: write the key out");
+    }
+    const auto size = sizes_.find(anchor);
+    const std::uint64_t nodes = size == sizes_.end() ? 1 : size->second;
+    expanded_ += nodes;
+    if (expanded_ > InputCaps::kYamlAliasNodes) {
+      refuse(mark, "aliases (*name) repeat more than " + std::to_string(InputCaps::kYamlAliasNodes) +
+                       " nodes (an alias bomb expands exponentially): write the values out");
+    }
+    node(mark, "", false);
+    if (!open_.empty()) open_.back().size += nodes;
   }
   void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor, const std::string& value) override {
-    anchored(mark, anchor);
-    node(mark, value);
+    leaf(mark, anchor, value);
   }
   void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
                        YAML::EmitterStyle::value) override {
@@ -60,19 +70,26 @@ class ShapeCheck : public YAML::EventHandler {
   void OnMapEnd() override { close(); }
 
  private:
-  /// An open map or sequence: a map's keys so far, and whether its next node is a key.
+  /// An open map or sequence: a map's keys so far, whether its next node is
+  /// a key, its anchor and the nodes it holds so far (itself included).
   struct Open {
     bool map = false;
     bool key_next = true;
     std::set<std::string> keys;
+    YAML::anchor_t anchor = YAML::NullAnchor;
+    std::uint64_t size = 1;
   };
   std::vector<Open> open_;
+  std::map<YAML::anchor_t, std::uint64_t> sizes_;  ///< nodes under each anchor, expanded
+  std::uint64_t expanded_ = 0;                     ///< nodes the aliases repeat
 
   void refuse(const YAML::Mark& mark, const std::string& why) {
     if (problem.empty()) problem = "line " + std::to_string(mark.line + 1) + ": " + why;
   }
-  void anchored(const YAML::Mark& mark, YAML::anchor_t anchor) {
-    if (anchor != YAML::NullAnchor) refuse(mark, "an anchor (&name): anchors and aliases are refused");
+  void leaf(const YAML::Mark& mark, YAML::anchor_t anchor, const std::string& value) {
+    if (anchor != YAML::NullAnchor) sizes_[anchor] = 1;
+    node(mark, value);
+    if (!open_.empty()) ++open_.back().size;
   }
   /// A node starts: in a map, every other one is a key (a map or sequence
   /// as a key is never equal to a scalar one; it is let through).
@@ -85,15 +102,18 @@ class ShapeCheck : public YAML::EventHandler {
     map.key_next = !map.key_next;
   }
   void open(const YAML::Mark& mark, YAML::anchor_t anchor, bool map) {
-    anchored(mark, anchor);
     node(mark, "", false);
-    open_.push_back({map, true, {}});
+    open_.push_back({map, true, {}, anchor, 1});
     if (static_cast<int>(open_.size()) > InputCaps::kYamlDepth) {
       refuse(mark, "nested more than " + std::to_string(InputCaps::kYamlDepth) + " levels deep");
     }
   }
   void close() {
-    if (!open_.empty()) open_.pop_back();
+    if (open_.empty()) return;
+    const Open done = open_.back();
+    open_.pop_back();
+    if (done.anchor != YAML::NullAnchor) sizes_[done.anchor] = done.size;
+    if (!open_.empty()) open_.back().size += done.size;
   }
 };
 

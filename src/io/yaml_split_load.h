@@ -17,10 +17,12 @@ struct SplitLoad {
 };
 
 /// The tree of the one-document YAML `text` (already accepted by
-/// yamlProblem(): no anchors, no aliases, bounded depth). When the root is a
-/// map whose first `split_key` holds a sequence, each item of that sequence
+/// yamlProblem(): aliases bounded, depth bounded), aliases copied and merge
+/// keys resolved as roslaunch's reader does. When the root is a map whose
+/// first `split_key` (not "") holds a sequence, each item of that sequence
 /// goes to `on_item` as soon as it is read, with its index, and the tree
-/// keeps an empty sequence there instead. YAML::Exception for text yaml-cpp
+/// keeps an empty sequence there instead (an alias of that sequence is
+/// refused). YAML::Exception for text yaml-cpp
 /// cannot parse; anything `on_item` throws passes through.
 SplitLoad loadSplittingSequence(const std::string& text, const std::string& split_key,
                                 const std::function<void(const YAML::Node& item, std::size_t index)>& on_item);

@@ -589,16 +589,22 @@ TEST_F(BadUrdf, BadDevicesStopTheNodeNamingTheKey) {
 
 // The config file sim.launch loads with <rosparam> (~config_file) is read
 // once more as rbsim reads it: the parameter server cannot show a key given
-// twice (PyYAML kept the last: {p: 1, p: 2} ran with p = 2) or an alias.
+// twice (PyYAML kept the last: {p: 1, p: 2} ran with p = 2) or an alias
+// bomb (the server holds it expanded).
 TEST_F(BadUrdf, TheConfigFileIsReadAsRbsimReadsIt) {
   const std::string good = "<robot name='r'><link name='base'><inertial><mass value='1'/>" + std::string(kInertia) +
                            "</inertial>" + kCollision + "</link></robot>";
+  std::string bomb = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";  // 10 aliases of 10 of ... : 10^9 nodes
+  for (int i = 1; i < 9; ++i) {
+    bomb += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [";
+    for (int k = 0; k < 10; ++k) bomb += std::string(k ? ", " : "") + "*a" + std::to_string(i - 1);
+    bomb += "]\n";
+  }
   const struct {
     std::string ns, yaml, expected;
   } cases[] = {
       {"/twice", "dt: 0.001\nrealtime_factor: 1.0\ndt: 0.002\n", "line 3: key 'dt' appears twice in one map"},
-      {"/alias", "gravity: &g [0, 0, -9.81]\nimu: {rate: 100}\nodom_noise: {position: *g}\n",
-       "anchors and aliases are refused"},
+      {"/alias", bomb, "line 5: aliases (*name) repeat more than 100000 nodes"},
   };
   for (const auto& c : cases) {
     const std::string path = ::testing::TempDir() + "rbs_config" + c.ns.substr(1) + ".yaml";

@@ -121,6 +121,15 @@ struct DriveTopics {
 };
 
 /// A diff_drive_controller/DiffDriveController's keys (io/drive_config.h reads them).
+/// A key of a controller's YAML that is not read here, and why: a
+/// ros_controllers key for what this project does not run, or a key no
+/// ros_controllers controller of its type reads (ROS lets such parameters
+/// be; the node names them all in one warning at start).
+struct UnreadKey {
+  std::string key;  ///< "controllers.NAME.KEY"
+  std::string why;
+};
+
 struct DiffDriveEntry {
   std::vector<std::string> left, right;  ///< `left_wheel`, `right_wheel`: a joint name or a list
   /// m; unset: from the URDF as ros_controllers finds them (the first wheels' joint
@@ -128,6 +137,7 @@ struct DiffDriveEntry {
   std::optional<double> wheel_separation, wheel_radius;
   core::DiffDriveSettings settings;  ///< multipliers, cmd_vel_timeout, limits, open_loop, window
   DriveTopics topics;
+  std::vector<UnreadKey> unread;
 };
 
 /// One controller of a robot's `controllers` map, as ros_controllers' YAML
@@ -145,6 +155,7 @@ struct ControllerEntry {
   /// A DiffDriveController's own keys (its wheels are `joints` too, left then
   /// right, so gazebo_ros_control's pid_gains find them).
   std::optional<DiffDriveEntry> drive;
+  std::vector<UnreadKey> unread;  ///< its keys not read here
 };
 
 /// A URDF's `<transmission>`: the joints it drives and the hardware
@@ -275,7 +286,8 @@ core::DriverSettings parseDriverText(const std::string& yaml, const std::string&
 YAML::Node loadYamlFile(const std::string& path);
 
 /// Parses a YAML text after yamlProblem() (input_bounds.h) accepts it: one
-/// document, no aliases, bounded nesting. ConfigError names `source`.
+/// document, aliases bounded (and copied, merge keys
+/// resolved, as roslaunch reads them), bounded nesting. ConfigError names `source`.
 YAML::Node loadYamlText(const std::string& text, const std::string& source);
 
 /// Applies "a.b.c=VALUE" to the tree: VALUE is parsed as YAML

@@ -1,6 +1,6 @@
 // Bounds on what the loaders read, checked before anything is parsed: a
 // file must be a regular file of bounded size, a YAML text has one document
-// and no aliases, a URDF's nesting and link count are capped. Each check
+// and no alias bomb, a URDF's nesting and link count are capped. Each check
 // returns why the input is refused ("" when it is not), for the loader to
 // throw in its own error type.
 #pragma once
@@ -17,6 +17,7 @@ struct InputCaps {
   static constexpr std::uintmax_t kUrdfBytes = 16u << 20;    ///< a URDF document
   static constexpr std::uintmax_t kMeshBytes = 256u << 20;   ///< a mesh file (a million-vertex OBJ is about 40 MB)
   static constexpr int kYamlDepth = 64;                      ///< nested maps and sequences
+  static constexpr std::uint64_t kYamlAliasNodes = 100000;   ///< nodes YAML aliases may repeat, in all
   static constexpr int kXmlDepth = 64;                       ///< nested XML elements (a URDF needs 5)
   static constexpr int kUrdfLinks = 10000;                   ///< <link> elements in one URDF
 };
@@ -44,8 +45,9 @@ std::string readInput(const std::string& path, std::uintmax_t max_bytes, const s
   }
 }
 
-/// Why a YAML text is refused before a tree is built from it: an alias or
-/// anchor (an alias bomb expands exponentially; write the value out), a
+/// Why a YAML text is refused before a tree is built from it: aliases that
+/// repeat more than kYamlAliasNodes nodes in all (an alias bomb expands
+/// exponentially) or an alias as a key, a key said twice in one map, a
 /// second document (it would be ignored), nesting deeper than kYamlDepth,
 /// or a syntax error. "" when it is accepted.
 std::string yamlProblem(const std::string& text);
