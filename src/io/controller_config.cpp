@@ -1,6 +1,7 @@
 // A robot's `controllers` map: controller_config.h.
 #include "controller_config.h"
 
+#include <set>
 #include <utility>
 
 #include "drive_config.h"
@@ -42,21 +43,32 @@ ControllerEntry parseController(const YAML::Node& name, const YAML::Node& body, 
     c.joints.insert(c.joints.end(), c.drive->right.begin(), c.drive->right.end());
     c.joint_list = true;
     c.gains.assign(c.joints.size(), std::nullopt);
+    c.unread = std::move(c.drive->unread);
     return c;
   }
-  // A JointTrajectoryController's keys that belong to its action and state topics (control_msgs,
-  // not in Debian 12): refused by name rather than read halfway.
-  for (const char* key : {"constraints", "state_publish_rate", "action_monitor_rate", "stop_trajectory_duration",
-                          "allow_partial_joints_goal", "velocity_ff"}) {
-    if (body[key]) {
-      fail(join(c.key, key),
-           "is not read here: the trajectory controller runs its command topic only "
-           "(control_msgs' action and state are not in Debian 12); remove it");
-    }
-  }
-  requireKnownKeys(body, c.key, {"type", "joint", "joints", "pid", "gains", "publish_rate"});
   if (!body["type"]) fail(join(c.key, "type"), "every controller needs a type (as ros_controllers names it)");
   c.type = text(body["type"], join(c.key, "type"));
+  // A JointTrajectoryController's keys for its action and state topics
+  // (control_msgs, not in Debian 12), and velocity feed-forward.
+  const std::set<std::string> trajectory = {"constraints",
+                                            "state_publish_rate",
+                                            "action_monitor_rate",
+                                            "stop_trajectory_duration",
+                                            "allow_partial_joints_goal",
+                                            "velocity_ff"};
+  const bool runs_trajectories = c.type.find("/JointTrajectoryController") != std::string::npos;
+  for (const std::string& key : trajectory) {
+    if (runs_trajectories && body[key]) {
+      c.unread.push_back({join(c.key, key),
+                          "the trajectory controller runs its command topic only (control_msgs' action and state "
+                          "are not in Debian 12; velocity feed-forward is not run)"});
+    }
+  }
+  std::set<std::string> known = {"type", "joint", "joints", "pid", "gains", "publish_rate"};
+  if (runs_trajectories) known.insert(trajectory.begin(), trajectory.end());
+  for (const std::string& k : keysNotRead(body, c.key, known)) {
+    c.unread.push_back({k, "no ros_controllers controller of type " + c.type + " reads it"});
+  }
   if (body["joint"] && body["joints"]) fail(c.key, "give joint (one) or joints (a group), not both");
   if (body["joint"]) c.joints = {text(body["joint"], join(c.key, "joint"))};
   if (body["joints"]) {

@@ -161,6 +161,27 @@ void addController(const ControllerEntry& e, const core::ArticulationModel& mode
   out.group.push_back(info->group ? 1 : 0);
 }
 
+/// One line naming every key of `entries` not read here, grouped by why; none if there are none.
+std::vector<std::string> unreadNote(const std::vector<ControllerEntry>& entries) {
+  std::vector<std::pair<std::string, std::string>> by_why;  // why, its keys
+  std::size_t count = 0;
+  for (const ControllerEntry& e : entries) {
+    for (const UnreadKey& u : e.unread) {
+      auto group = std::find_if(by_why.begin(), by_why.end(), [&](const auto& g) { return g.first == u.why; });
+      if (group == by_why.end()) group = by_why.insert(by_why.end(), {u.why, ""});
+      group->second += (group->second.empty() ? "" : ", ") + u.key;
+      ++count;
+    }
+  }
+  if (count == 0) return {};
+  std::string line = std::to_string(count) + " controller key" + (count == 1 ? "" : "s") +
+                     " not read here (as ROS lets a parameter nobody reads be): ";
+  for (std::size_t g = 0; g < by_why.size(); ++g) {
+    line += (g == 0 ? "" : "; ") + by_why[g].second + " (" + by_why[g].first + ")";
+  }
+  return {line};
+}
+
 }  // namespace
 
 RobotControls buildControls(const std::vector<ControllerEntry>& entries, const core::ArticulationModel& model) {
@@ -201,6 +222,7 @@ RobotControls buildControls(const std::vector<ControllerEntry>& entries, const c
     }
   }
   throwProblems(problems);
+  out.notes = unreadNote(entries);
   return out;
 }
 

@@ -71,37 +71,39 @@ std::array<double, 6> covariance(const YAML::Node& node, const std::string& key)
 }  // namespace
 
 DiffDriveEntry parseDiffDrive(const YAML::Node& body, const std::string& key) {
+  DiffDriveEntry d;
   for (const char* k : {"publish_wheel_joint_controller_state", "publish_joint_trajectory_controller_state"}) {
     if (body[k] && boolean(body[k], join(key, k))) {
-      fail(join(key, k), "is not available here: its message is control_msgs', which Debian 12 does not have");
+      d.unread.push_back({join(key, k), "its message is control_msgs', which Debian 12 does not have"});
     }
   }
-  requireKnownKeys(body, key,
-                   {"type",
-                    "left_wheel",
-                    "right_wheel",
-                    "wheel_separation",
-                    "wheel_radius",
-                    "wheel_separation_multiplier",
-                    "wheel_radius_multiplier",
-                    "left_wheel_radius_multiplier",
-                    "right_wheel_radius_multiplier",
-                    "publish_rate",
-                    "pose_covariance_diagonal",
-                    "twist_covariance_diagonal",
-                    "cmd_vel_timeout",
-                    "base_frame_id",
-                    "odom_frame_id",
-                    "enable_odom_tf",
-                    "open_loop",
-                    "velocity_rolling_window_size",
-                    "allow_multiple_cmd_vel_publishers",
-                    "publish_cmd",
-                    "linear",
-                    "angular",
-                    "publish_wheel_joint_controller_state",
-                    "publish_joint_trajectory_controller_state"});
-  DiffDriveEntry d;
+  const std::vector<std::string> others = keysNotRead(body, key,
+                                                      {"type",
+                                                       "left_wheel",
+                                                       "right_wheel",
+                                                       "wheel_separation",
+                                                       "wheel_radius",
+                                                       "wheel_separation_multiplier",
+                                                       "wheel_radius_multiplier",
+                                                       "left_wheel_radius_multiplier",
+                                                       "right_wheel_radius_multiplier",
+                                                       "publish_rate",
+                                                       "pose_covariance_diagonal",
+                                                       "twist_covariance_diagonal",
+                                                       "cmd_vel_timeout",
+                                                       "base_frame_id",
+                                                       "odom_frame_id",
+                                                       "enable_odom_tf",
+                                                       "open_loop",
+                                                       "velocity_rolling_window_size",
+                                                       "allow_multiple_cmd_vel_publishers",
+                                                       "publish_cmd",
+                                                       "linear",
+                                                       "angular",
+                                                       "publish_wheel_joint_controller_state",
+                                                       "publish_joint_trajectory_controller_state"});
+  for (const std::string& k : others)
+    d.unread.push_back({k, "diff_drive_controller/DiffDriveController reads no such key"});
   d.left = wheelNames(body["left_wheel"], join(key, "left_wheel"));
   d.right = wheelNames(body["right_wheel"], join(key, "right_wheel"));
   if (d.left.size() != d.right.size()) {

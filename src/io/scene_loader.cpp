@@ -170,6 +170,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     controls.push_back(buildControls(allControllers(e.controllers, described.sensors), model));
     addBaseDriver(e.cmd_vel, model, key + ".", controls.back());
     controls.back().robot_namespace = described.sensors.robot_namespace;
+    notes.insert(notes.end(), controls.back().notes.begin(), controls.back().notes.end());
     for (std::string& note : transmissionNotes(e.controllers, described.sensors.transmissions, model)) {
       notes.push_back(std::move(note));
     }
@@ -220,6 +221,7 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
   RobotControls controls = buildControls(allControllers(config.controllers, described.sensors), model);
   addBaseDriver(config.cmd_vel, model, "", controls);
   controls.robot_namespace = described.sensors.robot_namespace;
+  notes.insert(notes.end(), controls.notes.begin(), controls.notes.end());
   for (std::string& note : transmissionNotes(config.controllers, described.sensors.transmissions, model)) {
     notes.push_back(std::move(note));
   }

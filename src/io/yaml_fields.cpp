@@ -1,6 +1,7 @@
 // The config parser's typed fields (yaml_fields.h).
 #include "yaml_fields.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -36,6 +37,43 @@ void requireKnownKeys(const YAML::Node& map, const std::string& path, const std:
       fail(join(path, key), "unknown key (known here: " + list + ")");
     }
   }
+}
+
+namespace {
+
+/// Levenshtein distance between `a` and `b`, or 3 once it is past 2.
+int editsUpTo2(const std::string& a, const std::string& b) {
+  if (a.size() > b.size() + 2 || b.size() > a.size() + 2) return 3;
+  std::vector<int> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = static_cast<int>(j);
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    int diagonal = row[0];
+    row[0] = static_cast<int>(i);
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const int up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return std::min(row[b.size()], 3);
+}
+
+}  // namespace
+
+std::vector<std::string> keysNotRead(const YAML::Node& map, const std::string& path,
+                                     const std::set<std::string>& known) {
+  if (!map.IsMap()) fail(path.empty() ? "<root>" : path, "expected a map, got " + show(map));
+  std::vector<std::string> out;
+  for (const auto& kv : map) {
+    if (!kv.first.IsScalar()) fail(path.empty() ? "<root>" : path, "a key must be a plain name, got " + show(kv.first));
+    const std::string key = kv.first.as<std::string>();
+    if (known.count(key)) continue;
+    for (const std::string& k : known) {
+      if (key.size() >= 4 && editsUpTo2(key, k) <= 2) fail(join(path, key), "unknown key: did you mean " + k + "?");
+    }
+    out.push_back(join(path, key));
+  }
+  return out;
 }
 
 double number(const YAML::Node& node, const std::string& key) {

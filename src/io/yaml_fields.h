@@ -6,6 +6,7 @@
 
 #include <set>
 #include <string>
+#include <vector>
 
 #include "rigid_body_sim/core/bodies/types.h"
 
@@ -19,6 +20,12 @@ std::string show(const YAML::Node& node);
 std::string join(const std::string& path, const std::string& key);
 /// Refuses keys outside `known` (a typo must not silently fall back to a default).
 void requireKnownKeys(const YAML::Node& map, const std::string& path, const std::set<std::string>& known);
+/// The keys of `map` outside `known` that a controller's YAML may carry for
+/// others to read (ROS parameters nobody reads are no error in ROS): each
+/// "path.key". A key within two edits of a known one is refused as the typo
+/// it most likely is, naming the one it resembles.
+std::vector<std::string> keysNotRead(const YAML::Node& map, const std::string& path,
+                                     const std::set<std::string>& known);
 double number(const YAML::Node& node, const std::string& key);  ///< finite
 double positiveNumber(const YAML::Node& node, const std::string& key);
 double publishRate(const YAML::Node& node, const std::string& key);  ///< Hz, within ranges' publish rates

@@ -165,6 +165,7 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
                          spawn);
       spawn.topics = robotTopics(req.name + "/", robotTopicPrefix(spawn.controls.robot_namespace, req.name + "/"),
                                  spawn.sensors, spawn.controls);
+      notes.insert(notes.end(), spawn.controls.notes.begin(), spawn.controls.notes.end());
       spawn.request = req;
       res = spawns_.submit(std::move(spawn), [] { return ros::ok(); });  // the loop adds it at its next tick
       tellRepairs(notes, res);

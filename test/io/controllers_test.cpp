@@ -16,7 +16,7 @@ namespace {
 const std::string kUrdf = std::string(RBS_SOURCE_DIR) + "/urdf/";
 
 io::RobotControls controls(const std::string& yaml) {
-  const io::SimConfig c = io::parseConfig(YAML::Load(yaml));
+  const io::SimConfig c = io::parseConfig(io::loadYamlText(yaml, "test"));  // as a config file is read
   return io::buildControls(c.controllers, io::loadArticulationFile(kUrdf + "arm2.urdf"));
 }
 
@@ -174,6 +174,52 @@ gazebo_ros_control: {pid_gains: {shoulder: {p: 50.0, d: 2.0}}}
   EXPECT_THROW(io::controlsOf(YAML::Load("{tf_prefix: left}"), "controllers", arm, false), io::ConfigError);
 }
 
+TEST(Controllers, UR5sActionKeysAndKeysNoControllerReadsAreNamedInOneNote) {
+  // UR5's ur5_controllers.yaml (anchors, aliases and the action's keys) was
+  // refused, one key per restart.
+  const io::RobotControls c = controls(R"(
+controllers:
+  joint_state_controller:
+    type: joint_state_controller/JointStateController
+    publish_rate: &loop_hz 125
+  eff_joint_traj_controller:
+    type: effort_controllers/JointTrajectoryController
+    joints: &robot_joints [shoulder, elbow]
+    gains:
+      shoulder: {p: 4000, d: 200, i: 1, i_clamp: 1}
+      elbow: {p: 2000, d: 20, i: 1, i_clamp: 1}
+    constraints:
+      goal_time: 0.6
+      shoulder: {trajectory: 0.1, goal: 0.1}
+    stop_trajectory_duration: 0.5
+    state_publish_rate: *loop_hz
+    action_monitor_rate: 10
+    hold_still: 1
+)");
+  EXPECT_EQ(c.joint_state_rate, 125.0);
+  ASSERT_EQ(c.controllers.specs().size(), 1u);
+  EXPECT_EQ(c.controllers.specs()[0].joints, (std::vector<int>{1, 2}));
+  ASSERT_EQ(c.notes.size(), 1u);
+  const std::string& note = c.notes[0];
+  for (const char* part :
+       {"5 controller keys not read here", "controllers.eff_joint_traj_controller.action_monitor_rate",
+        "controllers.eff_joint_traj_controller.constraints", "controllers.eff_joint_traj_controller.state_publish_rate",
+        "controllers.eff_joint_traj_controller.stop_trajectory_duration (the trajectory controller runs its command "
+        "topic only",
+        "controllers.eff_joint_traj_controller.hold_still (no ros_controllers controller of type "
+        "effort_controllers/JointTrajectoryController reads it)"}) {
+    EXPECT_NE(note.find(part), std::string::npos) << part << " not in: " << note;
+  }
+  // A trajectory key on another type is no trajectory key.
+  const io::RobotControls effort = controls(
+      "controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow, constraints: {goal_time: 1}}}");
+  ASSERT_EQ(effort.notes.size(), 1u);
+  EXPECT_NE(effort.notes[0].find("controllers.a.constraints (no ros_controllers controller of type "
+                                 "effort_controllers/JointEffortController reads it)"),
+            std::string::npos)
+      << effort.notes[0];
+}
+
 TEST(Controllers, RefusalsNameTheKey) {
   const struct {
     std::string yaml, expected;
@@ -185,12 +231,6 @@ TEST(Controllers, RefusalsNameTheKey) {
       {"controllers: {a: {type: effort_controllers/JointTrajectoryController, joints: [elbow]}}",
        "'controllers.a.gains.elbow': 'effort_controllers/JointTrajectoryController' acts here through a PID"},
       {"controllers: {a: {type: effort_controllers/JointTrajectoryController, joint: elbow}}", "takes joints:"},
-      {"controllers: {a: {type: effort_controllers/JointTrajectoryController, joints: [elbow],"
-       " constraints: {goal_time: 0.5}}}",
-       "'controllers.a.constraints': is not read here: the trajectory controller runs its command topic only"},
-      {"controllers: {a: {type: position_controllers/JointTrajectoryController, joints: [elbow],"
-       " state_publish_rate: 25}}",
-       "'controllers.a.state_publish_rate'"},
       {"controllers: {a: {type: effort_controllers/JointEffortController, joint: wrist}}",
        "'controllers.a.joint': robot 'arm2' has no moving joint 'wrist' (its joints: 'shoulder', 'elbow')"},
       {"controllers: {a: {type: position_controllers/JointPositionController, joint: elbow}}",
@@ -200,8 +240,8 @@ TEST(Controllers, RefusalsNameTheKey) {
       {"controllers: {a: {type: effort_controllers/JointGroupEffortController, joint: elbow}}",
        "'controllers.a': 'effort_controllers/JointGroupEffortController' takes joints: [NAME, ...]"},
       {"controllers: {a: {type: effort_controllers/JointEffortController, joints: [elbow]}}", "takes joint: NAME"},
-      {"controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow, antiwindup: true}}",
-       "antiwindup"},
+      {"controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow, jiont: elbow}}",
+       "'controllers.a.jiont': unknown key: did you mean joint?"},
       {"controllers: {a: {type: effort_controllers/JointPositionController, joint: elbow, pid: {p: -1}}}",
        "'controllers.a.pid.p'"},
       {"controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow},"
@@ -233,9 +273,9 @@ TEST(Controllers, EveryControllersProblemIsNamedInOneRefusal) {
   // and, once they are read, two wrong for the robot (an unknown joint, no
   // gains): each pair in one refusal, so a user fixes them in one launch.
   const std::string parse = refusal(
-      "controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow, antiwindup: true},"
+      "controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow, pubish_rate: 1},"
       " b: {type: effort_controllers/JointPositionController, joint: shoulder, pid: {p: -1}}}");
-  for (const char* part : {"2 problems", "antiwindup", "'controllers.b.pid.p'"}) {
+  for (const char* part : {"2 problems", "pubish_rate", "'controllers.b.pid.p'"}) {
     EXPECT_NE(parse.find(part), std::string::npos) << part << " not in: " << parse;
   }
   const std::string build = refusal(

@@ -81,6 +81,23 @@ TEST(DiffDriveController, ReadsRosControllersYamlAndTheUrdfsWheels) {
   EXPECT_TRUE(c.controllers.specs().empty());
 }
 
+TEST(DiffDriveController, JackalsKeysNoControllerReadsAreNamedNotRefused) {
+  // Jackal's control.yaml carries k_l and k_r, which ros_controllers' drive
+  // does not read (ROS lets them be): it was refused, one key per restart.
+  const io::RobotControls c = baseControls(std::string(kDrive) +
+                                           ", k_l: 0.1, k_r: 0.1, publish_wheel_joint_controller_state: true,"
+                                           " publish_joint_trajectory_controller_state: false}}");
+  ASSERT_EQ(c.drives.size(), 1u);
+  ASSERT_EQ(c.notes.size(), 1u);
+  for (const char* part : {"3 controller keys not read here",
+                           "controllers.base.publish_wheel_joint_controller_state (its message is control_msgs'",
+                           "controllers.base.k_l, controllers.base.k_r (diff_drive_controller/DiffDriveController "
+                           "reads no such key)"}) {
+    EXPECT_NE(c.notes[0].find(part), std::string::npos) << part << " not in: " << c.notes[0];
+  }
+  EXPECT_TRUE(baseControls(std::string(kDrive) + "}}").notes.empty());
+}
+
 TEST(DiffDriveController, RefusalsNameTheKey) {
   const std::string drive = kDrive;
   const auto refused = [](const std::string& yaml, const std::string& what) {
@@ -112,13 +129,13 @@ TEST(DiffDriveController, RefusalsNameTheKey) {
           "'controllers.base.angular.z.max_jerk': must be >= 0");
   refused(drive + ", publish_rate: 1e300}}", "'controllers.base.publish_rate': must be within");
   refused(drive + ", pose_covariance_diagonal: [1, 2]}}", "'controllers.base.pose_covariance_diagonal'");
-  refused(drive + ", publish_joint_trajectory_controller_state: true}}", "control_msgs");
   refused(drive + ", odom_frame_id: base_link}}", "'controllers.base.odom_frame_id'");
   // Frame ids as tf2 takes them.
   refused(drive + ", base_frame_id: 'bad frame#!'}}",
           "'controllers.base.base_frame_id': 'bad frame#!' is no tf frame id: letters, digits");
   refused(drive + ", odom_frame_id: /odom}}", "'controllers.base.odom_frame_id': '/odom' starts with '/'");
-  refused(drive + ", cmd_vel_timout: 1}}", "cmd_vel_timout");
+  refused(drive + ", cmd_vel_timout: 1}}",
+          "'controllers.base.cmd_vel_timout': unknown key: did you mean cmd_vel_timeout?");
   refused(drive +
               "}, spin: {type: velocity_controllers/JointVelocityController, joint: left_wheel_joint,"
               " pid: {p: 1}}}",

@@ -30,6 +30,8 @@ struct RobotControls {
   /// gazebo_ros_control's `robotNamespace` in the URDF's markup ("": none):
   /// the namespace of the robot's controllers' topics and joint_states.
   std::string robot_namespace;
+  /// What loading them has to say, for the log (the keys not read, in one line).
+  std::vector<std::string> notes;
 };
 
 /// The types this project runs, as ros_controllers names them.
