@@ -7,6 +7,7 @@
 #include "request_checks.h"
 #include "rigid_body_sim/io/world.h"
 #include "rigid_body_sim/ros/conversions.h"
+#include "rigid_body_sim/ros/robot_ports.h"
 
 namespace rigid_body_sim::node {
 
@@ -144,18 +145,29 @@ SpawnBody::Response WorldEdits::insertRobot(SpawnQueue::Spawn& spawn) {
     res.message = e.what();
     return res;
   }
-  std::string controllers;
+  const std::string prefix = robotTopicPrefix(spawn.controls.robot_namespace, req.name + "/");
+  std::string controllers, drives;
   for (const core::JointControllerSpec& c : spawn.controls.controllers.specs()) {
     controllers += (controllers.empty() ? "" : ", ") + c.name;
   }
-  controllers = controllers.empty() ? " (no controllers: apply_joint_effort drives it)"
-                                    : ", controllers " + controllers + " on '" + req.name + "/CONTROLLER/command'";
+  for (std::size_t d = 0; d < spawn.controls.drives.size(); ++d) {
+    const io::DriveTopics& t = spawn.controls.drive_topics.at(d);
+    const std::string& name = spawn.controls.drives[d].spec().name;
+    const std::string topic = t.cmd_vel_topic.rfind('/', 0) == 0 ? t.cmd_vel_topic
+                              : t.under_controller               ? prefix + name + "/" + t.cmd_vel_topic
+                                                                 : prefix + t.cmd_vel_topic;
+    drives += (drives.empty() ? "" : ", ") + name + " on '" + topic + "'";
+  }
+  std::string runs =
+      controllers.empty() ? "" : ", controllers " + controllers + " on '" + prefix + "CONTROLLER/command'";
+  if (!drives.empty()) runs += ", drives " + drives;
+  if (runs.empty()) runs = " (no controllers: apply_joint_effort drives it)";
   topics_.take(req.name, spawn.topics);
   hooks_.robot_added(spawn);
   res.success = true;
   res.message = "robot '" + req.name + "' added at t = " + time_.text() + ": " +
-                std::to_string(sim_.scene.robots().back().model.jointCount()) + " moving joints, '" + req.name +
-                "/joint_states'" + controllers;
+                std::to_string(sim_.scene.robots().back().model.jointCount()) + " moving joints, '" + prefix +
+                "joint_states'" + runs;
   ROS_INFO("sim_node: %s", res.message.c_str());
   return res;
 }

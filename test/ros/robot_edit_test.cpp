@@ -276,6 +276,31 @@ TEST_F(ArmEdits, SpawnsAndDeletesOfARobotWithSensorsLeaveTheNodesMemoryFlat) {
   RecordProperty("rss_kb_after_300", static_cast<int>(after));
 }
 
+// The answer says what drives the robot: it said "no controllers:
+// apply_joint_effort drives it" of a base its DiffDriveController drove.
+TEST_F(ArmEdits, ASpawnsAnswerNamesItsDrivesAndTheirTopics) {
+  SpawnBody s;
+  s.request.name = "rover2";
+  s.request.urdf_file = "package://rigid_body_sim/urdf/diff_drive.urdf";
+  s.request.pose.position.x = -3.0;
+  s.request.pose.position.y = 3.0;
+  s.request.pose.position.z = 0.08;
+  s.request.pose.orientation.w = 1.0;
+  s.request.controllers =
+      "{base: {type: diff_drive_controller/DiffDriveController, left_wheel: left_wheel_joint, "
+      "right_wheel: right_wheel_joint}}";
+  ASSERT_TRUE(ros::service::waitForService("/sim_node/spawn_body", 30000));
+  const SpawnBody::Response added = call("spawn_body", s).response;
+  ASSERT_TRUE(added.success) << added.message;
+  EXPECT_NE(added.message.find("'rover2/joint_states', drives base on 'rover2/base/cmd_vel'"), std::string::npos)
+      << added.message;
+  EXPECT_EQ(added.message.find("no controllers"), std::string::npos) << added.message;
+  EXPECT_TRUE(spinUntil([&] { return subscribes("/sim_node", "/rover2/base/cmd_vel"); }, 10.0));
+  rigid_body_sim::DeleteBody d;
+  d.request.name = "rover2";
+  EXPECT_TRUE(call("delete_body", d).response.success);
+}
+
 // A robot spawned with cmd_vel (its base driven as a body's), then another
 // without, then the first deleted: the second takes its place in the
 // world's order of robots and steps on without the first's base wrench

@@ -120,7 +120,6 @@ struct DriveTopics {
   std::string cmd_vel_topic = "cmd_vel", odom_topic = "odom";
 };
 
-/// A diff_drive_controller/DiffDriveController's keys (io/drive_config.h reads them).
 /// A key of a controller's YAML that is not read here, and why: a
 /// ros_controllers key for what this project does not run, or a key no
 /// ros_controllers controller of its type reads (ROS lets such parameters
@@ -130,6 +129,7 @@ struct UnreadKey {
   std::string why;
 };
 
+/// A diff_drive_controller/DiffDriveController's keys (io/drive_config.h reads them).
 struct DiffDriveEntry {
   std::vector<std::string> left, right;  ///< `left_wheel`, `right_wheel`: a joint name or a list
   /// m; unset: from the URDF as ros_controllers finds them (the first wheels' joint
