@@ -47,13 +47,20 @@ class ArmEdits : public RobotNode {
     Node::SetUp();
     listen();
   }
-  SpawnBody::Response spawn(const std::string& name, const std::string& urdf) {
+  /// A spawn of the package's `urdf` as `name` at (x, y, z), upright.
+  static SpawnBody request(const std::string& name, const std::string& urdf, double x, double y, double z) {
     SpawnBody s;
     s.request.name = name;
     s.request.urdf_file = "package://rigid_body_sim/urdf/" + urdf;
-    s.request.pose.position.x = 1.5;
-    s.request.pose.position.z = 0.5;
+    s.request.pose.position.x = x;
+    s.request.pose.position.y = y;
+    s.request.pose.position.z = z;
     s.request.pose.orientation.w = 1.0;
+    return s;
+  }
+
+  SpawnBody::Response spawn(const std::string& name, const std::string& urdf) {
+    SpawnBody s = request(name, urdf, 1.5, 0.0, 0.5);
     EXPECT_TRUE(ros::service::waitForService("/sim_node/spawn_body", 30000));
     return call("spawn_body", s).response;
   }
@@ -279,13 +286,7 @@ TEST_F(ArmEdits, SpawnsAndDeletesOfARobotWithSensorsLeaveTheNodesMemoryFlat) {
 // The answer says what drives the robot: it said "no controllers:
 // apply_joint_effort drives it" of a base its DiffDriveController drove.
 TEST_F(ArmEdits, ASpawnsAnswerNamesItsDrivesAndTheirTopics) {
-  SpawnBody s;
-  s.request.name = "rover2";
-  s.request.urdf_file = "package://rigid_body_sim/urdf/diff_drive.urdf";
-  s.request.pose.position.x = -3.0;
-  s.request.pose.position.y = 3.0;
-  s.request.pose.position.z = 0.08;
-  s.request.pose.orientation.w = 1.0;
+  SpawnBody s = request("rover2", "diff_drive.urdf", -3.0, 3.0, 0.08);
   s.request.controllers =
       "{base: {type: diff_drive_controller/DiffDriveController, left_wheel: left_wheel_joint, "
       "right_wheel: right_wheel_joint}}";
@@ -306,12 +307,7 @@ TEST_F(ArmEdits, ASpawnsAnswerNamesItsDrivesAndTheirTopics) {
 // world's order of robots and steps on without the first's base wrench
 // (which once stopped the step, sized for the other robot's links).
 TEST_F(ArmEdits, ADrivenRobotDeletedBeforeAnotherLeavesItNoWrench) {
-  SpawnBody sled;
-  sled.request.name = "sled";
-  sled.request.urdf_file = "package://rigid_body_sim/urdf/diff_drive.urdf";
-  sled.request.pose.position.x = -3.0;
-  sled.request.pose.position.z = 0.08;
-  sled.request.pose.orientation.w = 1.0;
+  SpawnBody sled = request("sled", "diff_drive.urdf", -3.0, 0.0, 0.08);
   sled.request.cmd_vel = "{planar: true, timeout: 0}";
   ASSERT_TRUE(ros::service::waitForService("/sim_node/spawn_body", 30000));
   ASSERT_TRUE(call("spawn_body", sled).response.success);
