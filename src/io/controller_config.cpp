@@ -60,8 +60,8 @@ ControllerEntry parseController(const YAML::Node& name, const YAML::Node& body, 
   for (const std::string& key : trajectory) {
     if (runs_trajectories && body[key]) {
       c.unread.push_back({join(c.key, key),
-                          "the trajectory controller runs its command topic only (control_msgs' action and state "
-                          "are not in Debian 12; velocity feed-forward is not run)"});
+                          "the trajectory controller runs its command topic only: control_msgs' action and state "
+                          "are not in Debian 12, and velocity feed-forward is not run"});
     }
   }
   std::set<std::string> known = {"type", "joint", "joints", "pid", "gains", "publish_rate"};

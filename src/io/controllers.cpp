@@ -182,47 +182,66 @@ std::vector<std::string> unreadNote(const std::vector<ControllerEntry>& entries)
   return {line};
 }
 
+/// The first controller of `running` that has one of `e`'s joints, or null.
+const ControllerEntry* ownerOfAJoint(const ControllerEntry& e, const std::vector<const ControllerEntry*>& running) {
+  for (const ControllerEntry* r : running) {
+    for (const std::string& joint : e.joints) {
+      if (std::find(r->joints.begin(), r->joints.end(), joint) != r->joints.end()) return r;
+    }
+  }
+  return nullptr;
+}
+
+/// The line saying that `stopped` (each with the controller that has its joints) do not run.
+std::string stoppedNote(const std::vector<std::pair<const ControllerEntry*, const ControllerEntry*>>& stopped) {
+  std::string names;
+  for (const auto& [e, owner] : stopped) {
+    names += (names.empty() ? "" : ", ") + ("'" + e->name + "' (a joint of '" + owner->name + "')");
+  }
+  return std::to_string(stopped.size()) + " controller" + (stopped.size() == 1 ? "" : "s") +
+         " loaded stopped, as controller_manager's spawner leaves a controller whose joints another has: " + names +
+         "; the first in the file runs";
+}
+
 }  // namespace
 
 RobotControls buildControls(const std::vector<ControllerEntry>& entries, const core::ArticulationModel& model) {
   RobotControls out;
   std::vector<core::JointControllerSpec> specs;
   std::vector<std::string> problems;  // every controller's, said at once
+  // A joint is one running controller's. A config's later controller on it
+  // is loaded stopped (checked, then left out); a plugin of the URDF's
+  // markup always runs, so one on a controller's joint is refused.
+  std::vector<const ControllerEntry*> running;
+  std::vector<std::pair<const ControllerEntry*, const ControllerEntry*>> stopped;
   for (const ControllerEntry& e : entries) {
+    const ControllerEntry* owner = ownerOfAJoint(e, running);
     try {
-      addController(e, model, out, specs);
+      if (owner != nullptr && e.key.rfind("<gazebo>", 0) == 0) {
+        refuse(e.key, "its joints are already controller '" + owner->name + "''s");
+      }
+      if (owner == nullptr) {
+        addController(e, model, out, specs);
+        running.push_back(&e);
+        continue;
+      }
+      RobotControls unused;
+      std::vector<core::JointControllerSpec> unused_specs;
+      addController(e, model, unused, unused_specs);
+      stopped.emplace_back(&e, owner);
     } catch (const ConfigError& error) {
       problems.emplace_back(error.what());
     }
   }
   throwProblems(problems);
-  const auto map_key = [&] {
-    const ControllerEntry& e = entries.front();
-    return e.key.substr(0, e.key.size() - e.name.size() - 1);
-  };
   try {
     out.controllers = core::JointControllers(model, std::move(specs));
   } catch (const std::invalid_argument& err) {  // its message names the controller
-    throw ConfigError("config key '" + map_key() + "': " + err.what());
+    const ControllerEntry& e = entries.front();
+    throw ConfigError("config key '" + e.key.substr(0, e.key.size() - e.name.size() - 1) + "': " + err.what());
   }
-  // A wheel is one controller's: no joint controller's, no other drive's.
-  std::vector<std::pair<int, std::string>> owned;
-  for (const core::DiffDrive& drive : out.drives) {
-    for (const int j : drive.wheels()) {
-      const int c = out.controllers.ownerOf(j);
-      std::string other = c >= 0 ? out.controllers.specs()[c].name : "";
-      for (const auto& [joint, name] : owned) {
-        if (joint == j) other = name;
-      }
-      if (!other.empty()) {
-        problems.push_back("config key '" + map_key() + "': controller '" + drive.spec().name + "': wheel joint '" +
-                           model.links[j].joint + "' is already controller '" + other + "''s");
-      }
-      owned.emplace_back(j, drive.spec().name);
-    }
-  }
-  throwProblems(problems);
   out.notes = unreadNote(entries);
+  if (!stopped.empty()) out.notes.push_back(stoppedNote(stopped));
   return out;
 }
 

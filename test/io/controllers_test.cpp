@@ -174,6 +174,43 @@ gazebo_ros_control: {pid_gains: {shoulder: {p: 50.0, d: 2.0}}}
   EXPECT_THROW(io::controlsOf(YAML::Load("{tf_prefix: left}"), "controllers", arm, false), io::ConfigError);
 }
 
+TEST(Controllers, OfTwoOnAJointTheFirstRunsAndTheOtherIsLoadedStoppedAndSaid) {
+  // UR5's ur5_controllers.yaml declares a trajectory controller and a group
+  // effort controller on the same joints (its launch starts the first and
+  // loads the second --stopped); it was refused.
+  const io::RobotControls c = controls(R"(
+controllers:
+  eff_joint_traj_controller:
+    type: effort_controllers/JointTrajectoryController
+    joints: &robot_joints [shoulder, elbow]
+    gains:
+      shoulder: {p: 4000, d: 200, i: 1, i_clamp: 1}
+      elbow: {p: 2000, d: 20, i: 1, i_clamp: 1}
+  joint_group_eff_controller:
+    type: effort_controllers/JointGroupEffortController
+    joints: *robot_joints
+  elbow_only:
+    type: effort_controllers/JointEffortController
+    joint: elbow
+)");
+  ASSERT_EQ(c.controllers.specs().size(), 1u);
+  EXPECT_EQ(c.controllers.specs()[0].name, "eff_joint_traj_controller");
+  EXPECT_EQ(c.group, (std::vector<char>{1}));
+  ASSERT_EQ(c.notes.size(), 1u) << c.notes[0];
+  EXPECT_NE(c.notes[0].find("2 controllers loaded stopped, as controller_manager's spawner leaves a controller "
+                            "whose joints another has: 'joint_group_eff_controller' (a joint of "
+                            "'eff_joint_traj_controller'), 'elbow_only' (a joint of 'eff_joint_traj_controller'); "
+                            "the first in the file runs"),
+            std::string::npos)
+      << c.notes[0];
+  // Apart, each runs: the rule is about shared joints, not types.
+  const io::RobotControls apart = controls(
+      "controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow},"
+      " b: {type: effort_controllers/JointEffortController, joint: shoulder}}");
+  EXPECT_EQ(apart.controllers.specs().size(), 2u);
+  EXPECT_TRUE(apart.notes.empty());
+}
+
 TEST(Controllers, UR5sActionKeysAndKeysNoControllerReadsAreNamedInOneNote) {
   // UR5's ur5_controllers.yaml (anchors, aliases and the action's keys) was
   // refused, one key per restart.
@@ -244,9 +281,10 @@ TEST(Controllers, RefusalsNameTheKey) {
        "'controllers.a.jiont': unknown key: did you mean joint?"},
       {"controllers: {a: {type: effort_controllers/JointPositionController, joint: elbow, pid: {p: -1}}}",
        "'controllers.a.pid.p'"},
+      // A controller loaded stopped is checked as a running one.
       {"controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow},"
-       " b: {type: effort_controllers/JointEffortController, joint: elbow}}",
-       "'controllers': controller 'b': joint 'elbow' is already controller 'a''s"},
+       " b: {type: effort_controllers/JointPositionController, joint: elbow}}",
+       "'controllers.b.pid': 'effort_controllers/JointPositionController' acts here through a PID"},
       {"controllers: {a: {type: effort_controllers/JointEffortController, joint: elbow, publish_rate: 10}}",
        "'controllers.a.publish_rate'"},
       {"controllers: {a: {joint: elbow}}", "'controllers.a.type'"},

@@ -136,10 +136,35 @@ TEST(DiffDriveController, RefusalsNameTheKey) {
   refused(drive + ", odom_frame_id: /odom}}", "'controllers.base.odom_frame_id': '/odom' starts with '/'");
   refused(drive + ", cmd_vel_timout: 1}}",
           "'controllers.base.cmd_vel_timout': unknown key: did you mean cmd_vel_timeout?");
-  refused(drive +
-              "}, spin: {type: velocity_controllers/JointVelocityController, joint: left_wheel_joint,"
-              " pid: {p: 1}}}",
-          "controller 'base': wheel joint 'left_wheel_joint' is already controller 'spin''s");
+  // A controller on a wheel is loaded stopped, but checked all the same.
+  refused(drive + "}, spin: {type: velocity_controllers/JointVelocityController, joint: left_wheel_joint}}",
+          "'controllers.spin.pid'");
+}
+
+TEST(DiffDriveController, AControllerOnItsWheelIsLoadedStoppedAndAPluginThereRefused) {
+  const io::RobotControls c =
+      baseControls(std::string(kDrive) +
+                   "}, spin: {type: velocity_controllers/JointVelocityController, joint: left_wheel_joint,"
+                   " pid: {p: 1}}}");
+  EXPECT_EQ(c.drives.size(), 1u);
+  EXPECT_EQ(c.controllers.specs().size(), 0u);
+  ASSERT_EQ(c.notes.size(), 1u);
+  EXPECT_NE(c.notes[0].find("'spin' (a joint of 'base')"), std::string::npos) << c.notes[0];
+  // gazebo_ros_diff_drive always runs: on a controller's wheels it is refused.
+  std::vector<io::ControllerEntry> entries = baseConfig(std::string(kDrive) + "}}").controllers;
+  io::ControllerEntry plugin = entries.front();
+  plugin.name = "diff_drive";
+  plugin.key = "<gazebo> <plugin name=\"diff_drive\">";
+  entries.push_back(plugin);
+  try {
+    io::buildControls(entries, io::loadArticulationFile(kUrdf + "diff_drive.urdf"));
+    ADD_FAILURE() << "a plugin on a controller's wheels was accepted";
+  } catch (const io::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("'<gazebo> <plugin name=\"diff_drive\">': its joints are already "
+                                         "controller 'base''s"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(DiffDriveController, TakesGazeboRosControlsPidGainsForItsWheels) {

@@ -302,6 +302,27 @@ TEST_F(ArmEdits, ASpawnsAnswerNamesItsDrivesAndTheirTopics) {
   EXPECT_TRUE(call("delete_body", d).response.success);
 }
 
+// Two controllers on one joint (UR's stock YAML): the first runs, the
+// second is loaded stopped, said in the answer, and takes no command.
+TEST_F(ArmEdits, OfTwoControllersOnAJointTheFirstRunsAndTheAnswerSaysSo) {
+  SpawnBody s = request("pend3", "pendulum.urdf", -2.0, -3.0, 1.5);
+  s.request.controllers =
+      "{hold: {type: effort_controllers/JointPositionController, joint: pivot, pid: {p: 200, d: 5}},"
+      " push: {type: effort_controllers/JointEffortController, joint: pivot}}";
+  ASSERT_TRUE(ros::service::waitForService("/sim_node/spawn_body", 30000));
+  const SpawnBody::Response added = call("spawn_body", s).response;
+  ASSERT_TRUE(added.success) << added.message;
+  EXPECT_NE(added.message.find("1 controller loaded stopped, as controller_manager's spawner leaves a controller "
+                               "whose joints another has: 'push' (a joint of 'hold')"),
+            std::string::npos)
+      << added.message;
+  EXPECT_TRUE(spinUntil([&] { return subscribes("/sim_node", "/pend3/hold/command"); }, 10.0));
+  EXPECT_FALSE(subscribes("/sim_node", "/pend3/push/command"));
+  rigid_body_sim::DeleteBody d;
+  d.request.name = "pend3";
+  EXPECT_TRUE(call("delete_body", d).response.success);
+}
+
 // A robot spawned with cmd_vel (its base driven as a body's), then another
 // without, then the first deleted: the second takes its place in the
 // world's order of robots and steps on without the first's base wrench

@@ -40,11 +40,15 @@ std::vector<std::string> controllerTypes();
 /// `entries` for the robot `model`. Refused (ConfigError naming the key):
 /// a type it does not run (the message lists those it does), `joint` for a
 /// group type or `joints` for a one-joint type, a joint the robot does not
-/// have or a mimic joint, a joint two controllers own, a position or
-/// velocity controller without gains for each joint (`pid`, or `gains` for
-/// a group): they act through a PID on effort, never by setting the joint.
-/// A DiffDriveController's wheels are checked likewise (each a turning joint
-/// no other controller owns); its wheel_separation and wheel_radius, when
+/// have or a mimic joint, a position or velocity controller without gains
+/// for each joint (`pid`, or `gains` for a group): they act through a PID on
+/// effort, never by setting the joint. A joint is one running controller's:
+/// a later controller with a joint an earlier one has is checked and loaded
+/// stopped (left out, named in `notes`), as controller_manager's spawner
+/// leaves the second of two; a markup plugin (key `<gazebo> ...`) on such a
+/// joint is refused, since a plugin always runs.
+/// A DiffDriveController's wheels are checked likewise (each a turning
+/// joint); its wheel_separation and wheel_radius, when
 /// not given, come from the URDF as ros_controllers finds them (refused when
 /// the left wheel's first collision is no cylinder or sphere); its wheels'
 /// PID gains from gazebo_ros_control's pid_gains, else core::defaultWheelGains.
