@@ -153,9 +153,7 @@ SpawnBody::Response WorldEdits::insertRobot(SpawnQueue::Spawn& spawn) {
   for (std::size_t d = 0; d < spawn.controls.drives.size(); ++d) {
     const io::DriveTopics& t = spawn.controls.drive_topics.at(d);
     const std::string& name = spawn.controls.drives[d].spec().name;
-    const std::string topic = t.cmd_vel_topic.rfind('/', 0) == 0 ? t.cmd_vel_topic
-                              : t.under_controller               ? prefix + name + "/" + t.cmd_vel_topic
-                                                                 : prefix + t.cmd_vel_topic;
+    const std::string topic = deviceTopic(driveNamespace(prefix, name, t), t.cmd_vel_topic);
     drives += (drives.empty() ? "" : ", ") + name + " on '" + topic + "'";
   }
   std::string runs =
