@@ -2,6 +2,7 @@
 // refused request changes nothing). Private to the node.
 #pragma once
 
+#include <ros/names.h>
 #include <ros/time.h>
 
 #include <algorithm>
@@ -57,6 +58,16 @@ inline std::string checkSpeed(const Vec3& v, double limit, const std::string& wh
 
 /// "" if `name` may name a body, else why not: the config's rule.
 inline std::string checkName(const std::string& name) { return io::bodyNameProblem(name); }
+
+/// "" if `ns` (a spawn's robot_namespace) is "" or a ROS namespace, global or
+/// relative to the node's (never private), else why not.
+inline std::string checkNamespace(const std::string& ns) {
+  std::string why;
+  if (ns.empty() || ns == "/") return {};
+  if (ns.size() <= 256 && ns.front() != '~' && ros::names::validate(ns, why)) return {};
+  return "robot_namespace '" + io::shownName(ns) +
+         "': no ROS namespace (letters, digits, '_' and '/', starting with a letter or '/'; '/' is the root)";
+}
 
 /// "" if `value` (request field `field`) is within [0, max], else why not.
 inline std::string checkCoefficient(double value, double max, const std::string& field) {

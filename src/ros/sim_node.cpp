@@ -217,10 +217,10 @@ void SimNode::afterSpawn() {
 
 void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   const std::size_t r = sim_.scene.robots().size() - 1;
-  const std::string prefix = spawn.request.name + "/";
+  const std::string& prefix = spawn.sensor_prefix;
+  const std::string& control_prefix = spawn.control_prefix;
   io::RobotControls& controls = spawn.controls;
   const double hz = controls.joint_state_rate > 0.0 ? controls.joint_state_rate : settings_.publish_rate;
-  const std::string control_prefix = robotTopicPrefix(controls.robot_namespace, prefix);
   robot_publisher_->addRobot(sim_.scene.robots()[r], control_prefix, hz, spawn.frame_prefix);
   commands_->addRobot(sim_, r, control_prefix, spawn.frame_prefix, std::move(controls));
   robot_publisher_->leaveBase(r, commands_->odometryFrames(r));

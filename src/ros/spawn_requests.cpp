@@ -38,7 +38,14 @@ std::string checkSpawnRequest(const SpawnBody::Request& req) {
                        checkVector(fromVector3(req.twist.linear), kMaxPosition, "twist.linear", "m/s"),
                        checkVector(fromVector3(req.twist.angular), kMaxPosition, "twist.angular", "rad/s"),
                        req.own_friction ? checkCoefficient(req.friction, core::ranges::kMaxFriction, "friction") : "",
-                       req.own_restitution ? checkCoefficient(req.restitution, 1.0, "restitution") : ""});
+                       req.own_restitution ? checkCoefficient(req.restitution, 1.0, "restitution") : "",
+                       checkNamespace(req.robot_namespace)});
+}
+
+/// Where a robot's controllers, tf_prefix and (given robot_namespace) topics
+/// are looked up: its robot_namespace, else its name.
+std::string paramNamespace(const SpawnBody::Request& req) {
+  return req.robot_namespace.empty() ? req.name : req.robot_namespace;
 }
 
 /// The URDF text of the request: exactly one of urdf_xml, urdf_param
@@ -85,8 +92,8 @@ void tellRepairs(const std::vector<std::string>& notes, SpawnBody::Response& res
 }
 
 /// The controllers of robot `model` the request gives: its `controllers`
-/// YAML, else those loaded under the robot's name (resolved on `nh`), as a
-/// Gazebo user loads them for gazebo_ros_control; and the drives of its
+/// YAML, else those loaded under its robot_namespace or name (resolved on
+/// `nh`), as a Gazebo user loads them for gazebo_ros_control; and the drives of its
 /// URDF's markup. Throws std::exception starting with the field or the parameter.
 io::RobotControls requestedControls(const SpawnBody::Request& req, const ros::NodeHandle& nh,
                                     const core::ArticulationModel& model,
@@ -96,13 +103,14 @@ io::RobotControls requestedControls(const SpawnBody::Request& req, const ros::No
       return io::controlsOf(io::loadYamlText(req.controllers, "controllers"), "controllers", model, false, markup);
     }
     XmlRpc::XmlRpcValue params;
-    if (!nh.getParam(req.name, params) || params.getType() != XmlRpc::XmlRpcValue::TypeStruct) {
+    if (!nh.getParam(paramNamespace(req), params) || params.getType() != XmlRpc::XmlRpcValue::TypeStruct) {
       return io::buildControls(markup, model);
     }
-    return io::controlsOf(toYaml(params), nh.resolveName(req.name), model, true, markup);
+    return io::controlsOf(toYaml(params), nh.resolveName(paramNamespace(req)), model, true, markup);
   } catch (const io::ConfigError& e) {
     if (!req.controllers.empty()) throw std::invalid_argument("controllers: " + std::string(e.what()));
-    throw std::invalid_argument("controllers (the parameters under '" + nh.resolveName(req.name) + "'): " + e.what());
+    throw std::invalid_argument("controllers (the parameters under '" + nh.resolveName(paramNamespace(req)) +
+                                "'): " + e.what());
   }
 }
 
@@ -133,12 +141,15 @@ void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf,
       configureJoints(model, limits, req.joint_names, req.joint_positions, {}, spawn.robot_start);
   if (!problem.empty()) throw std::invalid_argument(problem);
   spawn.controls = requestedControls(req, nh, model, markup.controllers);
-  spawn.controls.robot_namespace = markup.robot_namespace;
+  // Gazebo's spawn puts its robot_namespace into every plugin, in place of the markup's.
+  spawn.controls.robot_namespace = req.robot_namespace.empty() ? markup.robot_namespace : req.robot_namespace;
+  spawn.sensor_prefix = robotTopicPrefix(req.robot_namespace, req.name + "/");
+  spawn.control_prefix = robotTopicPrefix(spawn.controls.robot_namespace, req.name + "/");
   if (!req.cmd_vel.empty()) {
     if (model.fixed_base) throw std::invalid_argument("cmd_vel: robot '" + req.name + "' is fixed to the world");
     spawn.controls.base_driver.emplace(io::parseDriverText(req.cmd_vel, "cmd_vel"));
   }
-  spawn.frame_prefix = framePrefix(nh, req.name);
+  spawn.frame_prefix = framePrefix(nh, paramNamespace(req));
   core::Scene::RobotSpec robot{req.name, std::move(model)};
   if (req.own_friction) robot.friction = req.friction;
   if (req.own_restitution) robot.restitution = req.restitution;
@@ -163,8 +174,7 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
       loadRequestedRobot(req, urdf, options, spawn_limits_, dt_, nh_,
                          io::DeviceMemory{params_.sim.device_memory, range_sensors_ ? range_sensors_->bytes() : 0},
                          spawn);
-      spawn.topics = robotTopics(req.name + "/", robotTopicPrefix(spawn.controls.robot_namespace, req.name + "/"),
-                                 spawn.sensors, spawn.controls);
+      spawn.topics = robotTopics(spawn.sensor_prefix, spawn.control_prefix, spawn.sensors, spawn.controls);
       notes.insert(notes.end(), spawn.controls.notes.begin(), spawn.controls.notes.end());
       spawn.request = req;
       res = spawns_.submit(std::move(spawn), [] { return ros::ok(); });  // the loop adds it at its next tick
@@ -176,6 +186,11 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
     }
     if (!req.controllers.empty()) {
       throw std::invalid_argument("controllers: the URDF has no moving joints (a body, not a robot)");
+    }
+    if (!req.robot_namespace.empty()) {
+      throw std::invalid_argument(
+          "robot_namespace: the URDF has no moving joints (a body, not a robot): "
+          "its topics are under its name");
     }
     core::BodySpec spec = io::loadUrdfString(urdf.xml, urdf.source, urdf.base_dir, options);
     spec.name = req.name;

@@ -145,7 +145,7 @@ SpawnBody::Response WorldEdits::insertRobot(SpawnQueue::Spawn& spawn) {
     res.message = e.what();
     return res;
   }
-  const std::string prefix = robotTopicPrefix(spawn.controls.robot_namespace, req.name + "/");
+  const std::string& prefix = spawn.control_prefix;
   std::string controllers, drives;
   for (const core::JointControllerSpec& c : spawn.controls.controllers.specs()) {
     controllers += (controllers.empty() ? "" : ", ") + c.name;

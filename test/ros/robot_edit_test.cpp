@@ -167,15 +167,58 @@ TEST_F(ArmEdits, ARobotDescribedForGazeboSpawnsWithItsMarkupsSensorsAndDrive) {
                               "joint_states (one topic, one publisher"),
             std::string::npos)
       << copy.message;
+  // spawn_model's -robot_namespace puts every topic of the copy under it (as
+  // Gazebo gives it to each plugin, in place of the markup's), and its
+  // controllers are read there (it was refused as an unknown flag).
+  SpawnBody b = s;
+  b.request.name = "rover_b";
+  b.request.robot_namespace = "rover_b";
+  ros::param::set("/rover_b/tf_prefix", "rover_b");
+  ros::param::set("/rover_b/odd/type", "no_such_controllers/Controller");
+  const SpawnBody::Response odd = call("spawn_body", b).response;
+  EXPECT_FALSE(odd.success);
+  EXPECT_NE(odd.message.find("controllers (the parameters under '/rover_b'): config key '/rover_b.odd.type'"),
+            std::string::npos)
+      << odd.message;
+  ros::param::del("/rover_b/odd");
+  const SpawnBody::Response own = call("spawn_body", b).response;
+  ASSERT_TRUE(own.success) << own.message;
+  EXPECT_NE(own.message.find("'rover_b/joint_states'"), std::string::npos) << own.message;
+  EXPECT_TRUE(spinUntil(
+      [] {
+        return subscribes("/sim_node", "/rover_b/cmd_vel") && advertised("/rover_b/odom") &&
+               advertised("/rover_b/imu") && advertised("/rover_b/ground_truth/state") &&
+               advertised("/rover_b/joint_states");
+      },
+      10.0));
+  EXPECT_FALSE(advertised("/rover_b/rover_b/imu"));
+  // What is no namespace, and a body's, are refused.
+  for (const auto& [ns, why] : {std::pair{"~private", "robot_namespace '~private': no ROS namespace"},
+                                std::pair{"two words", "robot_namespace 'two words': no ROS namespace"},
+                                std::pair{"1st", "robot_namespace '1st': no ROS namespace"}}) {
+    SpawnBody bad = b;
+    bad.request.name = "rover_c";
+    bad.request.robot_namespace = ns;
+    const SpawnBody::Response refused = call("spawn_body", bad).response;
+    EXPECT_FALSE(refused.success) << ns;
+    EXPECT_EQ(refused.message.rfind(why, 0), 0u) << refused.message;
+  }
+  SpawnBody box = request("crate_ns", "box.urdf", 4.0, 4.0, 0.5);
+  box.request.robot_namespace = "crates";
+  const SpawnBody::Response crate = call("spawn_body", box).response;
+  EXPECT_FALSE(crate.success);
+  EXPECT_EQ(crate.message.rfind("robot_namespace: the URDF has no moving joints", 0), 0u) << crate.message;
   rigid_body_sim::DeleteBody d;
   d.request.name = "rover";
   d = call("delete_body", d);
   EXPECT_TRUE(d.response.success) << d.response.message;
   const SpawnBody::Response after = call("spawn_body", s).response;
   EXPECT_TRUE(after.success) << after.message;
-  d.request.name = "rover_copy";
-  d = call("delete_body", d);
-  EXPECT_TRUE(d.response.success) << d.response.message;
+  for (const char* name : {"rover_copy", "rover_b"}) {
+    d.request.name = name;
+    d = call("delete_body", d);
+    EXPECT_TRUE(d.response.success) << d.response.message;
+  }
 }
 
 // A spawn whose cameras would hold more than devices.memory is refused,

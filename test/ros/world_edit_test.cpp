@@ -135,6 +135,14 @@ TEST_F(NodeSpawn, TheScriptSpawnsAsGazebosSpawnModelDoes) {
   EXPECT_NEAR(odom.pose.pose.orientation.w, std::sqrt(0.5), 1e-12);
 }
 
+TEST_F(NodeSpawn, TheScriptPutsARobotInItsRobotNamespaceAndReadsItsControllersThere) {
+  // spawn.test: in group arm_ns, `spawn_body -urdf -param robot_description
+  // -model arm -robot_namespace arm_ns`, the controller `hold` loaded there.
+  EXPECT_TRUE(spinUntil(
+      [] { return advertised("/arm_ns/joint_states") && subscribes("/sim_node", "/arm_ns/hold/command"); }, 30.0));
+  EXPECT_FALSE(advertised("/arm/joint_states"));
+}
+
 TEST_F(NodeSpawn, TheScriptTakesAFileAndRollPitchYawAsUrdfDoes) {
   // spawn.test: `spawn_body -urdf -file package://.../ball.urdf -model rolled
   // -x -3 -R 0.3 -P 0.2 -Y 0.1`: q = Rz(yaw) Ry(pitch) Rx(roll).

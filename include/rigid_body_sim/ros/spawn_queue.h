@@ -38,6 +38,8 @@ class SpawnQueue {
     std::string frame_prefix;                ///< its frames' tf_prefix, "" or "PREFIX/" (framePrefix)
     io::RobotSensors sensors;                ///< the robot's: the request's imu, its URDF's Gazebo markup
     std::vector<TopicClaims::Claim> topics;  ///< its publishers' (robotTopics), claimed before it is added
+    std::string sensor_prefix;               ///< its sensors' topics' namespace, "NAME/" or robot_namespace's
+    std::string control_prefix;              ///< its controllers' and joint_states' (robotTopicPrefix)
   };
   /// Adds a spawn to the world, or says why not (loop thread).
   using Insert = std::function<SpawnBody::Response(Spawn&)>;
