@@ -66,33 +66,26 @@ OdometryEntry pluginOdometry(const TiXmlElement& plugin, const std::string& link
   return o;
 }
 
-/// gazebo_ros_diff_drive's model plugin as a DiffDriveController (its
-/// topics under the robot's prefix, not a controller's namespace):
-/// `leftJoint`, `rightJoint` ("left_joint", "right_joint"), `wheelSeparation`
-/// and `wheelDiameter` (none: from the URDF, as ros_controllers reads them;
-/// the plugin's own defaults, 0.34 and 0.15 m, are another robot's),
-/// `wheelTorque` (5 N·m) as each wheel's most effort, `wheelAcceleration`
-/// (m/s² at the rim; 0: none) as the linear and angular acceleration
-/// limits, `updateRate` (100 Hz) as the odometry's, `commandTopic`
+/// What gazebo_ros_diff_drive and gazebo_ros_skid_steer_drive read alike,
+/// into `e`: `wheelSeparation` and `wheelDiameter` (none: from the URDF, as
+/// ros_controllers reads them; the plugins' own defaults, 0.34 or 0.4 and
+/// 0.15 m, are another robot's), `torque_key` (5 N·m) as each wheel's most
+/// effort, `updateRate` (100 Hz) as the odometry's, `commandTopic`
 /// ("cmd_vel"), `odometryTopic` ("odom"), `odometryFrame` ("odom"),
-/// `robotBaseFrame` ("base_footprint"), `publishOdomTF` (true), and the
-/// plugin's pose covariances. The last command is held (the plugin has no
+/// `robotBaseFrame` ("base_footprint"), and `tf_key` (`tf_default`) for
+/// odom -> base on tf. The last command is held (the plugins have no
 /// timeout; ros_controllers' 0.5 s would stop a base whose commander
-/// pauses). Its odometry is the wheels' here, whatever
-/// `odometrySource` says (the plugin's default, "world", reports the truth:
-/// said); `publishTf` false is said too.
-ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
-  ControllerEntry e;
-  e.name = attribute(plugin, "name").empty() ? "diff_drive" : attribute(plugin, "name");
+/// pauses). `file` names the plugin in what `unread` is told.
+void readPluginDrive(const TiXmlElement& plugin, const char* file, const char* torque_key, const char* tf_key,
+                     bool tf_default, const Unread& unread, ControllerEntry& e) {
+  DiffDriveEntry& d = *e.drive;
   e.type = kDiffDriveType;
   e.key = "<gazebo> <plugin name=\"" + e.name + "\">";
-  DiffDriveEntry d;
-  d.left = {childText(plugin, "leftJoint", "left_joint")};
-  d.right = {childText(plugin, "rightJoint", "right_joint")};
-  e.joints = {d.left[0], d.right[0]};
+  e.joints = d.left;
+  e.joints.insert(e.joints.end(), d.right.begin(), d.right.end());
   e.joint_list = true;
   const Numbers numbers(e.key);
-  double separation = 0.0, diameter = 0.0, accel = 0.0, rate = 100.0;
+  double separation = 0.0, diameter = 0.0, rate = 100.0;
   const double inf = std::numeric_limits<double>::infinity();
   // A torque <= 0 once reached std::clamp(u, 5, -5), undefined, and drove the base with no command.
   const Bounds size{0.0, core::ranges::kMaxExtent, true, "m"}, torque{0.0, inf, true, "N*m"};
@@ -100,11 +93,43 @@ ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
   numbers.at(&plugin, "wheelDiameter", diameter, size);
   d.settings.max_wheel_torque = 5.0;
   d.settings.cmd_vel_timeout = inf;
-  numbers.at(&plugin, "wheelTorque", d.settings.max_wheel_torque, torque);
-  numbers.at(&plugin, "wheelAcceleration", accel, Bounds{0.0, inf, false, "m/s^2 (0: none)"});
+  numbers.at(&plugin, torque_key, d.settings.max_wheel_torque, torque);
   numbers.rate(&plugin, "updateRate", rate);
   if (plugin.FirstChildElement("wheelSeparation") != nullptr) d.wheel_separation = separation;
   if (plugin.FirstChildElement("wheelDiameter") != nullptr) d.wheel_radius = 0.5 * diameter;
+  DriveTopics& t = d.topics;
+  if (rate > 0.0) {
+    t.publish_rate = rate;
+  } else {  // within the rates or 0
+    unread("<plugin> " + std::string(file) + " <updateRate> 0 (read as 100 Hz)", e.name);
+  }
+  t.under_controller = false;
+  t.cmd_vel_topic = childTopic(plugin, "commandTopic", "cmd_vel", e.key);
+  t.odom_topic = childTopic(plugin, "odometryTopic", "odom", e.key);
+  t.odom_frame_id = childFrame(plugin, "odometryFrame", "odom", e.key);
+  t.base_frame_id = childFrame(plugin, "robotBaseFrame", "base_footprint", e.key);
+  t.enable_odom_tf = childFlag(plugin, tf_key, tf_default, e.key);
+}
+
+/// gazebo_ros_diff_drive's model plugin as a DiffDriveController (its
+/// topics under the robot's prefix, not a controller's namespace):
+/// `leftJoint`, `rightJoint` ("left_joint", "right_joint"), what
+/// readPluginDrive reads (`wheelTorque`, `publishOdomTF`), `wheelAcceleration`
+/// (m/s² at the rim; 0: none) as the linear and angular acceleration
+/// limits, and the plugin's pose covariances. Its odometry is the wheels'
+/// here, whatever `odometrySource` says (the plugin's default, "world",
+/// reports the truth: said); `publishTf` false is said too.
+ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
+  ControllerEntry e;
+  e.name = attribute(plugin, "name").empty() ? "diff_drive" : attribute(plugin, "name");
+  DiffDriveEntry& d = e.drive.emplace();
+  d.left = {childText(plugin, "leftJoint", "left_joint")};
+  d.right = {childText(plugin, "rightJoint", "right_joint")};
+  readPluginDrive(plugin, "libgazebo_ros_diff_drive.so", "wheelTorque", "publishOdomTF", true, unread, e);
+  const Numbers numbers(e.key);
+  double accel = 0.0;
+  numbers.at(&plugin, "wheelAcceleration", accel,
+             Bounds{0.0, std::numeric_limits<double>::infinity(), false, "m/s^2 (0: none)"});
   if (accel > 0.0) {
     core::TwistLimiter& linear = d.settings.linear;
     linear.has_acceleration_limits = true;
@@ -117,19 +142,7 @@ ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
       angular.min_acceleration = -angular.max_acceleration;
     }
   }
-  DriveTopics& t = d.topics;
-  if (rate > 0.0) {
-    t.publish_rate = rate;
-  } else {  // within the rates or 0
-    unread("<plugin> libgazebo_ros_diff_drive.so <updateRate> 0 (read as 100 Hz)", e.name);
-  }
-  t.under_controller = false;
-  t.cmd_vel_topic = childTopic(plugin, "commandTopic", "cmd_vel", e.key);
-  t.odom_topic = childTopic(plugin, "odometryTopic", "odom", e.key);
-  t.odom_frame_id = childFrame(plugin, "odometryFrame", "odom", e.key);
-  t.base_frame_id = childFrame(plugin, "robotBaseFrame", "base_footprint", e.key);
-  t.enable_odom_tf = childFlag(plugin, "publishOdomTF", true, e.key);
-  t.pose_covariance_diagonal = {1e-5, 1e-5, 1e12, 1e12, 1e12, 1e-3};  // the plugin's
+  d.topics.pose_covariance_diagonal = {1e-5, 1e-5, 1e12, 1e12, 1e12, 1e-3};  // the plugin's
   if (!childFlag(plugin, "publishTf", true, e.key)) {
     unread("<plugin> libgazebo_ros_diff_drive.so <publishTf> false (its odometry is published)", e.name);
   }
@@ -139,7 +152,34 @@ ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
   if (plugin.FirstChildElement("legacyMode") != nullptr) {
     unread("<plugin> libgazebo_ros_diff_drive.so <legacyMode>", e.name);
   }
-  e.drive = std::move(d);
+  return e;
+}
+
+/// gazebo_ros_skid_steer_drive's model plugin as a DiffDriveController of
+/// two wheels a side: `leftFrontJoint` and `leftRearJoint` on the left,
+/// `rightFrontJoint` and `rightRearJoint` on the right (the plugin's
+/// defaults "left_front_joint" and so on), what readPluginDrive reads
+/// (`torque`, `broadcastTF` false by default, as the plugin's), and
+/// `covariance_x`, `covariance_y`, `covariance_yaw` (1e-4, 1e-4, 1e-2) on
+/// the pose and the twist. The plugin reports the truth as its odometry;
+/// here it is the wheels' (said), which a skidding base makes drift.
+ControllerEntry pluginSkidSteer(const TiXmlElement& plugin, const Unread& unread) {
+  ControllerEntry e;
+  e.name = attribute(plugin, "name").empty() ? "skid_steer_drive" : attribute(plugin, "name");
+  DiffDriveEntry& d = e.drive.emplace();
+  d.left = {childText(plugin, "leftFrontJoint", "left_front_joint"),
+            childText(plugin, "leftRearJoint", "left_rear_joint")};
+  d.right = {childText(plugin, "rightFrontJoint", "right_front_joint"),
+             childText(plugin, "rightRearJoint", "right_rear_joint")};
+  readPluginDrive(plugin, "libgazebo_ros_skid_steer_drive.so", "torque", "broadcastTF", false, unread, e);
+  const Numbers numbers(e.key);
+  double cx = 1e-4, cy = 1e-4, cyaw = 1e-2;
+  const Bounds covariance{0.0, 1e12, false, "(a variance)"};
+  numbers.at(&plugin, "covariance_x", cx, covariance);
+  numbers.at(&plugin, "covariance_y", cy, covariance);
+  numbers.at(&plugin, "covariance_yaw", cyaw, covariance);
+  d.topics.pose_covariance_diagonal = d.topics.twist_covariance_diagonal = {cx, cy, 1e12, 1e12, 1e12, cyaw};
+  unread("<plugin> libgazebo_ros_skid_steer_drive.so odometry of the truth (odometry from the wheels here)", e.name);
   return e;
 }
 }  // namespace
@@ -147,7 +187,7 @@ ControllerEntry pluginDrive(const TiXmlElement& plugin, const Unread& unread) {
 bool readsModelPlugin(const TiXmlElement& plugin) {
   const std::string file = attribute(plugin, "filename");
   return file == "libgazebo_ros_imu.so" || file == "libgazebo_ros_p3d.so" || file == "libgazebo_ros_diff_drive.so" ||
-         file == "libgazebo_ros_control.so";
+         file == "libgazebo_ros_skid_steer_drive.so" || file == "libgazebo_ros_control.so";
 }
 
 void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out) {
@@ -155,6 +195,8 @@ void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevi
   const std::string link = childText(plugin, "bodyName", "");
   if (file == "libgazebo_ros_diff_drive.so") {
     out.controllers.push_back(pluginDrive(plugin, unread));
+  } else if (file == "libgazebo_ros_skid_steer_drive.so") {
+    out.controllers.push_back(pluginSkidSteer(plugin, unread));
   } else if (file == "libgazebo_ros_control.so") {  // the controllers' namespace; they run every step
     const std::string where = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
     if (!childText(plugin, "robotNamespace", "").empty()) {  // empty: the root, as none

@@ -92,8 +92,10 @@ void Lumper::dropStillDrives(const urdf::ModelInterface& urdf, std::vector<Contr
   const auto still = [&](const ControllerEntry& c) {
     if (!c.drive || c.key.rfind("<gazebo>", 0) != 0) return false;  // the config's are refused, naming the key
     if (std::all_of(c.joints.begin(), c.joints.end(), moves)) return false;
-    unread_markup_["<plugin> libgazebo_ros_diff_drive.so on a joint that does not move (Gazebo does not run it)"]
-        .push_back(c.name);
+    unread_markup_
+        ["<plugin> drive (gazebo_ros_diff_drive, gazebo_ros_skid_steer_drive) on a joint that is missing "
+         "or does not move (Gazebo does not run it)"]
+            .push_back(c.name);
     return true;
   };
   controllers.erase(std::remove_if(controllers.begin(), controllers.end(), still), controllers.end());

@@ -536,7 +536,9 @@ TEST(GazeboDrive, ADrivePluginOnAFixedJointIsSaidAndNotRun) {
   EXPECT_TRUE(s.controls.empty() || s.controls[0].drives.empty());
   std::string notes;
   for (const std::string& n : s.notes) notes += n;
-  EXPECT_NE(notes.find("libgazebo_ros_diff_drive.so on a joint that does not move (Gazebo does not run it) ('wheels')"),
+  EXPECT_NE(notes.find("gazebo_ros_skid_steer_drive) on a joint that is missing or does not move (Gazebo does not "
+                       "run it) "
+                       "('wheels')"),
             std::string::npos)
       << notes;
 }
@@ -601,6 +603,65 @@ TEST(GazeboDrive, TheDiffDrivePluginIsADiffDriveControllerOnItsTopics) {
     EXPECT_NE(std::string(e.what()).find("<plugin name=\"w\"> <commandTopic> = 'cmd vel': no ROS topic name"),
               std::string::npos)
         << e.what();
+  }
+}
+
+// ROSbot's drive: gazebo_ros_skid_steer_drive, two wheels a side (ROSbot
+// could not move: the plugin was skipped).
+TEST(GazeboDrive, TheSkidSteerPluginIsADiffDriveControllerOfTwoWheelsASide) {
+  const io::UrdfText text = io::readUrdfFile("skid_steer.urdf", std::string(RBS_SOURCE_DIR) + "/test/ros/");
+  const io::SceneSetup s = io::loadScene(config(""), [&] { return text; });
+  ASSERT_EQ(s.controls.at(0).drives.size(), 1u);
+  const core::DiffDrive& drive = s.controls[0].drives[0];
+  const core::DiffDriveSpec& d = drive.spec();
+  EXPECT_EQ(d.name, "skid_steer_drive_controller");
+  EXPECT_EQ(d.left.size(), 2u);
+  EXPECT_EQ(d.right.size(), 2u);
+  EXPECT_EQ(d.wheel_separation, 0.5);
+  EXPECT_EQ(d.wheel_radius, 0.1);
+  EXPECT_EQ(d.settings.max_wheel_torque, 4.0);
+  EXPECT_EQ(d.settings.cmd_vel_timeout, std::numeric_limits<double>::infinity());  // the plugin holds it
+  const io::DriveTopics& t = s.controls[0].drive_topics.at(0);
+  EXPECT_FALSE(t.under_controller);
+  EXPECT_EQ(t.cmd_vel_topic, "cmd_vel");
+  EXPECT_EQ(t.base_frame_id, "chassis");
+  EXPECT_TRUE(t.enable_odom_tf);  // broadcastTF
+  EXPECT_EQ(t.publish_rate, 50.0);
+  EXPECT_EQ(t.pose_covariance_diagonal, (std::array<double, 6>{2e-4, 3e-4, 1e12, 1e12, 1e12, 0.02}));
+  EXPECT_EQ(t.twist_covariance_diagonal, t.pose_covariance_diagonal);
+  std::string notes;
+  for (const std::string& n : s.notes) notes += n;
+  EXPECT_NE(notes.find("libgazebo_ros_skid_steer_drive.so odometry of the truth (odometry from the wheels here)"),
+            std::string::npos)
+      << notes;
+  // Its defaults: broadcastTF false, torque 5 N*m; the plugin's joint
+  // names, which this robot lacks: Gazebo does not load it, and that is said.
+  io::UrdfText bare = text;
+  bare.xml.erase(bare.xml.find("<broadcastTF>"), std::string("<broadcastTF>true</broadcastTF>").size());
+  bare.xml.erase(bare.xml.find("<torque>"), std::string("<torque>4</torque>").size());
+  const io::SceneSetup b = io::loadScene(config(""), [&] { return bare; });
+  EXPECT_FALSE(b.controls.at(0).drive_topics.at(0).enable_odom_tf);
+  EXPECT_EQ(b.controls[0].drives.at(0).spec().settings.max_wheel_torque, 5.0);
+  const std::size_t from = bare.xml.find("<leftFrontJoint>"), to = bare.xml.find("<wheelSeparation>");
+  bare.xml.erase(from, to - from);
+  const io::SceneSetup none = io::loadScene(config(""), [&] { return bare; });
+  EXPECT_TRUE(none.controls.at(0).drives.empty());
+  notes.clear();
+  for (const std::string& n : none.notes) notes += n;
+  EXPECT_NE(notes.find("on a joint that is missing or does not move (Gazebo does not run it) "
+                       "('skid_steer_drive_controller')"),
+            std::string::npos)
+      << notes;
+  for (const auto& [element, why] : {std::pair{"<torque>-1</torque>", "<torque> = '-1': must be > 0 N*m"},
+                                     std::pair{"<covariance_yaw>nan</covariance_yaw>", "<covariance_yaw> = 'nan'"}}) {
+    io::UrdfText bad = text;
+    bad.xml.insert(bad.xml.find("<updateRate>"), element);  // first: the one read
+    try {
+      io::loadScene(config(""), [&] { return bad; });
+      ADD_FAILURE() << element << " was accepted";
+    } catch (const std::exception& e) {
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
   }
 }
 

@@ -4,7 +4,9 @@
 // reads them: the base turning at the
 // commanded twist on the p3d plugin's /ground_truth/state, the drive's
 // odometry on /odom, and the IMU plugin's /imu reading the turn's
-// centripetal acceleration and gravity as REP 145 says.
+// centripetal acceleration and gravity as REP 145 says. And a four-wheeled
+// base under gazebo_ros_skid_steer_drive (skid_steer.test): still at no
+// command, forward and backward at the commanded speed.
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
@@ -12,6 +14,7 @@
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -78,6 +81,59 @@ TEST(GazeboPlugins, TheBaseDrivesByCmdVelAndItsOdometryP3dAndImuSayHow) {
   std::printf("gazebo_plugins: p3d v %.4f w %.4f; odom v %.4f w %.4f; imu w %.4f a_y %.4f a_z %.4f\n",
               t.twist.twist.linear.x, t.twist.twist.angular.z, o.twist.twist.linear.x, o.twist.twist.angular.z, wz, ay,
               az);
+}
+
+// skid_steer.test: test/ros/skid_steer.urdf, its plugin's topics at the root
+// (robotNamespace '/'). It holds still with no command, then runs at +0.3
+// and -0.3 m/s on /cmd_vel: its truth (p3d) within 5 % of each, its
+// wheels' odometry too, and no yaw.
+TEST(GazeboSkidSteer, AFourWheeledBaseHoldsStillThenDrivesForwardAndBackAtTheCommandedSpeed) {
+  ros::NodeHandle nh;
+  std::vector<nav_msgs::Odometry> odom, truth;
+  ros::Subscriber odom_sub = nh.subscribe<nav_msgs::Odometry>(
+      "/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { odom.push_back(*m); });
+  ros::Subscriber truth_sub = nh.subscribe<nav_msgs::Odometry>(
+      "/ground_truth/state", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { truth.push_back(*m); });
+  ros::Publisher cmd_vel = nh.advertise<geometry_msgs::Twist>("/cmd_vel", 10);
+  ASSERT_TRUE(spinUntil([&] { return cmd_vel.getNumSubscribers() > 0; }, 30.0));  // the drive listens
+  ASSERT_TRUE(spinUntil([&] { return !odom.empty() && !truth.empty(); }, 30.0));
+  EXPECT_EQ(odom.back().pose.covariance[7], 3e-4);  // covariance_y
+  // Settled on its wheels for 1 s of sim time, then 2 s more with no command: still.
+  const auto waitFor = [&](double seconds) {
+    const double until = truth.back().header.stamp.toSec() + seconds;
+    return spinUntil([&] { return truth.back().header.stamp.toSec() >= until; }, 60.0);
+  };
+  ASSERT_TRUE(waitFor(1.0));
+  const nav_msgs::Odometry rest = truth.back();
+  ASSERT_TRUE(waitFor(2.0));
+  const double crept = std::hypot(truth.back().pose.pose.position.x - rest.pose.pose.position.x,
+                                  truth.back().pose.pose.position.y - rest.pose.pose.position.y);
+  EXPECT_LT(crept, 1e-3) << "m in 2 s with no command";
+  const auto drive = [&](double v) {
+    geometry_msgs::Twist twist;
+    twist.linear.x = v;
+    const auto send = [&](double seconds) {
+      const double until = truth.back().header.stamp.toSec() + seconds;
+      while (ros::ok() && truth.back().header.stamp.toSec() < until) {
+        cmd_vel.publish(twist);
+        spinUntil([] { return false; }, 0.02);
+      }
+    };
+    send(1.5);  // up to speed
+    const nav_msgs::Odometry start = truth.back();
+    send(1.0);
+    const nav_msgs::Odometry& end = truth.back();
+    const double over = (end.header.stamp - start.header.stamp).toSec();
+    const double along = (end.pose.pose.position.x - start.pose.pose.position.x) / over;
+    EXPECT_NEAR(along, v, 0.05 * std::abs(v)) << "m/s of truth";
+    EXPECT_NEAR(odom.back().twist.twist.linear.x, v, 0.05 * std::abs(v)) << "m/s of the wheels' odometry";
+    EXPECT_NEAR(end.pose.pose.position.y, 0.0, 0.01);
+    EXPECT_NEAR(end.twist.twist.angular.z, 0.0, 0.02);
+    std::printf("skid_steer: %+.2f m/s commanded: truth %+.4f m/s, odometry %+.4f m/s, y %.4f m\n", v, along,
+                odom.back().twist.twist.linear.x, end.pose.pose.position.y);
+  };
+  drive(0.3);
+  drive(-0.3);
 }
 
 }  // namespace
