@@ -174,18 +174,20 @@ gazebo_ros_control: {pid_gains: {shoulder: {p: 50.0, d: 2.0}}}
   EXPECT_THROW(io::controlsOf(YAML::Load("{tf_prefix: left}"), "controllers", arm, false), io::ConfigError);
 }
 
-TEST(Controllers, OfTwoOnAJointTheFirstRunsAndTheOtherIsLoadedStoppedAndSaid) {
-  // UR5's ur5_controllers.yaml declares a trajectory controller and a group
-  // effort controller on the same joints (its launch starts the first and
-  // loads the second --stopped); it was refused.
-  const io::RobotControls c = controls(R"(
-controllers:
+/// UR5's trajectory controller (ur_gazebo's ur5_controllers.yaml) on this arm's two joints.
+constexpr const char* kUr5Trajectory = R"(
   eff_joint_traj_controller:
     type: effort_controllers/JointTrajectoryController
     joints: &robot_joints [shoulder, elbow]
     gains:
       shoulder: {p: 4000, d: 200, i: 1, i_clamp: 1}
-      elbow: {p: 2000, d: 20, i: 1, i_clamp: 1}
+      elbow: {p: 2000, d: 20, i: 1, i_clamp: 1})";
+
+TEST(Controllers, OfTwoOnAJointTheFirstRunsAndTheOtherIsLoadedStoppedAndSaid) {
+  // UR5's ur5_controllers.yaml declares a trajectory controller and a group
+  // effort controller on the same joints (its launch starts the first and
+  // loads the second --stopped); it was refused.
+  const io::RobotControls c = controls("controllers:\n" + std::string(kUr5Trajectory) + R"(
   joint_group_eff_controller:
     type: effort_controllers/JointGroupEffortController
     joints: *robot_joints
@@ -219,12 +221,7 @@ controllers:
   joint_state_controller:
     type: joint_state_controller/JointStateController
     publish_rate: &loop_hz 125
-  eff_joint_traj_controller:
-    type: effort_controllers/JointTrajectoryController
-    joints: &robot_joints [shoulder, elbow]
-    gains:
-      shoulder: {p: 4000, d: 200, i: 1, i_clamp: 1}
-      elbow: {p: 2000, d: 20, i: 1, i_clamp: 1}
+)" + std::string(kUr5Trajectory) + R"(
     constraints:
       goal_time: 0.6
       shoulder: {trajectory: 0.1, goal: 0.1}
