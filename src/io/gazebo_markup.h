@@ -76,9 +76,10 @@ class Numbers {
   /// A whole number (no fraction) within `bounds`, if there, into `n`.
   void count(const TiXmlElement* root, const std::string& path, int& n, const Bounds& bounds) const;
   static const TiXmlElement* find(const TiXmlElement* root, const std::string& path);
+  /// Throws std::invalid_argument: "WHERE <path> = 'text': why".
+  [[noreturn]] void fail(const std::string& path, const char* text, const std::string& why) const;
 
  private:
-  [[noreturn]] void fail(const std::string& path, const char* text, const std::string& why) const;
   std::string where_;
 };
 

@@ -2,10 +2,14 @@
 #include "gazebo_plugins.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "drive_config.h"
 #include "rigid_body_sim/core/bodies/ranges.h"
@@ -32,6 +36,99 @@ ImuEntry pluginImu(const TiXmlElement& plugin, const std::string& link, const Un
   imu.frame_id = childFrame(plugin, "frameName", imu.link, imu.key);
   if (plugin.FirstChildElement("rpyOffset") != nullptr || plugin.FirstChildElement("rpyOffsets") != nullptr) {
     unread("<plugin> libgazebo_ros_imu.so <rpyOffset>", imu.link);
+  }
+  return imu;
+}
+
+/// hector_gazebo_ros_imu's `PREFIXNAME` (three numbers, one per axis, as
+/// hector reads them; one number is all three), if there, into `axes`;
+/// refused naming it unless each is ≥ 0.
+void hectorAxes(const Numbers& numbers, const TiXmlElement& plugin, const std::string& name,
+                std::array<double, 3>& axes) {
+  const TiXmlElement* e = plugin.FirstChildElement(name.c_str());
+  if (e == nullptr) return;
+  std::istringstream words(e->GetText() != nullptr ? e->GetText() : "");
+  std::size_t n = 0;
+  for (std::string w; words >> w;) ++n;
+  const std::vector<double> x = numbers.read(*e, name, n == 1 ? 1 : 3);
+  for (double v : x) {
+    if (v < 0.0) numbers.fail(name, e->GetText(), "each must be >= 0");
+  }
+  axes = n == 1 ? std::array<double, 3>{x[0], x[0], x[0]} : std::array<double, 3>{x[0], x[1], x[2]};
+}
+
+/// The largest of `axes`, and said to `unread` when they differ (the IMU
+/// here has one σ for its three axes).
+double oneForAllAxes(const std::array<double, 3>& axes, const std::string& element, const std::string& link,
+                     const Unread& unread) {
+  const double most = std::max({axes[0], axes[1], axes[2]});
+  if (axes[0] != axes[1] || axes[1] != axes[2]) {
+    unread("<plugin> libhector_gazebo_ros_imu.so <" + element + "> per axis (the largest for all three)", link);
+  }
+  return most;
+}
+
+/// The IMU of hector_gazebo_ros_imu's model plugin (Husky's, Jackal's):
+/// on `bodyName` (none: the robot's base, as hector's first link),
+/// `updateRate` (0 or none: every step), `topicName` ("imu"), `frameId`
+/// (bodyName), `accelGaussianNoise` and `rateGaussianNoise` (or
+/// `gaussianNoise` for both), and `accelDrift` and `rateDrift` with their
+/// `DriftFrequency` (1/3600 Hz) as a bias random walk of density
+/// drift·√(2·frequency): the Gauss-Markov drift hector documents, without
+/// its return toward zero over 1/frequency (an hour by default).
+/// `headingGaussianNoise` is the orientation's noise (about every axis;
+/// hector's is yaw alone), `randomEngineSeed` the seed. Its readings follow
+/// REP 145 as hector's do. A constant offset, heading drift, or the
+/// calibration services are said, not run.
+ImuEntry pluginHectorImu(const TiXmlElement& plugin, const Unread& unread) {
+  ImuEntry imu;
+  imu.key = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
+  imu.link = childText(plugin, "bodyName", "");
+  const std::string said = imu.link.empty() ? attribute(plugin, "name") : imu.link;
+  const Numbers numbers(imu.key);
+  double rate = 0.0, sigma = 0.0, seed = 0.0;
+  numbers.rate(&plugin, "updateRate", rate);
+  imu.settings.rate = rate > 0.0 ? rate : std::numeric_limits<double>::infinity();
+  std::array<double, 3> accel{}, gyro{}, accel_drift{}, gyro_drift{}, heading{};
+  std::array<double, 3> accel_f{}, gyro_f{};
+  accel_f.fill(1.0 / 3600.0);
+  gyro_f.fill(1.0 / 3600.0);
+  hectorAxes(numbers, plugin, "accelGaussianNoise", accel);
+  hectorAxes(numbers, plugin, "rateGaussianNoise", gyro);
+  numbers.at(&plugin, "gaussianNoise", sigma, Bounds{0.0, std::numeric_limits<double>::infinity(), false, "(sigma)"});
+  if (sigma > 0.0) accel.fill(sigma), gyro.fill(sigma);  // as hector: it overrides both
+  hectorAxes(numbers, plugin, "accelDrift", accel_drift);
+  hectorAxes(numbers, plugin, "rateDrift", gyro_drift);
+  hectorAxes(numbers, plugin, "accelDriftFrequency", accel_f);
+  hectorAxes(numbers, plugin, "rateDriftFrequency", gyro_f);
+  numbers.at(&plugin, "headingGaussianNoise", heading[0], Bounds{0.0, 1.0, false, "rad"});
+  imu.settings.accel_noise = oneForAllAxes(accel, "accelGaussianNoise", said, unread);
+  imu.settings.gyro_noise = oneForAllAxes(gyro, "rateGaussianNoise", said, unread);
+  const auto walk = [&](const std::array<double, 3>& drift, const std::array<double, 3>& f, const char* element) {
+    std::array<double, 3> density{};
+    for (int k = 0; k < 3; ++k) density[k] = drift[k] * std::sqrt(2.0 * f[k]);
+    return oneForAllAxes(density, element, said, unread);
+  };
+  imu.settings.accel_bias_walk = walk(accel_drift, accel_f, "accelDrift");
+  imu.settings.gyro_bias_walk = walk(gyro_drift, gyro_f, "rateDrift");
+  imu.settings.orientation_noise = heading[0];
+  numbers.at(&plugin, "randomEngineSeed", seed, Bounds{0.0, 4294967295.0, false, "(a seed)"});
+  imu.settings.seed = static_cast<std::uint64_t>(seed);
+  imu.topic = childTopic(plugin, "topicName", "imu", imu.key);
+  imu.frame_id = childFrame(plugin, "frameId", imu.link, imu.key);
+  for (const char* element : {"accelOffset", "rateOffset", "headingOffset", "headingDrift", "rpyOffset", "xyzOffset"}) {
+    if (const TiXmlElement* e = plugin.FirstChildElement(element)) {
+      std::istringstream words(e->GetText() != nullptr ? e->GetText() : "");
+      for (std::string w; words >> w;) {
+        if (std::strtod(w.c_str(), nullptr) != 0.0) {
+          unread("<plugin> libhector_gazebo_ros_imu.so <" + std::string(element) + "> (not run)", said);
+          break;
+        }
+      }
+    }
+  }
+  if (plugin.FirstChildElement("serviceName") != nullptr) {
+    unread("<plugin> libhector_gazebo_ros_imu.so <serviceName> (no calibration service here)", said);
   }
   return imu;
 }
@@ -187,7 +284,8 @@ ControllerEntry pluginSkidSteer(const TiXmlElement& plugin, const Unread& unread
 bool readsModelPlugin(const TiXmlElement& plugin) {
   const std::string file = attribute(plugin, "filename");
   return file == "libgazebo_ros_imu.so" || file == "libgazebo_ros_p3d.so" || file == "libgazebo_ros_diff_drive.so" ||
-         file == "libgazebo_ros_skid_steer_drive.so" || file == "libgazebo_ros_control.so";
+         file == "libgazebo_ros_skid_steer_drive.so" || file == "libgazebo_ros_control.so" ||
+         file == "libhector_gazebo_ros_imu.so";
 }
 
 void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out) {
@@ -197,6 +295,8 @@ void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevi
     out.controllers.push_back(pluginDrive(plugin, unread));
   } else if (file == "libgazebo_ros_skid_steer_drive.so") {
     out.controllers.push_back(pluginSkidSteer(plugin, unread));
+  } else if (file == "libhector_gazebo_ros_imu.so") {  // without bodyName: the base
+    out.imus.push_back(pluginHectorImu(plugin, unread));
   } else if (file == "libgazebo_ros_control.so") {  // the controllers' namespace; they run every step
     const std::string where = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
     if (!childText(plugin, "robotNamespace", "").empty()) {  // empty: the root, as none

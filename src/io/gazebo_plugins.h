@@ -1,6 +1,6 @@
 // The model plugins of a URDF's Gazebo markup that this project runs, read
 // as Gazebo reads them (private to io): `<gazebo><plugin filename=...>`
-// with gazebo_ros_imu (an IMU), gazebo_ros_p3d (a link's odometry),
+// with gazebo_ros_imu and hector_gazebo_ros_imu (IMUs), gazebo_ros_p3d (a link's odometry),
 // gazebo_ros_diff_drive and gazebo_ros_skid_steer_drive (DiffDriveControllers)
 // and gazebo_ros_control (its `robotNamespace`).
 #pragma once
@@ -15,8 +15,8 @@ namespace rigid_body_sim::io::detail {
 /// Whether readModelPlugin reads `plugin` (a <plugin> under <gazebo>).
 bool readsModelPlugin(const TiXmlElement& plugin);
 
-/// `plugin`'s device into `out`: as pluginImu, pluginOdometry, pluginDrive
-/// and pluginSkidSteer in gazebo_plugins.cpp say. One Gazebo would not run (an
+/// `plugin`'s device into `out`: as pluginImu, pluginHectorImu,
+/// pluginOdometry, pluginDrive and pluginSkidSteer in gazebo_plugins.cpp say. One Gazebo would not run (an
 /// IMU or p3d without its `bodyName`) is told to `unread`. Throws
 /// std::invalid_argument naming the element: a number or flag it cannot read.
 void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out);

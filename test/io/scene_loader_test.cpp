@@ -487,6 +487,71 @@ TEST(GazeboImus, APluginGazeboWouldNotRunIsSaidAndNotRun) {
   EXPECT_NE(notes.find("libgazebo_ros_imu.so without <bodyName> (Gazebo does not run it)"), std::string::npos) << notes;
 }
 
+// Husky's and Jackal's IMU: hector_gazebo_ros_imu, as Husky's markup gives
+// it (it was skipped: they had no IMU).
+TEST(GazeboImus, HectorsImuPluginIsAnImuWithItsNoiseAndDrift) {
+  const std::string husky =
+      "<gazebo><plugin name='imu_controller' filename='libhector_gazebo_ros_imu.so'>"
+      "<robotNamespace>/</robotNamespace><updateRate>50.0</updateRate><bodyName>base_link</bodyName>"
+      "<topicName>imu/data</topicName><accelDrift>0.005 0.005 0.005</accelDrift>"
+      "<accelGaussianNoise>0.005 0.005 0.005</accelGaussianNoise><rateDrift>0.005 0.005 0.005 </rateDrift>"
+      "<rateGaussianNoise>0.005 0.005 0.005 </rateGaussianNoise><headingDrift>0.005</headingDrift>"
+      "<headingGaussianNoise>0.005</headingGaussianNoise></plugin></gazebo>";
+  const io::SceneSetup s = io::loadScene(config(""), [&] { return laserRobot(husky); });
+  ASSERT_EQ(s.sensors.at(0).imus.size(), 1u);
+  const io::RobotImu& imu = s.sensors[0].imus[0];
+  EXPECT_EQ(imu.link, 0);
+  const core::ImuSettings& c = imu.entry.settings;
+  EXPECT_EQ(c.rate, 50.0);
+  EXPECT_EQ(c.accel_noise, 0.005);
+  EXPECT_EQ(c.gyro_noise, 0.005);
+  // The Gauss-Markov drift of σ 0.005 and time constant 1 h as a random walk: 0.005 √(2/3600) per √s.
+  EXPECT_NEAR(c.accel_bias_walk, 0.005 * std::sqrt(2.0 / 3600.0), 1e-18);
+  EXPECT_NEAR(c.gyro_bias_walk, 0.005 * std::sqrt(2.0 / 3600.0), 1e-18);
+  EXPECT_EQ(c.orientation_noise, 0.005);
+  EXPECT_EQ(imu.entry.topic, "imu/data");
+  EXPECT_EQ(imu.entry.frame_id, "base_link");  // frameId's default: bodyName
+  std::string notes;
+  for (const std::string& n : s.notes) notes += n;
+  EXPECT_NE(notes.find("libhector_gazebo_ros_imu.so <headingDrift> (not run)"), std::string::npos) << notes;
+  // hector's defaults: on the base without bodyName, topic imu, every step;
+  // gaussianNoise for both; per-axis values differing: the largest, said.
+  const io::SceneSetup bare = io::loadScene(config(""), [&] {
+    return laserRobot(
+        "<gazebo><plugin name='h' filename='libhector_gazebo_ros_imu.so'><gaussianNoise>0.02</gaussianNoise>"
+        "<accelDrift>0.1 0.2 0.3</accelDrift><accelDriftFrequency>0.5</accelDriftFrequency>"
+        "<randomEngineSeed>7</randomEngineSeed></plugin></gazebo>");
+  });
+  ASSERT_EQ(bare.sensors.at(0).imus.size(), 1u);
+  const io::ImuEntry& b = bare.sensors[0].imus[0].entry;
+  EXPECT_EQ(bare.sensors[0].imus[0].link, 0);
+  EXPECT_EQ(b.topic, "imu");
+  EXPECT_EQ(b.settings.rate, 1.0 / bare.scene.model().dt());
+  EXPECT_EQ(b.settings.accel_noise, 0.02);
+  EXPECT_EQ(b.settings.gyro_noise, 0.02);
+  EXPECT_NEAR(b.settings.accel_bias_walk, 0.3 * std::sqrt(2.0 * 0.5), 1e-15);
+  EXPECT_EQ(b.settings.seed, 7u);
+  notes.clear();
+  for (const std::string& n : bare.notes) notes += n;
+  EXPECT_NE(notes.find("<accelDrift> per axis (the largest for all three)"), std::string::npos) << notes;
+  // What no IMU can have is refused, naming the element.
+  for (const auto& [element, why] :
+       {std::pair{"<rateGaussianNoise>0.1 -0.1 0.1</rateGaussianNoise>", "<rateGaussianNoise> = '0.1 -0.1 0.1': each"},
+        std::pair{"<accelDrift>0.1 0.1</accelDrift>", "<accelDrift> = '0.1 0.1': not the number(s)"},
+        std::pair{"<updateRate>1e9</updateRate>", "<updateRate> = '1e9'"},
+        std::pair{"<topicName>a b</topicName>", "<topicName> = 'a b': no ROS topic name"}}) {
+    try {
+      io::loadScene(config(""), [&] {
+        return laserRobot("<gazebo><plugin name='h' filename='libhector_gazebo_ros_imu.so'>" + std::string(element) +
+                          "</plugin></gazebo>");
+      });
+      ADD_FAILURE() << element << " was accepted";
+    } catch (const std::exception& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("<plugin name=\"h\"> ") + why), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(GazeboOdometry, TheP3dPluginIsALinksOdometryWithItsNoise) {
   const std::string p3d =
       "<gazebo><plugin name='truth' filename='libgazebo_ros_p3d.so'><bodyName>base_link</bodyName>"

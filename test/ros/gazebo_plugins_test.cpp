@@ -6,7 +6,8 @@
 // odometry on /odom, and the IMU plugin's /imu reading the turn's
 // centripetal acceleration and gravity as REP 145 says. And a four-wheeled
 // base under gazebo_ros_skid_steer_drive (skid_steer.test): still at no
-// command, forward and backward at the commanded speed.
+// command (its hector IMU reading +g), forward and backward at the
+// commanded speed.
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
@@ -94,6 +95,9 @@ TEST(GazeboSkidSteer, AFourWheeledBaseHoldsStillThenDrivesForwardAndBackAtTheCom
       "/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { odom.push_back(*m); });
   ros::Subscriber truth_sub = nh.subscribe<nav_msgs::Odometry>(
       "/ground_truth/state", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { truth.push_back(*m); });
+  std::vector<sensor_msgs::Imu> imu;
+  ros::Subscriber imu_sub = nh.subscribe<sensor_msgs::Imu>(
+      "/imu/data", 1000, [&](const sensor_msgs::Imu::ConstPtr& m) { imu.push_back(*m); });
   ros::Publisher cmd_vel = nh.advertise<geometry_msgs::Twist>("/cmd_vel", 10);
   ASSERT_TRUE(spinUntil([&] { return cmd_vel.getNumSubscribers() > 0; }, 30.0));  // the drive listens
   ASSERT_TRUE(spinUntil([&] { return !odom.empty() && !truth.empty(); }, 30.0));
@@ -109,6 +113,17 @@ TEST(GazeboSkidSteer, AFourWheeledBaseHoldsStillThenDrivesForwardAndBackAtTheCom
   const double crept = std::hypot(truth.back().pose.pose.position.x - rest.pose.pose.position.x,
                                   truth.back().pose.pose.position.y - rest.pose.pose.position.y);
   EXPECT_LT(crept, 1e-3) << "m in 2 s with no command";
+  // Its hector IMU (50 Hz, σ 0.005) at rest, over its last second: +g up, no turn.
+  ASSERT_GE(imu.size(), 50u);
+  double az = 0.0, wz = 0.0;
+  for (std::size_t k = imu.size() - 50; k < imu.size(); ++k) {
+    az += imu[k].linear_acceleration.z / 50.0;
+    wz += imu[k].angular_velocity.z / 50.0;
+  }
+  EXPECT_EQ(imu.back().header.frame_id, "chassis");
+  EXPECT_NEAR(az, 9.81, 0.01);  // 4σ of the mean of 50 is 0.003; the drift over 3 s is 1e-4
+  EXPECT_NEAR(wz, 0.0, 0.005);
+  EXPECT_NEAR((imu.back().header.stamp - imu[imu.size() - 2].header.stamp).toSec(), 0.02, 1e-6);
   const auto drive = [&](double v) {
     geometry_msgs::Twist twist;
     twist.linear.x = v;
