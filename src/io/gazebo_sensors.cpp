@@ -15,7 +15,7 @@ namespace rigid_body_sim::io::detail {
 namespace {
 
 /// The plugin of `sensor` this project runs: 1 laser (LaserScan), 2 Velodyne (PointCloud2), 3 IMU, 4 depth
-/// camera, 0 none.
+/// camera, 5 range finder (Range), 0 none.
 int pluginKind(const TiXmlElement& sensor, const TiXmlElement** plugin) {
   const std::string type = attribute(sensor, "type");
   const bool ray = type == "ray" || type == "gpu_ray";
@@ -24,6 +24,7 @@ int pluginKind(const TiXmlElement& sensor, const TiXmlElement** plugin) {
     *plugin = p;
     if (ray && (file == "libgazebo_ros_laser.so" || file == "libgazebo_ros_gpu_laser.so")) return 1;
     if (ray && (file == "libgazebo_ros_velodyne_laser.so" || file == "libgazebo_ros_velodyne_gpu_laser.so")) return 2;
+    if (ray && file == "libgazebo_ros_range.so") return 5;
     if (type == "imu" && file == "libgazebo_ros_imu_sensor.so") return 3;
     if (type == "depth" && (file == "libgazebo_ros_openni_kinect.so" || file == "libgazebo_ros_depth_camera.so")) {
       return 4;
@@ -125,6 +126,30 @@ DepthCameraEntry sensorCamera(const TiXmlElement& s, const TiXmlElement& plugin,
   return c;
 }
 
+/// gazebo_ros_range's reading of the ray sensor `l` (ROSbot's sonars): its
+/// `topicName` ("/range", the plugin's), `frameName` (the link; the
+/// plugin's "/world" is no frame a range is in), `updateRate` (0: the
+/// sensor's) under the sensor's rate, `gaussianNoise` on the reading, `fov`
+/// (0.05 rad) and `radiation` ("ultrasound" or "infrared").
+RangeEntry rangeFinder(const TiXmlElement& plugin, LidarEntry& l) {
+  const std::string where = l.key + " <plugin>";
+  const Numbers own(where);
+  RangeEntry r;
+  if (plugin.FirstChildElement("topicName") == nullptr) l.topic = "/range";
+  double rate = 0.0;
+  own.rate(&plugin, "updateRate", rate);
+  if (rate > 0.0 && rate < l.rate) l.rate = rate;
+  own.at(&plugin, "gaussianNoise", r.settings.noise, Bounds{0.0, core::ranges::kMaxExtent, false, "m"});
+  own.at(&plugin, "fov", r.field_of_view, Bounds{0.0, 2.0 * M_PI, false, "rad"});
+  const std::string radiation = childText(plugin, "radiation", "ultrasound");
+  if (radiation != "ultrasound" && radiation != "infrared") {
+    throw std::invalid_argument(where + " <radiation> = '" + shownText(radiation.c_str()) +
+                                "': must be ultrasound or infrared");
+  }
+  r.infrared = radiation == "infrared";
+  return r;
+}
+
 }  // namespace
 
 RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
@@ -199,6 +224,7 @@ RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
         own.at(plugin, "max_range", c.max_range);
         own.at(plugin, "gaussianNoise", c.noise);
       }
+      if (kind == 5) l.range = rangeFinder(*plugin, l);
       out.lidars.push_back(std::move(l));
     }
   }

@@ -61,6 +61,19 @@ sensor_msgs::LaserScan scanMessage(const core::Lidar& lidar, const std::vector<d
   return m;
 }
 
+sensor_msgs::Range rangeMessage(const core::Lidar& lidar, const io::RangeEntry& range, double reading,
+                                const std::string& frame, const ros::Time& stamp) {
+  sensor_msgs::Range m;
+  m.header.stamp = stamp;
+  m.header.frame_id = frame;
+  m.radiation_type = range.infrared ? sensor_msgs::Range::INFRARED : sensor_msgs::Range::ULTRASOUND;
+  m.field_of_view = static_cast<float>(range.field_of_view);
+  m.min_range = static_cast<float>(lidar.settings().min_range);
+  m.max_range = static_cast<float>(lidar.settings().max_range);
+  m.range = static_cast<float>(reading);
+  return m;
+}
+
 sensor_msgs::PointCloud2 cloudMessage(const core::Lidar& lidar, const std::vector<double>& ranges,
                                       const std::string& frame, const ros::Time& stamp) {
   return xyzCloud(ranges, frame, stamp, [&](std::size_t k) { return ranges[k] * lidar.direction(k); });
@@ -145,14 +158,23 @@ void RangeSensors::addRobot(const std::string& robot, const std::string& prefix,
   for (const io::RobotLidar& l : lidars) {
     bytes_ += core::lidarBytes(l.entry.settings);
     const std::string& frame = l.entry.frame_id.empty() ? l.entry.link : l.entry.frame_id;
-    Port p{core::Lidar(l.entry.settings), l.link, l.X_LS, l.entry.rate, 1, frame_prefix + frame, {}};
+    Port p{core::Lidar(l.entry.settings), l.link, l.X_LS, l.entry.rate, 1, frame_prefix + frame, {}, {}, {}};
     p.every = std::max(1LL, std::llround(1.0 / (l.entry.rate * dt_)));
     const bool cloud = l.entry.settings.vertical_samples > 1;
     const std::string topic = deviceTopic(prefix, l.entry.topic);
-    p.publisher = cloud ? CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh, topic, 10)
-                        : CountedPublisher::advertise<sensor_msgs::LaserScan>(nh, topic, 10);
-    ROS_INFO("sim_node: robot '%s': a lidar of %zu rays on '%s', %s on %s at %g Hz", robot.c_str(), p.lidar.rayCount(),
-             p.frame.c_str(), cloud ? "sensor_msgs/PointCloud2" : "sensor_msgs/LaserScan",
+    if (l.entry.range) {
+      p.range = l.entry.range;
+      p.finder.emplace(l.entry.range->settings);
+      p.publisher = CountedPublisher::advertise<sensor_msgs::Range>(nh, topic, 10);
+    } else {
+      p.publisher = cloud ? CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh, topic, 10)
+                          : CountedPublisher::advertise<sensor_msgs::LaserScan>(nh, topic, 10);
+    }
+    ROS_INFO("sim_node: robot '%s': a %s of %zu rays on '%s', %s on %s at %g Hz", robot.c_str(),
+             p.range ? "range finder" : "lidar", p.lidar.rayCount(), p.frame.c_str(),
+             p.range ? "sensor_msgs/Range"
+             : cloud ? "sensor_msgs/PointCloud2"
+                     : "sensor_msgs/LaserScan",
              nh_.resolveName(topic).c_str(), p.rate);
     ports.push_back(std::move(p));
   }
@@ -169,7 +191,10 @@ void RangeSensors::removeRobot(std::size_t r) {
 
 void RangeSensors::restart() {
   for (std::vector<Port>& ports : robots_) {
-    for (Port& p : ports) p.lidar.restart();
+    for (Port& p : ports) {
+      p.lidar.restart();
+      if (p.finder) p.finder->restart();
+    }
   }
   for (std::vector<CameraPort>& ports : cameras_) {
     for (CameraPort& p : ports) p.camera.restart();
@@ -195,7 +220,11 @@ void RangeSensors::sample(const core::Simulation& sim, long long steps, const ro
     for (Port& p : robots_[r]) {
       if (steps % p.every != 0 || !p.publisher.listened()) continue;
       p.lidar.scan(sim.model(), sim.state, sensorPose(sim, r, p.link, p.X_LS, placed), skip_, ranges_);
-      if (p.lidar.settings().vertical_samples > 1) {
+      if (p.finder) {
+        const core::LidarSettings& s = p.lidar.settings();
+        p.publisher.publish(
+            rangeMessage(p.lidar, *p.range, p.finder->reading(ranges_, s.min_range, s.max_range), p.frame, stamp));
+      } else if (p.lidar.settings().vertical_samples > 1) {
         p.publisher.publish(cloudMessage(p.lidar, ranges_, p.frame, stamp));
       } else {
         p.publisher.publish(scanMessage(p.lidar, ranges_, p.rate, p.frame, stamp));

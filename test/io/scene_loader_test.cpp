@@ -720,13 +720,50 @@ TEST(GazeboDrive, TheSkidSteerPluginIsADiffDriveControllerOfTwoWheelsASide) {
   for (const auto& [element, why] : {std::pair{"<torque>-1</torque>", "<torque> = '-1': must be > 0 N*m"},
                                      std::pair{"<covariance_yaw>nan</covariance_yaw>", "<covariance_yaw> = 'nan'"}}) {
     io::UrdfText bad = text;
-    bad.xml.insert(bad.xml.find("<updateRate>"), element);  // first: the one read
+    const std::string plugin = "filename=\"libgazebo_ros_skid_steer_drive.so\">";
+    bad.xml.insert(bad.xml.find(plugin) + plugin.size(), element);  // first: the one read
     try {
       io::loadScene(config(""), [&] { return bad; });
       ADD_FAILURE() << element << " was accepted";
     } catch (const std::exception& e) {
       EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
     }
+  }
+}
+
+// ROSbot's sonars: a ray sensor with gazebo_ros_range is a range finder
+// (sensor_msgs/Range of its nearest ray); it was skipped.
+TEST(GazeboLidars, ARaySensorWithTheRangePluginIsARangeFinder) {
+  const io::UrdfText text = io::readUrdfFile("skid_steer.urdf", std::string(RBS_SOURCE_DIR) + "/test/ros/");
+  const io::SceneSetup s = io::loadScene(config(""), [&] { return text; });
+  ASSERT_EQ(s.sensors.at(0).lidars.size(), 1u);
+  const io::LidarEntry& l = s.sensors[0].lidars[0].entry;
+  ASSERT_TRUE(l.range.has_value());
+  EXPECT_EQ(l.range->field_of_view, 0.2);
+  EXPECT_EQ(l.range->settings.noise, 0.005);
+  EXPECT_FALSE(l.range->infrared);
+  EXPECT_EQ(l.topic, "range/front");
+  EXPECT_EQ(l.frame_id, "sonar_front");
+  EXPECT_EQ(l.rate, 10.0);  // the plugin's updateRate under the sensor's 20 Hz
+  EXPECT_EQ(l.settings.samples, 5);
+  EXPECT_EQ(l.settings.max_range, 2.0);
+  // The plugin's defaults: topic /range, fov 0.05; a radiation it has no type for is refused.
+  io::UrdfText bare = text;
+  for (const char* element : {"<topicName>range/front</topicName>", "<fov>0.2</fov>"}) {
+    bare.xml.erase(bare.xml.find(element), std::string(element).size());
+  }
+  const io::SceneSetup b = io::loadScene(config(""), [&] { return bare; });
+  EXPECT_EQ(b.sensors.at(0).lidars.at(0).entry.topic, "/range");
+  EXPECT_EQ(b.sensors[0].lidars[0].entry.range->field_of_view, 0.05);
+  io::UrdfText bad = text;
+  bad.xml.replace(bad.xml.find("ultrasound"), 10, "ultrasonic");
+  try {
+    io::loadScene(config(""), [&] { return bad; });
+    ADD_FAILURE() << "radiation 'ultrasonic' was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("<radiation> = 'ultrasonic': must be ultrasound or infrared"),
+              std::string::npos)
+        << e.what();
   }
 }
 

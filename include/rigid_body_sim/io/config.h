@@ -21,6 +21,7 @@
 #include "rigid_body_sim/core/devices/imu.h"
 #include "rigid_body_sim/core/devices/lidar.h"
 #include "rigid_body_sim/core/devices/odom_noise.h"
+#include "rigid_body_sim/core/devices/range_finder.h"
 #include "rigid_body_sim/core/devices/velocity_driver.h"
 
 namespace rigid_body_sim::io {
@@ -52,6 +53,14 @@ struct ImuEntry {
 /// of them; or a URDF's Gazebo `<sensor type="ray">`): it scans from `pose`
 /// in the link (a link lumped into another by a fixed joint will do, as a
 /// laser_link), its scans in the link's tf frame or `frame_id`.
+/// A range finder's reading from a lidar's rays (gazebo_ros_range): the
+/// nearest, published as sensor_msgs/Range.
+struct RangeEntry {
+  core::RangeFinderSettings settings;  ///< the reading's own noise (`gaussianNoise`)
+  double field_of_view = 0.05;         ///< rad, Range's field_of_view (`fov`)
+  bool infrared = false;               ///< Range's radiation_type: ULTRASOUND, or INFRARED
+};
+
 struct LidarEntry {
   core::LidarSettings settings;
   std::string link;  ///< the robot's link it is on (required)
@@ -59,9 +68,10 @@ struct LidarEntry {
   /// The scans' tf frame, after the robot's tf_prefix; "": the link's. As
   /// in Gazebo, ranges are measured from `pose` whatever frame they name.
   std::string frame_id;
-  std::string topic = "scan";  ///< under the robot's prefix in a world ("NAME/scan")
-  double rate = 10.0;          ///< Hz of sim time
-  std::string key = "lidar";   ///< its config key, for messages ("bodies[2].lidar[0]")
+  std::string topic = "scan";       ///< under the robot's prefix in a world ("NAME/scan")
+  double rate = 10.0;               ///< Hz of sim time
+  std::string key = "lidar";        ///< its config key, for messages ("bodies[2].lidar[0]")
+  std::optional<RangeEntry> range;  ///< a range finder: one sensor_msgs/Range of its rays, not a scan
 };
 
 /// A depth camera on a robot's link (`depth_camera`, `bodies[i].depth_camera`:

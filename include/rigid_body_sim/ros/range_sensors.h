@@ -3,7 +3,8 @@
 // its own, stamped on the node's clock in its frame: a lidar
 // (core/devices/lidar.h) publishes sensor_msgs/LaserScan (one fan) or
 // sensor_msgs/PointCloud2 (several fans: x, y, z of each return in the
-// sensor's frame) on its topic; a depth camera (core/devices/depth_camera.h)
+// sensor's frame) on its topic, or, a range finder's (gazebo_ros_range),
+// sensor_msgs/Range of its nearest ray (core/devices/range_finder.h); a depth camera (core/devices/depth_camera.h)
 // publishes TOPIC/depth/image_raw (sensor_msgs/Image, 32FC1 or 16UC1),
 // TOPIC/depth/camera_info and TOPIC/depth/points, as Gazebo's
 // openni_kinect plugin names them. What nobody subscribes to is not cast.
@@ -15,14 +16,17 @@
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/PointCloud2.h>
+#include <sensor_msgs/Range.h>
 
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
+#include "rigid_body_sim/core/devices/range_finder.h"
 #include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/io/sensor_mount.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
@@ -35,6 +39,10 @@ sensor_msgs::LaserScan scanMessage(const core::Lidar& lidar, const std::vector<d
 /// sensor_msgs/PointCloud2 of every finite return (x, y, z float32 in the sensor's frame, one row).
 sensor_msgs::PointCloud2 cloudMessage(const core::Lidar& lidar, const std::vector<double>& ranges,
                                       const std::string& frame, const ros::Time& stamp);
+
+/// sensor_msgs/Range of `reading` (m, REP 117's ±inf kept) from `lidar`'s rays as `range` describes it.
+sensor_msgs::Range rangeMessage(const core::Lidar& lidar, const io::RangeEntry& range, double reading,
+                                const std::string& frame, const ros::Time& stamp);
 
 /// sensor_msgs/Image of a depth image: 32FC1 in m (REP 117's ±inf kept), or
 /// `millimetres`: 16UC1 in mm, 0 where there is no depth (as OpenNI's).
@@ -73,6 +81,8 @@ class RangeSensors {
     long long every = 1;
     std::string frame;
     CountedPublisher publisher;
+    std::optional<io::RangeEntry> range;      ///< a range finder: its Range's fields
+    std::optional<core::RangeFinder> finder;  ///< and its reading
   };
   struct CameraPort {
     core::DepthCamera camera;
