@@ -30,6 +30,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/bodies/model_checks.cpp
   ${RBS_SOURCE_ROOT}/src/core/devices/depth_camera.cpp
   ${RBS_SOURCE_ROOT}/src/core/devices/lidar.cpp
+  ${RBS_SOURCE_ROOT}/src/core/devices/earth_sensors.cpp
   ${RBS_SOURCE_ROOT}/src/core/devices/odom_noise.cpp
   ${RBS_SOURCE_ROOT}/src/core/devices/range_finder.cpp
   ${RBS_SOURCE_ROOT}/src/core/devices/ray_cast.cpp

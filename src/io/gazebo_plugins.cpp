@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -40,11 +41,11 @@ ImuEntry pluginImu(const TiXmlElement& plugin, const std::string& link, const Un
   return imu;
 }
 
-/// hector_gazebo_ros_imu's `PREFIXNAME` (three numbers, one per axis, as
-/// hector reads them; one number is all three), if there, into `axes`;
-/// refused naming it unless each is ≥ 0.
+/// A hector plugin's `name` (three numbers, one per axis, as hector reads
+/// them; one number is all three), if there, into `axes`; refused naming it
+/// unless each is ≥ 0 (or any sign, `any_sign`).
 void hectorAxes(const Numbers& numbers, const TiXmlElement& plugin, const std::string& name,
-                std::array<double, 3>& axes) {
+                std::array<double, 3>& axes, bool any_sign = false) {
   const TiXmlElement* e = plugin.FirstChildElement(name.c_str());
   if (e == nullptr) return;
   std::istringstream words(e->GetText() != nullptr ? e->GetText() : "");
@@ -52,7 +53,7 @@ void hectorAxes(const Numbers& numbers, const TiXmlElement& plugin, const std::s
   for (std::string w; words >> w;) ++n;
   const std::vector<double> x = numbers.read(*e, name, n == 1 ? 1 : 3);
   for (double v : x) {
-    if (v < 0.0) numbers.fail(name, e->GetText(), "each must be >= 0");
+    if (v < 0.0 && !any_sign) numbers.fail(name, e->GetText(), "each must be >= 0");
   }
   axes = n == 1 ? std::array<double, 3>{x[0], x[0], x[0]} : std::array<double, 3>{x[0], x[1], x[2]};
 }
@@ -131,6 +132,93 @@ ImuEntry pluginHectorImu(const TiXmlElement& plugin, const Unread& unread) {
     unread("<plugin> libhector_gazebo_ros_imu.so <serviceName> (no calibration service here)", said);
   }
   return imu;
+}
+
+/// hector's error model of a reading (its SensorModel3): `offset`, `drift`,
+/// `driftFrequency` and `gaussianNoise`, each after `prefix` ("velocity":
+/// `velocityOffset`, ...) with a capital, one number or one per axis.
+core::SensorErrorSettings hectorError(const Numbers& numbers, const TiXmlElement& plugin, const std::string& prefix) {
+  const auto name = [&](std::string n) {
+    if (!prefix.empty()) n[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(n[0])));
+    return prefix + n;
+  };
+  std::array<double, 3> offset{}, drift{}, frequency{}, noise{};
+  frequency.fill(1.0 / 3600.0);
+  hectorAxes(numbers, plugin, name("offset"), offset, true);
+  hectorAxes(numbers, plugin, name("drift"), drift);
+  hectorAxes(numbers, plugin, name("driftFrequency"), frequency);
+  hectorAxes(numbers, plugin, name("gaussianNoise"), noise);
+  const auto vec = [](const std::array<double, 3>& a) { return core::Vec3(a[0], a[1], a[2]); };
+  return core::SensorErrorSettings{vec(offset), vec(drift), vec(frequency), vec(noise)};
+}
+
+/// What hector_gazebo_ros_gps and hector_gazebo_ros_magnetic read alike,
+/// into `e`: `bodyName` (none: the base), `frameId` (the link's),
+/// `updateRate` (none: e.rate as it is; 0: every step), and
+/// `referenceHeading` (deg) into `heading`.
+template <typename Entry>
+void readHectorSensor(const TiXmlElement& plugin, const Numbers& numbers, double& heading, Entry& e) {
+  e.key = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
+  e.link = childText(plugin, "bodyName", "");
+  e.frame_id = childFrame(plugin, "frameId", e.link, e.key);
+  numbers.rate(&plugin, "updateRate", e.rate);
+  numbers.at(&plugin, "referenceHeading", heading, Bounds{-360.0, 360.0, false, "deg"});
+}
+
+/// hector_gazebo_ros_gps's model plugin (Husky's, Jackal's): what
+/// readHectorSensor reads (4 Hz), `topicName` ("fix"), `velocityTopicName`
+/// ("fix_velocity"), `referenceLatitude`, `referenceLongitude` (49.9, 8.9
+/// deg), `referenceHeading` (0: x north, y west), `referenceAltitude` (0
+/// m), `status` and `service` (STATUS_FIX, SERVICE_GPS), the position's
+/// error model and the velocity's (`velocity...`). Without a world's
+/// spherical coordinates here, `useWorldSphericalCoordinates` is said; so
+/// are the dropouts and jumps, not run.
+GnssEntry pluginHectorGps(const TiXmlElement& plugin, const Unread& unread) {
+  GnssEntry g;
+  const Numbers numbers("<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">");
+  core::GeoReference& r = g.settings.reference;
+  readHectorSensor(plugin, numbers, r.heading, g);
+  numbers.at(&plugin, "referenceLatitude", r.latitude, Bounds{-89.0, 89.0, false, "deg"});
+  numbers.at(&plugin, "referenceLongitude", r.longitude, Bounds{-180.0, 180.0, false, "deg"});
+  numbers.at(&plugin, "referenceAltitude", r.altitude, Bounds{-1e5, 1e6, false, "m"});
+  g.topic = childTopic(plugin, "topicName", "fix", g.key);
+  g.velocity_topic = childTopic(plugin, "velocityTopicName", "fix_velocity", g.key);
+  g.settings.position = hectorError(numbers, plugin, "");
+  g.settings.velocity = hectorError(numbers, plugin, "velocity");
+  int status = 0, service = 1;
+  numbers.count(&plugin, "status", status, Bounds{-1.0, 2.0, false, "(a NavSatStatus status)"});
+  numbers.count(&plugin, "service", service, Bounds{0.0, 15.0, false, "(NavSatStatus service bits)"});
+  g.status = status;
+  g.service = service;
+  const std::string said = g.link.empty() ? attribute(plugin, "name") : g.link;
+  if (childFlag(plugin, "useWorldSphericalCoordinates", false, g.key)) {
+    unread("<plugin> libhector_gazebo_ros_gps.so <useWorldSphericalCoordinates> (no world's; its reference elements)",
+           said);
+  }
+  for (const char* element : {"delayedStartMaxS", "dropoutSet", "jumpSet"}) {
+    if (plugin.FirstChildElement(element) != nullptr) {
+      unread("<plugin> libhector_gazebo_ros_gps.so <" + std::string(element) + "> (no dropouts or jumps here)", said);
+    }
+  }
+  return g;
+}
+
+/// hector_gazebo_ros_magnetic's model plugin: what readHectorSensor reads
+/// (every step), `topicName` ("magnetic"), `magnitude` (1), `referenceHeading`
+/// (90: x east), `declination` (0°), `inclination` (60°),
+/// `useMagneticFieldMsgs` (false: geometry_msgs/Vector3Stamped).
+MagnetometerEntry pluginHectorMagnetic(const TiXmlElement& plugin) {
+  MagnetometerEntry m;
+  const Numbers numbers("<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">");
+  core::MagnetometerSettings& s = m.settings;
+  readHectorSensor(plugin, numbers, s.heading, m);
+  numbers.at(&plugin, "magnitude", s.magnitude, Bounds{0.0, 1e6, false, "(the field's unit)"});
+  numbers.at(&plugin, "declination", s.declination, Bounds{-180.0, 180.0, false, "deg"});
+  numbers.at(&plugin, "inclination", s.inclination, Bounds{-90.0, 90.0, false, "deg"});
+  m.topic = childTopic(plugin, "topicName", "magnetic", m.key);
+  m.field_message = childFlag(plugin, "useMagneticFieldMsgs", false, m.key);
+  s.error = hectorError(numbers, plugin, "");
+  return m;
 }
 
 /// The odometry of gazebo_ros_p3d's model plugin: `bodyName` on
@@ -285,7 +373,8 @@ bool readsModelPlugin(const TiXmlElement& plugin) {
   const std::string file = attribute(plugin, "filename");
   return file == "libgazebo_ros_imu.so" || file == "libgazebo_ros_p3d.so" || file == "libgazebo_ros_diff_drive.so" ||
          file == "libgazebo_ros_skid_steer_drive.so" || file == "libgazebo_ros_control.so" ||
-         file == "libhector_gazebo_ros_imu.so";
+         file == "libhector_gazebo_ros_imu.so" || file == "libhector_gazebo_ros_gps.so" ||
+         file == "libhector_gazebo_ros_magnetic.so";
 }
 
 void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out) {
@@ -297,6 +386,10 @@ void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevi
     out.controllers.push_back(pluginSkidSteer(plugin, unread));
   } else if (file == "libhector_gazebo_ros_imu.so") {  // without bodyName: the base
     out.imus.push_back(pluginHectorImu(plugin, unread));
+  } else if (file == "libhector_gazebo_ros_gps.so") {
+    out.gnss.push_back(pluginHectorGps(plugin, unread));
+  } else if (file == "libhector_gazebo_ros_magnetic.so") {
+    out.magnetometers.push_back(pluginHectorMagnetic(plugin));
   } else if (file == "libgazebo_ros_control.so") {  // the controllers' namespace; they run every step
     const std::string where = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
     if (!childText(plugin, "robotNamespace", "").empty()) {  // empty: the root, as none

@@ -105,6 +105,30 @@ void mountOdometry(const std::vector<OdometryEntry>& entries, const core::Articu
   }
 }
 
+/// The receivers and magnetometers of `entries` (E: GnssEntry or
+/// MagnetometerEntry, their settings checked by `check`) on their links, a
+/// rate capped at one a step as Gazebo's.
+template <typename E, typename Mounted, typename Check>
+void mountEarthSensors(const std::vector<E>& entries, const core::ArticulationModel& model, double dt,
+                       const Check& check, std::vector<Mounted>& out) {
+  for (const E& e : entries) {
+    checkTopic(e.topic, e.key);
+    Mounted mounted{e, -1, {}};
+    E& m = mounted.entry;
+    m.rate = e.rate > 0.0 ? std::min({e.rate, 1.0 / dt, core::ranges::kMaxPublishRate}) : 0.0;
+    if (m.rate != 0.0) checkRate(m.rate, e.key);
+    try {
+      check(m.settings, e.key);
+    } catch (const std::invalid_argument& err) {
+      throw ConfigError(err.what());
+    }
+    if (m.link.empty()) m.link = model.links[0].name;
+    if (m.frame_id.empty()) m.frame_id = m.link;
+    mount(model, m.link, core::Pose{}, e.key, mounted.link, mounted.X_LS);
+    out.push_back(std::move(mounted));
+  }
+}
+
 /// "12 MiB" (rounded up).
 std::string mib(std::uintmax_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
 
@@ -191,6 +215,9 @@ RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup
       mountLidars(sensors->lidars, model, memory, out);
       mountCameras(sensors->cameras, model, memory, out);
       mountOdometry(sensors->odometry, model, dt, from_markup, out.odometry);
+      mountEarthSensors(sensors->gnss, model, dt, core::validateGnss, out.gnss);
+      for (const GnssEntry& g : sensors->gnss) checkTopic(g.velocity_topic, g.key);
+      mountEarthSensors(sensors->magnetometers, model, dt, core::validateMagnetometer, out.magnetometers);
     }
   } catch (...) {
     memory.used = before;  // refused: none of this robot's devices is counted

@@ -175,7 +175,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     const std::string& frame_prefix = robot_publisher_->robots()[r].frame_prefix;
     range_sensors_->addRobot(name, prefix, frame_prefix, start_sensors_[r].lidars, start_sensors_[r].cameras);
     link_imus_->addRobot(sim_, r, prefix, frame_prefix, start_sensors_[r].imus);
-    link_odometry_->addRobot(name, prefix, frame_prefix, start_sensors_[r].odometry);
+    link_odometry_->addRobot(name, prefix, frame_prefix, start_sensors_[r]);
   }
   start_sensors_.clear();
   services_ = {
@@ -226,7 +226,7 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
   range_sensors_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.lidars, spawn.sensors.cameras);
   link_imus_->addRobot(sim_, r, prefix, spawn.frame_prefix, spawn.sensors.imus);
-  link_odometry_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.odometry);
+  link_odometry_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors);
 }
 
 void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {

@@ -70,6 +70,13 @@ std::vector<TopicClaims::Claim> robotTopics(const std::string& prefix, const std
     for (const std::string& t : topics) out.push_back({t, c.entry.key});
   }
   for (const io::RobotImu& m : sensors.imus) out.push_back({deviceTopic(prefix, m.entry.topic), m.entry.key});
+  for (const io::RobotGnss& g : sensors.gnss) {
+    out.push_back({deviceTopic(prefix, g.entry.topic), g.entry.key});
+    out.push_back({deviceTopic(prefix, g.entry.velocity_topic), g.entry.key + "'s velocity"});
+  }
+  for (const io::RobotMagnetometer& m : sensors.magnetometers) {
+    out.push_back({deviceTopic(prefix, m.entry.topic), m.entry.key});
+  }
   for (const io::RobotOdometry& o : sensors.odometry) {
     out.push_back({deviceTopic(prefix, o.entry.topic), o.entry.key});
     if (!o.entry.ground_truth.empty()) {

@@ -552,6 +552,94 @@ TEST(GazeboImus, HectorsImuPluginIsAnImuWithItsNoiseAndDrift) {
   }
 }
 
+// Husky's and Jackal's GPS (hector_gazebo_ros_gps) and a magnetometer
+// (hector_gazebo_ros_magnetic), as their markup gives them: both were
+// skipped, so neither robot had a fix.
+TEST(GazeboEarthSensors, HectorsGpsAndMagnetometerAreReadWithTheirReferencesAndErrors) {
+  const std::string jackal =
+      "<gazebo><plugin filename='libhector_gazebo_ros_gps.so' name='gps_controller'><updateRate>40</updateRate>"
+      "<robotNamespace>/</robotNamespace><bodyName>laser_link</bodyName><frameId>base_link</frameId>"
+      "<topicName>/navsat/fix</topicName><velocityTopicName>/navsat/vel</velocityTopicName>"
+      "<referenceLatitude>49.9</referenceLatitude><referenceLongitude>8.9</referenceLongitude>"
+      "<referenceHeading>90</referenceHeading><referenceAltitude>0</referenceAltitude>"
+      "<drift>0.0001 0.0001 0.0001</drift><velocityGaussianNoise>0.05</velocityGaussianNoise>"
+      "<offset>0 -1 0</offset></plugin></gazebo>"
+      "<gazebo><plugin filename='libhector_gazebo_ros_magnetic.so' name='mag'><declination>2.5</declination>"
+      "<magnitude>4.8e-5</magnitude><useMagneticFieldMsgs>true</useMagneticFieldMsgs>"
+      "<gaussianNoise>1e-7</gaussianNoise></plugin></gazebo>";
+  const io::SceneSetup s = io::loadScene(config(""), [&] { return laserRobot(jackal); });
+  ASSERT_EQ(s.sensors.at(0).gnss.size(), 1u);
+  const io::RobotGnss& g = s.sensors[0].gnss[0];
+  EXPECT_EQ(g.link, 0);  // laser_link, lumped into base_link
+  EXPECT_EQ(g.X_LS.translation, Vec3(0.1, 0.0, 0.2));
+  EXPECT_EQ(g.entry.frame_id, "base_link");
+  EXPECT_EQ(g.entry.topic, "/navsat/fix");
+  EXPECT_EQ(g.entry.velocity_topic, "/navsat/vel");
+  EXPECT_EQ(g.entry.rate, 40.0);
+  EXPECT_EQ(g.entry.status, 0);
+  EXPECT_EQ(g.entry.service, 1);
+  const core::GnssSettings& c = g.entry.settings;
+  EXPECT_EQ(c.reference.latitude, 49.9);
+  EXPECT_EQ(c.reference.longitude, 8.9);
+  EXPECT_EQ(c.reference.heading, 90.0);
+  EXPECT_EQ(c.position.drift, Vec3::Constant(0.0001));
+  EXPECT_EQ(c.position.offset, Vec3(0.0, -1.0, 0.0));  // an offset may be negative
+  EXPECT_EQ(c.position.drift_frequency, Vec3::Constant(1.0 / 3600.0));
+  EXPECT_EQ(c.velocity.gaussian_noise, Vec3::Constant(0.05));
+  ASSERT_EQ(s.sensors[0].magnetometers.size(), 1u);
+  const io::RobotMagnetometer& m = s.sensors[0].magnetometers[0];
+  EXPECT_EQ(m.link, 0);  // no bodyName: the base
+  EXPECT_EQ(m.entry.frame_id, "base_link");
+  EXPECT_EQ(m.entry.topic, "magnetic");
+  EXPECT_EQ(m.entry.rate, 0.0);  // every step
+  EXPECT_TRUE(m.entry.field_message);
+  EXPECT_EQ(m.entry.settings.heading, 90.0);  // hector's: x east
+  EXPECT_EQ(m.entry.settings.inclination, 60.0);
+  EXPECT_EQ(m.entry.settings.declination, 2.5);
+  EXPECT_EQ(m.entry.settings.magnitude, 4.8e-5);
+  EXPECT_EQ(m.entry.settings.error.gaussian_noise, Vec3::Constant(1e-7));
+  // hector's defaults: fix and fix_velocity on the base at 4 Hz, heading 0.
+  const io::SceneSetup bare = io::loadScene(config(""), [&] {
+    return laserRobot(
+        "<gazebo><plugin filename='libhector_gazebo_ros_gps.so' name='g'><dropoutSet>1</dropoutSet>"
+        "</plugin></gazebo>");
+  });
+  const io::GnssEntry& b = bare.sensors.at(0).gnss.at(0).entry;
+  EXPECT_EQ(b.topic, "fix");
+  EXPECT_EQ(b.velocity_topic, "fix_velocity");
+  EXPECT_EQ(b.rate, 4.0);
+  EXPECT_EQ(b.frame_id, "base_link");
+  EXPECT_EQ(b.settings.reference.heading, 0.0);
+  std::string notes;
+  for (const std::string& n : bare.notes) notes += n;
+  EXPECT_NE(notes.find("libhector_gazebo_ros_gps.so <dropoutSet> (no dropouts or jumps here)"), std::string::npos)
+      << notes;
+  // What no receiver can have is refused, naming the element.
+  for (const auto& [element, why] :
+       {std::pair{"<referenceLatitude>95</referenceLatitude>", "<referenceLatitude> = '95'"},
+        std::pair{"<drift>0.1 -0.1 0.1</drift>", "<drift> = '0.1 -0.1 0.1': each must be >= 0"},
+        std::pair{"<velocityDriftFrequency>x</velocityDriftFrequency>", "<velocityDriftFrequency> = 'x'"},
+        std::pair{"<status>7</status>", "<status> = '7'"},
+        std::pair{"<bodyName>nowhere</bodyName>", "has no link 'nowhere'"}}) {
+    try {
+      io::loadScene(config(""), [&] {
+        return laserRobot("<gazebo><plugin name='h' filename='libhector_gazebo_ros_gps.so'>" + std::string(element) +
+                          "</plugin></gazebo>");
+      });
+      ADD_FAILURE() << element << " was accepted";
+    } catch (const std::exception& e) {
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(io::loadScene(config(""),
+                             [&] {
+                               return laserRobot(
+                                   "<gazebo><plugin name='h' filename='libhector_gazebo_ros_magnetic.so'>"
+                                   "<inclination>100</inclination></plugin></gazebo>");
+                             }),
+               std::exception);
+}
+
 TEST(GazeboOdometry, TheP3dPluginIsALinksOdometryWithItsNoise) {
   const std::string p3d =
       "<gazebo><plugin name='truth' filename='libgazebo_ros_p3d.so'><bodyName>base_link</bodyName>"

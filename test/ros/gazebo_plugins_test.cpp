@@ -7,13 +7,17 @@
 // centripetal acceleration and gravity as REP 145 says. And a four-wheeled
 // base under gazebo_ros_skid_steer_drive (skid_steer.test): still at no
 // command (its hector IMU reading +g), forward and backward at the
-// commanded speed, its sonar (gazebo_ros_range) reading a crate ahead.
+// commanded speed, its sonar (gazebo_ros_range) reading a crate ahead,
+// its GPS (hector_gazebo_ros_gps) where the truth is, its magnetometer
+// (hector_gazebo_ros_magnetic) pointing north.
 #include <geometry_msgs/Twist.h>
+#include <geometry_msgs/Vector3Stamped.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
+#include <sensor_msgs/NavSatFix.h>
 #include <sensor_msgs/Range.h>
 
 #include <algorithm>
@@ -105,9 +109,22 @@ TEST(GazeboSkidSteer, AFourWheeledBaseHoldsStillThenDrivesForwardAndBackAtTheCom
   std::vector<sensor_msgs::Range> sonar;
   ros::Subscriber sonar_sub = nh.subscribe<sensor_msgs::Range>(
       "/range/front", 1000, [&](const sensor_msgs::Range::ConstPtr& m) { sonar.push_back(*m); });
+  std::vector<sensor_msgs::NavSatFix> fixes;
+  ros::Subscriber fix_sub = nh.subscribe<sensor_msgs::NavSatFix>(
+      "/navsat/fix", 1000, [&](const sensor_msgs::NavSatFix::ConstPtr& m) { fixes.push_back(*m); });
+  std::vector<geometry_msgs::Vector3Stamped> fix_velocity, field;
+  ros::Subscriber fix_velocity_sub = nh.subscribe<geometry_msgs::Vector3Stamped>(
+      "/navsat/vel", 1000, [&](const geometry_msgs::Vector3Stamped::ConstPtr& m) { fix_velocity.push_back(*m); });
+  ros::Subscriber field_sub = nh.subscribe<geometry_msgs::Vector3Stamped>(
+      "/magnetic", 1000, [&](const geometry_msgs::Vector3Stamped::ConstPtr& m) { field.push_back(*m); });
   ros::Publisher cmd_vel = nh.advertise<geometry_msgs::Twist>("/cmd_vel", 10);
   ASSERT_TRUE(spinUntil([&] { return cmd_vel.getNumSubscribers() > 0; }, 30.0));  // the drive listens
-  ASSERT_TRUE(spinUntil([&] { return !odom.empty() && !truth.empty() && !sonar.empty(); }, 30.0));
+  ASSERT_TRUE(spinUntil(
+      [&] {
+        return !odom.empty() && !truth.empty() && !sonar.empty() && !fixes.empty() && !fix_velocity.empty() &&
+               !field.empty();
+      },
+      30.0));
   EXPECT_EQ(odom.back().pose.covariance[7], 3e-4);  // covariance_y
   // The sonar sees nothing yet: REP 117's +inf, with the plugin's fields.
   EXPECT_TRUE(std::isinf(sonar.back().range) && sonar.back().range > 0.0f) << sonar.back().range;
@@ -163,6 +180,41 @@ TEST(GazeboSkidSteer, AFourWheeledBaseHoldsStillThenDrivesForwardAndBackAtTheCom
                 odom.back().twist.twist.linear.x, end.pose.pose.position.y);
   };
   drive(0.3);
+  // The GPS (40 Hz, Husky's: heading 90°, x east) where the truth is: its
+  // last fix against the truth of the same stamp, a degree being 111227.12
+  // m of latitude and 71844.33 m of longitude at 49.9° (Wikipedia's
+  // "Latitude" and "Longitude" series for WGS84); its velocity in hector's
+  // north, west, up: the base's +0.3 m/s east is -0.3 west.
+  {
+    ASSERT_GE(fixes.size(), 2u);
+    EXPECT_NEAR((fixes.back().header.stamp - fixes[fixes.size() - 2].header.stamp).toSec(), 0.025, 1e-6);
+    EXPECT_EQ(fixes.back().header.frame_id, "chassis");
+    EXPECT_EQ(fixes.back().status.service, sensor_msgs::NavSatStatus::SERVICE_GPS);
+    bool compared = false;
+    for (auto f = fixes.rbegin(); f != fixes.rend() && !compared; ++f) {
+      for (const nav_msgs::Odometry& t : truth) {
+        if (t.header.stamp != f->header.stamp) continue;
+        EXPECT_NEAR((f->longitude - 8.9) * 71844.33, t.pose.pose.position.x, 0.005) << "m east";
+        EXPECT_NEAR((f->latitude - 49.9) * 111227.12, t.pose.pose.position.y, 0.005) << "m north";
+        EXPECT_NEAR(f->altitude, t.pose.pose.position.z, 0.005);
+        std::printf("skid_steer: GPS %.4f m east, %.4f m north; truth %.4f, %.4f\n", (f->longitude - 8.9) * 71844.33,
+                    (f->latitude - 49.9) * 111227.12, t.pose.pose.position.x, t.pose.pose.position.y);
+        compared = true;
+        break;
+      }
+    }
+    EXPECT_TRUE(compared) << "no fix and truth of one stamp";
+    EXPECT_NEAR(fix_velocity.back().vector.x, 0.0, 0.015);
+    EXPECT_NEAR(fix_velocity.back().vector.y, -0.3, 0.015);
+    EXPECT_EQ(fixes.back().position_covariance_type, sensor_msgs::NavSatFix::COVARIANCE_TYPE_DIAGONAL_KNOWN);
+    EXPECT_NEAR(fixes.back().position_covariance[0], 1e-8, 1e-20);  // drift²
+    // The magnetometer (10 Hz; hector's heading 90°, inclination 60°), the
+    // base facing east: north is its +y, the field dipping down at 60°.
+    EXPECT_NEAR((field.back().header.stamp - field[field.size() - 2].header.stamp).toSec(), 0.1, 1e-6);
+    EXPECT_NEAR(field.back().vector.x, 0.0, 0.02);
+    EXPECT_NEAR(field.back().vector.y, 0.5, 0.02);
+    EXPECT_NEAR(field.back().vector.z, -std::sqrt(3.0) / 2.0, 0.02);
+  }
   drive(-0.3);
   drive(0.0);  // the plugin holds its last command: stopped before the crate comes
   // A crate (urdf/box.urdf, 0.4 m long) put 1.5 m ahead: the sonar, 0.3 m

@@ -18,6 +18,7 @@
 #include "rigid_body_sim/core/controllers/diff_drive.h"
 #include "rigid_body_sim/core/controllers/joint_control.h"
 #include "rigid_body_sim/core/devices/depth_camera.h"
+#include "rigid_body_sim/core/devices/earth_sensors.h"
 #include "rigid_body_sim/core/devices/imu.h"
 #include "rigid_body_sim/core/devices/lidar.h"
 #include "rigid_body_sim/core/devices/odom_noise.h"
@@ -104,6 +105,34 @@ struct OdometryEntry {
   std::string key = "odom_noise";                ///< for messages
 };
 
+/// A GNSS receiver on a robot's link (hector_gazebo_ros_gps): its fix as
+/// sensor_msgs/NavSatFix on `topic` and its velocity (north, west, up) as
+/// geometry_msgs/Vector3Stamped on `velocity_topic`, both under the
+/// robot's prefix, headed `frame_id`.
+struct GnssEntry {
+  core::GnssSettings settings;
+  std::string link;      ///< "": the base
+  std::string frame_id;  ///< after the robot's tf_prefix; "": the link's
+  std::string topic = "fix", velocity_topic = "fix_velocity";
+  double rate = 4.0;  ///< Hz of sim time
+  int status = 0;     ///< sensor_msgs/NavSatStatus's status (0: STATUS_FIX)
+  int service = 1;    ///< and its service (1: SERVICE_GPS)
+  std::string key = "gps";
+};
+
+/// A magnetometer on a robot's link (hector_gazebo_ros_magnetic): the
+/// Earth's field in the link's axes as geometry_msgs/Vector3Stamped, or
+/// sensor_msgs/MagneticField, on `topic` under the robot's prefix.
+struct MagnetometerEntry {
+  core::MagnetometerSettings settings;
+  std::string link;      ///< "": the base
+  std::string frame_id;  ///< after the robot's tf_prefix; "": the link's
+  std::string topic = "magnetic";
+  double rate = 0.0;           ///< Hz of sim time; 0: every step
+  bool field_message = false;  ///< sensor_msgs/MagneticField, not Vector3Stamped (`useMagneticFieldMsgs`)
+  std::string key = "magnetometer";
+};
+
 /// A robot's joints at the start (`initial.joint_positions` and
 /// `initial.joint_velocities`: maps from joint name to rad or m, rad/s or
 /// m/s), in the file's order. Applied by io::startJoints (joint_start.h).
@@ -184,6 +213,8 @@ struct RobotDevices {
   std::vector<LidarEntry> lidars;
   std::vector<DepthCameraEntry> cameras;
   std::vector<OdometryEntry> odometry;
+  std::vector<GnssEntry> gnss;
+  std::vector<MagnetometerEntry> magnetometers;
   /// The markup's drives (gazebo_ros_diff_drive) as DiffDriveControllers,
   /// run beside the config's `controllers`.
   std::vector<ControllerEntry> controllers;

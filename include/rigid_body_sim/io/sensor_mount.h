@@ -43,12 +43,27 @@ struct RobotOdometry {
   core::Pose X_LS;
 };
 
+/// A GNSS receiver or a magnetometer on moving link `link`, at X_LS in it
+/// (entry.link: the link named, entry.frame_id the frame its messages name).
+struct RobotGnss {
+  GnssEntry entry;
+  int link = 0;
+  core::Pose X_LS;
+};
+struct RobotMagnetometer {
+  MagnetometerEntry entry;
+  int link = 0;
+  core::Pose X_LS;
+};
+
 /// Every sensor of one robot, on its links.
 struct RobotSensors {
   std::vector<RobotImu> imus;
   std::vector<RobotLidar> lidars;
   std::vector<RobotCamera> cameras;
   std::vector<RobotOdometry> odometry;
+  std::vector<RobotGnss> gnss;
+  std::vector<RobotMagnetometer> magnetometers;
   std::uintmax_t bytes = 0;  ///< what its lidars and cameras may hold (core::lidarBytes, core::depthCameraBytes)
 };
 

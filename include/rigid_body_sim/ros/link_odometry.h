@@ -1,9 +1,14 @@
-// The odometry of robots' links in the node: a robot's `odom_noise` (its
-// base on `odom` with the noise, exact on `ground_truth`) and Gazebo's
-// gazebo_ros_p3d, each a nav_msgs/Odometry of its link at its rate of sim
-// time (core/devices/odom_noise.h, docs/physics.md §10.2): the pose in the
-// world frame, the twist in the link's axes (child_frame_id), stamped on
-// the node's clock. The noise is drawn whether or not anyone listens.
+// What robots' links report of where they are, each at its rate of sim
+// time, stamped on the node's clock:
+// - odometry: a robot's `odom_noise` (its base on `odom` with the noise,
+//   exact on `ground_truth`) and Gazebo's gazebo_ros_p3d, each a
+//   nav_msgs/Odometry of its link (core/devices/odom_noise.h,
+//   docs/physics.md §10.2): the pose in the world frame, the twist in the
+//   link's axes (child_frame_id);
+// - hector's GNSS receivers (sensor_msgs/NavSatFix and its velocity,
+//   geometry_msgs/Vector3Stamped) and magnetometers (Vector3Stamped or
+//   sensor_msgs/MagneticField), core/devices/earth_sensors.h, §10.9.
+// The noise is drawn whether or not anyone listens.
 #pragma once
 
 #include <ros/ros.h>
@@ -15,6 +20,7 @@
 #include <vector>
 
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
+#include "rigid_body_sim/core/devices/earth_sensors.h"
 #include "rigid_body_sim/core/devices/odom_noise.h"
 #include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/io/sensor_mount.h"
@@ -27,35 +33,66 @@ class LinkOdometry {
   /// Each odometry of rate 0 at `publish_rate` Hz; `world_frame` heads every message.
   LinkOdometry(const ros::NodeHandle& nh, double dt, double publish_rate, std::string world_frame)
       : nh_(nh), dt_(dt), publish_rate_(publish_rate), world_frame_(std::move(world_frame)) {}
-  /// Robot r's odometry: topics under `prefix` (an absolute topic as it
-  /// is), child frames after `frame_prefix`.
+  /// Robot r's odometry, receivers and magnetometers of `sensors`: topics
+  /// under `prefix` (an absolute topic as it is), frames after `frame_prefix`.
   void addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
-                const std::vector<io::RobotOdometry>& odometry);
+                const io::RobotSensors& sensors);
   /// Robot r deleted: its topics close; the later robots move down by one.
   void removeRobot(std::size_t r) {
     robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r));
     handles_.erase(handles_.begin() + static_cast<std::ptrdiff_t>(r));  // after what it opened
   }
-  /// After a reset: each drift from zero.
+  /// After a reset: each drift from zero, each noise from its seed.
   void restart();
   /// The reports due at step `steps` of `sim`'s state (sim time t), stamped `stamp`.
   void publish(const core::Simulation& sim, long long steps, double t, const ros::Time& stamp);
 
  private:
-  struct Port {
+  /// Where a report comes from and when: a frame at X_LS in moving link
+  /// `link`, every `every` steps, its last at `last` s of sim time (< 0:
+  /// none yet).
+  struct Schedule {
     int link = 0;
-    core::Pose X_LS;  ///< the reported frame in that link
+    core::Pose X_LS;
     long long every = 1;
+    double last = -1.0;
+    /// The s of sim time its noise moves over, from its last report to `t`.
+    double elapsed(double t, double dt) {
+      const double e = last < 0.0 ? static_cast<double>(every) * dt : t - last;
+      last = t;
+      return e;
+    }
+  };
+  struct Port {
+    Schedule at;
     std::string child;  ///< the link's frame: the twist's axes
     std::optional<core::OdomNoise> noise;
-    double last = 0.0;  ///< s of sim time of its last report (the drift's)
     CountedPublisher odom, truth;
+  };
+  struct FixPort {
+    Schedule at;
+    core::Gnss gnss;
+    std::string frame;
+    int status = 0, service = 1;
+    CountedPublisher fix, velocity;
+  };
+  struct FieldPort {
+    Schedule at;
+    core::Magnetometer magnetometer;
+    std::string frame;
+    bool field_message = false;
+    CountedPublisher field;
+  };
+  struct RobotPorts {
+    std::vector<Port> odometry;
+    std::vector<FixPort> fixes;
+    std::vector<FieldPort> fields;
   };
 
   ros::NodeHandle nh_;
   double dt_, publish_rate_;
   std::string world_frame_;
-  std::vector<std::vector<Port>> robots_;
+  std::vector<RobotPorts> robots_;
   std::vector<std::shared_ptr<ros::NodeHandle>> handles_;  ///< per robot, its own (ownHandle)
   core::ArticulationKinematics kin_;                       ///< reused by every report
 };
