@@ -223,6 +223,7 @@ RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
         own.at(plugin, "min_range", c.min_range);
         own.at(plugin, "max_range", c.max_range);
         own.at(plugin, "gaussianNoise", c.noise);
+        l.organized = childFlag(*plugin, "organize_cloud", false, l.key + " <plugin>");
       }
       if (kind == 5) l.range = rangeFinder(*plugin, l);
       out.lidars.push_back(std::move(l));

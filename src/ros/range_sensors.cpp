@@ -6,43 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <tuple>
 
 #include "rigid_body_sim/ros/topic_claims.h"
 
 namespace rigid_body_sim::node {
-
-namespace {
-
-/// A PointCloud2 of x, y, z (float32, one row) of `point(k)` for each finite `values[k]`.
-template <class PointOf>
-sensor_msgs::PointCloud2 xyzCloud(const std::vector<double>& values, const std::string& frame, const ros::Time& stamp,
-                                  const PointOf& point) {
-  sensor_msgs::PointCloud2 m;
-  m.header.stamp = stamp;
-  m.header.frame_id = frame;
-  sensor_msgs::PointCloud2Modifier modifier(m);
-  modifier.setPointCloud2FieldsByString(1, "xyz");
-  const auto finite =
-      static_cast<std::size_t>(std::count_if(values.begin(), values.end(), [](double r) { return std::isfinite(r); }));
-  modifier.resize(finite);
-  m.height = 1;
-  m.width = static_cast<uint32_t>(finite);
-  m.is_dense = true;
-  sensor_msgs::PointCloud2Iterator<float> x(m, "x"), y(m, "y"), z(m, "z");
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    if (!std::isfinite(values[k])) continue;
-    const core::Vec3 p = point(k);
-    *x = static_cast<float>(p.x());
-    *y = static_cast<float>(p.y());
-    *z = static_cast<float>(p.z());
-    ++x;
-    ++y;
-    ++z;
-  }
-  return m;
-}
-
-}  // namespace
 
 sensor_msgs::LaserScan scanMessage(const core::Lidar& lidar, const std::vector<double>& ranges, double rate,
                                    const std::string& frame, const ros::Time& stamp) {
@@ -74,9 +43,55 @@ sensor_msgs::Range rangeMessage(const core::Lidar& lidar, const io::RangeEntry& 
   return m;
 }
 
-sensor_msgs::PointCloud2 cloudMessage(const core::Lidar& lidar, const std::vector<double>& ranges,
+sensor_msgs::PointCloud2 cloudMessage(const core::Lidar& lidar, const std::vector<double>& ranges, bool organized,
                                       const std::string& frame, const ros::Time& stamp) {
-  return xyzCloud(ranges, frame, stamp, [&](std::size_t k) { return ranges[k] * lidar.direction(k); });
+  const auto samples = static_cast<std::size_t>(lidar.settings().samples);
+  const auto fans = static_cast<std::size_t>(lidar.settings().vertical_samples);
+  const std::size_t met =
+      static_cast<std::size_t>(std::count_if(ranges.begin(), ranges.end(), [](double r) { return std::isfinite(r); }));
+  // The Velodyne plugin's layout: its fields at its offsets, the rays of
+  // one azimuth bottom fan (ring 0) to top, azimuth by azimuth.
+  sensor_msgs::PointCloud2 m;
+  m.header.stamp = stamp;
+  m.header.frame_id = frame;
+  m.point_step = 22;
+  for (const auto& [name, offset, type] : {std::tuple{"x", 0, sensor_msgs::PointField::FLOAT32},
+                                           {"y", 4, sensor_msgs::PointField::FLOAT32},
+                                           {"z", 8, sensor_msgs::PointField::FLOAT32},
+                                           {"intensity", 12, sensor_msgs::PointField::FLOAT32},
+                                           {"ring", 16, sensor_msgs::PointField::UINT16},
+                                           {"time", 18, sensor_msgs::PointField::FLOAT32}}) {
+    sensor_msgs::PointField f;
+    f.name = name;
+    f.offset = static_cast<uint32_t>(offset);
+    f.datatype = type;
+    f.count = 1;
+    m.fields.push_back(f);
+  }
+  m.data.assign(m.point_step * (organized ? samples * fans : met), 0);
+  uint8_t* out = m.data.data();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (std::size_t i = 0; i < samples; ++i) {
+    for (std::size_t j = 0; j < fans; ++j) {
+      const std::size_t k = j * samples + i;
+      const bool hit = std::isfinite(ranges[k]);
+      if (!hit && !organized) continue;
+      const core::Vec3 p = hit ? core::Vec3(ranges[k] * lidar.direction(k)) : core::Vec3::Zero();
+      const std::array<float, 4> xyzi{hit ? static_cast<float>(p.x()) : nan, hit ? static_cast<float>(p.y()) : nan,
+                                      hit ? static_cast<float>(p.z()) : nan, hit ? 0.0F : nan};
+      const auto ring = static_cast<uint16_t>(j);
+      const float time = 0.0F;  // every ray of a scan at one instant
+      std::memcpy(out, xyzi.data(), 16);
+      std::memcpy(out + 16, &ring, 2);
+      std::memcpy(out + 18, &time, 4);
+      out += m.point_step;
+    }
+  }
+  m.width = static_cast<uint32_t>(organized ? fans : met);
+  m.height = static_cast<uint32_t>(organized ? samples : 1);
+  m.row_step = m.point_step * m.width;
+  m.is_dense = !organized;
+  return m;
 }
 
 sensor_msgs::Image depthImageMessage(const core::DepthCamera& camera, const std::vector<double>& depth,
@@ -125,12 +140,30 @@ sensor_msgs::CameraInfo cameraInfoMessage(const core::DepthCamera& camera, const
 sensor_msgs::PointCloud2 depthCloudMessage(const core::DepthCamera& camera, const std::vector<double>& depth,
                                            const std::string& frame, const ros::Time& stamp) {
   const auto width = static_cast<std::size_t>(camera.settings().width);
-  return xyzCloud(depth, frame, stamp, [&](std::size_t k) {
+  const auto height = static_cast<std::size_t>(camera.settings().height);
+  sensor_msgs::PointCloud2 m;
+  m.header.stamp = stamp;
+  m.header.frame_id = frame;
+  sensor_msgs::PointCloud2Modifier modifier(m);
+  modifier.setPointCloud2FieldsByString(1, "xyz");
+  modifier.resize(width * height);
+  // Organized as the image, as gazebo_ros_openni_kinect's: a pixel that
+  // sees nothing within range is NaN.
+  m.width = static_cast<uint32_t>(width);
+  m.height = static_cast<uint32_t>(height);
+  m.row_step = m.point_step * m.width;
+  m.is_dense = false;
+  sensor_msgs::PointCloud2Iterator<float> x(m, "x"), y(m, "y"), z(m, "z");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (std::size_t k = 0; k < depth.size(); ++k, ++x, ++y, ++z) {
     const std::size_t row = k / width;  // whole rows above this pixel
-    const double u = static_cast<double>(k - row * width), v = static_cast<double>(row);
-    return core::Vec3((u - camera.cx()) * depth[k] / camera.focal(), (v - camera.cy()) * depth[k] / camera.focal(),
-                      depth[k]);
-  });
+    const double u = static_cast<double>(k - row * width), v = static_cast<double>(row), d = depth[k];
+    const bool seen = std::isfinite(d);
+    *x = seen ? static_cast<float>((u - camera.cx()) * d / camera.focal()) : nan;
+    *y = seen ? static_cast<float>((v - camera.cy()) * d / camera.focal()) : nan;
+    *z = seen ? static_cast<float>(d) : nan;
+  }
+  return m;
 }
 
 void RangeSensors::addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
@@ -158,7 +191,8 @@ void RangeSensors::addRobot(const std::string& robot, const std::string& prefix,
   for (const io::RobotLidar& l : lidars) {
     bytes_ += core::lidarBytes(l.entry.settings);
     const std::string& frame = l.entry.frame_id.empty() ? l.entry.link : l.entry.frame_id;
-    Port p{core::Lidar(l.entry.settings), l.link, l.X_LS, l.entry.rate, 1, frame_prefix + frame, {}, {}, {}};
+    Port p{core::Lidar(l.entry.settings), l.link, l.X_LS, l.entry.rate, 1,
+           frame_prefix + frame,          {},     {},     {},           l.entry.organized};
     p.every = std::max(1LL, std::llround(1.0 / (l.entry.rate * dt_)));
     const bool cloud = l.entry.settings.vertical_samples > 1;
     const std::string topic = deviceTopic(prefix, l.entry.topic);
@@ -225,7 +259,7 @@ void RangeSensors::sample(const core::Simulation& sim, long long steps, const ro
         p.publisher.publish(
             rangeMessage(p.lidar, *p.range, p.finder->reading(ranges_, s.min_range, s.max_range), p.frame, stamp));
       } else if (p.lidar.settings().vertical_samples > 1) {
-        p.publisher.publish(cloudMessage(p.lidar, ranges_, p.frame, stamp));
+        p.publisher.publish(cloudMessage(p.lidar, ranges_, p.organized, p.frame, stamp));
       } else {
         p.publisher.publish(scanMessage(p.lidar, ranges_, p.rate, p.frame, stamp));
       }

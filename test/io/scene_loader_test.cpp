@@ -271,7 +271,8 @@ TEST(GazeboLidars, ARaySensorWithARosPluginIsALidarWithItsMarkupsSettings) {
       "<min_angle>-0.26</min_angle><max_angle>0.26</max_angle></vertical></scan><range><min>0.3</min><max>100</max>"
       "</range></ray><plugin name='v' filename='libgazebo_ros_velodyne_gpu_laser.so'><topicName>velodyne_points"
       "</topicName><min_range>0.9</min_range><max_range>130</max_range><gaussianNoise>0.008</gaussianNoise>"
-      "</plugin></sensor></gazebo><gazebo reference='base_link'><sensor type='camera' name='cam'/></gazebo>";
+      "<organize_cloud>true</organize_cloud></plugin></sensor></gazebo><gazebo reference='base_link'><sensor "
+      "type='camera' name='cam'/></gazebo>";
   const io::SceneSetup s = io::loadScene(config(""), [&] { return laserRobot(kLaser + velodyne); });
   ASSERT_EQ(s.sensors.size(), 1u);
   ASSERT_EQ(s.sensors[0].lidars.size(), 2u);
@@ -297,6 +298,8 @@ TEST(GazeboLidars, ARaySensorWithARosPluginIsALidarWithItsMarkupsSettings) {
   EXPECT_EQ(velo.settings.max_range, 130.0);
   EXPECT_EQ(velo.settings.noise, 0.008);
   EXPECT_EQ(velo.topic, "velodyne_points");
+  EXPECT_TRUE(velo.organized);
+  EXPECT_FALSE(laser.entry.organized);
   EXPECT_EQ(velo.frame_id, "");
   // The camera is named as markup nothing runs; the lidars are not.
   std::string markup;

@@ -78,11 +78,16 @@ TEST(Lidar, ItsFansArePointsOnTheWall) {
   // 4 fans of 91 rays within ±45°, level to 0.2 rad up: every one meets the wall (at most 1.9 / cos 45° = 2.7 m
   // away, at most 0.55 m up; it is 1 m high).
   ASSERT_EQ(cloud.width * cloud.height, 4u * 91u);
-  sensor_msgs::PointCloud2ConstIterator<float> x(cloud, "x"), z(cloud, "z");
-  for (; x != x.end(); ++x, ++z) {
+  sensor_msgs::PointCloud2ConstIterator<float> x(cloud, "x"), y(cloud, "y"), z(cloud, "z");
+  sensor_msgs::PointCloud2ConstIterator<uint16_t> ring(cloud, "ring");  // Velodyne's fields
+  std::size_t n = 0;
+  for (; x != x.end(); ++x, ++y, ++z, ++ring, ++n) {
     EXPECT_NEAR(*x, 1.9, 0.01);  // the wall's face, in base_link
     EXPECT_GT(*z, -1e-6);
     EXPECT_LT(*z, 1.9 * std::tan(0.2) / std::cos(M_PI / 4) + 0.01);
+    // Azimuth by azimuth, each from its lowest fan (ring 0, level) up by 0.2 / 3 rad.
+    EXPECT_EQ(*ring, n % 4) << n;
+    EXPECT_NEAR(std::atan2(*z, std::hypot(*x, *y)), 0.2 / 3.0 * (n % 4), 1e-4) << n;
   }
 }
 
@@ -131,6 +136,25 @@ TEST(Lidar, ADepthCameraReadsTheWallsDistancePerPixel) {
   }
   EXPECT_GT(wall, 64 * 20);
   EXPECT_GT(ground, 64 * 15);
+  // Its points: organized as the image (64 x 48), each pixel's z its depth.
+  sensor_msgs::PointCloud2 cloud;
+  bool got_cloud = false;
+  ros::Subscriber c = nh.subscribe<sensor_msgs::PointCloud2>("/camera/depth/points", 2,
+                                                             [&](const sensor_msgs::PointCloud2::ConstPtr& m) {
+                                                               cloud = *m;
+                                                               got_cloud = true;
+                                                             });
+  ASSERT_TRUE(spinUntil([&] { return got_cloud; }, 30.0));
+  ASSERT_EQ(cloud.width, 64u);
+  ASSERT_EQ(cloud.height, 48u);
+  sensor_msgs::PointCloud2ConstIterator<float> z(cloud, "z");
+  for (int v = 0; v < 48; ++v) {
+    const double down = (v - 23.5) / f;
+    for (int u = 0; u < 64; ++u, ++z) {
+      if (down < 0.08 / 1.9 - 0.01) EXPECT_NEAR(*z, 1.9, 0.01) << u << ", " << v;
+      if (down > 0.08 / 1.9 + 0.01) EXPECT_NEAR(*z, 0.08 / down, 0.01) << u << ", " << v;
+    }
+  }
 }
 
 /// Every message on `topic` until `count` came; the last two.

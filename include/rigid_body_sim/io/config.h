@@ -73,6 +73,7 @@ struct LidarEntry {
   double rate = 10.0;               ///< Hz of sim time
   std::string key = "lidar";        ///< its config key, for messages ("bodies[2].lidar[0]")
   std::optional<RangeEntry> range;  ///< a range finder: one sensor_msgs/Range of its rays, not a scan
+  bool organized = false;  ///< fans > 1: a cloud of every ray, NaN where none met (Velodyne's `organize_cloud`)
 };
 
 /// A depth camera on a robot's link (`depth_camera`, `bodies[i].depth_camera`:

@@ -36,8 +36,14 @@ namespace rigid_body_sim::node {
 /// sensor_msgs/LaserScan of one fan: REP 117's ±inf kept, scan_time 1/rate.
 sensor_msgs::LaserScan scanMessage(const core::Lidar& lidar, const std::vector<double>& ranges, double rate,
                                    const std::string& frame, const ros::Time& stamp);
-/// sensor_msgs/PointCloud2 of every finite return (x, y, z float32 in the sensor's frame, one row).
-sensor_msgs::PointCloud2 cloudMessage(const core::Lidar& lidar, const std::vector<double>& ranges,
+/// sensor_msgs/PointCloud2 of a scan as the Velodyne plugin lays it out:
+/// x, y, z (float32, the sensor's frame), intensity (float32; 0, Gazebo's
+/// for a surface without <laser_retro>), ring (uint16, the fan: 0 the
+/// lowest), time (float32 s after the stamp: 0, one instant), 22 bytes a
+/// point, azimuth by azimuth and in each its fans from the lowest. Every
+/// finite return in one row, or `organized`: every ray, NaN where none
+/// met, a row per azimuth (width: the fans), as `<organize_cloud>` gives.
+sensor_msgs::PointCloud2 cloudMessage(const core::Lidar& lidar, const std::vector<double>& ranges, bool organized,
                                       const std::string& frame, const ros::Time& stamp);
 
 /// sensor_msgs/Range of `reading` (m, REP 117's ±inf kept) from `lidar`'s rays as `range` describes it.
@@ -51,7 +57,9 @@ sensor_msgs::Image depthImageMessage(const core::DepthCamera& camera, const std:
 /// sensor_msgs/CameraInfo of the pinhole: no distortion, K and P of its focal length and centre.
 sensor_msgs::CameraInfo cameraInfoMessage(const core::DepthCamera& camera, const std::string& frame,
                                           const ros::Time& stamp);
-/// sensor_msgs/PointCloud2 of every finite depth, in the optical frame (x right, y down, z ahead).
+/// sensor_msgs/PointCloud2 of every pixel (x, y, z float32 in the optical
+/// frame: x right, y down, z ahead), organized as the image, NaN where
+/// nothing is within range (gazebo_ros_openni_kinect's layout, without its rgb).
 sensor_msgs::PointCloud2 depthCloudMessage(const core::DepthCamera& camera, const std::vector<double>& depth,
                                            const std::string& frame, const ros::Time& stamp);
 
@@ -83,6 +91,7 @@ class RangeSensors {
     CountedPublisher publisher;
     std::optional<io::RangeEntry> range;      ///< a range finder: its Range's fields
     std::optional<core::RangeFinder> finder;  ///< and its reading
+    bool organized = false;                   ///< a cloud of every ray (LidarEntry::organized)
   };
   struct CameraPort {
     core::DepthCamera camera;

@@ -42,7 +42,7 @@ std::uintmax_t lidarBytes(const LidarSettings& s) {
   // and the message twice (built, then serialized by roscpp).
   const std::uintmax_t rays = static_cast<std::uintmax_t>(std::max(s.samples, 0)) *
                               static_cast<std::uintmax_t>(std::max(s.vertical_samples, 0));
-  const std::uintmax_t message = s.vertical_samples > 1 ? 16 : 4;
+  const std::uintmax_t message = s.vertical_samples > 1 ? 22 : 4;  // a Velodyne point, or a float
   return rays * (sizeof(Vec3) + sizeof(double) + sizeof(RayCone) / 16 + 1 + 2 * message);
 }
 

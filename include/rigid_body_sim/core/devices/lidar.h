@@ -38,7 +38,7 @@ void checkLidar(const LidarSettings& s);
 /// Bytes a lidar of `s` may hold at once, counted before it is built (the
 /// node's device budget): per ray its direction and range, and the scan's
 /// message with its serialized copy (a LaserScan's float, or a
-/// PointCloud2's 16-byte point when it has several fans).
+/// PointCloud2's 22-byte point when it has several fans).
 std::uintmax_t lidarBytes(const LidarSettings& s);
 
 class Lidar {
