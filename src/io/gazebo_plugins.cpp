@@ -367,14 +367,37 @@ ControllerEntry pluginSkidSteer(const TiXmlElement& plugin, const Unread& unread
   unread("<plugin> libgazebo_ros_skid_steer_drive.so odometry of the truth (odometry from the wheels here)", e.name);
   return e;
 }
+/// roboticsgroup's mimic-joint plugin (its two names): `mimicJoint`
+/// follows `joint` at `multiplier` (1) and `offset` (0 rad or m), held by
+/// the core's mimic row as a URDF <mimic> is, so `hasPID`, `maxEffort`
+/// and `sensitiveness`, which tune the plugin's own tracking, do not apply.
+RobotDevices::Mimic pluginMimic(const TiXmlElement& plugin) {
+  RobotDevices::Mimic m;
+  m.key = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
+  const Numbers numbers(m.key);
+  m.leader = childText(plugin, "joint", "");
+  m.follower = childText(plugin, "mimicJoint", "");
+  if (m.leader.empty() || m.follower.empty()) {
+    throw std::invalid_argument(m.key + ": <joint> and <mimicJoint> are both required");
+  }
+  numbers.at(&plugin, "multiplier", m.multiplier, Bounds{-1e3, 1e3, false, ""});
+  numbers.at(&plugin, "offset", m.offset, Bounds{-1e3, 1e3, false, "rad or m"});
+  return m;
+}
+
 }  // namespace
+
+bool isMimicPlugin(const std::string& file) {
+  return file == "libroboticsgroup_gazebo_mimic_joint_plugin.so" ||
+         file == "libroboticsgroup_upatras_gazebo_mimic_joint_plugin.so";
+}
 
 bool readsModelPlugin(const TiXmlElement& plugin) {
   const std::string file = attribute(plugin, "filename");
   return file == "libgazebo_ros_imu.so" || file == "libgazebo_ros_p3d.so" || file == "libgazebo_ros_diff_drive.so" ||
          file == "libgazebo_ros_skid_steer_drive.so" || file == "libgazebo_ros_control.so" ||
          file == "libhector_gazebo_ros_imu.so" || file == "libhector_gazebo_ros_gps.so" ||
-         file == "libhector_gazebo_ros_magnetic.so";
+         file == "libhector_gazebo_ros_magnetic.so" || isMimicPlugin(file);
 }
 
 void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out) {
@@ -390,6 +413,8 @@ void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevi
     out.gnss.push_back(pluginHectorGps(plugin, unread));
   } else if (file == "libhector_gazebo_ros_magnetic.so") {
     out.magnetometers.push_back(pluginHectorMagnetic(plugin));
+  } else if (isMimicPlugin(file)) {
+    out.mimics.push_back(pluginMimic(plugin));
   } else if (file == "libgazebo_ros_control.so") {  // the controllers' namespace; they run every step
     const std::string where = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
     if (!childText(plugin, "robotNamespace", "").empty()) {  // empty: the root, as none

@@ -14,6 +14,9 @@ namespace rigid_body_sim::io::detail {
 
 /// Whether readModelPlugin reads `plugin` (a <plugin> under <gazebo>).
 bool readsModelPlugin(const TiXmlElement& plugin);
+/// Whether the plugin file `file` is a mimic-joint plugin: part of the
+/// robot's model (its joints), read by every load, never a device.
+bool isMimicPlugin(const std::string& file);
 
 /// `plugin`'s device into `out`: as pluginImu, pluginHectorImu,
 /// pluginOdometry, pluginDrive and pluginSkidSteer in gazebo_plugins.cpp say. One Gazebo would not run (an

@@ -15,7 +15,7 @@ namespace rigid_body_sim::io::detail {
 namespace {
 
 /// The plugin of `sensor` this project runs: 1 laser (LaserScan), 2 Velodyne (PointCloud2), 3 IMU, 4 depth
-/// camera, 5 range finder (Range), 0 none.
+/// camera, 5 range finder (Range), 6 bumper (contacts), 0 none.
 int pluginKind(const TiXmlElement& sensor, const TiXmlElement** plugin) {
   const std::string type = attribute(sensor, "type");
   const bool ray = type == "ray" || type == "gpu_ray";
@@ -26,6 +26,7 @@ int pluginKind(const TiXmlElement& sensor, const TiXmlElement** plugin) {
     if (ray && (file == "libgazebo_ros_velodyne_laser.so" || file == "libgazebo_ros_velodyne_gpu_laser.so")) return 2;
     if (ray && file == "libgazebo_ros_range.so") return 5;
     if (type == "imu" && file == "libgazebo_ros_imu_sensor.so") return 3;
+    if (type == "contact" && file == "libgazebo_ros_bumper.so") return 6;
     if (type == "depth" && (file == "libgazebo_ros_openni_kinect.so" || file == "libgazebo_ros_depth_camera.so")) {
       return 4;
     }
@@ -150,6 +151,24 @@ RangeEntry rangeFinder(const TiXmlElement& plugin, LidarEntry& l) {
   return r;
 }
 
+/// The contact sensor of `<sensor type="contact">` on `link` with
+/// gazebo_ros_bumper: `<update_rate>` (0: every step), the plugin's
+/// `bumperTopicName` ("bumper_states") and `frameName` ("world": the
+/// world's; else a frame fixed to the link). It reports every contact of
+/// the moving link carrying `link`, whichever of its collisions touches
+/// (`<contact><collision>` names one of Gazebo's, which URDF collisions
+/// lumped into one link do not keep).
+ContactSensorEntry sensorContact(const TiXmlElement& s, const TiXmlElement& plugin, const std::string& link) {
+  ContactSensorEntry c;
+  c.link = link;
+  c.key = "<gazebo reference=\"" + link + "\"> <sensor name=\"" + attribute(s, "name") + "\">";
+  Numbers(c.key).rate(&s, "update_rate", c.rate);
+  c.topic = childTopic(plugin, "bumperTopicName", "bumper_states", c.key + " <plugin>");
+  const std::string frame = childFrame(plugin, "frameName", "world", c.key + " <plugin>");
+  c.frame_id = frame == "world" || frame == "map" ? "" : frame;
+  return c;
+}
+
 }  // namespace
 
 RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
@@ -172,6 +191,10 @@ RobotDevices gazeboSensors(const TiXmlElement& robot, const Unread& unread) {
       }
       if (kind == 4) {
         out.cameras.push_back(sensorCamera(*s, *plugin, link, unread));
+        continue;
+      }
+      if (kind == 6) {
+        out.contact_sensors.push_back(sensorContact(*s, *plugin, link));
         continue;
       }
       LidarEntry l;

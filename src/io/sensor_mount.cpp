@@ -129,6 +129,29 @@ void mountEarthSensors(const std::vector<E>& entries, const core::ArticulationMo
   }
 }
 
+void mountContactSensors(const std::vector<ContactSensorEntry>& entries, const core::ArticulationModel& model,
+                         double dt, std::vector<RobotContactSensor>& out) {
+  for (const ContactSensorEntry& e : entries) {
+    checkTopic(e.topic, e.key);
+    RobotContactSensor mounted{e, -1, {}};
+    mounted.entry.rate = e.rate > 0.0 ? std::min({e.rate, 1.0 / dt, core::ranges::kMaxPublishRate}) : 0.0;
+    if (mounted.entry.rate != 0.0) checkRate(mounted.entry.rate, e.key);
+    core::Pose X_LS;
+    mount(model, e.link, core::Pose{}, e.key, mounted.link, X_LS);
+    if (!e.frame_id.empty()) {  // a frame of the robot: where it sits in the sensor's link
+      int j = -1;
+      core::Pose X_JF;
+      mount(model, e.frame_id, core::Pose{}, e.key + " <frameName>", j, X_JF);
+      if (j != mounted.link) {
+        throw ConfigError(e.key + " <frameName> '" + e.frame_id + "': not a frame of link '" + e.link +
+                          "' (its contacts are given in the world or in a frame fixed to it)");
+      }
+      mounted.X_LF = X_JF;
+    }
+    out.push_back(std::move(mounted));
+  }
+}
+
 /// "12 MiB" (rounded up).
 std::string mib(std::uintmax_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
 
@@ -218,6 +241,7 @@ RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup
       mountEarthSensors(sensors->gnss, model, dt, core::validateGnss, out.gnss);
       for (const GnssEntry& g : sensors->gnss) checkTopic(g.velocity_topic, g.key);
       mountEarthSensors(sensors->magnetometers, model, dt, core::validateMagnetometer, out.magnetometers);
+      mountContactSensors(sensors->contact_sensors, model, dt, out.contact_sensors);
     }
   } catch (...) {
     memory.used = before;  // refused: none of this robot's devices is counted

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "gazebo_plugins.h"
 #include "gazebo_sensors.h"
 #include "rigid_body_sim/core/bodies/ranges.h"
 
@@ -254,6 +255,7 @@ void unreadMarkup(const TiXmlElement& robot, ParsedUrdf& out) {
         }
       } else if (tag == "plugin") {
         kind = "<plugin> " + attribute(*e, "filename");
+        if (isMimicPlugin(attribute(*e, "filename"))) continue;  // the robot's joints, set in parseUrdf
       }
       const std::string name = !reference.empty() ? reference : tag == "plugin" ? attribute(*e, "name") : "the robot";
       if (readsMarkup(*e)) {  // a sensor (gazebo_sensors.h), for a robot
@@ -318,6 +320,20 @@ ParsedUrdf parseUrdf(const std::string& xml) {
   if (!out.model) {
     throw std::invalid_argument("not a valid URDF document" +
                                 (errors.errors.empty() ? std::string() : ": " + errors.summary()));
+  }
+  // The mimic-joint plugins as the URDF's <mimic>: Gazebo classic ignores
+  // a URDF <mimic> and runs the plugin, so the plugin's wins.
+  for (const RobotDevices::Mimic& m : out.sensors.mimics) {
+    for (const std::string* name : {&m.follower, &m.leader}) {
+      if (out.model->getJoint(*name) == nullptr) {
+        throw std::invalid_argument(m.key + ": the robot has no joint '" + *name + "'");
+      }
+    }
+    auto mimic = std::make_shared<urdf::JointMimic>();
+    mimic->joint_name = m.leader;
+    mimic->multiplier = m.multiplier;
+    mimic->offset = m.offset;
+    out.model->joints_.at(m.follower)->mimic = mimic;
   }
   if (!errors.errors.empty()) throw std::invalid_argument(errors.summary());
   return out;

@@ -36,6 +36,7 @@ void SimNode::stepOnce() {
   range_sensors_->sample(sim_, steps_, stamp());
   link_odometry_->publish(sim_, steps_, simTime(), stamp());
   sim_.contacts.update(state_, workspace_.contacts);
+  link_contacts_->publish(sim_, steps_, stamp());
   schedule_.dropFinished(simTime());
   sim_.joint_efforts.dropFinished(simTime());
   if (steps_ % publish_every_ == 0) {

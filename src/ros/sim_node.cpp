@@ -168,6 +168,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   range_sensors_.emplace(nh_, model_.dt());
   link_imus_.emplace(nh_, model_.dt());
   link_odometry_.emplace(nh_, model_.dt(), settings_.publish_rate, settings_.world_frame);
+  link_contacts_.emplace(nh_, model_.dt(), settings_.world_frame);
   for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
     robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
     const std::string& name = sim_.scene.robots()[r].name;
@@ -176,6 +177,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     range_sensors_->addRobot(name, prefix, frame_prefix, start_sensors_[r].lidars, start_sensors_[r].cameras);
     link_imus_->addRobot(sim_, r, prefix, frame_prefix, start_sensors_[r].imus);
     link_odometry_->addRobot(name, prefix, frame_prefix, start_sensors_[r]);
+    link_contacts_->addRobot(name, prefix, frame_prefix, start_sensors_[r].contact_sensors);
   }
   start_sensors_.clear();
   services_ = {
@@ -227,6 +229,7 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   range_sensors_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.lidars, spawn.sensors.cameras);
   link_imus_->addRobot(sim_, r, prefix, spawn.frame_prefix, spawn.sensors.imus);
   link_odometry_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors);
+  link_contacts_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.contact_sensors);
 }
 
 void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {
@@ -235,6 +238,7 @@ void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {
   range_sensors_->removeRobot(r);
   link_imus_->removeRobot(r);
   link_odometry_->removeRobot(r);
+  link_contacts_->removeRobot(r);
   robots_speed_limited_.erase(name);
 }
 

@@ -74,6 +74,9 @@ std::vector<TopicClaims::Claim> robotTopics(const std::string& prefix, const std
     out.push_back({deviceTopic(prefix, g.entry.topic), g.entry.key});
     out.push_back({deviceTopic(prefix, g.entry.velocity_topic), g.entry.key + "'s velocity"});
   }
+  for (const io::RobotContactSensor& c : sensors.contact_sensors) {
+    out.push_back({deviceTopic(prefix, c.entry.topic), c.entry.key});
+  }
   for (const io::RobotMagnetometer& m : sensors.magnetometers) {
     out.push_back({deviceTopic(prefix, m.entry.topic), m.entry.key});
   }

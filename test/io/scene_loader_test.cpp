@@ -643,6 +643,48 @@ TEST(GazeboEarthSensors, HectorsGpsAndMagnetometerAreReadWithTheirReferencesAndE
                std::exception);
 }
 
+// gazebo_ros_bumper on a contact sensor (TurtleBot2's, many arms'
+// grippers'): its link, topic, rate and frame; a frame not fixed to the
+// link is refused, as the plugin could not express contacts in it either.
+TEST(GazeboContactSensors, ABumperReadsItsLinkTopicRateAndFrame) {
+  const auto bumper = [](const std::string& link, const std::string& plugin) {
+    return "<gazebo reference='" + link +
+           "'><sensor type='contact' name='bump'><update_rate>50</update_rate>"
+           "<contact><collision>" +
+           link +
+           "_collision</collision></contact>"
+           "<plugin name='b' filename='libgazebo_ros_bumper.so'>" +
+           plugin + "</plugin></sensor></gazebo>";
+  };
+  const io::SceneSetup s = io::loadScene(config(""), [&] {
+    return laserRobot(bumper("laser_link",
+                             "<bumperTopicName>laser_bumper</bumperTopicName>"
+                             "<frameName>laser_link</frameName>") +
+                      bumper("wheel", ""));
+  });
+  ASSERT_EQ(s.sensors.at(0).contact_sensors.size(), 2u);
+  const io::RobotContactSensor& a = s.sensors[0].contact_sensors[0];
+  EXPECT_EQ(a.link, 0);  // laser_link is lumped into base_link: its contacts are the base's
+  EXPECT_EQ(a.entry.topic, "laser_bumper");
+  EXPECT_EQ(a.entry.rate, 50.0);
+  EXPECT_EQ(a.entry.frame_id, "laser_link");
+  EXPECT_EQ(a.X_LF.translation, Vec3(0.1, 0.0, 0.2));
+  const io::RobotContactSensor& b = s.sensors[0].contact_sensors[1];
+  EXPECT_EQ(b.link, 1);
+  EXPECT_EQ(b.entry.topic, "bumper_states");  // the plugin's defaults: its topic, the world frame
+  EXPECT_EQ(b.entry.frame_id, "");
+  try {
+    io::loadScene(config(""), [&] { return laserRobot(bumper("wheel", "<frameName>base_link</frameName>")); });
+    ADD_FAILURE() << "a frame not fixed to the sensor's link was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("<frameName> 'base_link': not a frame of link 'wheel'"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(
+      io::loadScene(config(""), [&] { return laserRobot(bumper("wheel", "<bumperTopicName>a b</bumperTopicName>")); }),
+      std::exception);
+}
+
 TEST(GazeboOdometry, TheP3dPluginIsALinksOdometryWithItsNoise) {
   const std::string p3d =
       "<gazebo><plugin name='truth' filename='libgazebo_ros_p3d.so'><bodyName>base_link</bodyName>"

@@ -226,6 +226,32 @@ TEST(MimicOfNoJoint, IsDroppedAndSaid) {
                                   {"joint 'elbow' <mimic joint> = 'index_q1'", "no moving joint has that name"});
 }
 
+// roboticsgroup's mimic-joint plugin (grippers' fingers: 5 of 55 public
+// robots) is the URDF's <mimic>: the elbow follows the shoulder at its
+// multiplier and offset as the pendulum swings; one naming no joint is refused.
+TEST(MimicJointPlugin, IsTheUrdfsMimic) {
+  const std::string xml = doublePendulum(
+      "<gazebo><plugin name='mimic_elbow' filename='libroboticsgroup_upatras_gazebo_mimic_joint_plugin.so'>"
+      "<joint>shoulder</joint><mimicJoint>elbow</mimicJoint><multiplier>-0.5</multiplier><offset>0.1</offset>"
+      "<hasPID/><maxEffort>10</maxEffort></plugin></gazebo>");
+  std::vector<std::string> notes;
+  const ArticulationModel model = load(xml, &notes);
+  EXPECT_TRUE(notes.empty()) << notes.at(0);
+  EXPECT_EQ(model.links[2].mimic.joint, 1);
+  EXPECT_EQ(model.links[2].mimic.multiplier, -0.5);
+  EXPECT_EQ(model.links[2].mimic.offset, 0.1);
+  const ArticulationState s = swing(model, 500);
+  EXPECT_GT(std::abs(s.q(0) - 1.0), 0.1);  // it swung
+  EXPECT_NEAR(s.q(1), -0.5 * s.q(0) + 0.1, 1e-6);
+  expectThrowsWith<io::UrdfError>(
+      [&] {
+        load(
+            doublePendulum("<gazebo><plugin name='m' filename='libroboticsgroup_gazebo_mimic_joint_plugin.so'>"
+                           "<joint>shoulder</joint><mimicJoint>wrist</mimicJoint></plugin></gazebo>"));
+      },
+      {"<plugin name=\"m\">: the robot has no joint 'wrist'"});
+}
+
 // Gazebo markup's "never slip" (PR2's <mu1 value="100.0"/>, turtlebot3's
 // 10000, tiago's 1e15): read as the largest coefficient, 10, and said; the
 // smaller of mu1 and mu2 is the link's; refused when not repairing.

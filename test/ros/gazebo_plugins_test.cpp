@@ -9,7 +9,8 @@
 // command (its hector IMU reading +g), forward and backward at the
 // commanded speed, its sonar (gazebo_ros_range) reading a crate ahead,
 // its GPS (hector_gazebo_ros_gps) where the truth is, its magnetometer
-// (hector_gazebo_ros_magnetic) pointing north.
+// (hector_gazebo_ros_magnetic) pointing north, its wheels' contact sensors
+// (gazebo_ros_bumper) bearing its weight.
 #include <geometry_msgs/Twist.h>
 #include <geometry_msgs/Vector3Stamped.h>
 #include <gtest/gtest.h>
@@ -27,6 +28,7 @@
 #include <vector>
 
 #include "node_fixture.h"
+#include "rigid_body_sim/Contacts.h"
 #include "rigid_body_sim/SpawnBody.h"
 
 namespace {
@@ -117,12 +119,24 @@ TEST(GazeboSkidSteer, AFourWheeledBaseHoldsStillThenDrivesForwardAndBackAtTheCom
       "/navsat/vel", 1000, [&](const geometry_msgs::Vector3Stamped::ConstPtr& m) { fix_velocity.push_back(*m); });
   ros::Subscriber field_sub = nh.subscribe<geometry_msgs::Vector3Stamped>(
       "/magnetic", 1000, [&](const geometry_msgs::Vector3Stamped::ConstPtr& m) { field.push_back(*m); });
+  const char* wheels[] = {"front_left_wheel", "front_right_wheel", "rear_left_wheel", "rear_right_wheel"};
+  std::vector<std::vector<rigid_body_sim::Contacts>> bumpers(4);
+  std::vector<ros::Subscriber> bumper_subs;
+  for (std::size_t w = 0; w < 4; ++w) {
+    bumper_subs.push_back(nh.subscribe<rigid_body_sim::Contacts>(
+        "/" + std::string(wheels[w]) + "/contacts", 1000,
+        [&bumpers, w](const rigid_body_sim::Contacts::ConstPtr& m) { bumpers[w].push_back(*m); }));
+  }
+  const std::vector<rigid_body_sim::Contacts>& bumper = bumpers[0];
+  std::vector<rigid_body_sim::Contacts> chassis;
+  ros::Subscriber chassis_sub = nh.subscribe<rigid_body_sim::Contacts>(
+      "/chassis/contacts", 1000, [&](const rigid_body_sim::Contacts::ConstPtr& m) { chassis.push_back(*m); });
   ros::Publisher cmd_vel = nh.advertise<geometry_msgs::Twist>("/cmd_vel", 10);
   ASSERT_TRUE(spinUntil([&] { return cmd_vel.getNumSubscribers() > 0; }, 30.0));  // the drive listens
   ASSERT_TRUE(spinUntil(
       [&] {
         return !odom.empty() && !truth.empty() && !sonar.empty() && !fixes.empty() && !fix_velocity.empty() &&
-               !field.empty();
+               !field.empty() && std::all_of(bumpers.begin(), bumpers.end(), [](const auto& b) { return !b.empty(); });
       },
       30.0));
   EXPECT_EQ(odom.back().pose.covariance[7], 3e-4);  // covariance_y
@@ -144,6 +158,30 @@ TEST(GazeboSkidSteer, AFourWheeledBaseHoldsStillThenDrivesForwardAndBackAtTheCom
   const double crept = std::hypot(truth.back().pose.pose.position.x - rest.pose.pose.position.x,
                                   truth.back().pose.pose.position.y - rest.pose.pose.position.y);
   EXPECT_LT(crept, 1e-3) << "m in 2 s with no command";
+  // The wheels' contact sensors (20 Hz, in the world frame): each the
+  // ground under it, pressing up; together (at one stamp) the base's
+  // weight, 7.01 kg (how four wheels share it is not determined).
+  {
+    ASSERT_GE(bumper.size(), 2u);
+    EXPECT_NEAR((bumper.back().header.stamp - bumper[bumper.size() - 2].header.stamp).toSec(), 0.05, 1e-6);
+    const ros::Time at = bumper.back().header.stamp;
+    double bearing = 0.0;
+    for (std::size_t w = 0; w < 4; ++w) {
+      ASSERT_TRUE(spinUntil([&] { return bumpers[w].back().header.stamp >= at; }, 10.0)) << wheels[w];
+      const auto c = std::find_if(bumpers[w].begin(), bumpers[w].end(),
+                                  [&](const rigid_body_sim::Contacts& m) { return m.header.stamp == at; });
+      ASSERT_NE(c, bumpers[w].end()) << wheels[w];
+      EXPECT_EQ(c->header.frame_id, "world");
+      ASSERT_EQ(c->pairs.size(), 1u) << wheels[w];
+      EXPECT_EQ(c->pairs[0].body, "skid_steer/" + std::string(wheels[w]));
+      EXPECT_EQ(c->pairs[0].other, "scene[0]");
+      EXPECT_NEAR(c->pairs[0].normal.z, 1.0, 1e-6);
+      EXPECT_GT(c->pairs[0].normal_force.z, 0.0);
+      bearing += c->pairs[0].normal_force.z;
+    }
+    EXPECT_NEAR(bearing, 7.01 * 9.81, 0.01 * 7.01 * 9.81) << "N";
+    std::printf("skid_steer: the wheels' contact sensors bear %.3f N (the weight: %.3f N)\n", bearing, 7.01 * 9.81);
+  }
   // Its hector IMU (50 Hz, σ 0.005) at rest, over its last second: +g up, no turn.
   ASSERT_GE(imu.size(), 50u);
   double az = 0.0, wz = 0.0;
@@ -250,6 +288,28 @@ TEST(GazeboSkidSteer, AFourWheeledBaseHoldsStillThenDrivesForwardAndBackAtTheCom
   EXPECT_NEAR(mean, 1.5 - 0.2 - 0.3, 0.008) << "m, the mean of " << seen.size();
   EXPECT_NEAR((seen.back().header.stamp - seen[seen.size() - 2].header.stamp).toSec(), 0.1, 1e-6);
   std::printf("skid_steer: sonar %.4f m (face at 1.0 m)\n", mean);
+  // A 1 kg box (urdf/box.urdf) put on the chassis: its contact sensor, in
+  // the chassis's frame (every step), has the box pressing down with its weight.
+  EXPECT_TRUE(chassis.empty() || chassis.back().pairs.empty()) << "the chassis touched something before";
+  rigid_body_sim::SpawnBody load;
+  load.request.name = "load";
+  load.request.urdf_file = "package://rigid_body_sim/urdf/box.urdf";
+  load.request.pose.position.x = truth.back().pose.pose.position.x;
+  load.request.pose.position.z = truth.back().pose.pose.position.z + 0.05 + 0.05 + 0.002;
+  load.request.pose.orientation.w = 1.0;
+  ASSERT_TRUE(ros::service::call("/sim_node/spawn_body", load)) << "the call";
+  ASSERT_TRUE(load.response.success) << load.response.message;
+  ASSERT_TRUE(waitFor(1.0));
+  ASSERT_FALSE(chassis.empty());
+  const rigid_body_sim::Contacts& on = chassis.back();
+  EXPECT_EQ(on.header.frame_id, "chassis");
+  ASSERT_EQ(on.pairs.size(), 1u);
+  EXPECT_EQ(on.pairs[0].body, "skid_steer/chassis");  // the sensor's link first, though the box's index is lower
+  EXPECT_EQ(on.pairs[0].other, "load");
+  EXPECT_NEAR(on.pairs[0].normal.z, -1.0, 1e-3);  // from the box toward the chassis: down
+  EXPECT_NEAR(on.pairs[0].normal_force.z, -9.81, 0.02 * 9.81) << "N on the chassis";
+  for (const geometry_msgs::Point& q : on.pairs[0].points) EXPECT_NEAR(q.z, 0.05, 0.003) << "its top, in its frame";
+  std::printf("skid_steer: the chassis bears %.3f N of the 1 kg box\n", -on.pairs[0].normal_force.z);
 }
 
 }  // namespace

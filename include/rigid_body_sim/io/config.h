@@ -134,6 +134,18 @@ struct MagnetometerEntry {
   std::string key = "magnetometer";
 };
 
+/// A contact sensor on a robot's link (`<sensor type="contact">` with
+/// gazebo_ros_bumper): every pair touching the moving link that carries
+/// `link`, as rigid_body_sim/Contacts on `topic` under the robot's prefix,
+/// in the world frame or in `frame_id`, a frame of the robot.
+struct ContactSensorEntry {
+  std::string link;
+  std::string frame_id;  ///< "": the world's; else a frame of the robot (after its tf_prefix)
+  std::string topic = "bumper_states";
+  double rate = 0.0;  ///< Hz of sim time; 0: every step
+  std::string key = "contact";
+};
+
 /// A robot's joints at the start (`initial.joint_positions` and
 /// `initial.joint_velocities`: maps from joint name to rad or m, rad/s or
 /// m/s), in the file's order. Applied by io::startJoints (joint_start.h).
@@ -216,10 +228,20 @@ struct RobotDevices {
   std::vector<OdometryEntry> odometry;
   std::vector<GnssEntry> gnss;
   std::vector<MagnetometerEntry> magnetometers;
+  std::vector<ContactSensorEntry> contact_sensors;
   /// The markup's drives (gazebo_ros_diff_drive) as DiffDriveControllers,
   /// run beside the config's `controllers`.
   std::vector<ControllerEntry> controllers;
   std::vector<TransmissionEntry> transmissions;  ///< the URDF's, to check the config's controllers against
+  /// The mimic-joint plugins' (roboticsgroup's): joint `follower` at
+  /// multiplier · `leader` + offset, as a URDF <mimic> (set on the URDF's
+  /// joints when it is read, urdf_parse.h).
+  struct Mimic {
+    std::string follower, leader;
+    double multiplier = 1.0, offset = 0.0;
+    std::string key;
+  };
+  std::vector<Mimic> mimics;
   /// gazebo_ros_control's `robotNamespace` ("": none): where the robot's
   /// controllers and joint_states are, as gazebo_ros_control puts them.
   std::string robot_namespace;

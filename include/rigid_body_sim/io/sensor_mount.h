@@ -56,6 +56,14 @@ struct RobotMagnetometer {
   core::Pose X_LS;
 };
 
+/// A contact sensor on moving link `link`; its frame, if not the world's,
+/// at X_LF in that link.
+struct RobotContactSensor {
+  ContactSensorEntry entry;
+  int link = 0;
+  core::Pose X_LF;
+};
+
 /// Every sensor of one robot, on its links.
 struct RobotSensors {
   std::vector<RobotImu> imus;
@@ -64,6 +72,7 @@ struct RobotSensors {
   std::vector<RobotOdometry> odometry;
   std::vector<RobotGnss> gnss;
   std::vector<RobotMagnetometer> magnetometers;
+  std::vector<RobotContactSensor> contact_sensors;
   std::uintmax_t bytes = 0;  ///< what its lidars and cameras may hold (core::lidarBytes, core::depthCameraBytes)
 };
 

@@ -40,6 +40,7 @@
 #include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
 #include "rigid_body_sim/ros/joint_requests.h"
+#include "rigid_body_sim/ros/link_contacts.h"
 #include "rigid_body_sim/ros/link_imus.h"
 #include "rigid_body_sim/ros/link_odometry.h"
 #include "rigid_body_sim/ros/load_requests.h"
@@ -143,6 +144,7 @@ class SimNode {
   std::optional<RangeSensors> range_sensors_;         ///< the robots' lidars and depth cameras
   std::optional<LinkImus> link_imus_;                 ///< the IMUs on robots' links
   std::optional<LinkOdometry> link_odometry_;         ///< the odometry of robots' links (odom_noise, p3d)
+  std::optional<LinkContacts> link_contacts_;         ///< the contact sensors on robots' links (bumpers)
 
   /// Every body's frames, topics and devices, and its names: a spawn, a
   /// delete and a reset go through it (body_ports.h).
