@@ -136,8 +136,8 @@ void mountContactSensors(const std::vector<ContactSensorEntry>& entries, const c
     RobotContactSensor mounted{e, -1, {}};
     mounted.entry.rate = e.rate > 0.0 ? std::min({e.rate, 1.0 / dt, core::ranges::kMaxPublishRate}) : 0.0;
     if (mounted.entry.rate != 0.0) checkRate(mounted.entry.rate, e.key);
-    core::Pose X_LS;
-    mount(model, e.link, core::Pose{}, e.key, mounted.link, X_LS);
+    core::Pose X_LK;  // the sensor's link K, in the moving link
+    mount(model, e.link, core::Pose{}, e.key, mounted.link, X_LK);
     if (!e.frame_id.empty()) {  // a frame of the robot: where it sits in the sensor's link
       int j = -1;
       core::Pose X_JF;
@@ -146,7 +146,7 @@ void mountContactSensors(const std::vector<ContactSensorEntry>& entries, const c
         throw ConfigError(e.key + " <frameName> '" + e.frame_id + "': not a frame of link '" + e.link +
                           "' (its contacts are given in the world or in a frame fixed to it)");
       }
-      mounted.X_LF = X_JF;
+      mounted.X_LS = X_JF;
     }
     out.push_back(std::move(mounted));
   }

@@ -21,7 +21,7 @@ void LinkContacts::addRobot(const std::string& robot, const std::string& prefix,
     Port p;
     p.link = s.link;
     p.in_world = e.frame_id.empty();
-    p.X_LF = s.X_LF;
+    p.X_LS = s.X_LS;
     p.frame = p.in_world ? world_frame_ : frame_prefix + e.frame_id;
     p.every = e.rate > 0.0 ? std::max(1LL, std::llround(1.0 / (e.rate * dt_))) : 1;
     const std::string topic = deviceTopic(prefix, e.topic);
@@ -69,7 +69,7 @@ void LinkContacts::publish(const core::Simulation& sim, long long steps, const r
           core::kinematics(robot.model, sim.robots[r], kin_);
           placed = true;
         }
-        const core::LinkState F = core::frameState(linkStateOf(kin_, p.link), p.X_LF);
+        const core::LinkState F = core::frameState(linkStateOf(kin_, p.link), p.X_LS);
         const core::Quat q_FW = F.q_WL.conjugate();
         for (core::ContactPairReport& c : mine) {
           for (core::Vec3& q : c.points_W) q = q_FW * (q - F.p_WL);

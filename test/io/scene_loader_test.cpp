@@ -668,7 +668,7 @@ TEST(GazeboContactSensors, ABumperReadsItsLinkTopicRateAndFrame) {
   EXPECT_EQ(a.entry.topic, "laser_bumper");
   EXPECT_EQ(a.entry.rate, 50.0);
   EXPECT_EQ(a.entry.frame_id, "laser_link");
-  EXPECT_EQ(a.X_LF.translation, Vec3(0.1, 0.0, 0.2));
+  EXPECT_EQ(a.X_LS.translation, Vec3(0.1, 0.0, 0.2));
   const io::RobotContactSensor& b = s.sensors[0].contact_sensors[1];
   EXPECT_EQ(b.link, 1);
   EXPECT_EQ(b.entry.topic, "bumper_states");  // the plugin's defaults: its topic, the world frame

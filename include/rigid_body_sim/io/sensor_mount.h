@@ -13,19 +13,24 @@
 
 namespace rigid_body_sim::io {
 
-/// A lidar on link `link` of a robot, its frame at X_LS in that link's.
-struct RobotLidar {
-  LidarEntry entry;
-  int link = 0;     ///< the moving link (index in the model) that carries it
-  core::Pose X_LS;  ///< the sensor (at entry.pose in entry.link) in the moving link's frame
-};
-
-/// A depth camera on link `link` of a robot, at X_LS in that link's frame.
-struct RobotCamera {
-  DepthCameraEntry entry;
+/// A device of a robot, `entry` as its config or markup gives it, on the
+/// moving link `link` (index in the model) at X_LS in that link's frame:
+/// the sensor (at entry.pose in entry.link, a link or one lumped into a
+/// moving one) or, for odometry, a GNSS receiver, a magnetometer, the
+/// frame it reports (a contact sensor's: the frame its contacts are given
+/// in, if not the world's).
+template <typename Entry>
+struct OnLink {
+  Entry entry;
   int link = 0;
   core::Pose X_LS;
 };
+using RobotLidar = OnLink<LidarEntry>;
+using RobotCamera = OnLink<DepthCameraEntry>;
+using RobotOdometry = OnLink<OdometryEntry>;
+using RobotGnss = OnLink<GnssEntry>;
+using RobotMagnetometer = OnLink<MagnetometerEntry>;
+using RobotContactSensor = OnLink<ContactSensorEntry>;
 
 /// An IMU on link `link` of a robot: entry.settings.X_LS is the sensor in
 /// that moving link's frame, and entry.frame_id the frame its messages
@@ -33,35 +38,6 @@ struct RobotCamera {
 struct RobotImu {
   ImuEntry entry;
   int link = 0;
-};
-
-/// Odometry of the frame entry.link names: a moving link, `link`, or a
-/// link lumped into it, at X_LS in it.
-struct RobotOdometry {
-  OdometryEntry entry;
-  int link = 0;
-  core::Pose X_LS;
-};
-
-/// A GNSS receiver or a magnetometer on moving link `link`, at X_LS in it
-/// (entry.link: the link named, entry.frame_id the frame its messages name).
-struct RobotGnss {
-  GnssEntry entry;
-  int link = 0;
-  core::Pose X_LS;
-};
-struct RobotMagnetometer {
-  MagnetometerEntry entry;
-  int link = 0;
-  core::Pose X_LS;
-};
-
-/// A contact sensor on moving link `link`; its frame, if not the world's,
-/// at X_LF in that link.
-struct RobotContactSensor {
-  ContactSensorEntry entry;
-  int link = 0;
-  core::Pose X_LF;
 };
 
 /// Every sensor of one robot, on its links.

@@ -42,7 +42,7 @@ class LinkContacts {
   struct Port {
     int link = 0;  ///< the moving link (index in the robot's model)
     bool in_world = true;
-    core::Pose X_LF;  ///< the reports' frame in the link, unless in the world
+    core::Pose X_LS;  ///< the reports' frame in the link, unless in the world
     std::string frame;
     long long every = 1;
     CountedPublisher contacts;
