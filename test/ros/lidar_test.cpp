@@ -21,6 +21,7 @@
 #include <string>
 #include <utility>
 
+#include "cloud_field.h"
 #include "node_fixture.h"
 #include "rigid_body_sim/BodyStates.h"
 
@@ -78,16 +79,15 @@ TEST(Lidar, ItsFansArePointsOnTheWall) {
   // 4 fans of 91 rays within ±45°, level to 0.2 rad up: every one meets the wall (at most 1.9 / cos 45° = 2.7 m
   // away, at most 0.55 m up; it is 1 m high).
   ASSERT_EQ(cloud.width * cloud.height, 4u * 91u);
-  sensor_msgs::PointCloud2ConstIterator<float> x(cloud, "x"), y(cloud, "y"), z(cloud, "z");
-  sensor_msgs::PointCloud2ConstIterator<uint16_t> ring(cloud, "ring");  // Velodyne's fields
-  std::size_t n = 0;
-  for (; x != x.end(); ++x, ++y, ++z, ++ring, ++n) {
-    EXPECT_NEAR(*x, 1.9, 0.01);  // the wall's face, in base_link
-    EXPECT_GT(*z, -1e-6);
-    EXPECT_LT(*z, 1.9 * std::tan(0.2) / std::cos(M_PI / 4) + 0.01);
+  for (std::size_t n = 0; n < 4u * 91u; ++n) {  // Velodyne's fields
+    const auto x = cloudField<float>(cloud, n, "x"), y = cloudField<float>(cloud, n, "y");
+    const auto z = cloudField<float>(cloud, n, "z");
+    EXPECT_NEAR(x, 1.9, 0.01);  // the wall's face, in base_link
+    EXPECT_GT(z, -1e-6);
+    EXPECT_LT(z, 1.9 * std::tan(0.2) / std::cos(M_PI / 4) + 0.01);
     // Azimuth by azimuth, each from its lowest fan (ring 0, level) up by 0.2 / 3 rad.
-    EXPECT_EQ(*ring, n % 4) << n;
-    EXPECT_NEAR(std::atan2(*z, std::hypot(*x, *y)), 0.2 / 3.0 * (n % 4), 1e-4) << n;
+    EXPECT_EQ(cloudField<uint16_t>(cloud, n, "ring"), n % 4) << n;
+    EXPECT_NEAR(std::atan2(z, std::hypot(x, y)), 0.2 / 3.0 * (n % 4), 1e-4) << n;
   }
 }
 

@@ -10,6 +10,7 @@
 #include <limits>
 #include <vector>
 
+#include "cloud_field.h"
 #include "rigid_body_sim/ros/range_sensors.h"
 
 namespace rigid_body_sim::node {
@@ -50,19 +51,17 @@ TEST(RangeMessages, ALidarsCloudHasVelodynesFieldsAndOrder) {
   EXPECT_EQ(m.header.frame_id, "velodyne");
   // Azimuth by azimuth, each from ring 0: rays 0, 3, 1, (4 met nothing), 2, 5.
   const std::size_t order[] = {0, 3, 1, 2, 5};
-  sensor_msgs::PointCloud2ConstIterator<float> x(m, "x"), y(m, "y"), z(m, "z"), intensity(m, "intensity"),
-      time(m, "time");
-  sensor_msgs::PointCloud2ConstIterator<uint16_t> ring(m, "ring");
-  for (std::size_t n = 0; n < 5; ++n, ++x, ++y, ++z, ++intensity, ++time, ++ring) {
+  using rbs_test::cloudField;
+  for (std::size_t n = 0; n < 5; ++n) {
     const std::size_t k = order[n];
     const double azimuth = -0.5 + 0.5 * static_cast<double>(k % 3), elevation = 0.25 * static_cast<double>(k / 3);
     const double r = ranges[k];
-    EXPECT_NEAR(*x, r * std::cos(elevation) * std::cos(azimuth), 1e-6) << n;
-    EXPECT_NEAR(*y, r * std::cos(elevation) * std::sin(azimuth), 1e-6) << n;
-    EXPECT_NEAR(*z, r * std::sin(elevation), 1e-6) << n;
-    EXPECT_EQ(*ring, k / 3) << n;
-    EXPECT_EQ(*intensity, 0.0F);
-    EXPECT_EQ(*time, 0.0F);
+    EXPECT_NEAR(cloudField<float>(m, n, "x"), r * std::cos(elevation) * std::cos(azimuth), 1e-6) << n;
+    EXPECT_NEAR(cloudField<float>(m, n, "y"), r * std::cos(elevation) * std::sin(azimuth), 1e-6) << n;
+    EXPECT_NEAR(cloudField<float>(m, n, "z"), r * std::sin(elevation), 1e-6) << n;
+    EXPECT_EQ(cloudField<uint16_t>(m, n, "ring"), k / 3) << n;
+    EXPECT_EQ(cloudField<float>(m, n, "intensity"), 0.0F);
+    EXPECT_EQ(cloudField<float>(m, n, "time"), 0.0F);
   }
   // Organized: every ray, a row per azimuth, NaN where none met.
   const sensor_msgs::PointCloud2 o = cloudMessage(lidar, ranges, true, "velodyne", ros::Time(2.0));
@@ -70,12 +69,10 @@ TEST(RangeMessages, ALidarsCloudHasVelodynesFieldsAndOrder) {
   EXPECT_EQ(o.height, 3u);
   EXPECT_EQ(o.row_step, 2u * 22u);
   EXPECT_FALSE(o.is_dense);
-  sensor_msgs::PointCloud2ConstIterator<float> ox(o, "x");
-  sensor_msgs::PointCloud2ConstIterator<uint16_t> oring(o, "ring");
   int nans = 0;
-  for (std::size_t n = 0; n < 6; ++n, ++ox, ++oring) {
-    EXPECT_EQ(*oring, n % 2) << n;
-    if (std::isnan(*ox)) {
+  for (std::size_t n = 0; n < 6; ++n) {
+    EXPECT_EQ(cloudField<uint16_t>(o, n, "ring"), n % 2) << n;
+    if (std::isnan(cloudField<float>(o, n, "x"))) {
       EXPECT_EQ(n, 3u);  // azimuth 1 (0 rad), ring 1: ray 4
       ++nans;
     }
