@@ -1,8 +1,9 @@
 // The model plugins of a URDF's Gazebo markup that this project runs, read
 // as Gazebo reads them (private to io): `<gazebo><plugin filename=...>`
-// with gazebo_ros_imu and hector_gazebo_ros_imu (IMUs), gazebo_ros_p3d (a link's odometry),
-// gazebo_ros_diff_drive and gazebo_ros_skid_steer_drive (DiffDriveControllers)
-// and gazebo_ros_control (its `robotNamespace`).
+// with gazebo_ros_imu (an IMU), gazebo_ros_p3d (a link's odometry),
+// gazebo_ros_diff_drive and gazebo_ros_skid_steer_drive (DiffDriveControllers),
+// gazebo_ros_control (its `robotNamespace`), the mimic-joint plugin, and
+// hector's (hector_plugins.h).
 #pragma once
 
 #include <tinyxml.h>
