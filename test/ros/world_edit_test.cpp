@@ -143,6 +143,17 @@ TEST_F(NodeSpawn, TheScriptPutsARobotInItsRobotNamespaceAndReadsItsControllersTh
   EXPECT_FALSE(advertised("/arm/joint_states"));
 }
 
+TEST_F(NodeSpawn, WithoutARobotNamespaceTheScriptGivesARobotItsOwnAsSpawnModelDoes) {
+  // spawn.test: at the launch's top, `spawn_body -urdf -param
+  // two_link_description -model two_link`, the controller `elbow_hold`
+  // loaded at the root, as ur_gazebo's launch spawns a UR arm (Gazebo gives
+  // every plugin spawn_model's namespace, /): its topics at the root, its
+  // controllers read there.
+  EXPECT_TRUE(
+      spinUntil([] { return advertised("/joint_states") && subscribes("/sim_node", "/elbow_hold/command"); }, 30.0));
+  EXPECT_FALSE(advertised("/two_link/joint_states"));
+}
+
 TEST_F(NodeSpawn, TheScriptTakesAFileAndRollPitchYawAsUrdfDoes) {
   // spawn.test: `spawn_body -urdf -file package://.../ball.urdf -model rolled
   // -x -3 -R 0.3 -P 0.2 -Y 0.1`: q = Rz(yaw) Ry(pitch) Rx(roll).
