@@ -176,6 +176,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     }
     sensors.push_back(mountSensors(configSensors(e.imu, e.odom_noise, e.lidars, e.cameras, key + "."),
                                    described.sensors, model, spec.dt, memory));
+    notes.insert(notes.end(), sensors.back().notes.begin(), sensors.back().notes.end());
     entry.push_back(-1 - static_cast<int>(robots.size()));
     robots.push_back({e.name, std::move(model), e.friction, e.restitution});
   }
@@ -228,6 +229,7 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
   DeviceMemory memory{config.device_memory};
   RobotSensors sensors = mountSensors(configSensors(config.imu, config.odom_noise, config.lidars, config.cameras, ""),
                                       described.sensors, model, config.model.dt, memory);
+  notes.insert(notes.end(), sensors.notes.begin(), sensors.notes.end());
   core::ModelSpec spec = config.model;
   spec.bodies.clear();
   const std::string name = model.name;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -217,6 +218,20 @@ void mountImus(const std::vector<ImuEntry>& entries, const core::ArticulationMod
   }
 }
 
+/// The note for a device that casts `rays` rays `rate` times a second of
+/// sim time, if that passes kRaysKeepingRealTime; "" otherwise.
+std::string rayCostNote(const std::string& what, const std::string& key, double rays, double rate) {
+  const double per_second = rays * rate;
+  if (per_second <= kRaysKeepingRealTime) return "";
+  std::ostringstream os;
+  os.precision(3);
+  os << what << " '" << key << "' casts " << per_second / 1e6
+     << " M rays a second of sim time while it is subscribed; one core here casts about 9 M a second among 100 "
+        "bodies and 50 M against one plane (bench/README.md, Range sensors): expect the node below real time "
+        "while it is subscribed (fewer rays or a lower rate keep it)";
+  return os.str();
+}
+
 }  // namespace
 
 void DeviceMemory::take(std::uintmax_t bytes, const std::string& key) {
@@ -243,6 +258,15 @@ RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup
       mountEarthSensors(sensors->magnetometers, model, dt, core::validateMagnetometer, out.magnetometers);
       mountContactSensors(sensors->contact_sensors, model, dt, out.contact_sensors);
     }
+    for (const RobotLidar& l : out.lidars) {
+      const core::LidarSettings& s = l.entry.settings;
+      out.notes.push_back(rayCostNote("lidar", l.entry.key, double(s.samples) * s.vertical_samples, l.entry.rate));
+    }
+    for (const RobotCamera& c : out.cameras) {
+      const core::DepthCameraSettings& s = c.entry.settings;
+      out.notes.push_back(rayCostNote("depth camera", c.entry.key, double(s.width) * s.height, c.entry.rate));
+    }
+    out.notes.erase(std::remove(out.notes.begin(), out.notes.end(), std::string()), out.notes.end());
   } catch (...) {
     memory.used = before;  // refused: none of this robot's devices is counted
     throw;

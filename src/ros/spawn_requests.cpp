@@ -176,6 +176,7 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
                          spawn);
       spawn.topics = robotTopics(spawn.sensor_prefix, spawn.control_prefix, spawn.sensors, spawn.controls);
       notes.insert(notes.end(), spawn.controls.notes.begin(), spawn.controls.notes.end());
+      notes.insert(notes.end(), spawn.sensors.notes.begin(), spawn.sensors.notes.end());
       spawn.request = req;
       res = spawns_.submit(std::move(spawn), [] { return ros::ok(); });  // the loop adds it at its next tick
       tellRepairs(notes, res);

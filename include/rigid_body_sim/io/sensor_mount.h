@@ -50,7 +50,16 @@ struct RobotSensors {
   std::vector<RobotMagnetometer> magnetometers;
   std::vector<RobotContactSensor> contact_sensors;
   std::uintmax_t bytes = 0;  ///< what its lidars and cameras may hold (core::lidarBytes, core::depthCameraBytes)
+  /// For the caller to say once (at start, or in a spawn's answer): each
+  /// lidar or camera whose rays a second of sim time (rays x rate) pass
+  /// kRaysKeepingRealTime, with what that costs.
+  std::vector<std::string> notes;
 };
+
+/// Rays a second of sim time that one device may cast and still leave the
+/// node near real time: about half of what one core casts among 100 bodies
+/// (bench/README.md, "Range sensors": 8.8 M/s for a culled depth camera).
+inline constexpr double kRaysKeepingRealTime = 4.0e6;
 
 /// What the lidars and depth cameras of a world may hold (config key
 /// `devices.memory`) and what those counted so far hold. Each is counted
@@ -75,7 +84,8 @@ struct DeviceMemory {
 /// An odometry's link "" is the base; it cannot be a lumped link (its
 /// twist is a moving link's).
 /// Each lidar and camera is counted in `memory` first (refused, naming its
-/// key, beyond it).
+/// key, beyond it), and named in the result's notes if it casts more than
+/// kRaysKeepingRealTime rays a second.
 RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup, const core::ArticulationModel& model,
                           double dt, DeviceMemory& memory);
 
