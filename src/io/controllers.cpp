@@ -264,4 +264,39 @@ RobotControls controlsOf(const YAML::Node& node, const std::string& path, const 
   return buildControls(with_markup(std::move(entries)), model);
 }
 
+void addBaseDrive(const std::optional<core::DriverSettings>& cmd_vel, const std::optional<BaseDriveEntry>& markup,
+                  const core::ArticulationModel& model, const std::string& key, RobotControls& controls) {
+  if (!cmd_vel && !markup) return;
+  const std::string where = cmd_vel ? "config key '" + key + "cmd_vel'" : markup->key;
+  if (model.fixed_base) {
+    throw ConfigError(where + ": robot '" + model.name +
+                      "' is fixed to the world (its root link is 'world'): no base to drive");
+  }
+  if (cmd_vel && markup) {
+    throw ConfigError(where + ": robot '" + model.name + "''s markup drives its base already (" + markup->key +
+                      "): give one of the two");
+  }
+  if (cmd_vel) {
+    controls.base_driver.emplace(*cmd_vel);
+    controls.base_driver_topic = "cmd_vel";
+    return;
+  }
+  core::DriverSettings s = markup->settings;
+  const core::SpatialInertia all = core::robotInertia_B(model, core::kinematics(model, core::restState(model)));
+  const core::Vec3 c = all.h / all.mass;
+  const double yaw_inertia = all.I_O(2, 2) - all.mass * (c.x() * c.x() + c.y() * c.y());
+  constexpr double kMostAcceleration = 2.0 * 9.81, kMostYawAcceleration = 40.0;  // m/s², rad/s²
+  s.max_force = std::clamp(kMostAcceleration * all.mass, 1e-6, 1e6);
+  s.max_torque = std::clamp(kMostYawAcceleration * yaw_inertia, 1e-6, 1e6);
+  if (markup->force_gain > 0.0) s.linear_gain = std::min(markup->force_gain / all.mass, 1e4);
+  if (markup->torque_gain > 0.0 && yaw_inertia > 0.0) s.angular_gain = std::min(markup->torque_gain / yaw_inertia, 1e4);
+  try {
+    core::validateDriver(s, markup->key);
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(e.what());
+  }
+  controls.base_driver.emplace(s);
+  controls.base_driver_topic = markup->topic;
+}
+
 }  // namespace rigid_body_sim::io

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "base_plugins.h"
 #include "drive_config.h"
 #include "hector_plugins.h"
 #include "rigid_body_sim/core/bodies/ranges.h"
@@ -218,7 +219,7 @@ bool readsModelPlugin(const TiXmlElement& plugin) {
   return file == "libgazebo_ros_imu.so" || file == "libgazebo_ros_p3d.so" || file == "libgazebo_ros_diff_drive.so" ||
          file == "libgazebo_ros_skid_steer_drive.so" || file == "libgazebo_ros_control.so" ||
          file == "libhector_gazebo_ros_imu.so" || file == "libhector_gazebo_ros_gps.so" ||
-         file == "libhector_gazebo_ros_magnetic.so" || isMimicPlugin(file);
+         file == "libhector_gazebo_ros_magnetic.so" || isMimicPlugin(file) || isBaseMovePlugin(file);
 }
 
 void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out) {
@@ -236,6 +237,8 @@ void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevi
     out.magnetometers.push_back(pluginHectorMagnetic(plugin));
   } else if (isMimicPlugin(file)) {
     out.mimics.push_back(pluginMimic(plugin));
+  } else if (isBaseMovePlugin(file)) {
+    readBaseMovePlugin(plugin, unread, out);
   } else if (file == "libgazebo_ros_control.so") {  // the controllers' namespace; they run every step
     const std::string where = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
     if (!childText(plugin, "robotNamespace", "").empty()) {  // empty: the root, as none

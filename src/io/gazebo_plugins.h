@@ -2,8 +2,9 @@
 // as Gazebo reads them (private to io): `<gazebo><plugin filename=...>`
 // with gazebo_ros_imu (an IMU), gazebo_ros_p3d (a link's odometry),
 // gazebo_ros_diff_drive and gazebo_ros_skid_steer_drive (DiffDriveControllers),
-// gazebo_ros_control (its `robotNamespace`), the mimic-joint plugin, and
-// hector's (hector_plugins.h).
+// gazebo_ros_control (its `robotNamespace`), the mimic-joint plugin,
+// hector's (hector_plugins.h), and planar_move and force_based_move
+// (base_plugins.h).
 #pragma once
 
 #include <tinyxml.h>

@@ -45,7 +45,7 @@ RobotDevices configSensors(const std::optional<ImuEntry>& imu, const std::option
   s.lidars = lidars;
   s.cameras = cameras;
   if (imu) s.imus.push_back(*imu);
-  if (odom_noise) s.odometry.push_back({"", "odom", "ground_truth", odom_noise, 0.0, key + "odom_noise"});
+  if (odom_noise) s.odometry.push_back(OdometryEntry::ofOdomNoise(*odom_noise, key + "odom_noise"));
   return s;
 }
 
@@ -74,18 +74,6 @@ class Files {
   UrdfOptions options_;
   std::map<std::string, Described> files_;
 };
-
-/// A robot's `cmd_vel` (config key `key`cmd_vel) into `controls`: refused
-/// for a robot fixed to the world, which has no base to drive.
-void addBaseDriver(const std::optional<core::DriverSettings>& cmd_vel, const core::ArticulationModel& model,
-                   const std::string& key, RobotControls& controls) {
-  if (!cmd_vel) return;
-  if (model.fixed_base) {
-    throw ConfigError("config key '" + key + "cmd_vel': robot '" + model.name +
-                      "' is fixed to the world (its root link is 'world'): no base to drive");
-  }
-  controls.base_driver.emplace(*cmd_vel);
-}
 
 /// The warnings for the scene's bodies and robots that start inside the
 /// static scene (insideSceneNote).
@@ -168,7 +156,7 @@ SceneSetup buildScene(const SimConfig& config, const UrdfReader& read) {
     checkRobotSettings(config, e.name);
     robot_starts.push_back(robotStart(model, e.initial, e.initial_joints, config.model.limits, key + ".initial"));
     controls.push_back(buildControls(allControllers(e.controllers, described.sensors), model));
-    addBaseDriver(e.cmd_vel, model, key + ".", controls.back());
+    addBaseDrive(e.cmd_vel, described.sensors.base_drive, model, key + ".", controls.back());
     controls.back().robot_namespace = described.sensors.robot_namespace;
     notes.insert(notes.end(), controls.back().notes.begin(), controls.back().notes.end());
     for (std::string& note : transmissionNotes(e.controllers, described.sensors.transmissions, model)) {
@@ -220,7 +208,7 @@ SceneSetup loadScene(const SimConfig& config, const std::function<UrdfText()>& s
   core::ArticulationState start =
       robotStart(model, config.initial, config.initial_joints, config.model.limits, "initial");
   RobotControls controls = buildControls(allControllers(config.controllers, described.sensors), model);
-  addBaseDriver(config.cmd_vel, model, "", controls);
+  addBaseDrive(config.cmd_vel, described.sensors.base_drive, model, "", controls);
   controls.robot_namespace = described.sensors.robot_namespace;
   notes.insert(notes.end(), controls.notes.begin(), controls.notes.end());
   for (std::string& note : transmissionNotes(config.controllers, described.sensors.transmissions, model)) {

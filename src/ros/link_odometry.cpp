@@ -10,6 +10,7 @@
 #include <cmath>
 #include <utility>
 
+#include "rigid_body_sim/ros/conversions.h"
 #include "rigid_body_sim/ros/link_imus.h"
 #include "rigid_body_sim/ros/state_publisher.h"
 #include "rigid_body_sim/ros/topic_claims.h"
@@ -63,13 +64,17 @@ void LinkOdometry::addRobot(const std::string& robot, const std::string& prefix,
     Port p;
     p.at = Schedule{o.link, o.X_LS, every(e.rate > 0.0 ? e.rate : publish_rate_)};
     p.child = frame_prefix + e.link;
+    if (!e.frame_id.empty()) p.frame = frame_prefix + e.frame_id;
+    p.on_tf = e.on_tf;
+    if (p.on_tf && !broadcaster_) broadcaster_.emplace();
     if (e.noise) p.noise.emplace(*e.noise);
     p.odom = CountedPublisher::advertise<nav_msgs::Odometry>(nh, resolved(e.topic), 10);
     if (!e.ground_truth.empty()) {
       p.truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh, resolved(e.ground_truth), 10);
     }
-    ROS_INFO("sim_node: odometry of '%s' link '%s' on %s at %g Hz%s", robot.c_str(), e.link.c_str(),
-             nh_.resolveName(resolved(e.topic)).c_str(), hz(p.at), e.noise ? ", with noise" : "");
+    const std::string on_tf = p.on_tf ? ", " + p.frame + " -> " + p.child + " on tf" : "";
+    ROS_INFO("sim_node: odometry of '%s' link '%s' on %s at %g Hz%s%s", robot.c_str(), e.link.c_str(),
+             nh_.resolveName(resolved(e.topic)).c_str(), hz(p.at), e.noise ? ", with noise" : "", on_tf.c_str());
     ports.odometry.push_back(std::move(p));
   }
   for (const io::RobotGnss& g : sensors.gnss) {
@@ -103,6 +108,14 @@ void LinkOdometry::addRobot(const std::string& robot, const std::string& prefix,
   robots_.push_back(std::move(ports));
 }
 
+std::vector<std::string> LinkOdometry::tfFrames(std::size_t r) const {
+  std::vector<std::string> out;
+  for (const Port& p : robots_.at(r).odometry) {
+    if (p.on_tf) out.push_back(p.child);
+  }
+  return out;
+}
+
 void LinkOdometry::restart() {
   for (RobotPorts& ports : robots_) {
     for (Port& p : ports.odometry) {
@@ -117,6 +130,7 @@ void LinkOdometry::publish(const core::Simulation& sim, long long steps, double 
   std_msgs::Header header;
   header.stamp = stamp;
   header.frame_id = world_frame_;
+  tf_.clear();
   for (std::size_t r = 0; r < robots_.size(); ++r) {
     bool placed = false;
     // The frame at X_LS in its link, the robot's links placed once for all its reports.
@@ -134,8 +148,16 @@ void LinkOdometry::publish(const core::Simulation& sim, long long steps, double 
       const double elapsed = p.at.elapsed(t, dt_);
       const core::OdomReport report = p.noise ? p.noise->report(link, elapsed) : core::exactOdom(link);
       if (!ros::ok()) continue;
-      if (p.odom.listened()) p.odom.publish(odometryMessage(report, p.child, header, std::nullopt));
-      if (p.truth.listened()) p.truth.publish(odometryMessage(core::exactOdom(link), p.child, header, std::nullopt));
+      std_msgs::Header h = header;
+      if (!p.frame.empty()) h.frame_id = p.frame;
+      if (p.odom.listened()) p.odom.publish(odometryMessage(report, p.child, h, std::nullopt));
+      if (p.truth.listened()) p.truth.publish(odometryMessage(core::exactOdom(link), p.child, h, std::nullopt));
+      if (p.on_tf) {
+        geometry_msgs::TransformStamped& tf = tf_.emplace_back();
+        tf.header = h;
+        tf.child_frame_id = p.child;
+        tf.transform = toTransform(report.p_WL, report.q_WL);
+      }
     }
     for (FixPort& p : ports.fixes) {
       if (steps % p.at.every != 0) continue;
@@ -163,6 +185,7 @@ void LinkOdometry::publish(const core::Simulation& sim, long long steps, double 
       }
     }
   }
+  if (!tf_.empty() && broadcaster_ && ros::ok()) broadcaster_->sendTransform(tf_);
 }
 
 }  // namespace rigid_body_sim::node

@@ -9,6 +9,7 @@
 
 #include "request_checks.h"
 #include "rigid_body_sim/ros/robot_ports.h"
+#include "rigid_body_sim/ros/topic_claims.h"
 
 namespace rigid_body_sim::node {
 
@@ -100,10 +101,11 @@ std::vector<ros::Subscriber> RobotCommands::subscribe(std::size_t r, const std::
   std::vector<ros::Subscriber> subscribers;
   ros::NodeHandle& nh = *handles_.at(r);
   if (controls_[r].base_driver) {  // cmd_vel on the robot: its base driven as a body's
+    const std::string topic = deviceTopic(prefix, controls_[r].base_driver_topic);
     subscribers.push_back(nh.subscribe<geometry_msgs::Twist>(
-        prefix + "cmd_vel", 10,
+        topic, 10,
         [this, at](const geometry_msgs::Twist::ConstPtr& m) { at([&](std::size_t k) { baseCommand(k, *m); }); }));
-    ROS_INFO("sim_node: robot '%s': its base driven by %s", name.c_str(), nh_.resolveName(prefix + "cmd_vel").c_str());
+    ROS_INFO("sim_node: robot '%s': its base driven by %s", name.c_str(), nh_.resolveName(topic).c_str());
   }
   const std::vector<core::JointControllerSpec>& specs = controls_[r].controllers.specs();
   for (std::size_t c = 0; c < specs.size(); ++c) {

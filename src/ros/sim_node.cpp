@@ -170,7 +170,6 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   link_odometry_.emplace(nh_, model_.dt(), settings_.publish_rate, settings_.world_frame);
   link_contacts_.emplace(nh_, model_.dt(), settings_.world_frame);
   for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
-    robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
     const std::string& name = sim_.scene.robots()[r].name;
     const std::string prefix = several ? name + "/" : "";
     const std::string& frame_prefix = robot_publisher_->robots()[r].frame_prefix;
@@ -178,6 +177,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     link_imus_->addRobot(sim_, r, prefix, frame_prefix, start_sensors_[r].imus);
     link_odometry_->addRobot(name, prefix, frame_prefix, start_sensors_[r]);
     link_contacts_->addRobot(name, prefix, frame_prefix, start_sensors_[r].contact_sensors);
+    leaveBase(r);
   }
   start_sensors_.clear();
   services_ = {
@@ -225,11 +225,18 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   const double hz = controls.joint_state_rate > 0.0 ? controls.joint_state_rate : settings_.publish_rate;
   robot_publisher_->addRobot(sim_.scene.robots()[r], control_prefix, hz, spawn.frame_prefix);
   commands_->addRobot(sim_, r, control_prefix, spawn.frame_prefix, std::move(controls));
-  robot_publisher_->leaveBase(r, commands_->odometryFrames(r));
   range_sensors_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.lidars, spawn.sensors.cameras);
   link_imus_->addRobot(sim_, r, prefix, spawn.frame_prefix, spawn.sensors.imus);
   link_odometry_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors);
   link_contacts_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.contact_sensors);
+  leaveBase(r);
+}
+
+void SimNode::leaveBase(std::size_t r) {
+  // A frame has one parent: a drive's or a base plugin's odom -> base takes world -> base's place.
+  std::vector<std::string> frames = commands_->odometryFrames(r);
+  for (std::string& frame : link_odometry_->tfFrames(r)) frames.push_back(std::move(frame));
+  robot_publisher_->leaveBase(r, frames);
 }
 
 void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {

@@ -124,7 +124,7 @@ void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf,
   if (!req.imu.empty()) config.imus.push_back(io::parseImuText(req.imu, "imu", dt));
   if (!req.odom_noise.empty()) {
     config.odometry.push_back(
-        {"", "odom", "ground_truth", io::parseOdomNoiseText(req.odom_noise, "odom_noise"), 0.0, "odom_noise"});
+        io::OdometryEntry::ofOdomNoise(io::parseOdomNoiseText(req.odom_noise, "odom_noise"), "odom_noise"));
   }
   io::UrdfOptions with_sensors = options;
   with_sensors.sensors = &markup;
@@ -145,9 +145,15 @@ void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf,
   spawn.controls.robot_namespace = req.robot_namespace.empty() ? markup.robot_namespace : req.robot_namespace;
   spawn.sensor_prefix = robotTopicPrefix(req.robot_namespace, req.name + "/");
   spawn.control_prefix = robotTopicPrefix(spawn.controls.robot_namespace, req.name + "/");
-  if (!req.cmd_vel.empty()) {
-    if (model.fixed_base) throw std::invalid_argument("cmd_vel: robot '" + req.name + "' is fixed to the world");
-    spawn.controls.base_driver.emplace(io::parseDriverText(req.cmd_vel, "cmd_vel"));
+  if (!req.cmd_vel.empty() && model.fixed_base) {
+    throw std::invalid_argument("cmd_vel: robot '" + req.name + "' is fixed to the world");
+  }
+  std::optional<core::DriverSettings> cmd_vel;
+  if (!req.cmd_vel.empty()) cmd_vel = io::parseDriverText(req.cmd_vel, "cmd_vel");
+  try {
+    io::addBaseDrive(cmd_vel, markup.base_drive, model, "", spawn.controls);
+  } catch (const io::ConfigError& e) {
+    throw std::invalid_argument(req.cmd_vel.empty() ? e.what() : "cmd_vel: " + std::string(e.what()));
   }
   spawn.frame_prefix = framePrefix(nh, paramNamespace(req));
   core::Scene::RobotSpec robot{req.name, std::move(model)};

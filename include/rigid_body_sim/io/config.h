@@ -96,7 +96,9 @@ struct DepthCameraEntry {
 /// Odometry of a robot's link as nav_msgs/Odometry, its pose in the world
 /// frame and its twist in the link's axes: a robot's `odom_noise` (its base
 /// on `odom` with the noise, and exact on `ground_truth`), or Gazebo's
-/// gazebo_ros_p3d (`bodyName` on `topicName`, `gaussianNoise` on its pose and twist).
+/// gazebo_ros_p3d (`bodyName` on `topicName`, `gaussianNoise` on its pose and twist),
+/// or gazebo_ros_planar_move's and gazebo_ros_force_based_move's (the truth
+/// in their `odometryFrame`, on tf too).
 struct OdometryEntry {
   std::string link;                              ///< "": the base
   std::string topic = "odom";                    ///< under the robot's prefix; /... as it is
@@ -104,6 +106,36 @@ struct OdometryEntry {
   std::optional<core::OdomNoiseSettings> noise;  ///< none: exact
   double rate = 0.0;                             ///< Hz of sim time; 0: the node's ~publish_rate
   std::string key = "odom_noise";                ///< for messages
+  /// The frame the pose is given in, after the robot's tf_prefix ("": the
+  /// world's): it coincides with the world's.
+  std::string frame_id;
+  /// frame_id -> the link's frame on tf too, in place of world -> base.
+  bool on_tf = false;
+
+  /// A robot's `odom_noise` (config key `key`): its base on `odom` with
+  /// the noise, exact on `ground_truth`.
+  static OdometryEntry ofOdomNoise(const core::OdomNoiseSettings& noise, const std::string& key) {
+    OdometryEntry e;
+    e.topic = "odom";
+    e.ground_truth = "ground_truth";
+    e.noise = noise;
+    e.key = key;
+    return e;
+  }
+};
+
+/// A robot's base driven toward a commanded twist by a wrench
+/// (core::VelocityDriver, core::baseLoad), on `topic` under the robot's
+/// prefix: a config's `cmd_vel`, or gazebo_ros_planar_move's and
+/// gazebo_ros_force_based_move's `commandTopic`.
+struct BaseDriveEntry {
+  core::DriverSettings settings;
+  std::string topic = "cmd_vel";
+  /// force_based_move's gains, N per m/s and N·m per rad/s (0: settings'
+  /// own, per kg and per kg·m²): divided by the robot's mass and yaw
+  /// inertia when it is known.
+  double force_gain = 0.0, torque_gain = 0.0;
+  std::string key = "cmd_vel";
 };
 
 /// A GNSS receiver on a robot's link (hector_gazebo_ros_gps): its fix as
@@ -232,6 +264,8 @@ struct RobotDevices {
   /// The markup's drives (gazebo_ros_diff_drive) as DiffDriveControllers,
   /// run beside the config's `controllers`.
   std::vector<ControllerEntry> controllers;
+  /// gazebo_ros_planar_move's or gazebo_ros_force_based_move's base drive.
+  std::optional<BaseDriveEntry> base_drive;
   std::vector<TransmissionEntry> transmissions;  ///< the URDF's, to check the config's controllers against
   /// The mimic-joint plugins' (roboticsgroup's): joint `follower` at
   /// multiplier · `leader` + offset, as a URDF <mimic> (set on the URDF's

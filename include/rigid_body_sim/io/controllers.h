@@ -27,12 +27,24 @@ struct RobotControls {
   /// `cmd_vel` on the robot (a body's key): its floating base driven toward
   /// the commanded twist by a wrench (core::baseLoad), not through wheels.
   std::optional<core::VelocityDriver> base_driver;
+  /// Its command topic (a config's `cmd_vel`: "cmd_vel"; a markup plugin's
+  /// `commandTopic`), under the robot's prefix, or from the root ('/...').
+  std::string base_driver_topic = "cmd_vel";
   /// gazebo_ros_control's `robotNamespace` in the URDF's markup ("": none):
   /// the namespace of the robot's controllers' topics and joint_states.
   std::string robot_namespace;
   /// What loading them has to say, for the log (the keys not read, in one line).
   std::vector<std::string> notes;
 };
+
+/// The robot's base drive into controls.base_driver: the config's
+/// `cmd_vel` (config key `key` + "cmd_vel"), else its markup's planar_move
+/// or force_based_move (`markup`), whose force gains are divided by the
+/// robot's mass and yaw inertia at rest, its most force and torque 2 g of
+/// that mass and 40 rad/s² of that inertia. Refused (ConfigError naming
+/// the key): either for a robot fixed to the world, or both given.
+void addBaseDrive(const std::optional<core::DriverSettings>& cmd_vel, const std::optional<BaseDriveEntry>& markup,
+                  const core::ArticulationModel& model, const std::string& key, RobotControls& controls);
 
 /// The types this project runs, as ros_controllers names them.
 std::vector<std::string> controllerTypes();

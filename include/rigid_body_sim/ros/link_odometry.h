@@ -4,7 +4,9 @@
 //   exact on `ground_truth`) and Gazebo's gazebo_ros_p3d, each a
 //   nav_msgs/Odometry of its link (core/devices/odom_noise.h,
 //   docs/physics.md §10.2): the pose in the world frame, the twist in the
-//   link's axes (child_frame_id);
+//   link's axes (child_frame_id); and gazebo_ros_planar_move's and
+//   force_based_move's, the truth in their odometry frame (where the world
+//   is), odom -> link on tf too;
 // - hector's GNSS receivers (sensor_msgs/NavSatFix and its velocity,
 //   geometry_msgs/Vector3Stamped) and magnetometers (Vector3Stamped or
 //   sensor_msgs/MagneticField), core/devices/earth_sensors.h, §10.9.
@@ -12,6 +14,7 @@
 #pragma once
 
 #include <ros/ros.h>
+#include <tf2_ros/transform_broadcaster.h>
 
 #include <cstddef>
 #include <memory>
@@ -37,6 +40,9 @@ class LinkOdometry {
   /// under `prefix` (an absolute topic as it is), frames after `frame_prefix`.
   void addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
                 const io::RobotSensors& sensors);
+  /// The frames robot r's odometry puts on tf (odom -> frame, after its
+  /// tf_prefix): the world's frame of its base leaves tf for them.
+  std::vector<std::string> tfFrames(std::size_t r) const;
   /// Robot r deleted: its topics close; the later robots move down by one.
   void removeRobot(std::size_t r) {
     robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r));
@@ -65,7 +71,9 @@ class LinkOdometry {
   };
   struct Port {
     Schedule at;
-    std::string child;  ///< the link's frame: the twist's axes
+    std::string child;   ///< the link's frame: the twist's axes
+    std::string frame;   ///< the pose's frame ("": the world's)
+    bool on_tf = false;  ///< frame -> child on tf too
     std::optional<core::OdomNoise> noise;
     CountedPublisher odom, truth;
   };
@@ -93,8 +101,10 @@ class LinkOdometry {
   double dt_, publish_rate_;
   std::string world_frame_;
   std::vector<RobotPorts> robots_;
-  std::vector<std::shared_ptr<ros::NodeHandle>> handles_;  ///< per robot, its own (ownHandle)
-  core::ArticulationKinematics kin_;                       ///< reused by every report
+  std::vector<std::shared_ptr<ros::NodeHandle>> handles_;     ///< per robot, its own (ownHandle)
+  core::ArticulationKinematics kin_;                          ///< reused by every report
+  std::vector<geometry_msgs::TransformStamped> tf_;           ///< this publication's, reused
+  std::optional<tf2_ros::TransformBroadcaster> broadcaster_;  ///< made with the first odometry on tf
 };
 
 }  // namespace rigid_body_sim::node

@@ -106,6 +106,8 @@ class SimNode {
   void afterDelete(const std::string& name);
   /// After the robot of `spawn` was added last: its joint_states and controllers under its name.
   void afterRobotSpawn(SpawnQueue::Spawn& spawn);
+  /// Robot r's base leaves world -> base on tf where its odometry puts it there.
+  void leaveBase(std::size_t r);
   /// After robot r, named `name`, was deleted: its joint_states and controllers go.
   void afterRobotDelete(std::size_t r, const std::string& name);
 

@@ -85,10 +85,7 @@ BodyLoad VelocityDriver::load(const LinkState& link, double mass, const Mat3& I_
   return out;
 }
 
-Vec6 baseLoad(VelocityDriver& driver, const ArticulationModel& model, const ArticulationKinematics& kin, double t,
-              double h) {
-  // The robot about its base's origin, in the base's axes: each link's
-  // inertia carried there (§11.3's composite, over every link).
+SpatialInertia robotInertia_B(const ArticulationModel& model, const ArticulationKinematics& kin) {
   const Placement& X_WB = kin.X_WL[0];
   SpatialInertia all;
   for (std::size_t k = 0; k < model.links.size(); ++k) {
@@ -99,6 +96,13 @@ Vec6 baseLoad(VelocityDriver& driver, const ArticulationModel& model, const Arti
     all.h += I_B.h;
     all.I_O += I_B.I_O;
   }
+  return all;
+}
+
+Vec6 baseLoad(VelocityDriver& driver, const ArticulationModel& model, const ArticulationKinematics& kin, double t,
+              double h) {
+  const Placement& X_WB = kin.X_WL[0];
+  const SpatialInertia all = robotInertia_B(model, kin);
   const Vec3 c_B = all.h / all.mass;  // the centre of mass
   const Mat3 I_C_B = all.I_O - all.mass * (c_B.squaredNorm() * Mat3::Identity() - c_B * c_B.transpose());
   LinkState base;

@@ -59,6 +59,10 @@ class VelocityDriver {
   Vec3 v_integral_ = Vec3::Zero(), w_integral_ = Vec3::Zero();  ///< ∫e dt, in the frame the error is taken in
 };
 
+/// The whole robot at `kin` as one body, about its base link's origin in
+/// the base's axes: each link's inertia carried there (§11.3's composite).
+SpatialInertia robotInertia_B(const ArticulationModel& model, const ArticulationKinematics& kin);
+
 /// The driver's load on a robot's floating base (`cmd_vel` on a robot):
 /// the whole robot at `kin` taken as one body (its mass, centre of mass and
 /// inertia about it, with its joints as they are), the error on the base

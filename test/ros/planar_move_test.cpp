@@ -1,0 +1,97 @@
+// gazebo_ros_planar_move in a robot's markup (planar_move.test,
+// test/ros/planar_move.urdf): its base driven at the commanded twist in its
+// heading, its odometry the truth in `odom`, odom -> base_footprint on tf in
+// place of world -> base_footprint.
+#include <geometry_msgs/Twist.h>
+#include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "node_fixture.h"
+#include "rigid_body_sim/BodyStates.h"
+
+namespace {
+
+using namespace rbs_test;
+
+TEST(GazeboPlanarMove, ItsBaseMovesAtTheCommandedTwistAndItsOdometryIsTheTruthInOdom) {
+  ros::NodeHandle nh;
+  std::vector<nav_msgs::Odometry> odom;
+  ros::Subscriber odom_sub = nh.subscribe<nav_msgs::Odometry>(
+      "/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { odom.push_back(*m); });
+  std::vector<rigid_body_sim::BodyStates> truth;
+  ros::Subscriber truth_sub = nh.subscribe<rigid_body_sim::BodyStates>(
+      "/sim_node/body_states", 1000, [&](const rigid_body_sim::BodyStates::ConstPtr& m) { truth.push_back(*m); });
+  std::vector<std::string> parents;  // of base_footprint on /tf
+  ros::Subscriber tf_sub = nh.subscribe<tf2_msgs::TFMessage>("/tf", 1000, [&](const tf2_msgs::TFMessage::ConstPtr& m) {
+    for (const auto& t : m->transforms) {
+      if (t.child_frame_id == "base_footprint") parents.push_back(t.header.frame_id);
+    }
+  });
+  ros::Publisher cmd_vel = nh.advertise<geometry_msgs::Twist>("/cmd_vel", 10);
+  ASSERT_TRUE(spinUntil([&] { return cmd_vel.getNumSubscribers() > 0; }, 30.0));  // the plugin's drive listens
+  ASSERT_TRUE(spinUntil([&] { return !odom.empty() && !truth.empty() && !parents.empty(); }, 30.0));
+  const auto simTime = [&] { return truth.back().header.stamp.toSec(); };
+  // Holonomic: forward, sideways and turning at once, in its own heading.
+  geometry_msgs::Twist cmd;
+  cmd.linear.x = 0.3;
+  cmd.linear.y = -0.2;
+  cmd.angular.z = 0.4;
+  const double start = simTime();
+  ASSERT_TRUE(spinUntil(
+      [&] {
+        cmd_vel.publish(cmd);
+        return simTime() >= start + 3.0;
+      },
+      60.0));
+  // Its twist in its own axes (body_states gives the root link's) over the last second.
+  double vx = 0.0, vy = 0.0, wz = 0.0;
+  int n = 0;
+  for (const auto& s : truth) {
+    if (s.header.stamp.toSec() < start + 2.0) continue;
+    vx += s.twists.at(0).linear.x;
+    vy += s.twists[0].linear.y;
+    wz += s.twists[0].angular.z;
+    ++n;
+  }
+  ASSERT_GT(n, 10);
+  EXPECT_NEAR(vx / n, 0.3, 0.006);
+  EXPECT_NEAR(vy / n, -0.2, 0.004);
+  EXPECT_NEAR(wz / n, 0.4, 0.008);
+  // Its odometry: the truth, in odom (where the world is), at 50 Hz.
+  const nav_msgs::Odometry& o = odom.back();
+  EXPECT_EQ(o.header.frame_id, "odom");
+  EXPECT_EQ(o.child_frame_id, "base_footprint");
+  bool compared = false;
+  for (const auto& s : truth) {
+    if (s.header.stamp != o.header.stamp) continue;
+    EXPECT_NEAR(o.pose.pose.position.x, s.poses.at(0).position.x, 1e-9);
+    EXPECT_NEAR(o.pose.pose.position.y, s.poses[0].position.y, 1e-9);
+    EXPECT_NEAR(o.pose.pose.orientation.z, s.poses[0].orientation.z, 1e-9);
+    EXPECT_NEAR(o.twist.twist.linear.x, s.twists[0].linear.x, 1e-9);
+    compared = true;
+  }
+  EXPECT_TRUE(compared) << "no body_states at the odometry's stamp";
+  int in_window = 0;
+  for (const auto& m : odom) in_window += m.header.stamp.toSec() > start + 1.0 && m.header.stamp.toSec() <= start + 3.0;
+  EXPECT_NEAR(in_window, 100, 2) << "odometry messages in 2 s at 50 Hz";
+  // One parent for base_footprint on tf: odom, never the world.
+  for (const std::string& p : parents) EXPECT_EQ(p, "odom");
+  // Held until the next command (the plugin has no timeout): a zero stops it.
+  cmd = geometry_msgs::Twist();
+  const double stop = simTime();
+  ASSERT_TRUE(spinUntil(
+      [&] {
+        cmd_vel.publish(cmd);
+        return simTime() >= stop + 1.0;
+      },
+      60.0));
+  EXPECT_NEAR(std::hypot(truth.back().twists[0].linear.x, truth.back().twists[0].linear.y), 0.0, 1e-3);
+}
+
+}  // namespace
