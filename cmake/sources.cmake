@@ -33,6 +33,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/devices/earth_sensors.cpp
   ${RBS_SOURCE_ROOT}/src/core/devices/odom_noise.cpp
   ${RBS_SOURCE_ROOT}/src/core/devices/range_finder.cpp
+  ${RBS_SOURCE_ROOT}/src/core/devices/force_torque.cpp
   ${RBS_SOURCE_ROOT}/src/core/devices/ray_cast.cpp
   ${RBS_SOURCE_ROOT}/src/core/step/parallel.cpp
   ${RBS_SOURCE_ROOT}/src/core/step/penalty.cpp

@@ -189,6 +189,23 @@ ControllerEntry pluginSkidSteer(const TiXmlElement& plugin, const Unread& unread
   unread("<plugin> libgazebo_ros_skid_steer_drive.so odometry of the truth (odometry from the wheels here)", e.name);
   return e;
 }
+/// gazebo_ros_ft_sensor's model plugin: `jointName` and `topicName`
+/// (both required, as the plugin's), at `updateRate` (0 or none: every
+/// step), `gaussianNoise` (0) on each of its six numbers.
+ForceTorqueEntry pluginForceTorque(const TiXmlElement& plugin) {
+  ForceTorqueEntry f;
+  f.key = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
+  f.joint = childText(plugin, "jointName", "");
+  if (f.joint.empty()) throw std::invalid_argument(f.key + ": <jointName> is required");
+  if (childText(plugin, "topicName", "").empty()) throw std::invalid_argument(f.key + ": <topicName> is required");
+  f.topic = childTopic(plugin, "topicName", "", f.key);
+  const Numbers numbers(f.key);
+  numbers.rate(&plugin, "updateRate", f.rate);
+  numbers.at(&plugin, "gaussianNoise", f.settings.noise,
+             Bounds{0.0, std::numeric_limits<double>::infinity(), false, "(sigma, N and N*m)"});
+  return f;
+}
+
 /// roboticsgroup's mimic-joint plugin (its two names): `mimicJoint`
 /// follows `joint` at `multiplier` (1) and `offset` (0 rad or m), held by
 /// the core's mimic row as a URDF <mimic> is, so `hasPID`, `maxEffort`
@@ -219,7 +236,8 @@ bool readsModelPlugin(const TiXmlElement& plugin) {
   return file == "libgazebo_ros_imu.so" || file == "libgazebo_ros_p3d.so" || file == "libgazebo_ros_diff_drive.so" ||
          file == "libgazebo_ros_skid_steer_drive.so" || file == "libgazebo_ros_control.so" ||
          file == "libhector_gazebo_ros_imu.so" || file == "libhector_gazebo_ros_gps.so" ||
-         file == "libhector_gazebo_ros_magnetic.so" || isMimicPlugin(file) || isBaseMovePlugin(file);
+         file == "libhector_gazebo_ros_magnetic.so" || file == "libgazebo_ros_ft_sensor.so" || isMimicPlugin(file) ||
+         isBaseMovePlugin(file);
 }
 
 void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out) {
@@ -239,6 +257,8 @@ void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevi
     out.mimics.push_back(pluginMimic(plugin));
   } else if (isBaseMovePlugin(file)) {
     readBaseMovePlugin(plugin, unread, out);
+  } else if (file == "libgazebo_ros_ft_sensor.so") {
+    out.force_torques.push_back(pluginForceTorque(plugin));
   } else if (file == "libgazebo_ros_control.so") {  // the controllers' namespace; they run every step
     const std::string where = "<gazebo> <plugin name=\"" + attribute(plugin, "name") + "\">";
     if (!childText(plugin, "robotNamespace", "").empty()) {  // empty: the root, as none

@@ -218,6 +218,36 @@ void mountImus(const std::vector<ImuEntry>& entries, const core::ArticulationMod
   }
 }
 
+/// The force-torque sensors of `entries` on the moving joints they name,
+/// a rate capped at one a step; one on no moving joint into `notes`.
+void mountForceTorques(const std::vector<ForceTorqueEntry>& entries, const core::ArticulationModel& model, double dt,
+                       std::vector<RobotForceTorque>& out, std::vector<std::string>& notes) {
+  for (const ForceTorqueEntry& e : entries) {
+    checkTopic(e.topic, e.key);
+    try {
+      core::checkForceTorque(e.settings);
+    } catch (const std::invalid_argument& err) {
+      throw ConfigError(e.key + ": " + err.what());
+    }
+    RobotForceTorque mounted{e, -1};
+    mounted.entry.rate = e.rate > 0.0 ? std::min(e.rate, 1.0 / dt) : 0.0;
+    std::string joints;
+    for (std::size_t i = 1; i < model.links.size(); ++i) {
+      if (model.links[i].joint == e.joint) mounted.link = static_cast<int>(i);
+      joints += (joints.empty() ? "'" : ", '") + model.links[i].joint + "'";
+    }
+    if (mounted.link < 0) {
+      notes.push_back(e.key + " libgazebo_ros_ft_sensor.so: robot '" + model.name + "' has no moving joint '" +
+                      e.joint +
+                      "' (a fixed joint is lumped, as Gazebo lumps it, and the plugin does not load; its moving "
+                      "joints: " +
+                      joints + "): not run");
+      continue;
+    }
+    out.push_back(std::move(mounted));
+  }
+}
+
 /// The note for a device that casts `rays` rays `rate` times a second of
 /// sim time, if that passes kRaysKeepingRealTime; "" otherwise.
 std::string rayCostNote(const std::string& what, const std::string& key, double rays, double rate) {
@@ -257,6 +287,7 @@ RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup
       for (const GnssEntry& g : sensors->gnss) checkTopic(g.velocity_topic, g.key);
       mountEarthSensors(sensors->magnetometers, model, dt, core::validateMagnetometer, out.magnetometers);
       mountContactSensors(sensors->contact_sensors, model, dt, out.contact_sensors);
+      mountForceTorques(sensors->force_torques, model, dt, out.force_torques, out.notes);
     }
     for (const RobotLidar& l : out.lidars) {
       const core::LidarSettings& s = l.entry.settings;

@@ -27,6 +27,7 @@ void SimNode::stepOnce() {
     loads_[i].torque_W += drive.torque_W;
   }
   commands_->loadsFor(sim_, t, robot_loads_);  // the robots' controllers, from the state before the step
+  joint_wrenches_->before(sim_);
   sim_.step(loads_, robot_loads_);
   commands_->observe(sim_);  // the drives' odometry, from where the step left the wheels
   reportStep();
@@ -37,6 +38,7 @@ void SimNode::stepOnce() {
   link_odometry_->publish(sim_, steps_, simTime(), stamp());
   sim_.contacts.update(state_, workspace_.contacts);
   link_contacts_->publish(sim_, steps_, stamp());
+  joint_wrenches_->publish(sim_, robot_loads_, steps_, stamp());
   schedule_.dropFinished(simTime());
   sim_.joint_efforts.dropFinished(simTime());
   if (steps_ % publish_every_ == 0) {

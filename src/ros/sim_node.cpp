@@ -169,6 +169,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   link_imus_.emplace(nh_, model_.dt());
   link_odometry_.emplace(nh_, model_.dt(), settings_.publish_rate, settings_.world_frame);
   link_contacts_.emplace(nh_, model_.dt(), settings_.world_frame);
+  joint_wrenches_.emplace(nh_, model_.dt());
   for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
     const std::string& name = sim_.scene.robots()[r].name;
     const std::string prefix = several ? name + "/" : "";
@@ -177,6 +178,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     link_imus_->addRobot(sim_, r, prefix, frame_prefix, start_sensors_[r].imus);
     link_odometry_->addRobot(name, prefix, frame_prefix, start_sensors_[r]);
     link_contacts_->addRobot(name, prefix, frame_prefix, start_sensors_[r].contact_sensors);
+    joint_wrenches_->addRobot(name, prefix, frame_prefix, start_sensors_[r].force_torques);
     leaveBase(r);
   }
   start_sensors_.clear();
@@ -229,6 +231,7 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   link_imus_->addRobot(sim_, r, prefix, spawn.frame_prefix, spawn.sensors.imus);
   link_odometry_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors);
   link_contacts_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.contact_sensors);
+  joint_wrenches_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.force_torques);
   leaveBase(r);
 }
 
@@ -246,6 +249,7 @@ void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {
   link_imus_->removeRobot(r);
   link_odometry_->removeRobot(r);
   link_contacts_->removeRobot(r);
+  joint_wrenches_->removeRobot(r);
   robots_speed_limited_.erase(name);
 }
 

@@ -77,6 +77,9 @@ std::vector<TopicClaims::Claim> robotTopics(const std::string& prefix, const std
   for (const io::RobotContactSensor& c : sensors.contact_sensors) {
     out.push_back({deviceTopic(prefix, c.entry.topic), c.entry.key});
   }
+  for (const io::RobotForceTorque& f : sensors.force_torques) {
+    out.push_back({deviceTopic(prefix, f.entry.topic), f.entry.key});
+  }
   for (const io::RobotMagnetometer& m : sensors.magnetometers) {
     out.push_back({deviceTopic(prefix, m.entry.topic), m.entry.key});
   }

@@ -19,6 +19,7 @@
 #include "rigid_body_sim/core/controllers/joint_control.h"
 #include "rigid_body_sim/core/devices/depth_camera.h"
 #include "rigid_body_sim/core/devices/earth_sensors.h"
+#include "rigid_body_sim/core/devices/force_torque.h"
 #include "rigid_body_sim/core/devices/imu.h"
 #include "rigid_body_sim/core/devices/lidar.h"
 #include "rigid_body_sim/core/devices/odom_noise.h"
@@ -122,6 +123,18 @@ struct OdometryEntry {
     e.key = key;
     return e;
   }
+};
+
+/// A force-torque sensor on a robot's joint (gazebo_ros_ft_sensor): the
+/// wrench the joint carries onto its child link (core::ForceTorqueSensor)
+/// as geometry_msgs/WrenchStamped on `topic` under the robot's prefix,
+/// headed the child link's frame.
+struct ForceTorqueEntry {
+  core::ForceTorqueSettings settings;
+  std::string joint;
+  std::string topic;
+  double rate = 0.0;  ///< Hz of sim time; 0: every step
+  std::string key;
 };
 
 /// A robot's base driven toward a commanded twist by a wrench
@@ -261,6 +274,7 @@ struct RobotDevices {
   std::vector<GnssEntry> gnss;
   std::vector<MagnetometerEntry> magnetometers;
   std::vector<ContactSensorEntry> contact_sensors;
+  std::vector<ForceTorqueEntry> force_torques;
   /// The markup's drives (gazebo_ros_diff_drive) as DiffDriveControllers,
   /// run beside the config's `controllers`.
   std::vector<ControllerEntry> controllers;

@@ -40,6 +40,12 @@ struct RobotImu {
   int link = 0;
 };
 
+/// A force-torque sensor on the joint of moving link `link` (index in the model).
+struct RobotForceTorque {
+  ForceTorqueEntry entry;
+  int link = 0;
+};
+
 /// Every sensor of one robot, on its links.
 struct RobotSensors {
   std::vector<RobotImu> imus;
@@ -49,6 +55,7 @@ struct RobotSensors {
   std::vector<RobotGnss> gnss;
   std::vector<RobotMagnetometer> magnetometers;
   std::vector<RobotContactSensor> contact_sensors;
+  std::vector<RobotForceTorque> force_torques;
   std::uintmax_t bytes = 0;  ///< what its lidars and cameras may hold (core::lidarBytes, core::depthCameraBytes)
   /// For the caller to say once (at start, or in a spawn's answer): each
   /// lidar or camera whose rays a second of sim time (rays x rate) pass
@@ -81,6 +88,9 @@ struct DeviceMemory {
 /// have (the message lists its links), settings core::checkLidar,
 /// core::validateImu or core::validateOdomNoise refuse, a lidar's or an
 /// odometry's rate outside the publish rates, a topic ROS cannot name.
+/// A force-torque sensor on no moving joint (a fixed one is lumped, as
+/// Gazebo lumps it, and the plugin then does not load) is said in the
+/// notes and not mounted.
 /// An odometry's link "" is the base; it cannot be a lumped link (its
 /// twist is a moving link's).
 /// Each lidar and camera is counted in `memory` first (refused, naming its

@@ -40,6 +40,7 @@
 #include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
 #include "rigid_body_sim/ros/joint_requests.h"
+#include "rigid_body_sim/ros/joint_wrenches.h"
 #include "rigid_body_sim/ros/link_contacts.h"
 #include "rigid_body_sim/ros/link_imus.h"
 #include "rigid_body_sim/ros/link_odometry.h"
@@ -147,6 +148,7 @@ class SimNode {
   std::optional<LinkImus> link_imus_;                 ///< the IMUs on robots' links
   std::optional<LinkOdometry> link_odometry_;         ///< the odometry of robots' links (odom_noise, p3d)
   std::optional<LinkContacts> link_contacts_;         ///< the contact sensors on robots' links (bumpers)
+  std::optional<JointWrenches> joint_wrenches_;       ///< the force-torque sensors on robots' joints
 
   /// Every body's frames, topics and devices, and its names: a spawn, a
   /// delete and a reset go through it (body_ports.h).
@@ -179,6 +181,7 @@ class SimNode {
          range_sensors_->restart();
          for (std::size_t r = 0; r < sim_.robots.size(); ++r) link_imus_->restart(sim_, r);
          link_odometry_->restart();
+         joint_wrenches_->restart();
        }}};
   /// set_model_configuration, get_joint_properties.
   JointRequests joint_requests_{sim_, time_, [this](std::size_t r) {

@@ -192,6 +192,17 @@ Eigen::VectorXd inverseDynamics(const ArticulationModel& model, const Articulati
   return newtonEuler(model, kin, &udot, g_W, wrench_L, true);
 }
 
+std::vector<Vec6> jointWrenches(const ArticulationModel& model, const ArticulationKinematics& kin,
+                                const Eigen::VectorXd& udot, const Vec3& g_W, const std::vector<Vec6>& wrench_L) {
+  // The backward pass leaves each link's f as its subtree's sum, which its
+  // joint carries: its children are added before it is (a parent's index
+  // is below its children's).
+  DynamicsScratch scratch;
+  Eigen::VectorXd tau;
+  newtonEuler(model, kin, &udot, g_W, wrench_L, true, scratch, tau);
+  return scratch.f;
+}
+
 Eigen::VectorXd biasForces(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
                            const std::vector<Vec6>& wrench_L) {
   return newtonEuler(model, kin, nullptr, g_W, wrench_L, true);

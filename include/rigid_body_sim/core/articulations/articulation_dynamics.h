@@ -68,6 +68,15 @@ double jointResponse(const ArticulationModel& model, const ArticulationKinematic
 Eigen::VectorXd inverseDynamics(const ArticulationModel& model, const ArticulationKinematics& kin,
                                 const Eigen::VectorXd& udot, const Vec3& g_W, const std::vector<Vec6>& wrench_L = {});
 
+/// What each joint carries (§11.4, the backward pass of inverseDynamics):
+/// per link, the wrench its parent puts on it through its joint, the sum
+/// over its subtree of I a + v ×* I v less gravity's and `wrench_L`'s, at
+/// the generalized accelerations `udot`: [moment about the link's origin;
+/// force], in its axes, N·m and N. Entry 0 is the base's: what would hold
+/// the whole robot so (zero for a free base at the accelerations its loads give).
+std::vector<Vec6> jointWrenches(const ArticulationModel& model, const ArticulationKinematics& kin,
+                                const Eigen::VectorXd& udot, const Vec3& g_W, const std::vector<Vec6>& wrench_L = {});
+
 /// The bias forces c(q, u): Coriolis, centrifugal and gravity terms (and
 /// the external wrenches', with the opposite sign): inverse dynamics at u̇ = 0.
 Eigen::VectorXd biasForces(const ArticulationModel& model, const ArticulationKinematics& kin, const Vec3& g_W,
