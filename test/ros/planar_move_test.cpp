@@ -37,18 +37,22 @@ TEST(GazeboPlanarMove, ItsBaseMovesAtTheCommandedTwistAndItsOdometryIsTheTruthIn
   ASSERT_TRUE(spinUntil([&] { return cmd_vel.getNumSubscribers() > 0; }, 30.0));  // the plugin's drive listens
   ASSERT_TRUE(spinUntil([&] { return !odom.empty() && !truth.empty() && !parents.empty(); }, 30.0));
   const auto simTime = [&] { return truth.back().header.stamp.toSec(); };
+  // `cmd` sent for `seconds` of sim time from `from`.
+  const auto send = [&](const geometry_msgs::Twist& cmd, double from, double seconds) {
+    return spinUntil(
+        [&] {
+          cmd_vel.publish(cmd);
+          return simTime() >= from + seconds;
+        },
+        60.0);
+  };
   // Holonomic: forward, sideways and turning at once, in its own heading.
   geometry_msgs::Twist cmd;
   cmd.linear.x = 0.3;
   cmd.linear.y = -0.2;
   cmd.angular.z = 0.4;
   const double start = simTime();
-  ASSERT_TRUE(spinUntil(
-      [&] {
-        cmd_vel.publish(cmd);
-        return simTime() >= start + 3.0;
-      },
-      60.0));
+  ASSERT_TRUE(send(cmd, start, 3.0));
   // Its twist in its own axes (body_states gives the root link's) over the last second.
   double vx = 0.0, vy = 0.0, wz = 0.0;
   int n = 0;
@@ -83,14 +87,7 @@ TEST(GazeboPlanarMove, ItsBaseMovesAtTheCommandedTwistAndItsOdometryIsTheTruthIn
   // One parent for base_footprint on tf: odom, never the world.
   for (const std::string& p : parents) EXPECT_EQ(p, "odom");
   // Held until the next command (the plugin has no timeout): a zero stops it.
-  cmd = geometry_msgs::Twist();
-  const double stop = simTime();
-  ASSERT_TRUE(spinUntil(
-      [&] {
-        cmd_vel.publish(cmd);
-        return simTime() >= stop + 1.0;
-      },
-      60.0));
+  ASSERT_TRUE(send(geometry_msgs::Twist(), simTime(), 1.0));
   EXPECT_NEAR(std::hypot(truth.back().twists[0].linear.x, truth.back().twists[0].linear.y), 0.0, 1e-3);
 }
 
