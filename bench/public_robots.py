@@ -57,6 +57,14 @@ ROBOTS = {
     "jackal": dict(urdf="jackal.urdf", model="jackal", yaml="jackal/jackal_control/config/control.yaml",
                    flags=["-z", "1.0"], cmd="/jackal_velocity_controller/cmd_vel", speed=0.5),
     "rosbot": dict(urdf="rosbot.urdf", model="rosbot", cmd="/cmd_vel", speed=0.3),
+    "kobuki": dict(urdf="kobuki.urdf", model="mobile_base", flags=["-unpause"],
+                   cmd="/mobile_base/commands/velocity", speed=0.3),
+    "mir_100": dict(urdf="mir.urdf", model="mir",
+                    yaml=["mir_robot/mir_description/config/joint_state_controller.yaml",
+                          "mir_robot/mir_description/config/diffdrive_controller.yaml"],
+                    args={"prefix": ""}, cmd="/mobile_base_controller/cmd_vel", speed=0.5),
+    "ridgeback": dict(urdf="ridgeback.urdf", model="ridgeback", yaml="ridgeback/ridgeback_control/config/control.yaml",
+                      cmd="/cmd_vel", speed=0.5),
     "ur5": dict(urdf="ur5.urdf", model="robot", yaml="universal_robot/ur_gazebo/config/ur5_controllers.yaml",
                 flags=["-z", "0.1"], arm="/eff_joint_traj_controller/command"),
     "ur10": dict(urdf="ur10.urdf", model="robot", yaml="universal_robot/ur_gazebo/config/ur10_controllers.yaml",
@@ -188,6 +196,14 @@ def declared_sensors(urdf_text):
                     entry["rate"] = 4.0  # hector's default
             elif lib == "libgazebo_ros_p3d.so":
                 entry.update(kind="odom", topic=text(plugin, "topicName", "odom"))
+            elif lib == "libgazebo_ros_kobuki.so":  # its odometry and the IMU sensor it names, each step
+                every = float(text(plugin, "update_rate", "0")) or 1000.0
+                out.append(dict(entry, kind="odom", topic="odom", rate=every, drive=True, mount=None))
+                imu = next(s for g in root.findall("gazebo") for s in g.findall("sensor")
+                           if s.get("type") == "imu" and s.get("name") == text(plugin, "imu_name"))
+                entry = dict(link=None, rate=every, plugin=lib, kind="imu", topic="mobile_base/sensors/imu_data",
+                             sigma=noise_sigma(imu, "imu/noise/accel/stddev"), bias=0.0,
+                             gyro_sigma=noise_sigma(imu, "imu/noise/rate/stddev"), gyro_bias=0.0)
             elif lib in ("libgazebo_ros_diff_drive.so", "libgazebo_ros_skid_steer_drive.so"):
                 entry.update(kind="odom", topic=text(plugin, "odometryTopic", "odom"), drive=True)
                 if rate == 0:
@@ -240,8 +256,14 @@ def run_one(name, robots_dir, seconds, port):
         with open(urdf_path) as f:
             urdf = f.read()
         master.setParam("/robot_description", urdf)
-        if spec.get("yaml"):
-            for params, ns in rosparam.load_file(os.path.join(robots_dir, spec["yaml"]), default_namespace="/"):
+        files = spec.get("yaml", [])
+        for yaml_file in [files] if isinstance(files, str) else files:
+            # The launch's <rosparam subst_value="true">: its $(arg NAME)s as the launch gives them.
+            with open(os.path.join(robots_dir, yaml_file)) as f:
+                text = f.read()
+            for arg, value in spec.get("args", {}).items():
+                text = text.replace("$(arg %s)" % arg, value)
+            for params, ns in rosparam.load_str(text, yaml_file, default_namespace="/"):
                 rosparam.upload_params(ns, params)
         procs.append(subprocess.Popen(["rosrun", "rigid_body_sim", "sim_node", "__name:=sim_node"], stdout=log,
                                       stderr=subprocess.STDOUT, env=env))

@@ -81,6 +81,7 @@ set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/gazebo_plugins.cpp
   ${RBS_SOURCE_ROOT}/src/io/hector_plugins.cpp
   ${RBS_SOURCE_ROOT}/src/io/base_plugins.cpp
+  ${RBS_SOURCE_ROOT}/src/io/kobuki_plugin.cpp
   ${RBS_SOURCE_ROOT}/src/io/gazebo_sensors.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/urdf_load_notes.cpp

@@ -15,6 +15,7 @@
 #include "base_plugins.h"
 #include "drive_config.h"
 #include "hector_plugins.h"
+#include "kobuki_plugin.h"
 #include "rigid_body_sim/core/bodies/ranges.h"
 
 namespace rigid_body_sim::io::detail {
@@ -236,8 +237,8 @@ bool readsModelPlugin(const TiXmlElement& plugin) {
   return file == "libgazebo_ros_imu.so" || file == "libgazebo_ros_p3d.so" || file == "libgazebo_ros_diff_drive.so" ||
          file == "libgazebo_ros_skid_steer_drive.so" || file == "libgazebo_ros_control.so" ||
          file == "libhector_gazebo_ros_imu.so" || file == "libhector_gazebo_ros_gps.so" ||
-         file == "libhector_gazebo_ros_magnetic.so" || file == "libgazebo_ros_ft_sensor.so" || isMimicPlugin(file) ||
-         isBaseMovePlugin(file);
+         file == "libhector_gazebo_ros_magnetic.so" || file == "libgazebo_ros_ft_sensor.so" ||
+         file == "libgazebo_ros_kobuki.so" || isMimicPlugin(file) || isBaseMovePlugin(file);
 }
 
 void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out) {
@@ -257,6 +258,8 @@ void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevi
     out.mimics.push_back(pluginMimic(plugin));
   } else if (isBaseMovePlugin(file)) {
     readBaseMovePlugin(plugin, unread, out);
+  } else if (file == "libgazebo_ros_kobuki.so") {
+    readKobukiPlugin(plugin, unread, out);
   } else if (file == "libgazebo_ros_ft_sensor.so") {
     out.force_torques.push_back(pluginForceTorque(plugin));
   } else if (file == "libgazebo_ros_control.so") {  // the controllers' namespace; they run every step

@@ -1,6 +1,8 @@
-// gazebo_ros_ft_sensor in a robot's markup (io/gazebo_plugins.h,
-// io/sensor_mount.h): a force-torque sensor on the moving joint it names;
-// the refusals name the element, and one Gazebo would not load is said.
+// Model plugins of a robot's markup (io/gazebo_plugins.h, io/sensor_mount.h):
+// gazebo_ros_ft_sensor, a force-torque sensor on the moving joint it names,
+// and Kobuki's gazebo_ros_kobuki, a DiffDriveController on its topics with
+// the IMU it names; the refusals name the element, and what Gazebo would
+// not load, or what is not run, is said.
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -13,6 +15,7 @@ namespace rigid_body_sim::test {
 namespace {
 
 const std::string kArm = std::string(RBS_SOURCE_DIR) + "/test/ros/ft_sensor.urdf";
+const std::string kKobuki = std::string(RBS_SOURCE_DIR) + "/test/ros/kobuki_base.urdf";
 
 io::SimConfig config() { return io::parseConfig(YAML::Load(""), RBS_SOURCE_DIR); }
 
@@ -21,6 +24,13 @@ io::UrdfText arm(const std::string& elements) {
   io::UrdfText text = io::readUrdfFile(kArm, "");
   const std::size_t from = text.xml.find("<updateRate>"), to = text.xml.find("</plugin>");
   text.xml.replace(from, to - from, elements);
+  return text;
+}
+
+/// `file` with the text `from` replaced by `to`.
+io::UrdfText edited(const std::string& file, const std::string& from, const std::string& to) {
+  io::UrdfText text = io::readUrdfFile(file, "");
+  text.xml.replace(text.xml.find(from), from.size(), to);
   return text;
 }
 
@@ -70,6 +80,45 @@ TEST(GazeboForceTorque, WhatTheSensorCannotHaveIsRefusedNamingItAndAJointGazeboL
   for (const std::string& n : s.notes) notes += n;
   EXPECT_NE(notes.find("has no moving joint 'wrist_ft'"), std::string::npos) << notes;
   EXPECT_NE(notes.find("its moving joints: 'shoulder'"), std::string::npos) << notes;
+}
+
+TEST(GazeboKobuki, KobukisPluginIsADiffDriveControllerOnItsTopicsWithTheImuItNames) {
+  const io::SceneSetup s = io::loadScene(config(), [] { return io::readUrdfFile(kKobuki, ""); });
+  ASSERT_EQ(s.controls.at(0).drives.size(), 1u);
+  const core::DiffDriveSpec& d = s.controls[0].drives[0].spec();
+  EXPECT_EQ(d.name, "kobuki_controller");
+  EXPECT_EQ(d.wheel_separation, 0.36);
+  EXPECT_EQ(d.wheel_radius, 0.06);
+  EXPECT_EQ(d.settings.max_wheel_torque, 5.0);
+  EXPECT_EQ(d.settings.cmd_vel_timeout, 0.6);
+  const io::DriveTopics& t = s.controls[0].drive_topics.at(0);
+  EXPECT_FALSE(t.under_controller);
+  EXPECT_EQ(t.cmd_vel_topic, "mobile_base/commands/velocity");
+  EXPECT_EQ(t.odom_topic, "odom");
+  EXPECT_EQ(t.base_frame_id, "base_footprint");
+  EXPECT_TRUE(t.enable_odom_tf);  // <publish_tf>1
+  ASSERT_EQ(s.sensors.at(0).imus.size(), 1u);
+  const io::RobotImu& imu = s.sensors[0].imus[0];
+  EXPECT_EQ(imu.entry.topic, "mobile_base/sensors/imu_data");
+  EXPECT_EQ(imu.entry.frame_id, "base_link");
+  EXPECT_EQ(imu.entry.settings.accel_noise, 1.7e-2);
+  EXPECT_EQ(imu.entry.settings.gyro_noise, 1.96e-6);
+  std::string notes;
+  for (const std::string& n : s.notes) notes += n;
+  EXPECT_NE(notes.find("cliff, bumper and wheel-drop events"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("odometry heading from its gyro"), std::string::npos) << notes;
+}
+
+TEST(GazeboKobuki, WhatItsPluginRequiresIsRefusedNamingIt) {
+  EXPECT_NE(refusal(edited(kKobuki, "<wheel_separation>0.36</wheel_separation>", ""))
+                .find("<plugin name=\"kobuki_controller\">: <wheel_separation> is required"),
+            std::string::npos);
+  EXPECT_NE(refusal(edited(kKobuki, "<imu_name>imu</imu_name>", "<imu_name>gyro</imu_name>"))
+                .find("the robot has no <sensor type=\"imu\" name=\"gyro\">"),
+            std::string::npos);
+  EXPECT_NE(refusal(edited(kKobuki, "<torque>5.0</torque>", "<torque>-1</torque>")).find("torque"), std::string::npos);
+  EXPECT_NE(refusal(edited(kKobuki, "<publish_tf>1</publish_tf>", "<publish_tf>maybe</publish_tf>")).find("publish_tf"),
+            std::string::npos);
 }
 
 }  // namespace
