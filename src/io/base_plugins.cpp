@@ -7,9 +7,16 @@
 
 namespace rigid_body_sim::io::detail {
 
-bool isBaseMovePlugin(const std::string& file) {
-  return file == "libgazebo_ros_planar_move.so" || file == "libgazebo_ros_force_based_move.so";
+namespace {
+
+/// force_based_move, and Clearpath's copy of it (Ridgeback's, Dingo's).
+bool forceBased(const std::string& file) {
+  return file == "libgazebo_ros_force_based_move.so" || file == "libridgeback_ros_force_based_move.so";
 }
+
+}  // namespace
+
+bool isBaseMovePlugin(const std::string& file) { return file == "libgazebo_ros_planar_move.so" || forceBased(file); }
 
 /// Both plugins (gazebo_plugins' ROS 1 sources): `commandTopic` ("cmd_vel")
 /// takes a twist in the base's heading (x, y and the yaw rate; the rest of
@@ -26,6 +33,8 @@ bool isBaseMovePlugin(const std::string& file) {
 /// pushes with `x_velocity_p_gain` and `y_velocity_p_gain` (10000 N per
 /// m/s; the larger of the two here, said when they differ) and
 /// `yaw_velocity_p_gain` (100 N·m per rad/s), its own P law, within the same limits.
+/// Clearpath's copy (libridgeback_ros_force_based_move.so, Ridgeback's and
+/// Dingo's) reads the same, its timeout `cmdVelTimeOut`.
 void readBaseMovePlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out) {
   const std::string file = attribute(plugin, "filename");
   const std::string name = attribute(plugin, "name");
@@ -45,8 +54,9 @@ void readBaseMovePlugin(const TiXmlElement& plugin, const Unread& unread, RobotD
   s.max_angular_speed = 100.0;
   double timeout = -1.0;
   numbers.at(&plugin, "cmdTimeout", timeout, Bounds{-inf, 1e6, false, "s (<= 0: held)"});
+  numbers.at(&plugin, "cmdVelTimeOut", timeout, Bounds{-inf, 1e6, false, "s (<= 0: held)"});
   s.timeout = timeout > 0.0 ? timeout : 0.0;
-  if (file == "libgazebo_ros_force_based_move.so") {
+  if (forceBased(file)) {
     double gx = 10000.0, gy = 10000.0, gyaw = 100.0;
     const Bounds gain{0.0, 1e7, true, "N per m/s"}, yaw_gain{0.0, 1e7, true, "N*m per rad/s"};
     numbers.at(&plugin, "x_velocity_p_gain", gx, gain);

@@ -1,7 +1,7 @@
 // The model plugins of a URDF's Gazebo markup that move a robot's base as a
 // whole, with no wheels (private to io): gazebo_ros_planar_move and
-// gazebo_ros_force_based_move, each a base drive on its command topic and
-// an odometry of the truth in its odometry frame.
+// gazebo_ros_force_based_move (and Clearpath's copy of it), each a base
+// drive on its command topic and an odometry of the truth in its odometry frame.
 #pragma once
 
 #include <tinyxml.h>

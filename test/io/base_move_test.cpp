@@ -90,6 +90,16 @@ TEST(BaseMovePlugins, ForceBasedMovePushesWithItsOwnGainsPerKilogram) {
         "</x_velocity_p_gain></plugin></gazebo>");
   });
   EXPECT_NEAR(u.controls.at(0).base_driver->settings().linear_gain, 10000.0 / kMass, 1e-9);
+  // Clearpath's copy (Ridgeback's, Dingo's): the same, its timeout cmdVelTimeOut.
+  const io::SceneSetup r = io::loadScene(config(""), [] {
+    return base(
+        "<gazebo><plugin name='r' filename='libridgeback_ros_force_based_move.so'><cmdVelTimeOut>0.25"
+        "</cmdVelTimeOut><yaw_velocity_p_gain>500</yaw_velocity_p_gain><publishOdometryTf>0</publishOdometryTf>"
+        "</plugin></gazebo>");
+  });
+  EXPECT_EQ(r.controls.at(0).base_driver->settings().timeout, 0.25);
+  EXPECT_NEAR(r.controls[0].base_driver->settings().angular_gain, 500.0 / kYawInertia, 1e-9);
+  EXPECT_FALSE(r.sensors.at(0).odometry.at(0).entry.on_tf);
   std::string notes;
   for (const std::string& n : u.notes) notes += n;
   EXPECT_NE(notes.find("<x_velocity_p_gain> unlike <y_velocity_p_gain> (the larger for both) ('f')"), std::string::npos)
