@@ -7,9 +7,12 @@
 #include <std_srvs/Trigger.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "rigid_body_sim/ApplyImpulse.h"
 #include "rigid_body_sim/ApplyWrench.h"
@@ -64,6 +67,17 @@ inline bool subscribes(const std::string& node, const std::string& topic) {
     }
   }
   return false;
+}
+
+/// The least time between two consecutive stamps of `messages` (s): a
+/// topic's period, whatever a busy machine dropped (it never adds one).
+template <typename Message>
+double leastSpacing(const std::vector<Message>& messages) {
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 1; k < messages.size(); ++k) {
+    least = std::min(least, (messages[k].header.stamp - messages[k - 1].header.stamp).toSec());
+  }
+  return least;
 }
 
 /// Waits (wall time) until `done` or `seconds` pass, spinning callbacks.

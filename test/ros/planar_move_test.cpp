@@ -8,6 +8,7 @@
 #include <ros/ros.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -81,9 +82,8 @@ TEST(GazeboPlanarMove, ItsBaseMovesAtTheCommandedTwistAndItsOdometryIsTheTruthIn
     compared = true;
   }
   EXPECT_TRUE(compared) << "no body_states at the odometry's stamp";
-  int in_window = 0;
-  for (const auto& m : odom) in_window += m.header.stamp.toSec() > start + 1.0 && m.header.stamp.toSec() <= start + 3.0;
-  EXPECT_NEAR(in_window, 100, 2) << "odometry messages in 2 s at 50 Hz";
+  // At 50 Hz of sim time: its stamps 0.02 s apart (a busy machine may drop one, never add one).
+  EXPECT_NEAR(leastSpacing(odom), 0.02, 1e-9) << "s between two odometry messages, at least";
   // One parent for base_footprint on tf: odom, never the world.
   for (const std::string& p : parents) EXPECT_EQ(p, "odom");
   // Held until the next command (the plugin has no timeout): a zero stops it.
