@@ -36,9 +36,10 @@ ControllerEntry parseController(const YAML::Node& name, const YAML::Node& body, 
   c.name = text(name, path);
   c.key = join(path, c.name);
   if (!body.IsMap()) fail(c.key, "expected a map {type, joint or joints, pid or gains}");
-  if (body["type"] && body["type"].IsScalar() && body["type"].Scalar() == kDiffDriveType) {
-    c.type = kDiffDriveType;
-    c.drive = parseDiffDrive(body, c.key);
+  const std::string type = body["type"] && body["type"].IsScalar() ? body["type"].Scalar() : "";
+  if (type == kDiffDriveType || type == kMecanumType) {
+    c.type = type;
+    c.drive = type == kMecanumType ? parseMecanumDrive(body, c.key) : parseDiffDrive(body, c.key);
     c.joints = c.drive->left;  // left then right: where gazebo_ros_control's pid_gains find them
     c.joints.insert(c.joints.end(), c.drive->right.begin(), c.drive->right.end());
     c.joint_list = true;

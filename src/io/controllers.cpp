@@ -2,6 +2,7 @@
 #include "rigid_body_sim/io/controllers.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -53,7 +54,7 @@ int jointIndex(const core::ArticulationModel& model, const std::string& name, co
 }  // namespace
 
 std::vector<std::string> controllerTypes() {
-  std::vector<std::string> out{kJointState, kDiffDriveType};
+  std::vector<std::string> out{kJointState, kDiffDriveType, kMecanumType};
   for (const TypeInfo& t : kTypes) out.emplace_back(t.name);
   return out;
 }
@@ -87,8 +88,19 @@ void addDrive(const ControllerEntry& e, const core::ArticulationModel& model, Ro
     }
   }
   const core::ArticulatedLink &left = model.links[spec.left.front()], &right = model.links[spec.right.front()];
-  // As ros_controllers: the first wheels' joint origins apart (in their parents' frames).
-  spec.wheel_separation = d.wheel_separation.value_or((left.X_PJ.translation - right.X_PJ.translation).norm());
+  spec.mecanum = d.mecanum;
+  // As ros_controllers: the first wheels' joint origins apart (in their
+  // parents' frames); a mecanum base's, as mecanum_drive_controller: each
+  // wheel's |x| + |y|, their mean twice.
+  double spans = 0.0;
+  for (const std::vector<int>* side : {&spec.left, &spec.right}) {
+    for (const int j : *side) {
+      const core::Vec3& o = model.links[j].X_PJ.translation;
+      spans += 0.5 * (std::abs(o.x()) + std::abs(o.y()));
+    }
+  }
+  const double urdf_separation = d.mecanum ? spans : (left.X_PJ.translation - right.X_PJ.translation).norm();
+  spec.wheel_separation = d.wheel_separation.value_or(urdf_separation);
   spec.wheel_radius = d.wheel_radius ? *d.wheel_radius : urdfWheelRadius(left, e.key + ".wheel_radius");
   if (!(spec.wheel_separation > 0.0)) {
     refuse(e.key + ".wheel_separation", "is not given, and the wheels' joints '" + left.joint + "' and '" +

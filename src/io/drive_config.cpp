@@ -1,6 +1,7 @@
 // A DiffDriveController's keys: drive_config.h.
 #include "drive_config.h"
 
+#include <set>
 #include <utility>
 
 #include "yaml_fields.h"
@@ -21,12 +22,14 @@ std::vector<std::string> wheelNames(const YAML::Node& node, const std::string& k
   return names;
 }
 
-/// `linear: {x: {...}}` or `angular: {z: {...}}`: ros_controllers' limiter keys.
-core::TwistLimiter parseLimits(const YAML::Node& node, const std::string& path, const char* axis) {
+/// `linear: {x: {...}}` or `angular: {z: {...}}`: ros_controllers' limiter
+/// keys for `axis`, the map's keys `axes` (default: `axis` alone).
+core::TwistLimiter parseLimits(const YAML::Node& node, const std::string& path, const char* axis,
+                               const std::set<std::string>& axes = {}) {
   core::TwistLimiter l;
   if (!node) return l;
   if (!node.IsMap()) fail(path, std::string("expected {") + axis + ": {has_velocity_limits, max_velocity, ...}}");
-  requireKnownKeys(node, path, {axis});
+  requireKnownKeys(node, path, axes.empty() ? std::set<std::string>{axis} : axes);
   const YAML::Node& a = node[axis];
   const std::string at = join(path, axis);
   if (!a) return l;
@@ -66,6 +69,65 @@ std::array<double, 6> covariance(const YAML::Node& node, const std::string& key)
     if (out[k] < 0.0) fail(key + "[" + std::to_string(k) + "]", "a variance must be >= 0");
   }
   return out;
+}
+
+}  // namespace
+
+namespace {
+
+/// What every wheeled base's controller reads alike, into `d`: the wheel
+/// radius, the multipliers, the timeout, the odometry's window and loop,
+/// the limits (`linear/y` too, for a mecanum base), the topics and frames.
+void readDriveSettings(const YAML::Node& body, const std::string& key, DiffDriveEntry& d) {
+  if (body["wheel_radius"]) d.wheel_radius = positiveNumber(body["wheel_radius"], join(key, "wheel_radius"));
+  core::DiffDriveSettings& s = d.settings;
+  const auto positive = [&](const char* k, double& field) {
+    if (body[k]) field = positiveNumber(body[k], join(key, k));
+  };
+  positive("wheel_separation_multiplier", s.wheel_separation_multiplier);
+  // ros_controllers: wheel_radius_multiplier, when given, is both sides'.
+  if (body["wheel_radius_multiplier"]) {
+    for (const char* side : {"left_wheel_radius_multiplier", "right_wheel_radius_multiplier"}) {
+      if (body[side]) fail(join(key, side), "give wheel_radius_multiplier (both sides) or the sides', not both");
+    }
+    s.left_wheel_radius_multiplier = s.right_wheel_radius_multiplier =
+        positiveNumber(body["wheel_radius_multiplier"], join(key, "wheel_radius_multiplier"));
+  }
+  positive("left_wheel_radius_multiplier", s.left_wheel_radius_multiplier);
+  positive("right_wheel_radius_multiplier", s.right_wheel_radius_multiplier);
+  if (body["cmd_vel_timeout"]) {
+    s.cmd_vel_timeout = number(body["cmd_vel_timeout"], join(key, "cmd_vel_timeout"));
+    if (s.cmd_vel_timeout < 0.0) fail(join(key, "cmd_vel_timeout"), "must be >= 0 s");
+  }
+  if (body["velocity_rolling_window_size"]) {
+    const std::string k = join(key, "velocity_rolling_window_size");
+    s.velocity_rolling_window_size = integer(body["velocity_rolling_window_size"], k);
+    if (s.velocity_rolling_window_size < 1 || s.velocity_rolling_window_size > 100000) {
+      fail(k, "must be within [1, 100000] steps");
+    }
+  }
+  if (body["open_loop"]) s.open_loop = boolean(body["open_loop"], join(key, "open_loop"));
+  // A mecanum base's linear/y beside linear/x (ros_controllers' limiter keys for each).
+  const std::set<std::string> linear_axes = d.mecanum ? std::set<std::string>{"x", "y"} : std::set<std::string>{};
+  s.linear = parseLimits(body["linear"], join(key, "linear"), "x", linear_axes);
+  if (d.mecanum) s.lateral = parseLimits(body["linear"], join(key, "linear"), "y", linear_axes);
+  s.angular = parseLimits(body["angular"], join(key, "angular"), "z");
+  DriveTopics& t = d.topics;
+  if (body["publish_rate"]) t.publish_rate = publishRate(body["publish_rate"], join(key, "publish_rate"));
+  if (body["pose_covariance_diagonal"]) {
+    t.pose_covariance_diagonal = covariance(body["pose_covariance_diagonal"], join(key, "pose_covariance_diagonal"));
+  }
+  if (body["twist_covariance_diagonal"]) {
+    t.twist_covariance_diagonal = covariance(body["twist_covariance_diagonal"], join(key, "twist_covariance_diagonal"));
+  }
+  if (body["base_frame_id"]) t.base_frame_id = frameId(body["base_frame_id"], join(key, "base_frame_id"));
+  if (body["odom_frame_id"]) t.odom_frame_id = frameId(body["odom_frame_id"], join(key, "odom_frame_id"));
+  if (t.base_frame_id == t.odom_frame_id) fail(join(key, "odom_frame_id"), "is base_frame_id: tf needs two frames");
+  for (const auto& [k, field] : {std::pair<const char*, bool*>{"enable_odom_tf", &t.enable_odom_tf},
+                                 {"publish_cmd", &t.publish_cmd},
+                                 {"allow_multiple_cmd_vel_publishers", &t.allow_multiple_cmd_vel_publishers}}) {
+    if (body[k]) *field = boolean(body[k], join(key, k));
+  }
 }
 
 }  // namespace
@@ -112,52 +174,52 @@ DiffDriveEntry parseDiffDrive(const YAML::Node& body, const std::string& key) {
   }
   if (body["wheel_separation"])
     d.wheel_separation = positiveNumber(body["wheel_separation"], join(key, "wheel_separation"));
-  if (body["wheel_radius"]) d.wheel_radius = positiveNumber(body["wheel_radius"], join(key, "wheel_radius"));
-  core::DiffDriveSettings& s = d.settings;
-  const auto positive = [&](const char* k, double& field) {
-    if (body[k]) field = positiveNumber(body[k], join(key, k));
+  readDriveSettings(body, key, d);
+  return d;
+}
+
+DiffDriveEntry parseMecanumDrive(const YAML::Node& body, const std::string& key) {
+  DiffDriveEntry d;
+  d.mecanum = true;
+  const std::vector<std::string> others = keysNotRead(body, key,
+                                                      {"type",
+                                                       "front_left_wheel_joint",
+                                                       "back_left_wheel_joint",
+                                                       "front_right_wheel_joint",
+                                                       "back_right_wheel_joint",
+                                                       "wheel_separation_x",
+                                                       "wheel_separation_y",
+                                                       "wheel_radius",
+                                                       "wheel_separation_multiplier",
+                                                       "wheel_radius_multiplier",
+                                                       "publish_rate",
+                                                       "pose_covariance_diagonal",
+                                                       "twist_covariance_diagonal",
+                                                       "cmd_vel_timeout",
+                                                       "base_frame_id",
+                                                       "odom_frame_id",
+                                                       "enable_odom_tf",
+                                                       "open_loop",
+                                                       "velocity_rolling_window_size",
+                                                       "allow_multiple_cmd_vel_publishers",
+                                                       "publish_cmd",
+                                                       "linear",
+                                                       "angular"});
+  for (const std::string& k : others) d.unread.push_back({k, std::string(kMecanumType) + " reads no such key"});
+  const auto wheel = [&](const char* k) {
+    if (!body[k]) fail(join(key, k), "is missing: a MecanumDriveController needs its four wheels' joints");
+    return text(body[k], join(key, k));
   };
-  positive("wheel_separation_multiplier", s.wheel_separation_multiplier);
-  // ros_controllers: wheel_radius_multiplier, when given, is both sides'.
-  if (body["wheel_radius_multiplier"]) {
-    for (const char* side : {"left_wheel_radius_multiplier", "right_wheel_radius_multiplier"}) {
-      if (body[side]) fail(join(key, side), "give wheel_radius_multiplier (both sides) or the sides', not both");
+  d.left = {wheel("front_left_wheel_joint"), wheel("back_left_wheel_joint")};
+  d.right = {wheel("front_right_wheel_joint"), wheel("back_right_wheel_joint")};
+  if (body["wheel_separation_x"] || body["wheel_separation_y"]) {
+    for (const char* k : {"wheel_separation_x", "wheel_separation_y"}) {
+      if (!body[k]) fail(join(key, k), "is missing: give wheel_separation_x and wheel_separation_y, or neither");
     }
-    s.left_wheel_radius_multiplier = s.right_wheel_radius_multiplier =
-        positiveNumber(body["wheel_radius_multiplier"], join(key, "wheel_radius_multiplier"));
+    d.wheel_separation = positiveNumber(body["wheel_separation_x"], join(key, "wheel_separation_x")) +
+                         positiveNumber(body["wheel_separation_y"], join(key, "wheel_separation_y"));
   }
-  positive("left_wheel_radius_multiplier", s.left_wheel_radius_multiplier);
-  positive("right_wheel_radius_multiplier", s.right_wheel_radius_multiplier);
-  if (body["cmd_vel_timeout"]) {
-    s.cmd_vel_timeout = number(body["cmd_vel_timeout"], join(key, "cmd_vel_timeout"));
-    if (s.cmd_vel_timeout < 0.0) fail(join(key, "cmd_vel_timeout"), "must be >= 0 s");
-  }
-  if (body["velocity_rolling_window_size"]) {
-    const std::string k = join(key, "velocity_rolling_window_size");
-    s.velocity_rolling_window_size = integer(body["velocity_rolling_window_size"], k);
-    if (s.velocity_rolling_window_size < 1 || s.velocity_rolling_window_size > 100000) {
-      fail(k, "must be within [1, 100000] steps");
-    }
-  }
-  if (body["open_loop"]) s.open_loop = boolean(body["open_loop"], join(key, "open_loop"));
-  s.linear = parseLimits(body["linear"], join(key, "linear"), "x");
-  s.angular = parseLimits(body["angular"], join(key, "angular"), "z");
-  DriveTopics& t = d.topics;
-  if (body["publish_rate"]) t.publish_rate = publishRate(body["publish_rate"], join(key, "publish_rate"));
-  if (body["pose_covariance_diagonal"]) {
-    t.pose_covariance_diagonal = covariance(body["pose_covariance_diagonal"], join(key, "pose_covariance_diagonal"));
-  }
-  if (body["twist_covariance_diagonal"]) {
-    t.twist_covariance_diagonal = covariance(body["twist_covariance_diagonal"], join(key, "twist_covariance_diagonal"));
-  }
-  if (body["base_frame_id"]) t.base_frame_id = frameId(body["base_frame_id"], join(key, "base_frame_id"));
-  if (body["odom_frame_id"]) t.odom_frame_id = frameId(body["odom_frame_id"], join(key, "odom_frame_id"));
-  if (t.base_frame_id == t.odom_frame_id) fail(join(key, "odom_frame_id"), "is base_frame_id: tf needs two frames");
-  for (const auto& [k, field] : {std::pair<const char*, bool*>{"enable_odom_tf", &t.enable_odom_tf},
-                                 {"publish_cmd", &t.publish_cmd},
-                                 {"allow_multiple_cmd_vel_publishers", &t.allow_multiple_cmd_vel_publishers}}) {
-    if (body[k]) *field = boolean(body[k], join(key, k));
-  }
+  readDriveSettings(body, key, d);
   return d;
 }
 

@@ -9,7 +9,10 @@ namespace rigid_body_sim::io {
 std::string commandedInterface(const std::string& type) {
   const std::string package = type.substr(0, type.find('/'));
   if (package == "effort_controllers") return "EffortJointInterface";
-  if (package == "velocity_controllers" || package == "diff_drive_controller") return "VelocityJointInterface";
+  if (package == "velocity_controllers" || package == "diff_drive_controller" ||
+      package == "mecanum_drive_controller") {
+    return "VelocityJointInterface";
+  }
   if (package == "position_controllers") return "PositionJointInterface";
   return "";
 }

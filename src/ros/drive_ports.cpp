@@ -27,6 +27,7 @@ nav_msgs::Odometry odometryMessage(const core::DiffDrive& drive, const io::Drive
   m.child_frame_id = frames.base;
   m.pose.pose = toPose(core::Vec3(o.x, o.y, 0.0), yaw(o.heading));
   m.twist.twist.linear.x = o.linear;
+  m.twist.twist.linear.y = o.lateral;
   m.twist.twist.angular.z = o.angular;
   for (std::size_t k = 0; k < 6; ++k) {
     m.pose.covariance[7 * k] = topics.pose_covariance_diagonal[k];
@@ -48,7 +49,7 @@ geometry_msgs::TransformStamped odometryTransform(const core::DiffDrive& drive, 
 
 DrivePorts::DrivePorts(ros::NodeHandle& nh, const std::string& prefix, const std::string& name,
                        const io::DriveTopics& topics, DriveFrames frames, long long every,
-                       const std::function<void(double, double)>& command)
+                       const std::function<void(double, double, double)>& command)
     : topics_(topics), frames_(std::move(frames)), every_(std::max(1LL, every)) {
   const std::string ns = driveNamespace(prefix, name, topics_);
   const auto topic = [&](const std::string& t) { return deviceTopic(ns, t); };
@@ -63,13 +64,13 @@ DrivePorts::DrivePorts(ros::NodeHandle& nh, const std::string& prefix, const std
         if (one_publisher && cmd_vel_.getNumPublishers() > 1) {
           ROS_ERROR_THROTTLE(1.0, "sim_node: controller '%s': %u publishers on cmd_vel, only 1 allowed: braking",
                              name.c_str(), cmd_vel_.getNumPublishers());
-          command(0.0, 0.0);
+          command(0.0, 0.0, 0.0);
           return;
         }
-        command(m->linear.x, m->angular.z);
+        command(m->linear.x, m->angular.z, m->linear.y);
       });
   const std::string on_tf = topics_.enable_odom_tf ? ", " + frames_.odom + " -> " + frames_.base + " on tf" : "";
-  ROS_INFO("sim_node: controller '%s' (DiffDriveController) on %s, odometry on %s%s", name.c_str(),
+  ROS_INFO("sim_node: controller '%s' (a wheeled base's) on %s, odometry on %s%s", name.c_str(),
            nh.resolveName(cmd_vel).c_str(), nh.resolveName(odom).c_str(), on_tf.c_str());
 }
 
@@ -83,6 +84,7 @@ void DrivePorts::publish(const core::DiffDrive& drive, const ros::Time& stamp, l
     out.header.stamp = stamp;
     out.header.frame_id = frames_.base;
     out.twist.linear.x = drive.limitedLinear();
+    out.twist.linear.y = drive.limitedLateral();
     out.twist.angular.z = drive.limitedAngular();
     cmd_vel_out_.publish(out);
   }

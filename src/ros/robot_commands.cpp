@@ -49,11 +49,11 @@ std::vector<std::unique_ptr<DrivePorts>> RobotCommands::openDrives(std::size_t r
     const DriveFrames frames{frame_prefix + topics.odom_frame_id, frame_prefix + topics.base_frame_id};
     const long long every = std::llround(1.0 / (topics.publish_rate * sim_.model().dt()));
     // The callback finds its robot by name: a robot deleted before moves the later ones down.
-    auto command = [this, name, d](double v, double w) {
+    auto command = [this, name, d](double v, double w, double vy) {
       const auto it = std::find(robot_names_.begin(), robot_names_.end(), name);
       if (it == robot_names_.end()) return;
       core::DiffDrive& drive = controls_[static_cast<std::size_t>(it - robot_names_.begin())].drives[d];
-      if (!drive.command(v, w, time_.simTime())) {
+      if (!drive.command(v, w, time_.simTime(), vy)) {
         ROS_WARN_THROTTLE(
             kWarnPeriod,
             "sim_node: robot '%s': controller '%s': a cmd_vel not finite or beyond 1e4 m/s or rad/s: dropped",

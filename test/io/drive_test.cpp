@@ -322,5 +322,63 @@ TEST(BaseDriver, ARobotFixedToTheWorldHasNoBaseToDrive) {
   }
 }
 
+// A MecanumDriveController (Ridgeback's, Dingo-O's) on test/ros/mecanum_base.urdf's four wheels.
+io::RobotControls mecanumControls(const std::string& keys) {
+  return io::buildControls(
+      baseConfig(
+          "{omni: {type: mecanum_drive_controller/MecanumDriveController, front_left_wheel_joint: "
+          "front_left_wheel, back_left_wheel_joint: back_left_wheel, front_right_wheel_joint: front_right_wheel, "
+          "back_right_wheel_joint: back_right_wheel" +
+          keys + "}}")
+          .controllers,
+      io::loadArticulationFile(std::string(RBS_SOURCE_DIR) + "/test/ros/mecanum_base.urdf"));
+}
+
+TEST(MecanumDriveController, ReadsItsWheelsKeysAndTheUrdfsSpans) {
+  const io::RobotControls c = mecanumControls(
+      ", linear: {x: {has_velocity_limits: true, max_velocity: 1.1}, y: {has_velocity_limits: true, max_velocity: "
+      "0.8}}, cmd_vel_timeout: 0.25, enable_odom_tf: false, k_x: 2");
+  ASSERT_EQ(c.drives.size(), 1u);
+  const core::DiffDriveSpec& d = c.drives[0].spec();
+  EXPECT_TRUE(d.mecanum);
+  EXPECT_EQ(d.left.size(), 2u);
+  // As mecanum_drive_controller: each wheel's |x| + |y| (0.3 + 0.25), their mean twice.
+  EXPECT_NEAR(d.wheel_separation, 2.0 * 0.55, 1e-12);
+  EXPECT_EQ(d.wheel_radius, 0.08);  // its front left wheel's cylinder
+  EXPECT_EQ(d.settings.lateral.max_velocity, 0.8);
+  EXPECT_EQ(d.settings.linear.max_velocity, 1.1);
+  EXPECT_EQ(d.settings.cmd_vel_timeout, 0.25);
+  EXPECT_FALSE(c.drive_topics.at(0).enable_odom_tf);
+  std::string notes;
+  for (const std::string& n : c.notes) notes += n;
+  EXPECT_NE(notes.find("omni.k_x"), std::string::npos) << notes;  // a key no such controller reads: named
+  // Given spans: their sum.
+  EXPECT_NEAR(
+      mecanumControls(", wheel_separation_x: 0.638, wheel_separation_y: 0.551").drives.at(0).spec().wheel_separation,
+      0.638 + 0.551, 1e-12);
+}
+
+TEST(MecanumDriveController, RefusalsNameTheKey) {
+  const auto refused = [](const std::string& keys) {
+    try {
+      mecanumControls(keys);
+    } catch (const io::ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(refused(", wheel_separation_x: 0.6").find("controllers.omni.wheel_separation_y': is missing"),
+            std::string::npos)
+      << refused(", wheel_separation_x: 0.6");
+  EXPECT_NE(refused(", linear: {y: {has_velocity_limits: true, max_velocity: -1}}")
+                .find("controllers.omni.linear.y.min_velocity': must be <= max_velocity"),
+            std::string::npos);
+  EXPECT_NE(refused(", linear: {z: {}}").find("linear"), std::string::npos);
+  EXPECT_NE(refusal("{omni: {type: mecanum_drive_controller/MecanumDriveController, front_left_wheel_joint: "
+                    "left_wheel_joint}}")
+                .find("controllers.omni.back_left_wheel_joint': is missing"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace rigid_body_sim::test

@@ -229,6 +229,9 @@ struct UnreadKey {
 /// A diff_drive_controller/DiffDriveController's keys (io/drive_config.h reads them).
 struct DiffDriveEntry {
   std::vector<std::string> left, right;  ///< `left_wheel`, `right_wheel`: a joint name or a list
+  /// A MecanumDriveController's: left and right each its front then its
+  /// back wheel, wheel_separation its x and y spans added.
+  bool mecanum = false;
   /// m; unset: from the URDF as ros_controllers finds them (the first wheels' joint
   /// origins apart, the left one's first collision cylinder or sphere).
   std::optional<double> wheel_separation, wheel_radius;

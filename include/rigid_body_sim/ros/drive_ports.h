@@ -48,7 +48,7 @@ class DrivePorts {
   /// when another publisher joins and allow_multiple_cmd_vel_publishers is
   /// false. Publishes every `every` steps.
   DrivePorts(ros::NodeHandle& nh, const std::string& prefix, const std::string& name, const io::DriveTopics& topics,
-             DriveFrames frames, long long every, const std::function<void(double, double)>& command);
+             DriveFrames frames, long long every, const std::function<void(double, double, double)>& command);
 
   /// `drive`'s odometry (and its limited command) stamped `stamp`, if step
   /// `steps` is due (or always, `steps` < 0); the odom -> base transform into `tf`.

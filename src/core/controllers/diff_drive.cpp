@@ -1,4 +1,4 @@
-// A differential-drive base's controller: diff_drive.h, docs/physics.md §11.12.
+// A wheeled base's controller: diff_drive.h, docs/physics.md §11.12 and §11.13.
 #include "rigid_body_sim/core/controllers/diff_drive.h"
 
 #include <algorithm>
@@ -72,6 +72,7 @@ DiffDrive::DiffDrive(const ArticulationModel& model, DiffDriveSpec spec) : spec_
     fail(s, std::to_string(s.left.size()) + " left wheels and " + std::to_string(s.right.size()) +
                 " right wheels: give as many on each side");
   }
+  if (s.mecanum && s.left.size() != 2) fail(s, "a mecanum base has four wheels, a front and a back one a side");
   wheels_ = s.left;
   wheels_.insert(wheels_.end(), s.right.begin(), s.right.end());
   std::vector<int> seen;
@@ -101,6 +102,7 @@ DiffDrive::DiffDrive(const ArticulationModel& model, DiffDriveSpec spec) : spec_
   if (k.velocity_rolling_window_size < 1) fail(s, "velocity_rolling_window_size must be >= 1");
   checkLimits(s, k.linear, "linear/x");
   checkLimits(s, k.angular, "angular/z");
+  checkLimits(s, k.lateral, "linear/y");
   separation_ = s.wheel_separation * k.wheel_separation_multiplier;
   left_radius_ = s.wheel_radius * k.left_wheel_radius_multiplier;
   right_radius_ = s.wheel_radius * k.right_wheel_radius_multiplier;
@@ -117,11 +119,12 @@ DiffDrive::DiffDrive(const ArticulationModel& model, DiffDriveSpec spec) : spec_
   }
 }
 
-bool DiffDrive::command(double linear, double angular, double t) {
+bool DiffDrive::command(double linear, double angular, double t, double lateral) {
   const auto within = [](double x) { return std::abs(x) <= ranges::kMaxCommandSpeed; };  // NaN is not
-  if (!within(linear) || !within(angular) || !std::isfinite(t)) return false;
+  if (!within(linear) || !within(angular) || !within(lateral) || !std::isfinite(t)) return false;
   linear_ = linear;
   angular_ = angular;
+  lateral_ = spec_.mecanum ? lateral : 0.0;
   stamp_ = t;
   commanded_ = true;
   return true;
@@ -133,36 +136,71 @@ double DiffDrive::meanPosition(const ArticulationState& state, const std::vector
   return sum / static_cast<double>(joints.size());
 }
 
-void DiffDrive::integrate(double ds, double dtheta) {
-  // The arc of constant curvature: the chord ds sinc(dθ/2) along the mean heading.
-  const double chord = ds * sinc(0.5 * dtheta), mid = odometry_.heading + 0.5 * dtheta;
-  odometry_.x += chord * std::cos(mid);
-  odometry_.y += chord * std::sin(mid);
+void DiffDrive::integrate(double ds, double dtheta, double dlat) {
+  // The arc of constant curvature: the body's displacement (ds, dlat)
+  // shortened to its chord by sinc(dθ/2) and turned to the mean heading.
+  const double scale = sinc(0.5 * dtheta), mid = odometry_.heading + 0.5 * dtheta;
+  const double c = std::cos(mid), s = std::sin(mid);
+  odometry_.x += scale * (ds * c - dlat * s);
+  odometry_.y += scale * (ds * s + dlat * c);
   odometry_.heading = std::remainder(odometry_.heading + dtheta, 2.0 * M_PI);
 }
 
-void DiffDrive::average(double linear, double angular) {
+void DiffDrive::average(double linear, double angular, double lateral) {
   const std::size_t n = static_cast<std::size_t>(spec_.settings.velocity_rolling_window_size);
   if (linear_window_.size() < n) {
     linear_window_.push_back(linear);
     angular_window_.push_back(angular);
+    lateral_window_.push_back(lateral);
   } else {
     linear_window_[window_next_] = linear;
     angular_window_[window_next_] = angular;
+    lateral_window_[window_next_] = lateral;
     window_next_ = (window_next_ + 1) % n;
   }
   const double count = static_cast<double>(linear_window_.size());
   odometry_.linear = std::accumulate(linear_window_.begin(), linear_window_.end(), 0.0) / count;
   odometry_.angular = std::accumulate(angular_window_.begin(), angular_window_.end(), 0.0) / count;
+  odometry_.lateral = std::accumulate(lateral_window_.begin(), lateral_window_.end(), 0.0) / count;
+}
+
+namespace {
+
+/// Wheel n of a mecanum base (left front, left back, right front, right
+/// back): the sign its rim takes of v_y, and of ω k (a left wheel −, a right +).
+double lateralSign(std::size_t n) { return n == 0 || n == 3 ? -1.0 : 1.0; }
+double sideSign(std::size_t n) { return n < 2 ? -1.0 : 1.0; }
+
+}  // namespace
+
+void DiffDrive::observeMecanum(const ArticulationState& state, double dt) {
+  // Each rim's travel d = v_x ∓ v_y ∓ k ω: the twist is the mean of
+  // d, of ±d (its v_y sign) and of ±d / k (its side's), inverting it exactly.
+  if (travel_.size() != wheels_.size()) travel_.clear();
+  double dx = 0.0, dy = 0.0, dk = 0.0;
+  for (std::size_t n = 0; n < wheels_.size(); ++n) {
+    const double rim = state.q(wheels_[n] - 1) * (n < 2 ? left_radius_ : right_radius_);
+    if (travel_.size() < wheels_.size()) travel_.push_back(rim);  // the first update: where the wheels start
+    const double d = rim - travel_[n];
+    travel_[n] = rim;
+    dx += 0.25 * d;
+    dy += 0.25 * lateralSign(n) * d;
+    dk += 0.25 * sideSign(n) * d;
+  }
+  const double dtheta = dk / (0.5 * separation_);
+  integrate(dx, dtheta, dy);
+  if (dt > 0.0) average(dx / dt, dtheta / dt, dy / dt);
 }
 
 void DiffDrive::observe(const ArticulationState& state, double dt) {
   if (spec_.settings.open_loop) {
-    integrate(last0_linear_ * dt, last0_angular_ * dt);
+    integrate(last0_linear_ * dt, last0_angular_ * dt, last0_lateral_ * dt);
     odometry_.linear = last0_linear_;
     odometry_.angular = last0_angular_;
+    odometry_.lateral = last0_lateral_;
     return;
   }
+  if (spec_.mecanum) return observeMecanum(state, dt);
   const double left = meanPosition(state, spec_.left) * left_radius_;
   const double right = meanPosition(state, spec_.right) * right_radius_;
   if (!has_travel_) {  // the first update: where the wheels start
@@ -181,21 +219,27 @@ void DiffDrive::observe(const ArticulationState& state, double dt) {
 void DiffDrive::efforts(const ArticulationState& state, double t, double dt, Eigen::VectorXd& effort) {
   const DiffDriveSettings& k = spec_.settings;
   // The command: zero once too old, then limited against the last two.
-  double v = linear_, w = angular_;
-  if (!commanded_ || t - stamp_ > k.cmd_vel_timeout) v = w = 0.0;
+  double v = linear_, w = angular_, vy = lateral_;
+  if (!commanded_ || t - stamp_ > k.cmd_vel_timeout) v = w = vy = 0.0;
   v = k.linear.limit(v, last0_linear_, last1_linear_, dt);
   w = k.angular.limit(w, last0_angular_, last1_angular_, dt);
+  vy = k.lateral.limit(vy, last0_lateral_, last1_lateral_, dt);
   last1_linear_ = last0_linear_;
   last1_angular_ = last0_angular_;
+  last1_lateral_ = last0_lateral_;
   last0_linear_ = v;
   last0_angular_ = w;
+  last0_lateral_ = vy;
   // Each wheel's speed, tracked through effort.
   const double left_speed = (v - 0.5 * w * separation_) / left_radius_;
   const double right_speed = (v + 0.5 * w * separation_) / right_radius_;
   const std::vector<int>& all = wheels_;
   for (std::size_t n = 0; n < all.size(); ++n) {
     const JointLimits& lim = limits_[n];
-    const double target = std::clamp(n < spec_.left.size() ? left_speed : right_speed, -lim.velocity, lim.velocity);
+    const bool left = n < spec_.left.size();
+    double speed = left ? left_speed : right_speed;
+    if (spec_.mecanum) speed += lateralSign(n) * vy / (left ? left_radius_ : right_radius_);
+    const double target = std::clamp(speed, -lim.velocity, lim.velocity);
     const int j = all[n];
     const double most = std::min(lim.effort, k.max_wheel_torque);
     effort(j - 1) = pids_[n].servo(target - state.v(j - 1), dt, response_[n], most);
@@ -207,14 +251,19 @@ void DiffDrive::restart(const ArticulationState& state, bool zero_pose) {
   right_travel_ = meanPosition(state, spec_.right) * right_radius_;
   has_travel_ = true;
   for (Pid& pid : pids_) pid.reset();
+  travel_.clear();
+  for (std::size_t n = 0; spec_.mecanum && n < wheels_.size(); ++n) {
+    travel_.push_back(state.q(wheels_[n] - 1) * (n < 2 ? left_radius_ : right_radius_));
+  }
   linear_window_.clear();
   angular_window_.clear();
+  lateral_window_.clear();
   window_next_ = 0;
-  linear_ = angular_ = 0.0;
+  linear_ = angular_ = lateral_ = 0.0;
   commanded_ = false;
-  last0_linear_ = last0_angular_ = last1_linear_ = last1_angular_ = 0.0;
+  last0_linear_ = last0_angular_ = last1_linear_ = last1_angular_ = last0_lateral_ = last1_lateral_ = 0.0;
   if (zero_pose) odometry_ = PlanarOdometry{};
-  odometry_.linear = odometry_.angular = 0.0;
+  odometry_.linear = odometry_.angular = odometry_.lateral = 0.0;
 }
 
 }  // namespace rigid_body_sim::core

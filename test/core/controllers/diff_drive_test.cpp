@@ -11,6 +11,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "../articulations/articulation_models.h"
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
@@ -338,6 +339,114 @@ TEST(DiffDrive, ARestartReadsTheWheelsAfreshAndForgetsTheCommand) {
   EXPECT_DOUBLE_EQ(effort(0), 0.0);
   drive.restart(wheelsAt(model, 0.0, 0.0), true);  // a world reset: the odometry starts again
   EXPECT_EQ(drive.odometry().x, 0.0);
+}
+
+// A mecanum base (§11.13), as mecanum_drive_controller drives one: four
+// wheels 0.3 m ahead or behind and 0.25 m aside of the centre (k = 0.55 m),
+// radius 0.1 m, the left front and right back rolling it along x − y.
+
+/// A 20 kg base on four wheels about y at (±0.3, ±0.25): left front, left
+/// back, right front, right back (joints 1 to 4).
+ArticulationModel fourWheels() {
+  ArticulationModel model;
+  model.name = "omni";
+  ArticulatedLink base;
+  base.name = "base_link";
+  base.mass = test::boxMass(20.0, Vec3(0.8, 0.6, 0.2));
+  model.links.push_back(base);
+  for (const auto& [name, x, y] : {std::tuple<const char*, double, double>{"front_left", 0.3, 0.25},
+                                   {"back_left", -0.3, 0.25},
+                                   {"front_right", 0.3, -0.25},
+                                   {"back_right", -0.3, -0.25}}) {
+    ArticulatedLink wheel;
+    wheel.name = std::string(name) + "_wheel";
+    wheel.joint = std::string(name) + "_wheel_joint";
+    wheel.parent = 0;
+    wheel.type = JointType::Continuous;
+    wheel.X_PJ.translation = Vec3(x, y, 0.0);
+    wheel.axis_J = Vec3::UnitY();
+    wheel.limits.effort = 50.0;
+    wheel.limits.velocity = 100.0;
+    wheel.mass.mass = 1.0;
+    wheel.mass.I_C_F = Vec3(0.01, 0.02, 0.01).asDiagonal();
+    model.links.push_back(wheel);
+  }
+  checkArticulation(model);
+  return model;
+}
+
+DiffDriveSpec mecanumSpec() {
+  DiffDriveSpec s;
+  s.name = "omni_controller";
+  s.left = {1, 2};
+  s.right = {3, 4};
+  s.wheel_separation = 2.0 * 0.55;  // twice k, each wheel's |x| + |y|
+  s.wheel_radius = 0.1;
+  s.mecanum = true;
+  return s;
+}
+
+/// The rims' speeds of a body twist, as mecanum_drive_controller's inverse
+/// kinematics writes them: v_x ∓ v_y ∓ k ω (left front, left back, right front, right back).
+Eigen::Vector4d mecanumRims(double vx, double vy, double w) {
+  const double k = 0.55;
+  return {vx - vy - k * w, vx + vy - k * w, vx + vy + k * w, vx - vy + k * w};
+}
+
+TEST(MecanumDrive, ItsOdometryFollowsTheWheelsOfASteadyBodyTwist) {
+  const ArticulationModel model = fourWheels();
+  DiffDrive drive(model, mecanumSpec());
+  const double vx = 0.3, vy = 0.2, w = 0.5;
+  const Eigen::Vector4d speed = mecanumRims(vx, vy, w) / 0.1;  // rad/s
+  ArticulationState s = restState(model);
+  drive.restart(s, true);
+  const int steps = 4000;
+  for (int n = 1; n <= steps; ++n) {
+    s.q = speed * (n * kH);
+    drive.observe(s, kH);
+  }
+  // A constant body twist: the body's (v_x, v_y) turned with the heading.
+  const double T = steps * kH, a = w * T;
+  const PlanarOdometry& o = drive.odometry();
+  EXPECT_NEAR(o.heading, a, 1e-12);
+  EXPECT_NEAR(o.x, (vx * std::sin(a) + vy * (std::cos(a) - 1.0)) / w, 1e-12);
+  EXPECT_NEAR(o.y, (vx * (1.0 - std::cos(a)) + vy * std::sin(a)) / w, 1e-12);
+  EXPECT_NEAR(o.linear, vx, 1e-12);
+  EXPECT_NEAR(o.lateral, vy, 1e-12);
+  EXPECT_NEAR(o.angular, w, 1e-12);
+}
+
+TEST(MecanumDrive, AsksEachWheelForItsRollersSpeedAndADifferentialBaseIgnoresVy) {
+  const ArticulationModel model = fourWheels();
+  DiffDriveSpec s = mecanumSpec();
+  s.gains.assign(4, PidGains{0.5, 0.0, 0.0, 0.0});
+  DiffDrive drive(model, s);
+  drive.restart(restState(model), true);
+  ASSERT_TRUE(drive.command(0.2, 0.4, 0.0, -0.1));
+  Eigen::VectorXd effort = Eigen::VectorXd::Zero(4);
+  drive.efforts(restState(model), kH, kH, effort);
+  const Eigen::Vector4d target = mecanumRims(0.2, -0.1, 0.4) / 0.1;
+  // Each wheel's servo: its P on the speed error, implicit in how fast it answers (§11.12).
+  const ArticulationKinematics rest = kinematics(model, restState(model));
+  for (int n = 0; n < 4; ++n) {
+    const double implicit = 1.0 + 0.5 * kH * jointResponse(model, rest, n + 1);
+    EXPECT_NEAR(effort(n), 0.5 * target(n) / implicit, 1e-12) << n;
+  }
+  EXPECT_DOUBLE_EQ(drive.limitedLateral(), -0.1);
+  // A differential base takes no sideways command, as DiffDriveController reads none.
+  const ArticulationModel two = twoWheels();
+  DiffDrive diff(two, spec());
+  diff.restart(wheelsAt(two, 0.0, 0.0), true);
+  ASSERT_TRUE(diff.command(0.2, 0.0, 0.0, 0.5));
+  Eigen::VectorXd e2 = Eigen::VectorXd::Zero(2);
+  diff.efforts(wheelsAt(two, 0.0, 0.0), kH, kH, e2);
+  EXPECT_EQ(diff.limitedLateral(), 0.0);
+  EXPECT_DOUBLE_EQ(e2(0), e2(1));  // straight ahead
+  // A mecanum base has two wheels a side.
+  DiffDriveSpec three = mecanumSpec();
+  three.left = {1};
+  three.right = {3};
+  EXPECT_THROW(DiffDrive(model, three), std::invalid_argument);
 }
 
 }  // namespace

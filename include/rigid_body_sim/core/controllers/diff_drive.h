@@ -1,6 +1,8 @@
-// A differential-drive base's controller, as ros_controllers'
+// A wheeled base's controller, as ros_controllers'
 // diff_drive_controller/DiffDriveController runs one (docs/physics.md
-// §11.12): a body twist (v, ω) becomes the two sides' wheel speeds, within
+// §11.12), or mecanum_drive_controller/MecanumDriveController on four
+// mecanum wheels (§11.13): a body twist (v, ω), and a mecanum base's
+// sideways v_y, becomes the wheels' speeds, within
 // its speed, acceleration and jerk limits and zero once the command is
 // older than its timeout; each wheel tracks its speed through a PID on
 // effort (never by setting the joint), implicit in its proportional term
@@ -51,14 +53,22 @@ struct DiffDriveSettings {
   double max_wheel_torque = std::numeric_limits<double>::infinity();
   TwistLimiter linear;   ///< linear/x/*
   TwistLimiter angular;  ///< angular/z/*
+  TwistLimiter lateral;  ///< linear/y/* (a mecanum base's; a differential one takes no v_y)
 };
 
 struct DiffDriveSpec {
-  std::string name;         ///< the controller's (config key, topic namespace)
-  std::vector<int> left;    ///< the left wheels' joints (link indices), one or more
-  std::vector<int> right;   ///< the right wheels', as many
-  double wheel_separation;  ///< m, before its multiplier
-  double wheel_radius;      ///< m, before the multipliers
+  std::string name;        ///< the controller's (config key, topic namespace)
+  std::vector<int> left;   ///< the left wheels' joints (link indices), one or more; mecanum: front, back
+  std::vector<int> right;  ///< the right wheels', as many; mecanum: front, back
+  /// m, before its multiplier: the two sides apart; mecanum: its wheels'
+  /// lengthwise and sideways spans added (twice mecanum_drive_controller's
+  /// k, each wheel's |x| + |y| from the centre)
+  double wheel_separation;
+  double wheel_radius;  ///< m, before the multipliers
+  /// Four mecanum wheels, their rollers at 45 degrees as mecanum_drive_controller
+  /// has them: the front left and back right roll the base along x − y, the
+  /// others along x + y.
+  bool mecanum = false;
   DiffDriveSettings settings;
   /// Per wheel (left then right) the PID on its speed error; empty: the
   /// default of defaultWheelGains.
@@ -79,6 +89,7 @@ struct PlanarOdometry {
   double heading = 0.0;     ///< rad, in (−π, π]
   double linear = 0.0;      ///< m/s, along the base's x (averaged over the window)
   double angular = 0.0;     ///< rad/s, about z (averaged over the window)
+  double lateral = 0.0;     ///< m/s, along the base's y (a mecanum base's; averaged over the window)
 };
 
 class DiffDrive {
@@ -98,9 +109,11 @@ class DiffDrive {
   double leftRadius() const { return left_radius_; }
   double rightRadius() const { return right_radius_; }
 
-  /// A cmd_vel received at `t` (s of sim time): v (m/s), ω (rad/s). Not
-  /// finite or beyond ranges::kMaxCommandSpeed: refused (false), nothing changes.
-  bool command(double linear, double angular, double t);
+  /// A cmd_vel received at `t` (s of sim time): v (m/s), ω (rad/s), and a
+  /// mecanum base's v_y (m/s; a differential base ignores it, as
+  /// ros_controllers' does). Not finite or beyond ranges::kMaxCommandSpeed:
+  /// refused (false), nothing changes.
+  bool command(double linear, double angular, double t, double lateral = 0.0);
   /// The step [t, t + dt) from `state`: the command limited and turned into
   /// wheel speeds, each wheel's PID effort written to `effort` (per joint,
   /// within its limit).
@@ -112,6 +125,7 @@ class DiffDrive {
   /// The last command as limited (publish_cmd's cmd_vel_out): v, ω.
   double limitedLinear() const { return last0_linear_; }
   double limitedAngular() const { return last0_angular_; }
+  double limitedLateral() const { return last0_lateral_; }
 
   /// The base was put somewhere or its joints moved: the wheels' positions
   /// are read afresh (no jump in the odometry), the PIDs and the velocity
@@ -122,10 +136,12 @@ class DiffDrive {
  private:
   /// The mean of `joints`' positions in `state`.
   static double meanPosition(const ArticulationState& state, const std::vector<int>& joints);
-  /// Moves the pose by an arc of length `ds` turning `dtheta`.
-  void integrate(double ds, double dtheta);
+  /// Moves the pose by an arc of length `ds` (and `dlat` sideways) turning `dtheta`.
+  void integrate(double ds, double dtheta, double dlat = 0.0);
   /// Adds one step's velocity sample to the windows.
-  void average(double linear, double angular);
+  void average(double linear, double angular, double lateral = 0.0);
+  /// A mecanum base's odometry from each wheel's travel since the last update.
+  void observeMecanum(const ArticulationState& state, double dt);
 
   DiffDriveSpec spec_;
   std::vector<int> wheels_;          ///< left then right
@@ -136,14 +152,16 @@ class DiffDrive {
   std::vector<double> response_;
   double separation_ = 0.0, left_radius_ = 0.0, right_radius_ = 0.0;
   // The command: as received, and the last two as limited.
-  double linear_ = 0.0, angular_ = 0.0, stamp_ = 0.0;
+  double linear_ = 0.0, angular_ = 0.0, lateral_ = 0.0, stamp_ = 0.0;
   bool commanded_ = false;
   double last0_linear_ = 0.0, last0_angular_ = 0.0, last1_linear_ = 0.0, last1_angular_ = 0.0;
+  double last0_lateral_ = 0.0, last1_lateral_ = 0.0;
   // The odometry.
   PlanarOdometry odometry_;
   double left_travel_ = 0.0, right_travel_ = 0.0;  ///< m, each side's rim at the last update
   bool has_travel_ = false;                        ///< false until the first update or restart
-  std::vector<double> linear_window_, angular_window_;
+  std::vector<double> travel_;  ///< m, a mecanum base's wheels' rims at the last update (left then right)
+  std::vector<double> linear_window_, angular_window_, lateral_window_;
   std::size_t window_next_ = 0;
 };
 
