@@ -196,6 +196,10 @@ def declared_sensors(urdf_text):
                     entry["rate"] = 4.0  # hector's default
             elif lib == "libgazebo_ros_p3d.so":
                 entry.update(kind="odom", topic=text(plugin, "topicName", "odom"))
+            elif lib in ("libgazebo_ros_planar_move.so", "libgazebo_ros_force_based_move.so",
+                         "libridgeback_ros_force_based_move.so"):
+                entry.update(kind="odom", topic=text(plugin, "odometryTopic", "odom"),
+                             rate=float(text(plugin, "odometryRate", "20")), drive=True)
             elif lib == "libgazebo_ros_kobuki.so":  # its odometry and the IMU sensor it names, each step
                 every = float(text(plugin, "update_rate", "0")) or 1000.0
                 out.append(dict(entry, kind="odom", topic="odom", rate=every, drive=True, mount=None))
