@@ -75,6 +75,27 @@ std::array<double, 6> covariance(const YAML::Node& node, const std::string& key)
 
 namespace {
 
+/// The keys every wheeled base's controller reads (readDriveSettings's), and its type.
+std::set<std::string> sharedKeys() {
+  return {"type",
+          "wheel_radius",
+          "wheel_separation_multiplier",
+          "wheel_radius_multiplier",
+          "publish_rate",
+          "pose_covariance_diagonal",
+          "twist_covariance_diagonal",
+          "cmd_vel_timeout",
+          "base_frame_id",
+          "odom_frame_id",
+          "enable_odom_tf",
+          "open_loop",
+          "velocity_rolling_window_size",
+          "allow_multiple_cmd_vel_publishers",
+          "publish_cmd",
+          "linear",
+          "angular"};
+}
+
 /// What every wheeled base's controller reads alike, into `d`: the wheel
 /// radius, the multipliers, the timeout, the odometry's window and loop,
 /// the limits (`linear/y` too, for a mecanum base), the topics and frames.
@@ -139,31 +160,11 @@ DiffDriveEntry parseDiffDrive(const YAML::Node& body, const std::string& key) {
       d.unread.push_back({join(key, k), "its message is control_msgs', which Debian 12 does not have"});
     }
   }
-  const std::vector<std::string> others = keysNotRead(body, key,
-                                                      {"type",
-                                                       "left_wheel",
-                                                       "right_wheel",
-                                                       "wheel_separation",
-                                                       "wheel_radius",
-                                                       "wheel_separation_multiplier",
-                                                       "wheel_radius_multiplier",
-                                                       "left_wheel_radius_multiplier",
-                                                       "right_wheel_radius_multiplier",
-                                                       "publish_rate",
-                                                       "pose_covariance_diagonal",
-                                                       "twist_covariance_diagonal",
-                                                       "cmd_vel_timeout",
-                                                       "base_frame_id",
-                                                       "odom_frame_id",
-                                                       "enable_odom_tf",
-                                                       "open_loop",
-                                                       "velocity_rolling_window_size",
-                                                       "allow_multiple_cmd_vel_publishers",
-                                                       "publish_cmd",
-                                                       "linear",
-                                                       "angular",
-                                                       "publish_wheel_joint_controller_state",
-                                                       "publish_joint_trajectory_controller_state"});
+  std::set<std::string> known = sharedKeys();
+  known.insert({"left_wheel", "right_wheel", "wheel_separation", "left_wheel_radius_multiplier",
+                "right_wheel_radius_multiplier", "publish_wheel_joint_controller_state",
+                "publish_joint_trajectory_controller_state"});
+  const std::vector<std::string> others = keysNotRead(body, key, known);
   for (const std::string& k : others)
     d.unread.push_back({k, "diff_drive_controller/DiffDriveController reads no such key"});
   d.left = wheelNames(body["left_wheel"], join(key, "left_wheel"));
@@ -181,30 +182,10 @@ DiffDriveEntry parseDiffDrive(const YAML::Node& body, const std::string& key) {
 DiffDriveEntry parseMecanumDrive(const YAML::Node& body, const std::string& key) {
   DiffDriveEntry d;
   d.mecanum = true;
-  const std::vector<std::string> others = keysNotRead(body, key,
-                                                      {"type",
-                                                       "front_left_wheel_joint",
-                                                       "back_left_wheel_joint",
-                                                       "front_right_wheel_joint",
-                                                       "back_right_wheel_joint",
-                                                       "wheel_separation_x",
-                                                       "wheel_separation_y",
-                                                       "wheel_radius",
-                                                       "wheel_separation_multiplier",
-                                                       "wheel_radius_multiplier",
-                                                       "publish_rate",
-                                                       "pose_covariance_diagonal",
-                                                       "twist_covariance_diagonal",
-                                                       "cmd_vel_timeout",
-                                                       "base_frame_id",
-                                                       "odom_frame_id",
-                                                       "enable_odom_tf",
-                                                       "open_loop",
-                                                       "velocity_rolling_window_size",
-                                                       "allow_multiple_cmd_vel_publishers",
-                                                       "publish_cmd",
-                                                       "linear",
-                                                       "angular"});
+  std::set<std::string> known = sharedKeys();
+  known.insert({"front_left_wheel_joint", "back_left_wheel_joint", "front_right_wheel_joint", "back_right_wheel_joint",
+                "wheel_separation_x", "wheel_separation_y"});
+  const std::vector<std::string> others = keysNotRead(body, key, known);
   for (const std::string& k : others) d.unread.push_back({k, std::string(kMecanumType) + " reads no such key"});
   const auto wheel = [&](const char* k) {
     if (!body[k]) fail(join(key, k), "is missing: a MecanumDriveController needs its four wheels' joints");
