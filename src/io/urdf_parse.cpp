@@ -231,6 +231,23 @@ std::string gazeboFriction(const TiXmlElement& robot, ParsedUrdf& out) {
   return "";
 }
 
+/// Whether `e` (under `<gazebo reference>`) only says what Gazebo does
+/// anyway, and so what runs here too: `<gravity>` true, `<selfCollide>`,
+/// `<turnGravityOff>`, `<kinematic>` and `<static>` false, and
+/// `<provideFeedback>` (a joint's wrench, which a force-torque sensor here
+/// needs no flag for). Said as skipped, they made a robot's note longer and
+/// told of nothing missing (Ridgeback's base_link has `<gravity>true`).
+bool onlyGazebosDefault(const TiXmlElement& e) {
+  const std::string tag = e.Value();
+  std::string text = e.GetText() != nullptr ? e.GetText() : "";
+  text.erase(0, text.find_first_not_of(" \t\n\r"));
+  text.erase(text.find_last_not_of(" \t\n\r") + 1);
+  const bool yes = text == "true" || text == "1", no = text == "false" || text == "0";
+  if (tag == "gravity") return yes;
+  if (tag == "selfCollide" || tag == "turnGravityOff" || tag == "kinematic" || tag == "static") return no;
+  return tag == "provideFeedback";
+}
+
 /// What `<gazebo>` and `<transmission>` markup of `robot` nothing here
 /// reads, into out.unread_markup (see ParsedUrdf).
 void unreadMarkup(const TiXmlElement& robot, ParsedUrdf& out) {
@@ -247,6 +264,7 @@ void unreadMarkup(const TiXmlElement& robot, ParsedUrdf& out) {
     for (const TiXmlElement* e = g->FirstChildElement(); e; e = e->NextSiblingElement()) {
       const std::string tag = e->Value();
       if (tag == "mu1" || tag == "mu2" || tag == "material") continue;  // read above; drawing only
+      if (onlyGazebosDefault(*e)) continue;
       std::string kind = "<" + tag + ">";
       if (tag == "sensor") {
         kind = "<sensor type=\"" + attribute(*e, "type") + "\">";

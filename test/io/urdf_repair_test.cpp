@@ -298,6 +298,21 @@ TEST(GazeboMarkupNothingReads, IsNamedInOneNote) {
   EXPECT_TRUE(notes.empty()) << notes.front();
 }
 
+// A tag that says what Gazebo does anyway (Ridgeback's base_link has
+// <gravity>true) told of nothing missing; one that asks for what is not run
+// here (gravity off) is still named.
+TEST(GazeboMarkupNothingReads, ATagThatSaysGazebosDefaultIsNotNamed) {
+  std::vector<std::string> notes;
+  load(doublePendulum("<gazebo reference='upper'><gravity>true</gravity><selfCollide>false</selfCollide>"
+                      "<static>0</static><provideFeedback>true</provideFeedback></gazebo>"),
+       &notes);
+  EXPECT_TRUE(notes.empty()) << notes.front();
+  load(doublePendulum("<gazebo reference='upper'><gravity>false</gravity><selfCollide>true</selfCollide></gazebo>"),
+       &notes);
+  ASSERT_EQ(notes.size(), 1u);
+  expectContains(notes[0], {"<gravity> ('upper')", "<selfCollide> ('upper')"});
+}
+
 TEST(ZeroOutsideTheLimits, StartsAtTheNearestLimitWithoutAnEnergyJump) {
   // Kinova's joint_2, limits [0.82, 5.46]: its zero is no legal pose. The
   // rest state puts it at 0.82 and says so; held there against the limit by
