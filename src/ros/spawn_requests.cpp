@@ -42,10 +42,22 @@ std::string checkSpawnRequest(const SpawnBody::Request& req) {
                        checkNamespace(req.robot_namespace)});
 }
 
-/// Where a robot's controllers, tf_prefix and (given robot_namespace) topics
-/// are looked up: its robot_namespace, else its name.
-std::string paramNamespace(const SpawnBody::Request& req) {
-  return req.robot_namespace.empty() ? req.name : req.robot_namespace;
+/// The namespace of a robot's controllers' topics and joint_states, from its
+/// markup's gazebo_ros_control `robotNamespace` (`markup`, "": none): a
+/// robot_namespace given takes its place, as the previous choice here made
+/// multi-robot launches work; spawn_model's own (robot_namespace_implied,
+/// the script's when -robot_namespace is not given) fills it only where
+/// the markup names none, as Gazebo's spawn adds robotNamespace only to a
+/// plugin that has none.
+std::string controlNamespace(const SpawnBody::Request& req, const std::string& markup) {
+  if (req.robot_namespace.empty() || (req.robot_namespace_implied && !markup.empty())) return markup;
+  return req.robot_namespace;
+}
+
+/// Where a robot's controllers and tf_prefix are looked up: its name, or,
+/// given a robot_namespace, its controllers' namespace (`control_ns`).
+std::string paramNamespace(const SpawnBody::Request& req, const std::string& control_ns) {
+  return req.robot_namespace.empty() ? req.name : control_ns;
 }
 
 /// The URDF text of the request: exactly one of urdf_xml, urdf_param
@@ -97,20 +109,19 @@ void tellRepairs(const std::vector<std::string>& notes, SpawnBody::Response& res
 /// URDF's markup. Throws std::exception starting with the field or the parameter.
 io::RobotControls requestedControls(const SpawnBody::Request& req, const ros::NodeHandle& nh,
                                     const core::ArticulationModel& model,
-                                    const std::vector<io::ControllerEntry>& markup) {
+                                    const std::vector<io::ControllerEntry>& markup, const std::string& ns) {
   try {
     if (!req.controllers.empty()) {
       return io::controlsOf(io::loadYamlText(req.controllers, "controllers"), "controllers", model, false, markup);
     }
     XmlRpc::XmlRpcValue params;
-    if (!nh.getParam(paramNamespace(req), params) || params.getType() != XmlRpc::XmlRpcValue::TypeStruct) {
+    if (!nh.getParam(ns, params) || params.getType() != XmlRpc::XmlRpcValue::TypeStruct) {
       return io::buildControls(markup, model);
     }
-    return io::controlsOf(toYaml(params), nh.resolveName(paramNamespace(req)), model, true, markup);
+    return io::controlsOf(toYaml(params), nh.resolveName(ns), model, true, markup);
   } catch (const io::ConfigError& e) {
     if (!req.controllers.empty()) throw std::invalid_argument("controllers: " + std::string(e.what()));
-    throw std::invalid_argument("controllers (the parameters under '" + nh.resolveName(paramNamespace(req)) +
-                                "'): " + e.what());
+    throw std::invalid_argument("controllers (the parameters under '" + nh.resolveName(ns) + "'): " + e.what());
   }
 }
 
@@ -140,9 +151,9 @@ void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf,
   const std::string problem =
       configureJoints(model, limits, req.joint_names, req.joint_positions, {}, spawn.robot_start);
   if (!problem.empty()) throw std::invalid_argument(problem);
-  spawn.controls = requestedControls(req, nh, model, markup.controllers);
-  // Gazebo's spawn puts its robot_namespace into every plugin, in place of the markup's.
-  spawn.controls.robot_namespace = req.robot_namespace.empty() ? markup.robot_namespace : req.robot_namespace;
+  const std::string control_ns = controlNamespace(req, markup.robot_namespace);
+  spawn.controls = requestedControls(req, nh, model, markup.controllers, paramNamespace(req, control_ns));
+  spawn.controls.robot_namespace = control_ns;
   spawn.sensor_prefix = robotTopicPrefix(req.robot_namespace, req.name + "/");
   spawn.control_prefix = robotTopicPrefix(spawn.controls.robot_namespace, req.name + "/");
   if (!req.cmd_vel.empty() && model.fixed_base) {
@@ -155,7 +166,7 @@ void loadRequestedRobot(const SpawnBody::Request& req, const io::UrdfText& urdf,
   } catch (const io::ConfigError& e) {
     throw std::invalid_argument(req.cmd_vel.empty() ? e.what() : "cmd_vel: " + std::string(e.what()));
   }
-  spawn.frame_prefix = framePrefix(nh, paramNamespace(req));
+  spawn.frame_prefix = framePrefix(nh, paramNamespace(req, control_ns));
   core::Scene::RobotSpec robot{req.name, std::move(model)};
   if (req.own_friction) robot.friction = req.friction;
   if (req.own_restitution) robot.restitution = req.restitution;

@@ -152,6 +152,13 @@ TEST_F(NodeSpawn, WithoutARobotNamespaceTheScriptGivesARobotItsOwnAsSpawnModelDo
   EXPECT_TRUE(
       spinUntil([] { return advertised("/joint_states") && subscribes("/sim_node", "/elbow_hold/command"); }, 30.0));
   EXPECT_FALSE(advertised("/two_link/joint_states"));
+  // spawn.test's gp_rover, whose markup names /gp for gazebo_ros_control:
+  // its joint_states and drive there, as Gazebo keeps a plugin's own
+  // robotNamespace; its p3d odometry, whose plugin names none, at the root.
+  EXPECT_TRUE(spinUntil(
+      [] { return advertised("/gp/joint_states") && advertised("/gp/odom") && advertised("/ground_truth/state"); },
+      30.0));
+  EXPECT_FALSE(advertised("/gp_rover/joint_states"));
 }
 
 TEST_F(NodeSpawn, TheScriptTakesAFileAndRollPitchYawAsUrdfDoes) {
