@@ -50,6 +50,8 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/bodies/setting_keys.cpp
   ${RBS_SOURCE_ROOT}/src/core/step/shape_matching.cpp
   ${RBS_SOURCE_ROOT}/src/core/controllers/diff_drive.cpp
+  ${RBS_SOURCE_ROOT}/src/core/controllers/steered_drive.cpp
+  ${RBS_SOURCE_ROOT}/src/core/controllers/steering.cpp
   ${RBS_SOURCE_ROOT}/src/core/controllers/joint_control.cpp
   ${RBS_SOURCE_ROOT}/src/core/articulations/joint_effort_schedule.cpp
   ${RBS_SOURCE_ROOT}/src/core/controllers/joint_trajectory.cpp

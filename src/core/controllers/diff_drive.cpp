@@ -22,20 +22,23 @@ double TwistLimiter::limit(double v, double v0, double v1, double dt) const {
   return v;
 }
 
+PidGains servoGains(double inertia, double effort_limit) {
+  constexpr double kTau = 0.02;  // s, both poles of the speed loop
+  PidGains g;
+  g.p = 2.0 * inertia / kTau;
+  g.i = inertia / (kTau * kTau);
+  g.d = 0.0;
+  g.i_clamp = std::isfinite(effort_limit) ? effort_limit : 100.0 * g.p;
+  return g;
+}
+
 PidGains defaultWheelGains(const ArticulationModel& model, int wheel, double wheel_radius, int wheels) {
-  constexpr double kTau = 0.02;  // s, both poles of the wheel's speed loop
   double robot_mass = 0.0;
   for (const ArticulatedLink& link : model.links) robot_mass += link.mass.mass;
   const ArticulatedLink& link = model.links.at(wheel);
   const Vec3 axis = link.axis_J.normalized();
   const double own = axis.dot(link.mass.I_C_F * axis);  // about its axle (through its centre of mass)
-  const double J = own + robot_mass * wheel_radius * wheel_radius / std::max(wheels, 1);
-  PidGains g;
-  g.p = 2.0 * J / kTau;
-  g.i = J / (kTau * kTau);
-  g.d = 0.0;
-  g.i_clamp = std::isfinite(link.limits.effort) ? link.limits.effort : 100.0 * g.p;
-  return g;
+  return servoGains(own + robot_mass * wheel_radius * wheel_radius / std::max(wheels, 1), link.limits.effort);
 }
 
 namespace {
@@ -67,8 +70,11 @@ double sinc(double a) { return std::abs(a) < 1e-4 ? 1.0 - a * a / 6.0 : std::sin
 
 DiffDrive::DiffDrive(const ArticulationModel& model, DiffDriveSpec spec) : spec_(std::move(spec)) {
   const DiffDriveSpec& s = spec_;
-  if (s.left.empty() || s.right.empty()) fail(s, "needs left and right wheels");
-  if (s.left.size() != s.right.size()) {
+  if (s.steering) {
+    if (s.left.empty() || !s.right.empty()) fail(s, "a steered base's driven wheels are `left`, `right` empty");
+  } else if (s.left.empty() || s.right.empty()) {
+    fail(s, "needs left and right wheels");
+  } else if (s.left.size() != s.right.size()) {
     fail(s, std::to_string(s.left.size()) + " left wheels and " + std::to_string(s.right.size()) +
                 " right wheels: give as many on each side");
   }
@@ -109,14 +115,12 @@ DiffDrive::DiffDrive(const ArticulationModel& model, DiffDriveSpec spec) : spec_
   const std::vector<int>& all = wheels_;
   if (!s.gains.empty() && s.gains.size() != all.size()) fail(s, "needs one set of PID gains per wheel");
   for (std::size_t w = 0; w < all.size(); ++w) {
-    const double radius = w < s.left.size() ? left_radius_ : right_radius_;
     const PidGains g =
-        s.gains.empty() ? defaultWheelGains(model, all[w], radius, static_cast<int>(all.size())) : s.gains[w];
-    for (const double x : {g.p, g.i, g.d, g.i_clamp}) {
-      if (!(std::isfinite(x) && x >= 0.0)) fail(s, "wheel PID gains p, i, d, i_clamp must be finite and >= 0");
-    }
+        s.gains.empty() ? defaultWheelGains(model, all[w], rimRadius(w), static_cast<int>(all.size())) : s.gains[w];
+    if (!validGains(g)) fail(s, "wheel PID gains p, i, d, i_clamp must be finite and >= 0");
     pids_.emplace_back(g);
   }
+  if (s.steering) checkSteering(model, rest);
 }
 
 bool DiffDrive::command(double linear, double angular, double t, double lateral) {
@@ -173,14 +177,18 @@ double sideSign(std::size_t n) { return n < 2 ? -1.0 : 1.0; }
 
 }  // namespace
 
+void DiffDrive::readTravel(const ArticulationState& state) {
+  travel_.clear();
+  for (std::size_t n = 0; n < wheels_.size(); ++n) travel_.push_back(state.q(wheels_[n] - 1) * rimRadius(n));
+}
+
 void DiffDrive::observeMecanum(const ArticulationState& state, double dt) {
   // Each rim's travel d = v_x ∓ v_y ∓ k ω: the twist is the mean of
   // d, of ±d (its v_y sign) and of ±d / k (its side's), inverting it exactly.
-  if (travel_.size() != wheels_.size()) travel_.clear();
+  if (travel_.size() != wheels_.size()) readTravel(state);  // the first update: where the wheels start
   double dx = 0.0, dy = 0.0, dk = 0.0;
   for (std::size_t n = 0; n < wheels_.size(); ++n) {
-    const double rim = state.q(wheels_[n] - 1) * (n < 2 ? left_radius_ : right_radius_);
-    if (travel_.size() < wheels_.size()) travel_.push_back(rim);  // the first update: where the wheels start
+    const double rim = state.q(wheels_[n] - 1) * rimRadius(n);
     const double d = rim - travel_[n];
     travel_[n] = rim;
     dx += 0.25 * d;
@@ -194,13 +202,20 @@ void DiffDrive::observeMecanum(const ArticulationState& state, double dt) {
 
 void DiffDrive::observe(const ArticulationState& state, double dt) {
   if (spec_.settings.open_loop) {
-    integrate(last0_linear_ * dt, last0_angular_ * dt, last0_lateral_ * dt);
-    odometry_.linear = last0_linear_;
-    odometry_.angular = last0_angular_;
+    double v = last0_linear_, w = last0_angular_;
+    if (spec_.steering) {  // ω is a steering angle: the motion it gives
+      const PlanarMotion m = motionPerSpeed(*spec_.steering, std::clamp(w, -0.5 * M_PI, 0.5 * M_PI));
+      w = v * m.w;
+      v *= m.v;
+    }
+    integrate(v * dt, w * dt, last0_lateral_ * dt);
+    odometry_.linear = v;
+    odometry_.angular = w;
     odometry_.lateral = last0_lateral_;
     return;
   }
   if (spec_.mecanum) return observeMecanum(state, dt);
+  if (spec_.steering) return observeSteered(state, dt);
   const double left = meanPosition(state, spec_.left) * left_radius_;
   const double right = meanPosition(state, spec_.right) * right_radius_;
   if (!has_travel_) {  // the first update: where the wheels start
@@ -230,6 +245,7 @@ void DiffDrive::efforts(const ArticulationState& state, double t, double dt, Eig
   last0_linear_ = v;
   last0_angular_ = w;
   last0_lateral_ = vy;
+  if (spec_.steering) return steeredEfforts(state, v, w, dt, effort);
   // Each wheel's speed, tracked through effort.
   const double left_speed = (v - 0.5 * w * separation_) / left_radius_;
   const double right_speed = (v + 0.5 * w * separation_) / right_radius_;
@@ -251,10 +267,9 @@ void DiffDrive::restart(const ArticulationState& state, bool zero_pose) {
   right_travel_ = meanPosition(state, spec_.right) * right_radius_;
   has_travel_ = true;
   for (Pid& pid : pids_) pid.reset();
+  for (Pid& pid : steer_pids_) pid.reset();
   travel_.clear();
-  for (std::size_t n = 0; spec_.mecanum && n < wheels_.size(); ++n) {
-    travel_.push_back(state.q(wheels_[n] - 1) * (n < 2 ? left_radius_ : right_radius_));
-  }
+  if (spec_.mecanum || spec_.steering) readTravel(state);
   linear_window_.clear();
   angular_window_.clear();
   lateral_window_.clear();

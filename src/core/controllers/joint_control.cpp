@@ -45,14 +45,14 @@ namespace {
   throw std::invalid_argument("controller '" + c.name + "': " + what);
 }
 
+}  // namespace
+
 bool validGains(const PidGains& g) {
   for (const double x : {g.p, g.i, g.d, g.i_clamp}) {
     if (!(std::isfinite(x) && x >= 0.0)) return false;
   }
   return true;
 }
-
-}  // namespace
 
 JointControllers::JointControllers(const ArticulationModel& model, std::vector<JointControllerSpec> specs)
     : specs_(std::move(specs)), owner_(model.links.size(), -1) {

@@ -1,7 +1,9 @@
 // A wheeled base's controller, as ros_controllers'
 // diff_drive_controller/DiffDriveController runs one (docs/physics.md
 // §11.12), or mecanum_drive_controller/MecanumDriveController on four
-// mecanum wheels (§11.13): a body twist (v, ω), and a mecanum base's
+// mecanum wheels (§11.13), or a steered base's (§11.14:
+// ackermann_steering_controller, gazebo_ros_tricycle_drive, whose command's
+// angular z is the steering angle): a body twist (v, ω), and a mecanum base's
 // sideways v_y, becomes the wheels' speeds, within
 // its speed, acceleration and jerk limits and zero once the command is
 // older than its timeout; each wheel tracks its speed through a PID on
@@ -14,13 +16,17 @@
 
 #include <Eigen/Core>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rigid_body_sim/core/articulations/articulation.h"
 #include "rigid_body_sim/core/controllers/joint_control.h"
+#include "rigid_body_sim/core/controllers/steering.h"
 
 namespace rigid_body_sim::core {
+
+struct ArticulationKinematics;
 
 /// One axis of the twist (linear x, angular z), as ros_controllers'
 /// SpeedLimiter: velocity within [min_velocity, max_velocity], its change
@@ -69,6 +75,11 @@ struct DiffDriveSpec {
   /// has them: the front left and back right roll the base along x − y, the
   /// others along x + y.
   bool mecanum = false;
+  /// A steered base (§11.14): `left` its driven wheels (one or more),
+  /// `right` empty, `wheel_separation` its wheelbase; the command's ω is
+  /// the steering angle δ (rad), limited by `angular/z` as ros_controllers'
+  /// ackermann_steering_controller limits it.
+  std::optional<SteeringSpec> steering;
   DiffDriveSettings settings;
   /// Per wheel (left then right) the PID on its speed error; empty: the
   /// default of defaultWheelGains.
@@ -81,6 +92,10 @@ struct DiffDriveSpec {
 /// the robot's mass at its rim (m_robot r² / wheels): p = 2 J / τ,
 /// i = J / τ², i_clamp = the joint's effort limit (100 p if it has none).
 PidGains defaultWheelGains(const ArticulationModel& model, int wheel, double wheel_radius, int wheels);
+
+/// The PI above for an inertia J (kg·m² or kg): p = 2 J / τ, i = J / τ²,
+/// i_clamp = `effort_limit` (100 p if it is infinite).
+PidGains servoGains(double inertia, double effort_limit);
 
 /// The base's pose and twist in the odometry frame, which is where the
 /// base was when the controller started (x forward, z up).
@@ -142,6 +157,18 @@ class DiffDrive {
   void average(double linear, double angular, double lateral = 0.0);
   /// A mecanum base's odometry from each wheel's travel since the last update.
   void observeMecanum(const ArticulationState& state, double dt);
+  /// A steered base's: the motion its steering joints allow, scaled to its wheels' travel.
+  void observeSteered(const ArticulationState& state, double dt);
+  /// A steered base's efforts for the limited command (v, δ).
+  void steeredEfforts(const ArticulationState& state, double v, double delta, double dt, Eigen::VectorXd& effort);
+  /// A steered base's steering joints checked, their servos made.
+  void checkSteering(const ArticulationModel& model, const ArticulationKinematics& rest);
+  /// Steering joint k's heading now (its angle, signed as its axis is ±z).
+  double heading(const ArticulationState& state, std::size_t k) const;
+  /// Wheel n's rim radius (m): its side's.
+  double rimRadius(std::size_t n) const { return n < spec_.left.size() ? left_radius_ : right_radius_; }
+  /// Each wheel's rim (m) now, into travel_.
+  void readTravel(const ArticulationState& state);
 
   DiffDriveSpec spec_;
   std::vector<int> wheels_;          ///< left then right
@@ -160,7 +187,11 @@ class DiffDrive {
   PlanarOdometry odometry_;
   double left_travel_ = 0.0, right_travel_ = 0.0;  ///< m, each side's rim at the last update
   bool has_travel_ = false;                        ///< false until the first update or restart
-  std::vector<double> travel_;  ///< m, a mecanum base's wheels' rims at the last update (left then right)
+  std::vector<double> travel_;  ///< m, a mecanum or steered base's wheels' rims at the last update (left then right)
+  // A steered base's steering joints: limits, speed servos, responses.
+  std::vector<JointLimits> steer_limits_;
+  std::vector<Pid> steer_pids_;
+  std::vector<double> steer_response_;
   std::vector<double> linear_window_, angular_window_, lateral_window_;
   std::size_t window_next_ = 0;
 };

@@ -24,6 +24,9 @@ struct PidGains {
   double i_clamp = 0.0;  ///< the integral term's bound (N·m or N)
 };
 
+/// Every gain finite and >= 0.
+bool validGains(const PidGains& g);
+
 /// control_toolbox::Pid's arithmetic (without anti-windup): ∫e accumulates
 /// e dt; the integral term i ∫e is clipped to ±i_clamp.
 class Pid {
