@@ -79,6 +79,7 @@ set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/controller_config.cpp
   ${RBS_SOURCE_ROOT}/src/io/controllers.cpp
   ${RBS_SOURCE_ROOT}/src/io/drive_config.cpp
+  ${RBS_SOURCE_ROOT}/src/io/steering_geometry.cpp
   ${RBS_SOURCE_ROOT}/src/io/gazebo_markup.cpp
   ${RBS_SOURCE_ROOT}/src/io/gazebo_plugins.cpp
   ${RBS_SOURCE_ROOT}/src/io/hector_plugins.cpp

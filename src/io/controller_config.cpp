@@ -37,11 +37,14 @@ ControllerEntry parseController(const YAML::Node& name, const YAML::Node& body, 
   c.key = join(path, c.name);
   if (!body.IsMap()) fail(c.key, "expected a map {type, joint or joints, pid or gains}");
   const std::string type = body["type"] && body["type"].IsScalar() ? body["type"].Scalar() : "";
-  if (type == kDiffDriveType || type == kMecanumType) {
+  if (type == kDiffDriveType || type == kMecanumType || type == kAckermannType) {
     c.type = type;
-    c.drive = type == kMecanumType ? parseMecanumDrive(body, c.key) : parseDiffDrive(body, c.key);
+    c.drive = type == kMecanumType     ? parseMecanumDrive(body, c.key)
+              : type == kAckermannType ? parseAckermannDrive(body, c.key)
+                                       : parseDiffDrive(body, c.key);
     c.joints = c.drive->left;  // left then right: where gazebo_ros_control's pid_gains find them
     c.joints.insert(c.joints.end(), c.drive->right.begin(), c.drive->right.end());
+    c.joints.insert(c.joints.end(), c.drive->steers.begin(), c.drive->steers.end());  // no controller's but this one
     c.joint_list = true;
     c.gains.assign(c.joints.size(), std::nullopt);
     c.unread = std::move(c.drive->unread);

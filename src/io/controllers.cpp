@@ -9,6 +9,7 @@
 
 #include "controller_config.h"
 #include "drive_config.h"
+#include "steering_geometry.h"
 
 namespace rigid_body_sim::io {
 namespace {
@@ -54,7 +55,7 @@ int jointIndex(const core::ArticulationModel& model, const std::string& name, co
 }  // namespace
 
 std::vector<std::string> controllerTypes() {
-  std::vector<std::string> out{kJointState, kDiffDriveType, kMecanumType};
+  std::vector<std::string> out{kJointState, kDiffDriveType, kMecanumType, kAckermannType};
   for (const TypeInfo& t : kTypes) out.emplace_back(t.name);
   return out;
 }
@@ -74,20 +75,44 @@ double urdfWheelRadius(const core::ArticulatedLink& link, const std::string& key
                   "give wheel_radius (m)");
 }
 
-/// A DiffDriveController of `model`, into `out`.
+void finishDrive(const ControllerEntry& e, const core::ArticulationModel& model, core::DiffDriveSpec spec,
+                 RobotControls& out);
+
+/// A DiffDriveController of `model` (or a MecanumDriveController, an AckermannSteeringController), into `out`.
 void addDrive(const ControllerEntry& e, const core::ArticulationModel& model, RobotControls& out) {
   const DiffDriveEntry& d = *e.drive;
   core::DiffDriveSpec spec;
   spec.name = e.name;
   spec.settings = d.settings;
+  const bool steered = !d.steers.empty();
+  // A steered base's keys: the AckermannSteeringController's, or the tricycle plugin's.
+  const char* driven_key = !steered ? "left_wheel" : d.speed_at_steered_wheel ? "actuatedWheelJoint" : "rear_wheel";
+  const char* steers_key = d.speed_at_steered_wheel ? "steeringJoint" : "front_steer";
+  detail::SteeredJoints steering;
   for (const auto& [names, joints, side] :
-       {std::tuple{&d.left, &spec.left, "left_wheel"}, std::tuple{&d.right, &spec.right, "right_wheel"}}) {
+       {std::tuple{&d.left, &spec.left, driven_key}, std::tuple{&d.right, &spec.right, "right_wheel"},
+        std::tuple{&d.steers, &steering.steers, steers_key},
+        std::tuple{&d.fixed_axle, &steering.fixed_axle, "encoderWheelLeftJoint, encoderWheelRightJoint"}}) {
     for (std::size_t k = 0; k < names->size(); ++k) {
       const std::string key = e.key + "." + side + (names->size() > 1 ? "[" + std::to_string(k) + "]" : "");
       joints->push_back(jointIndex(model, (*names)[k], key));
     }
   }
-  const core::ArticulatedLink &left = model.links[spec.left.front()], &right = model.links[spec.right.front()];
+  const core::ArticulatedLink& left = model.links[spec.left.front()];
+  spec.wheel_radius = d.wheel_radius ? *d.wheel_radius : urdfWheelRadius(left, e.key + ".wheel_radius");
+  if (steered) {
+    steering.driven = spec.left;
+    steering.driven_key = e.key + "." + driven_key;
+    steering.steers_key = e.key + "." + steers_key;
+    spec.steering = detail::steeringOf(model, steering, d.wheel_separation.value_or(0.0));
+    spec.steering->wheelbase *= d.settings.wheel_separation_multiplier;
+    spec.steering->speed_at_steered_wheel = d.speed_at_steered_wheel;
+    spec.steering->steering_speed = d.steering_speed;
+    spec.wheel_separation = spec.steering->wheelbase;
+    spec.settings.wheel_separation_multiplier = 1.0;
+    return finishDrive(e, model, std::move(spec), out);
+  }
+  const core::ArticulatedLink& right = model.links[spec.right.front()];
   spec.mecanum = d.mecanum;
   // As ros_controllers: the first wheels' joint origins apart (in their
   // parents' frames); a mecanum base's, as mecanum_drive_controller: each
@@ -101,11 +126,18 @@ void addDrive(const ControllerEntry& e, const core::ArticulationModel& model, Ro
   }
   const double urdf_separation = d.mecanum ? spans : (left.X_PJ.translation - right.X_PJ.translation).norm();
   spec.wheel_separation = d.wheel_separation.value_or(urdf_separation);
-  spec.wheel_radius = d.wheel_radius ? *d.wheel_radius : urdfWheelRadius(left, e.key + ".wheel_radius");
   if (!(spec.wheel_separation > 0.0)) {
     refuse(e.key + ".wheel_separation", "is not given, and the wheels' joints '" + left.joint + "' and '" +
                                             right.joint + "' are at one place: give wheel_separation (m)");
   }
+  finishDrive(e, model, std::move(spec), out);
+}
+
+/// A drive's wheel gains (gazebo_ros_control's pid_gains where given, the
+/// default for the rest), then the drive itself, into `out`.
+void finishDrive(const ControllerEntry& e, const core::ArticulationModel& model, core::DiffDriveSpec spec,
+                 RobotControls& out) {
+  const DiffDriveEntry& d = *e.drive;
   const bool any_gains = std::any_of(e.gains.begin(), e.gains.end(), [](const auto& g) { return g.has_value(); });
   if (any_gains) {  // pid_gains for some wheels: the others get the default
     const std::vector<int> wheels = [&] {

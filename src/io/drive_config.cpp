@@ -12,9 +12,16 @@ using namespace yaml_fields;
 
 namespace {
 
+std::vector<std::string> jointNames(const YAML::Node& node, const std::string& key);
+
 /// `left_wheel` or `right_wheel`: a joint name or a non-empty list of them.
 std::vector<std::string> wheelNames(const YAML::Node& node, const std::string& key) {
   if (!node) fail(key, "is missing: a DiffDriveController needs left_wheel and right_wheel (a joint or a list)");
+  return jointNames(node, key);
+}
+
+/// A joint name or a non-empty list of them.
+std::vector<std::string> jointNames(const YAML::Node& node, const std::string& key) {
   if (node.IsScalar()) return {text(node, key)};
   if (!node.IsSequence() || node.size() == 0) fail(key, "expected a joint name or a non-empty list of them");
   std::vector<std::string> names;
@@ -199,6 +206,34 @@ DiffDriveEntry parseMecanumDrive(const YAML::Node& body, const std::string& key)
     }
     d.wheel_separation = positiveNumber(body["wheel_separation_x"], join(key, "wheel_separation_x")) +
                          positiveNumber(body["wheel_separation_y"], join(key, "wheel_separation_y"));
+  }
+  readDriveSettings(body, key, d);
+  return d;
+}
+
+DiffDriveEntry parseAckermannDrive(const YAML::Node& body, const std::string& key) {
+  DiffDriveEntry d;
+  std::set<std::string> known = sharedKeys();
+  known.erase("wheel_separation_multiplier");
+  known.insert(
+      {"rear_wheel", "front_steer", "wheel_separation_h", "wheel_separation_h_multiplier", "steer_pos_multiplier"});
+  for (const std::string& k : keysNotRead(body, key, known)) {
+    d.unread.push_back({k, std::string(kAckermannType) + " reads no such key"});
+  }
+  d.left = body["rear_wheel"] ? jointNames(body["rear_wheel"], join(key, "rear_wheel"))
+                              : std::vector<std::string>{"rear_wheel_joint"};
+  d.steers = body["front_steer"] ? jointNames(body["front_steer"], join(key, "front_steer"))
+                                 : std::vector<std::string>{"front_steer_joint"};
+  if (body["wheel_separation_h"]) {
+    d.wheel_separation = positiveNumber(body["wheel_separation_h"], join(key, "wheel_separation_h"));
+  }
+  if (body["wheel_separation_h_multiplier"]) {
+    d.settings.wheel_separation_multiplier =
+        positiveNumber(body["wheel_separation_h_multiplier"], join(key, "wheel_separation_h_multiplier"));
+  }
+  if (body["steer_pos_multiplier"] && number(body["steer_pos_multiplier"], join(key, "steer_pos_multiplier")) != 1.0) {
+    d.unread.push_back(
+        {join(key, "steer_pos_multiplier"), "the odometry reads the steering joints' angles as they are"});
   }
   readDriveSettings(body, key, d);
   return d;

@@ -13,6 +13,7 @@ namespace rigid_body_sim::io {
 
 constexpr const char* kDiffDriveType = "diff_drive_controller/DiffDriveController";
 constexpr const char* kMecanumType = "mecanum_drive_controller/MecanumDriveController";
+constexpr const char* kAckermannType = "ackermann_steering_controller/AckermannSteeringController";
 
 /// The controller at `key` (its map `body`): every key read or refused
 /// (ConfigError naming it); the wheels checked against the robot later
@@ -24,5 +25,12 @@ DiffDriveEntry parseDiffDrive(const YAML::Node& body, const std::string& key);
 /// and `_y` (both or neither: from the URDF), `linear/y` limits beside
 /// DiffDriveController's keys, read the same.
 DiffDriveEntry parseMecanumDrive(const YAML::Node& body, const std::string& key);
+/// An ackermann_steering_controller/AckermannSteeringController's:
+/// `rear_wheel` ("rear_wheel_joint") and `front_steer` ("front_steer_joint"),
+/// each a joint or, beyond ros_controllers, a list (the rear wheels all
+/// driven, the front knuckles turned by Ackermann's linkage: §11.14),
+/// `wheel_separation_h` (none: from the URDF) and its multiplier, beside
+/// DiffDriveController's keys; `steer_pos_multiplier` other than 1 named as not read.
+DiffDriveEntry parseAckermannDrive(const YAML::Node& body, const std::string& key);
 
 }  // namespace rigid_body_sim::io

@@ -190,6 +190,61 @@ ControllerEntry pluginSkidSteer(const TiXmlElement& plugin, const Unread& unread
   unread("<plugin> libgazebo_ros_skid_steer_drive.so odometry of the truth (odometry from the wheels here)", e.name);
   return e;
 }
+/// gazebo_ros_tricycle_drive's model plugin (gazebo_plugins, ROS 1) as a
+/// steered drive (§11.14): `steeringJoint` ("front_steering_joint") turns
+/// `actuatedWheelJoint` ("front_wheel_joint"), whose rim runs at the
+/// command's linear x (`actuatedWheelDiameter`, 0.15 m, or none: the URDF's)
+/// while its steering angle is the command's angular z, held within ±90°;
+/// `encoderWheelLeftJoint` and `encoderWheelRightJoint` ("left_wheel_joint",
+/// "right_wheel_joint") place the fixed axle. `wheelTorque` (5 N·m) bounds
+/// the wheel, `wheelAcceleration` (m/s² at the rim, 0: none) its speed's
+/// change, `wheelDeceleration` its change downward; `steeringSpeed`
+/// (rad/s, 0: as fast as the servo) the steering's. The topics and frames
+/// as readPluginDrive's; odom -> base is on tf, as the plugin always puts it.
+/// Its odometry is the wheels' here (the plugin's default `odometrySource`
+/// world reports the truth, its encoder source the rear wheels': both said).
+ControllerEntry pluginTricycle(const TiXmlElement& plugin, const Unread& unread) {
+  ControllerEntry e;
+  e.name = attribute(plugin, "name").empty() ? "tricycle_drive" : attribute(plugin, "name");
+  DiffDriveEntry& d = e.drive.emplace();
+  const char* file = "libgazebo_ros_tricycle_drive.so";
+  d.left = {childText(plugin, "actuatedWheelJoint", "front_wheel_joint")};
+  d.steers = {childText(plugin, "steeringJoint", "front_steering_joint")};
+  d.fixed_axle = {childText(plugin, "encoderWheelLeftJoint", "left_wheel_joint"),
+                  childText(plugin, "encoderWheelRightJoint", "right_wheel_joint")};
+  d.speed_at_steered_wheel = true;
+  readPluginDrive(plugin, file, "wheelTorque", "publishOdomTF", true, unread, e);
+  e.joints.insert(e.joints.end(), d.steers.begin(), d.steers.end());
+  const Numbers numbers(e.key);
+  const double inf = std::numeric_limits<double>::infinity();
+  double diameter = 0.15, accel = 0.0, steering_speed = 0.0;
+  numbers.at(&plugin, "actuatedWheelDiameter", diameter, Bounds{0.0, core::ranges::kMaxExtent, true, "m"});
+  d.wheel_radius = 0.5 * diameter;
+  const Bounds rate{0.0, inf, false, "(0: none)"};
+  numbers.at(&plugin, "wheelAcceleration", accel, rate);
+  double decel = accel;
+  numbers.at(&plugin, "wheelDeceleration", decel, rate);
+  if (accel > 0.0 || decel > 0.0) {
+    core::TwistLimiter& linear = d.settings.linear;
+    linear.has_acceleration_limits = true;
+    linear.max_acceleration = accel > 0.0 ? accel : 1e6;  // m/s², none in effect
+    linear.min_acceleration = -(decel > 0.0 ? decel : linear.max_acceleration);
+  }
+  numbers.at(&plugin, "steeringSpeed", steering_speed, Bounds{0.0, 1e3, false, "rad/s (0: none)"});
+  if (steering_speed > 0.0) d.steering_speed = steering_speed;
+  unread(std::string("<plugin> ") + file + " <odometrySource> " + childText(plugin, "odometrySource", "world") +
+             " (odometry from the driven wheel and the steering here)",
+         e.name);
+  for (const char* k :
+       {"encoderWheelDiameter", "encoderWheelSeparation", "wheelSpeedTolerance", "steeringAngleTolerance"}) {
+    if (plugin.FirstChildElement(k) != nullptr) unread(std::string("<plugin> ") + file + " <" + k + ">", e.name);
+  }
+  for (const char* k : {"publishWheelTF", "publishWheelJointState"}) {  // joint_states and robot_state_publisher's tf
+    if (childFlag(plugin, k, false, e.key)) unread(std::string("<plugin> ") + file + " <" + k + ">", e.name);
+  }
+  return e;
+}
+
 /// gazebo_ros_ft_sensor's model plugin: `jointName` and `topicName`
 /// (both required, as the plugin's), at `updateRate` (0 or none: every
 /// step), `gaussianNoise` (0) on each of its six numbers.
@@ -238,7 +293,8 @@ bool readsModelPlugin(const TiXmlElement& plugin) {
          file == "libgazebo_ros_skid_steer_drive.so" || file == "libgazebo_ros_control.so" ||
          file == "libhector_gazebo_ros_imu.so" || file == "libhector_gazebo_ros_gps.so" ||
          file == "libhector_gazebo_ros_magnetic.so" || file == "libgazebo_ros_ft_sensor.so" ||
-         file == "libgazebo_ros_kobuki.so" || isMimicPlugin(file) || isBaseMovePlugin(file);
+         file == "libgazebo_ros_kobuki.so" || file == "libgazebo_ros_tricycle_drive.so" || isMimicPlugin(file) ||
+         isBaseMovePlugin(file);
 }
 
 void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevices& out) {
@@ -248,6 +304,8 @@ void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevi
     out.controllers.push_back(pluginDrive(plugin, unread));
   } else if (file == "libgazebo_ros_skid_steer_drive.so") {
     out.controllers.push_back(pluginSkidSteer(plugin, unread));
+  } else if (file == "libgazebo_ros_tricycle_drive.so") {
+    out.controllers.push_back(pluginTricycle(plugin, unread));
   } else if (file == "libhector_gazebo_ros_imu.so") {  // without bodyName: the base
     out.imus.push_back(pluginHectorImu(plugin, unread));
   } else if (file == "libhector_gazebo_ros_gps.so") {

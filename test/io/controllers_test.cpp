@@ -261,7 +261,8 @@ TEST(Controllers, RefusalsNameTheKey) {
       {"controllers: {a: {type: effort_controllers/JointFooController, joint: elbow}}",
        "'controllers.a.type': 'effort_controllers/JointFooController' is not a controller type this project runs; "
        "the types: joint_state_controller/JointStateController, diff_drive_controller/DiffDriveController, "
-       "mecanum_drive_controller/MecanumDriveController, effort_controllers/JointEffortController"},
+       "mecanum_drive_controller/MecanumDriveController, "
+       "ackermann_steering_controller/AckermannSteeringController, effort_controllers/JointEffortController"},
       {"controllers: {a: {type: effort_controllers/JointTrajectoryController, joints: [elbow]}}",
        "'controllers.a.gains.elbow': 'effort_controllers/JointTrajectoryController' acts here through a PID"},
       {"controllers: {a: {type: effort_controllers/JointTrajectoryController, joint: elbow}}", "takes joints:"},

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -68,6 +69,16 @@ struct DiffDriveEntry {
   /// A MecanumDriveController's: left and right each its front then its
   /// back wheel, wheel_separation its x and y spans added.
   bool mecanum = false;
+  /// A steered base's steering joints (an AckermannSteeringController's
+  /// `front_steer`, a tricycle's `steeringJoint`); `left` its driven wheels
+  /// (`rear_wheel`, `actuatedWheelJoint`), `right` empty, wheel_separation its
+  /// wheelbase (`wheel_separation_h`).
+  std::vector<std::string> steers;
+  /// A steered base's wheels on its fixed axle, when they are not driven
+  /// (a tricycle's encoder wheels); empty: the driven wheels that do not steer.
+  std::vector<std::string> fixed_axle;
+  bool speed_at_steered_wheel = false;  ///< the command's speed is the steered wheel's (a tricycle's)
+  double steering_speed = std::numeric_limits<double>::infinity();  ///< rad/s, the steering's fastest
   /// m; unset: from the URDF as ros_controllers finds them (the first wheels' joint
   /// origins apart, the left one's first collision cylinder or sphere).
   std::optional<double> wheel_separation, wheel_radius;
