@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <deque>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -64,6 +65,12 @@ void readJoint(detail::Lumper& lumper, const detail::MovingJoint& moving, Articu
   if (joint.limits) {
     link.limits.effort = joint.limits->effort;
     link.limits.velocity = joint.limits->velocity;
+    if (lumper.setsJointsPastLimits() && (link.limits.effort == 0.0 || link.limits.velocity == 0.0)) {
+      const double none = std::numeric_limits<double>::infinity();
+      if (link.limits.effort == 0.0) link.limits.effort = none;
+      if (link.limits.velocity == 0.0) link.limits.velocity = none;
+      lumper.liftedLimit(link.joint);
+    }
     if (link.type != JointType::Continuous) {
       link.limits.lower = joint.limits->lower;
       link.limits.upper = joint.limits->upper;

@@ -67,7 +67,7 @@ class BodyList {
     const std::string path = "bodies[" + std::to_string(i) + "]";
     requireKnownKeys(entry, path,
                      {"name", "urdf", "initial", "contact", "imu", "odom_noise", "cmd_vel", "controllers",
-                      "gazebo_ros_control", "lidar", "depth_camera"});
+                      "gazebo_ros_control", "steer_bot_hardware_gazebo", "lidar", "depth_camera"});
     if (!entry["name"]) fail(path + ".name", "every body needs a name");
     if (!entry["urdf"]) fail(path + ".urdf", "every body needs a urdf (a file, or for the node a parameter)");
     BodyEntry b;
@@ -96,6 +96,9 @@ class BodyList {
     if (entry["depth_camera"]) b.cameras = parseDepthCameras(entry["depth_camera"], path + ".depth_camera");
     if (entry["gazebo_ros_control"]) {
       applyPidGains(entry["gazebo_ros_control"], path + ".gazebo_ros_control", b.controllers);
+    }
+    if (entry["steer_bot_hardware_gazebo"]) {
+      applySteerBot(entry["steer_bot_hardware_gazebo"], path + ".steer_bot_hardware_gazebo", b.controllers);
     }
     bodies_.push_back(std::move(b));
   }
@@ -150,6 +153,7 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
                     "cmd_vel",
                     "controllers",
                     "gazebo_ros_control",
+                    "steer_bot_hardware_gazebo",
                     "urdf",
                     "devices",
                     "lidar",
@@ -197,6 +201,13 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
       fail("gazebo_ros_control", "with a bodies list, give each robot its own bodies[i].gazebo_ros_control");
     }
     applyPidGains(root["gazebo_ros_control"], "gazebo_ros_control", c.controllers);
+  }
+  if (root["steer_bot_hardware_gazebo"]) {
+    if (root["bodies"]) {
+      fail("steer_bot_hardware_gazebo",
+           "with a bodies list, give each robot its own bodies[i].steer_bot_hardware_gazebo");
+    }
+    applySteerBot(root["steer_bot_hardware_gazebo"], "steer_bot_hardware_gazebo", c.controllers);
   }
   // Sensors sample at most once a step: checked against the dt just read.
   if (c.imu) validateImuEntry(*c.imu, c.model.dt, "imu");

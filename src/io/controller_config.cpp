@@ -1,6 +1,7 @@
 // A robot's `controllers` map: controller_config.h.
 #include "controller_config.h"
 
+#include <algorithm>
 #include <set>
 #include <utility>
 
@@ -158,6 +159,50 @@ void applyPidGains(const YAML::Node& node, const std::string& path, std::vector<
     if (owner->gains[k]) fail(key, "joint '" + joint + "' has gains already, in " + owner->key);
     owner->gains[k] = parseGains(g.second, key);
   }
+}
+
+void applySteerBot(const YAML::Node& node, const std::string& path, std::vector<ControllerEntry>& entries) {
+  if (!node.IsMap()) fail(path, "expected a map {rear_wheel, front_steer, virtual_rear_wheels, ...}");
+  requireKnownKeys(node, path,
+                   {"rear_wheel", "front_steer", "virtual_rear_wheels", "virtual_front_wheels", "virtual_front_steers",
+                    "enable_ackermann_link", "wheel_separation_h", "wheel_separation_w"});
+  const auto names = [&](const char* key) {
+    std::vector<std::string> out;
+    const YAML::Node& list = node[key];
+    if (!list) return out;
+    if (!list.IsSequence()) fail(join(path, key), "expected a list of joint names");
+    for (std::size_t k = 0; k < list.size(); ++k)
+      out.push_back(text(list[k], join(path, key) + "[" + std::to_string(k) + "]"));
+    return out;
+  };
+  const std::string rear = node["rear_wheel"] ? text(node["rear_wheel"], join(path, "rear_wheel")) : "rear_wheel_joint";
+  const std::string steer =
+      node["front_steer"] ? text(node["front_steer"], join(path, "front_steer")) : "front_steer_joint";
+  std::vector<std::string> wheels = names("virtual_rear_wheels");
+  const std::vector<std::string> front = names("virtual_front_wheels");
+  wheels.insert(wheels.end(), front.begin(), front.end());
+  const std::vector<std::string> steers = names("virtual_front_steers");
+  if (wheels.empty()) fail(join(path, "virtual_rear_wheels"), "is missing: the wheels that drive the car");
+  if (steers.empty()) fail(join(path, "virtual_front_steers"), "is missing: the knuckles that steer the car");
+  const auto match = std::find_if(entries.begin(), entries.end(), [&](const ControllerEntry& e) {
+    return e.type == kAckermannType && e.drive && e.drive->left == std::vector<std::string>{rear} &&
+           e.drive->steers == std::vector<std::string>{steer};
+  });
+  if (match == entries.end()) {
+    fail(path, "no " + std::string(kAckermannType) + " has rear_wheel '" + rear + "' and front_steer '" + steer + "'");
+  }
+  DiffDriveEntry& d = *match->drive;
+  d.left = wheels;
+  d.steers = steers;
+  if (!d.wheel_separation && node["wheel_separation_h"]) {
+    d.wheel_separation = positiveNumber(node["wheel_separation_h"], join(path, "wheel_separation_h"));
+  }
+  if (node["enable_ackermann_link"] && !boolean(node["enable_ackermann_link"], join(path, "enable_ackermann_link"))) {
+    match->unread.push_back({join(path, "enable_ackermann_link"), "false, a parallel linkage: Ackermann's is run"});
+  }
+  match->joints = wheels;
+  match->joints.insert(match->joints.end(), steers.begin(), steers.end());
+  match->gains.assign(match->joints.size(), std::nullopt);
 }
 
 }  // namespace rigid_body_sim::io

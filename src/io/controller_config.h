@@ -31,4 +31,17 @@ void throwProblems(const std::vector<std::string>& problems);
 /// own `pid`), one whose controller has gains already, any other key.
 void applyPidGains(const YAML::Node& node, const std::string& path, std::vector<ControllerEntry>& entries);
 
+/// steer_bot_hardware_gazebo's map at `path` (gazebo_ros_control's
+/// robotSimType on car-like robots, AgileX Hunter's): its `rear_wheel` and
+/// `front_steer` name the joints of an AckermannSteeringController of
+/// `entries`, which then drives `virtual_rear_wheels` and
+/// `virtual_front_wheels` for them (each at its own path's speed) and turns
+/// `virtual_front_steers` by the linkage (on such a robot, URDF effort and
+/// speed limits of 0 are read as none: io/urdf_lumper.h); `wheel_separation_h` is the wheelbase when the
+/// controller gives none; `wheel_separation_w` and `enable_ackermann_link`
+/// are the URDF's joints' here (false, a parallel linkage, named as not
+/// read). Refused (ConfigError naming the key): no such controller in
+/// `entries`, a list not of joint names, any other key.
+void applySteerBot(const YAML::Node& node, const std::string& path, std::vector<ControllerEntry>& entries);
+
 }  // namespace rigid_body_sim::io

@@ -305,6 +305,9 @@ RobotControls controlsOf(const YAML::Node& node, const std::string& path, const 
   if (const YAML::Node gazebo = node["gazebo_ros_control"]) {
     applyPidGains(gazebo, path + ".gazebo_ros_control", entries);
   }
+  if (const YAML::Node steer_bot = node["steer_bot_hardware_gazebo"]) {
+    applySteerBot(steer_bot, path + ".steer_bot_hardware_gazebo", entries);
+  }
   return buildControls(with_markup(std::move(entries)), model);
 }
 

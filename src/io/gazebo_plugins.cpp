@@ -325,6 +325,13 @@ void readModelPlugin(const TiXmlElement& plugin, const Unread& unread, RobotDevi
     if (!childText(plugin, "robotNamespace", "").empty()) {  // empty: the root, as none
       out.robot_namespace = childTopic(plugin, "robotNamespace", "", where);
     }
+    const std::string sim_type = childText(plugin, "robotSimType", "");
+    if (sim_type == kSteerBotSimType) {
+      out.robot_sim_type = sim_type;
+    } else if (!sim_type.empty() && sim_type != "gazebo_ros_control/DefaultRobotHWSim") {
+      unread("<plugin> libgazebo_ros_control.so <robotSimType> " + sim_type + " (the default hardware runs)",
+             attribute(plugin, "name"));
+    }
     if (plugin.FirstChildElement("controlPeriod") != nullptr) {
       unread("<plugin> libgazebo_ros_control.so <controlPeriod> (the controllers run every step)",
              attribute(plugin, "name"));

@@ -55,6 +55,12 @@ void Lumper::finish() const {
   }
   if (options_.notes == nullptr) return;
   noteUnreadMarkup();
+  if (!lifted_.empty() && options_.notes != nullptr) {
+    options_.notes->push_back(source_ + ": gazebo_ros_control's robotSimType steer_bot_hardware_gazebo sets joints " +
+                              "past their URDF limits, so the effort or speed limit 0 of " +
+                              count(lifted_.size(), "joint is", "joints are") + " read as none (" + nameList(lifted_) +
+                              ")");
+  }
   if (repairs_.empty()) return;
   std::map<Repair, std::vector<std::string>> by_kind;
   for (const auto& [kind, what] : repairs_) {

@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "gazebo_plugins.h"
 #include "rigid_body_sim/core/bodies/ranges.h"
 #include "rigid_body_sim/core/bodies/shape_mass.h"
 #include "rigid_body_sim/io/input_bounds.h"
@@ -60,6 +61,7 @@ urdf::ModelInterfaceSharedPtr Lumper::parse(const std::string& xml) {
   capsules_ = std::move(parsed.capsules);
   surface_friction_ = std::move(parsed.surface_friction);
   unread_markup_ = std::move(parsed.unread_markup);
+  sets_past_limits_ = parsed.sensors.robot_sim_type == kSteerBotSimType;
   if (options_.sensors != nullptr) {
     *options_.sensors = std::move(parsed.sensors);
     dropStillDrives(*parsed.model, options_.sensors->controllers);

@@ -90,6 +90,13 @@ class Lumper {
 
   bool repair() const { return options_.repair; }
 
+  /// Whether the robot's gazebo_ros_control runs steer_bot_hardware_gazebo
+  /// (after parse()), which sets joints past their URDF limits: a joint's
+  /// effort or speed limit of 0 is then read as none, each one so read
+  /// named by finish() (liftedLimit).
+  bool setsJointsPastLimits() const { return sets_past_limits_; }
+  void liftedLimit(const std::string& joint) { lifted_.push_back(joint); }
+
   /// Throws UrdfError naming every problem, if there was one; else hands
   /// the repairs, as one message, to options.notes.
   void finish() const;
@@ -136,6 +143,8 @@ class Lumper {
   std::map<std::string, std::vector<std::string>> unread_markup_;  ///< ParsedUrdf's
   std::vector<std::string> problems_;
   std::vector<std::pair<Repair, std::string>> repairs_;
+  bool sets_past_limits_ = false;
+  std::vector<std::string> lifted_;  ///< the joints whose 0 limits were read as none
 };
 
 }  // namespace rigid_body_sim::io::detail

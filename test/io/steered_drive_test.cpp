@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <limits>
 #include <string>
 
 #include "rigid_body_sim/io/articulation_loader.h"
@@ -123,6 +124,67 @@ TEST(GazeboTricycleDrive, IsASteeredDriveOfItsMarkupsJoints) {
             std::string::npos)
       << notes;
   EXPECT_NE(notes.find("<encoderWheelSeparation>"), std::string::npos) << notes;
+}
+
+// AgileX Hunter's way (test/ros/steer_bot_base.urdf): the controller on
+// virtual joints, steer_bot_hardware_gazebo's map naming the real ones, and
+// the knuckles' limits 0, which that plugin's robotSimType sets past.
+constexpr const char* kSteerBot =
+    "steer_bot_hardware_gazebo: {rear_wheel: rear_wheel_joint, front_steer: front_steer_joint, "
+    "virtual_rear_wheels: [rear_left_wheel_joint, rear_right_wheel_joint], "
+    "virtual_front_wheels: [front_left_wheel_joint, front_right_wheel_joint], "
+    "virtual_front_steers: [front_left_steer_joint, front_right_steer_joint], wheel_separation_h: 0.6";
+constexpr const char* kVirtualController =
+    "controllers: {car: {type: ackermann_steering_controller/AckermannSteeringController, rear_wheel: "
+    "rear_wheel_joint, front_steer: front_steer_joint, wheel_radius: 0.1}}";
+
+io::SceneSetup steerBot(const std::string& map) {
+  const io::UrdfText text = io::readUrdfFile("steer_bot_base.urdf", kTestUrdf);
+  return io::loadScene(io::parseConfig(YAML::Load(map + "\n" + kVirtualController)), [&] { return text; });
+}
+
+TEST(SteerBotHardwareGazebo, ItsMapPutsTheAckermannControllerOnTheRealJoints) {
+  const io::SceneSetup s = steerBot(std::string(kSteerBot) + ", enable_ackermann_link: false}");
+  const core::DiffDriveSpec& d = s.controls.at(0).drives.at(0).spec();
+  EXPECT_EQ(d.left.size(), 4u);  // the rear and the front wheels, all driven
+  ASSERT_TRUE(d.steering.has_value());
+  EXPECT_EQ(d.steering->joints.size(), 2u);
+  EXPECT_NEAR(d.steering->wheelbase, 0.6, 1e-12);
+  EXPECT_NEAR(d.steering->joint_y.at(0), 0.25, 1e-12);
+  EXPECT_EQ(d.steering->wheel_steer.at(2), 0);  // the front left wheel turns with the left knuckle
+  // The knuckles' effort and speed limits 0: none, said; the URDF's others kept.
+  const core::ArticulationModel& model = s.scene.robots().at(0).model;
+  for (const int j : d.steering->joints) {
+    EXPECT_EQ(model.links[j].limits.effort, std::numeric_limits<double>::infinity());
+    EXPECT_EQ(model.links[j].limits.upper, 0.6);
+  }
+  std::string notes;
+  for (const std::string& n : s.notes) notes += n;
+  EXPECT_NE(notes.find("the effort or speed limit 0 of 3 joints are read as none"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("steer_bot_hardware_gazebo.enable_ackermann_link (false, a parallel linkage"), std::string::npos)
+      << notes;
+}
+
+TEST(SteerBotHardwareGazebo, RefusalsNameTheKey) {
+  const auto refused = [](const std::string& map) {
+    try {
+      steerBot(map);
+    } catch (const io::ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  std::string m = refused("steer_bot_hardware_gazebo: {rear_wheel: rear_axle}");
+  EXPECT_NE(m.find("'steer_bot_hardware_gazebo.virtual_rear_wheels': is missing"), std::string::npos) << m;
+  m = refused(
+      "steer_bot_hardware_gazebo: {front_steer: wheel, virtual_rear_wheels: [rear_left_wheel_joint], "
+      "virtual_front_steers: [front_left_steer_joint]}");
+  EXPECT_NE(m.find("'steer_bot_hardware_gazebo': no ackermann_steering_controller/AckermannSteeringController has "
+                   "rear_wheel 'rear_wheel_joint' and front_steer 'wheel'"),
+            std::string::npos)
+      << m;
+  m = refused(std::string(kSteerBot) + ", gains: {}}");
+  EXPECT_NE(m.find("'steer_bot_hardware_gazebo.gains'"), std::string::npos) << m;
 }
 
 }  // namespace

@@ -143,6 +143,8 @@ struct RobotDevices {
   /// gazebo_ros_control's `robotNamespace` ("": none): where the robot's
   /// controllers and joint_states are, as gazebo_ros_control puts them.
   std::string robot_namespace;
+  /// gazebo_ros_control's `robotSimType` ("": its default, DefaultRobotHWSim).
+  std::string robot_sim_type;
 };
 
 /// One entry of the `bodies` list: a body of the world.
