@@ -78,6 +78,16 @@ std::array<double, 6> covariance(const YAML::Node& node, const std::string& key)
   return out;
 }
 
+/// A controller's frame id: one leading '/' dropped, as tf2's buffer drops
+/// it from every transform it receives (a ROS 1 controller publishes it as
+/// given; AgileX Hunter's odom_frame_id has one), then checked as a frame id.
+std::string controllerFrame(const YAML::Node& node, const std::string& key) {
+  std::string frame = text(node, key);
+  if (frame.size() > 1 && frame.front() == '/') frame.erase(0, 1);
+  if (const std::string problem = frameIdProblem(frame); !problem.empty()) fail(key, problem);
+  return frame;
+}
+
 }  // namespace
 
 namespace {
@@ -148,8 +158,8 @@ void readDriveSettings(const YAML::Node& body, const std::string& key, DiffDrive
   if (body["twist_covariance_diagonal"]) {
     t.twist_covariance_diagonal = covariance(body["twist_covariance_diagonal"], join(key, "twist_covariance_diagonal"));
   }
-  if (body["base_frame_id"]) t.base_frame_id = frameId(body["base_frame_id"], join(key, "base_frame_id"));
-  if (body["odom_frame_id"]) t.odom_frame_id = frameId(body["odom_frame_id"], join(key, "odom_frame_id"));
+  if (body["base_frame_id"]) t.base_frame_id = controllerFrame(body["base_frame_id"], join(key, "base_frame_id"));
+  if (body["odom_frame_id"]) t.odom_frame_id = controllerFrame(body["odom_frame_id"], join(key, "odom_frame_id"));
   if (t.base_frame_id == t.odom_frame_id) fail(join(key, "odom_frame_id"), "is base_frame_id: tf needs two frames");
   for (const auto& [k, field] : {std::pair<const char*, bool*>{"enable_odom_tf", &t.enable_odom_tf},
                                  {"publish_cmd", &t.publish_cmd},
