@@ -28,7 +28,9 @@ a wall whose face is WALL m ahead of the robot's start, it
     second half with the command (the issue's 5 %); moves each of an arm's
     joints by 0.4 rad (the shoulder and elbow up) along a trajectory of S s
     on its stock trajectory controller, and compares the joints' speeds over
-    the middle half with 0.4/S and where they end 1 s later with the goal.
+    the middle half with 0.4/S and where they end 1 s later with the goal;
+    steers a steered base (angular z the steering angle) backward for S s at
+    the table's angle and compares the truth's yaw rate with v tan(angle) / L.
 Prints one JSON line per robot and a Markdown table at the end. A bench, not a
 test: nothing here fails the build.
 """
@@ -65,6 +67,13 @@ ROBOTS = {
                     args={"prefix": ""}, cmd="/mobile_base_controller/cmd_vel", speed=0.5),
     "ridgeback": dict(urdf="ridgeback.urdf", model="ridgeback", yaml="ridgeback/ridgeback_control/config/control.yaml",
                       cmd="/cmd_vel", speed=0.5),
+    "hunter2": dict(urdf="hunter2.urdf", model="hunter2_base",
+                    yaml=["ugv_gazebo_sim/hunter/hunter2_control/config/ctrl_ackermann_steering_controller.yaml",
+                          "ugv_gazebo_sim/hunter/hunter2_control/config/ctrl_gains.yaml",
+                          "ugv_gazebo_sim/hunter/hunter2_control/config/ctrl_joint_state_publisher.yaml",
+                          "ugv_gazebo_sim/hunter/hunter2_control/config/ctrl_steer_bot_hardware_gazebo.yaml"],
+                    flags=["-z", "1.5"], cmd="/ackermann_steering_controller/cmd_vel", speed=0.5,
+                    steer=0.3, wheelbase=0.65),  # its controller's wheel_separation_h
     "ur5": dict(urdf="ur5.urdf", model="robot", yaml="universal_robot/ur_gazebo/config/ur5_controllers.yaml",
                 flags=["-z", "0.1"], arm="/eff_joint_traj_controller/command"),
     "ur10": dict(urdf="ur10.urdf", model="robot", yaml="universal_robot/ur_gazebo/config/ur10_controllers.yaml",
@@ -341,7 +350,9 @@ def measure(spec, urdf, seconds):
     out["still_drift_m"] = math.dist((first.position.x, first.position.y), (last.position.x, last.position.y))
     out["still_turn_rad"] = abs(yaw_of(last.orientation) - yaw_of(first.orientation))
     if joints:
-        out["still_joint_drift_rad"] = max(abs(a - b) for a, b in zip(joints[0].position, joints[-1].position))
+        drift = [abs(a - b) for a, b in zip(joints[0].position, joints[-1].position)]
+        out["still_joint_drift_rad"] = max(drift)
+        out["still_joint_drifting"] = joints[0].name[drift.index(max(drift))]
         out["joint_states_hz"] = len(joints) / (t1 - t0)
     pose = base(states[-1])[0]
     out["sensors"] = [check_sensor(s, pose, t0, t1) for s in sensors]
@@ -372,6 +383,20 @@ def measure(spec, urdf, seconds):
             out[label + "_error"] = abs(mean - cmd.linear.x) / spec["speed"]
             out[label + "_turn_rad"] = abs(yaw_of(base(window[-1])[0].orientation) -
                                            yaw_of(base(window[0])[0].orientation)) if window else float("nan")
+        if "steer" in spec:  # a steered base, backward (away from the wall): angular z is the steering angle
+            cmd = Twist()
+            cmd.linear.x, cmd.angular.z = -spec["speed"], spec["steer"]
+            start = rospy.get_time()
+            states.clear()
+            while rospy.get_time() < start + seconds:
+                pub.publish(cmd)
+                wait_sim(0.05)
+            window = [m for m in states if m.header.stamp.to_sec() > start + seconds / 2]
+            rates = [base(m)[1].angular.z for m in window]
+            expected = -spec["speed"] * math.tan(spec["steer"]) / spec["wheelbase"]
+            out["turn_yaw_rate"] = sum(rates) / len(rates) if rates else float("nan")
+            out["turn_expected"] = expected
+            out["turn_error"] = abs(out["turn_yaw_rate"] - expected) / abs(expected)
         stop = Twist()
         for _ in range(5):
             pub.publish(stop)
@@ -504,6 +529,8 @@ def table(results):
         for label in ("backward", "forward"):
             if label + "_speed" in r:
                 drive.append("%.3f m/s (%.1f %%)" % (r[label + "_speed"], 100 * r[label + "_error"]))
+                if label == "forward" and "turn_yaw_rate" in r:  # steered: v tan(d) / L
+                    drive[-1] += "; steered: %.4f rad/s (%.1f %%)" % (r["turn_yaw_rate"], 100 * r["turn_error"])
             elif label == "forward" and "arm_goal_error_rad" in r:
                 drive.append("joint speeds off by %.1f %%, goal off by %.1f mrad" % (
                     100 * r.get("arm_speed_error", float("nan")), 1000 * r["arm_goal_error_rad"]))
