@@ -362,15 +362,20 @@ def measure(spec, urdf, seconds):
         deadline = time.time() + 10
         while pub.get_num_connections() == 0 and time.time() < deadline:
             time.sleep(0.05)
-        for sign, label in ((-1, "backward"), (1, "forward")):
+
+        def hold(linear, angular=0.0):
+            """Commands (linear x, angular z) for `seconds`: the states of its second half."""
             cmd = Twist()
-            cmd.linear.x = sign * spec["speed"]
+            cmd.linear.x, cmd.angular.z = linear, angular
             start = rospy.get_time()
             states.clear()
             while rospy.get_time() < start + seconds:
                 pub.publish(cmd)
                 wait_sim(0.05)
-            window = [m for m in states if m.header.stamp.to_sec() > start + seconds / 2]
+            return [m for m in states if m.header.stamp.to_sec() > start + seconds / 2]
+
+        for sign, label in ((-1, "backward"), (1, "forward")):
+            window = hold(sign * spec["speed"])
             speeds = []
             for m in window:
                 p, v = base(m)
@@ -380,18 +385,11 @@ def measure(spec, urdf, seconds):
                               v.linear.x * math.cos(yaw) + v.linear.y * math.sin(yaw))
             mean = sum(speeds) / len(speeds) if speeds else float("nan")
             out[label + "_speed"] = mean
-            out[label + "_error"] = abs(mean - cmd.linear.x) / spec["speed"]
+            out[label + "_error"] = abs(mean - sign * spec["speed"]) / spec["speed"]
             out[label + "_turn_rad"] = abs(yaw_of(base(window[-1])[0].orientation) -
                                            yaw_of(base(window[0])[0].orientation)) if window else float("nan")
         if "steer" in spec:  # a steered base, backward (away from the wall): angular z is the steering angle
-            cmd = Twist()
-            cmd.linear.x, cmd.angular.z = -spec["speed"], spec["steer"]
-            start = rospy.get_time()
-            states.clear()
-            while rospy.get_time() < start + seconds:
-                pub.publish(cmd)
-                wait_sim(0.05)
-            window = [m for m in states if m.header.stamp.to_sec() > start + seconds / 2]
+            window = hold(-spec["speed"], spec["steer"])
             rates = [base(m)[1].angular.z for m in window]
             expected = -spec["speed"] * math.tan(spec["steer"]) / spec["wheelbase"]
             out["turn_yaw_rate"] = sum(rates) / len(rates) if rates else float("nan")
