@@ -204,7 +204,7 @@ void DiffDrive::observe(const ArticulationState& state, double dt) {
   if (spec_.settings.open_loop) {
     double v = last0_linear_, w = last0_angular_;
     if (spec_.steering) {  // ω is a steering angle: the motion it gives
-      const PlanarMotion m = motionPerSpeed(*spec_.steering, std::clamp(w, -0.5 * M_PI, 0.5 * M_PI));
+      const PlanarMotion m = motionPerSpeed(*spec_.steering, steerable(*spec_.steering, w));
       w = v * m.w;
       v *= m.v;
     }

@@ -41,9 +41,11 @@ void DiffDrive::checkSteering(const ArticulationModel& model, const Articulation
     if (link.type != JointType::Revolute && link.type != JointType::Continuous) {
       fail(s, "steering joint '" + link.joint + "' does not turn (continuous or revolute)");
     }
-    if (std::find(wheels_.begin(), wheels_.end(), j) != wheels_.end() ||
-        std::find(st.joints.begin(), st.joints.begin() + static_cast<long>(k), j) !=
-            st.joints.begin() + static_cast<long>(k)) {
+    if (std::find(wheels_.begin(), wheels_.end(), j) != wheels_.end()) {
+      fail(s, "steering joint '" + link.joint + "' is a driven wheel's too");
+    }
+    if (std::find(st.joints.begin(), st.joints.begin() + static_cast<long>(k), j) !=
+        st.joints.begin() + static_cast<long>(k)) {
       fail(s, "steering joint '" + link.joint + "' twice");
     }
     if (!std::isfinite(st.joint_x[k]) || !std::isfinite(st.joint_y[k]) || std::abs(st.joint_sign[k]) != 1.0) {
@@ -98,7 +100,7 @@ void DiffDrive::steeredEfforts(const ArticulationState& state, double v, double 
                                Eigen::VectorXd& effort) {
   constexpr double kSteerTime = 0.05;  // s: a steering joint turns toward its angle at error / this
   const SteeringSpec& st = *spec_.steering;
-  delta = std::clamp(delta, -0.5 * M_PI, 0.5 * M_PI);
+  delta = steerable(st, delta);
   for (std::size_t k = 0; k < st.joints.size(); ++k) {
     const JointLimits& lim = steer_limits_[k];
     const int j = st.joints[k];

@@ -1,6 +1,7 @@
 // A steered base's geometry: steering.h, docs/physics.md §11.14.
 #include "rigid_body_sim/core/controllers/steering.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
@@ -10,6 +11,11 @@ namespace rigid_body_sim::core {
 
 double steerAngle(double delta, double wheelbase, double x, double y) {
   return std::atan2(x * std::sin(delta), wheelbase * std::cos(delta) - y * std::sin(delta));
+}
+
+double steerable(const SteeringSpec& s, double delta) {
+  const double most = s.speed_at_steered_wheel ? 0.5 * M_PI : 80.0 * M_PI / 180.0;
+  return std::clamp(delta, -most, most);
 }
 
 PlanarMotion motionPerSpeed(const SteeringSpec& s, double delta) {

@@ -185,6 +185,23 @@ TEST(SteeredDrive, AsksEachWheelForItsOwnPathsSpeedAndSteersTheLinkage) {
   EXPECT_NEAR(effort(0), effort(1), 1e-12);
 }
 
+TEST(SteeredDrive, ASteeringAngleAtOrPast90DegreesAsksFiniteEfforts) {
+  ArticulationModel model = car();  // no limits on the rear wheels: nothing else holds their speeds
+  for (const int j : {1, 2}) model.links[j].limits = JointLimits{};
+  DiffDrive drive(model, ackermann());
+  const ArticulationState state = restState(model);
+  drive.restart(state, true);
+  for (const double delta : {0.5 * M_PI, -10.0, 1e300}) {
+    ASSERT_EQ(drive.command(1.0, delta, 0.0), std::abs(delta) <= 1e4) << delta;  // ranges::kMaxCommandSpeed
+    Eigen::VectorXd effort = Eigen::VectorXd::Zero(6);
+    drive.efforts(state, kH, kH, effort);
+    EXPECT_TRUE(effort.allFinite()) << delta;
+    // The rear wheels asked for tan 80° = 5.7 of the turn, not tan 90°, 1.6e16.
+    EXPECT_LE(effort.cwiseAbs().maxCoeff(), 1e3) << delta;  // about 290 N m
+  }
+  EXPECT_NEAR(steerable(ackermann().steering.value(), 2.0), 80.0 * M_PI / 180.0, 1e-15);
+}
+
 TEST(SteeredDrive, RefusesASteeringJointThatIsAWheelOrMissing) {
   const ArticulationModel model = car();
   DiffDriveSpec s = ackermann();

@@ -55,6 +55,12 @@ struct SteeringSpec {
 /// axle's line: atan2(x sin δ, L cos δ − y sin δ).
 double steerAngle(double delta, double wheelbase, double x, double y);
 
+/// The steering angle δ a base takes for a commanded one: within ±90° for
+/// a tricycle (its wheel sideways turns it on the spot), ±80° from the
+/// fixed axle (tan δ, the rear wheels' speed per unit of the turn's, is 5.7
+/// there and infinite at 90°).
+double steerable(const SteeringSpec& s, double delta);
+
 /// The base's motion per unit of the command's speed at steering angle δ:
 /// (1, tan δ / L) from the fixed axle, (cos δ, sin δ / L) from the
 /// steered wheel.
