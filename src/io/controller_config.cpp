@@ -197,6 +197,10 @@ void applySteerBot(const YAML::Node& node, const std::string& path, std::vector<
   if (!d.wheel_separation && node["wheel_separation_h"]) {
     d.wheel_separation = positiveNumber(node["wheel_separation_h"], join(path, "wheel_separation_h"));
   }
+  if (node["wheel_separation_w"]) {
+    positiveNumber(node["wheel_separation_w"], join(path, "wheel_separation_w"));
+    match->unread.push_back({join(path, "wheel_separation_w"), "the track is the URDF's knuckles' here"});
+  }
   if (node["enable_ackermann_link"] && !boolean(node["enable_ackermann_link"], join(path, "enable_ackermann_link"))) {
     match->unread.push_back({join(path, "enable_ackermann_link"), "false, a parallel linkage: Ackermann's is run"});
   }

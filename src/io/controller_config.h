@@ -38,9 +38,9 @@ void applyPidGains(const YAML::Node& node, const std::string& path, std::vector<
 /// `virtual_front_wheels` for them (each at its own path's speed) and turns
 /// `virtual_front_steers` by the linkage (on such a robot, URDF effort and
 /// speed limits of 0 are read as none: io/urdf_lumper.h); `wheel_separation_h` is the wheelbase when the
-/// controller gives none; `wheel_separation_w` and `enable_ackermann_link`
-/// are the URDF's joints' here (false, a parallel linkage, named as not
-/// read). Refused (ConfigError naming the key): no such controller in
+/// controller gives none; `wheel_separation_w` (the track: the URDF's
+/// knuckles' here) and `enable_ackermann_link` false (a parallel linkage)
+/// are named as not read. Refused (ConfigError naming the key): no such controller in
 /// `entries`, a list not of joint names, any other key.
 void applySteerBot(const YAML::Node& node, const std::string& path, std::vector<ControllerEntry>& entries);
 

@@ -144,7 +144,8 @@ io::SceneSetup steerBot(const std::string& map) {
 }
 
 TEST(SteerBotHardwareGazebo, ItsMapPutsTheAckermannControllerOnTheRealJoints) {
-  const io::SceneSetup s = steerBot(std::string(kSteerBot) + ", enable_ackermann_link: false}");
+  const io::SceneSetup s =
+      steerBot(std::string(kSteerBot) + ", enable_ackermann_link: false, wheel_separation_w: 0.5}");
   const core::DiffDriveSpec& d = s.controls.at(0).drives.at(0).spec();
   EXPECT_EQ(d.left.size(), 4u);  // the rear and the front wheels, all driven
   ASSERT_TRUE(d.steering.has_value());
@@ -161,6 +162,9 @@ TEST(SteerBotHardwareGazebo, ItsMapPutsTheAckermannControllerOnTheRealJoints) {
   std::string notes;
   for (const std::string& n : s.notes) notes += n;
   EXPECT_NE(notes.find("the effort or speed limit 0 of 3 joints are read as none"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("steer_bot_hardware_gazebo.wheel_separation_w (the track is the URDF's knuckles' here)"),
+            std::string::npos)
+      << notes;
   EXPECT_NE(notes.find("steer_bot_hardware_gazebo.enable_ackermann_link (false, a parallel linkage"), std::string::npos)
       << notes;
 }
