@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "rigid_body_sim/core/bodies/ranges.h"
+
 namespace rigid_body_sim::io::detail {
 
 namespace {
@@ -50,8 +52,8 @@ void readBaseMovePlugin(const TiXmlElement& plugin, const Unread& unread, RobotD
   drive.topic = childTopic(plugin, "commandTopic", "cmd_vel", key);
   core::DriverSettings& s = drive.settings;
   s.planar = true;
-  s.max_linear_speed = 500.0;  // none in the plugin: the driver's and the limits' own
-  s.max_angular_speed = 100.0;
+  // None in the plugin: the world's limits.* hold, whatever they are set to.
+  s.max_linear_speed = s.max_angular_speed = core::ranges::kMaxSpeedLimit;
   double timeout = -1.0;
   numbers.at(&plugin, "cmdTimeout", timeout, Bounds{-inf, 1e6, false, "s (<= 0: held)"});
   numbers.at(&plugin, "cmdVelTimeOut", timeout, Bounds{-inf, 1e6, false, "s (<= 0: held)"});

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "rigid_body_sim/core/bodies/ranges.h"
 #include "rigid_body_sim/io/config.h"
 #include "rigid_body_sim/io/scene_loader.h"
 
@@ -69,6 +70,10 @@ TEST(BaseMovePlugins, PlanarMoveDrivesTheBaseOnItsTopicAndReportsTheTruthInItsOd
   EXPECT_EQ(p.frame_id, "map");
   EXPECT_EQ(p.link, "base_link");
   EXPECT_EQ(p.rate, 20.0);  // the plugin's default
+  // No speed limit of its own (it sets the velocity in Gazebo): whatever
+  // limits.* are raised to hold (it clipped at 500 m/s and 100 rad/s).
+  EXPECT_EQ(t.controls[0].base_driver->settings().max_linear_speed, core::ranges::kMaxSpeedLimit);
+  EXPECT_EQ(t.controls[0].base_driver->settings().max_angular_speed, core::ranges::kMaxSpeedLimit);
 }
 
 TEST(BaseMovePlugins, ForceBasedMovePushesWithItsOwnGainsPerKilogram) {

@@ -391,6 +391,14 @@ TEST(Config, AVelocityDriverIsReadAndCheckedByKey) {
   expectRefused("cmd_vel: {planar: maybe}", {"'cmd_vel.planar'"});
   expectRefused("bodies: [{name: a, urdf: x.urdf, cmd_vel: {timeout: -1}}]", {"bodies[0].cmd_vel.timeout = -1"});
   EXPECT_EQ(io::parseDriverText("{max_force: 3}", "cmd_vel").max_force, 3.0);
+  // Up to what limits.* may be raised to (1e4): a driver may ask for any
+  // speed the world allows (600 m/s and 150 rad/s were refused at 500 and 100).
+  const io::SimConfig fast = parse(
+      "limits: {max_linear_speed: 1000, max_angular_speed: 200}\n"
+      "cmd_vel: {max_linear_speed: 600, max_angular_speed: 150}");
+  EXPECT_EQ(fast.cmd_vel->max_linear_speed, 600.0);
+  EXPECT_EQ(fast.cmd_vel->max_angular_speed, 150.0);
+  expectRefused("cmd_vel: {max_linear_speed: 2e4}", {"cmd_vel.max_linear_speed = 20000", "[0, 10000]"});
 }
 
 TEST(Config, BadBodiesAreRefusedByKey) {

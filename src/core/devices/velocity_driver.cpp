@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "bodies/validate.h"
+#include "rigid_body_sim/core/bodies/ranges.h"
 
 namespace rigid_body_sim::core {
 namespace {
@@ -23,8 +24,9 @@ void validateDriver(const DriverSettings& s, const std::string& key) {
   detail::requireWithin(s.linear_integral_gain, 0.0, 1e6, key + ".linear_integral_gain", "1/s^2");
   detail::requireWithin(s.angular_gain, 0.0, 1e4, key + ".angular_gain", "1/s");
   detail::requireWithin(s.angular_integral_gain, 0.0, 1e6, key + ".angular_integral_gain", "1/s^2");
-  detail::requireWithin(s.max_linear_speed, 0.0, 500.0, key + ".max_linear_speed", "m/s");
-  detail::requireWithin(s.max_angular_speed, 0.0, 100.0, key + ".max_angular_speed", "rad/s");
+  // The range of limits.*: a driver may ask for any speed the world allows.
+  detail::requireWithin(s.max_linear_speed, 0.0, ranges::kMaxSpeedLimit, key + ".max_linear_speed", "m/s");
+  detail::requireWithin(s.max_angular_speed, 0.0, ranges::kMaxSpeedLimit, key + ".max_angular_speed", "rad/s");
   detail::requireWithin(s.timeout, 0.0, 1e6, key + ".timeout", "s (0: until replaced)");
 }
 
