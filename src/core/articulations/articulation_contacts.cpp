@@ -182,8 +182,8 @@ void reportContactImpulses(const std::vector<ContactRows>& contacts, std::vector
   }
 }
 
-bool liftOutOfContacts(std::vector<ContactRows>& contacts, const Eigen::VectorXd& u, double h, double slop,
-                       Eigen::VectorXd& pseudo) {
+bool liftOutOfContacts(const SolverSettings& settings, std::vector<ContactRows>& contacts, const Eigen::VectorXd& u,
+                       double h, double slop, Eigen::VectorXd& pseudo) {
   // The depth each contact would end at (linear in the step); nothing to
   // do unless one is deeper than the slop.
   bool deep = false;
@@ -197,14 +197,14 @@ bool liftOutOfContacts(std::vector<ContactRows>& contacts, const Eigen::VectorXd
   if (!deep) return false;
   pseudo.setZero(u.size());
   for (ContactRows& c : contacts) c.impulse.setZero();
-  for (int sweep = 0; sweep < 200; ++sweep) {
+  for (int sweep = 0; sweep < settings.joint_space_sweeps; ++sweep) {
     double largest = 0.0;
     for (std::size_t k = 0; k < contacts.size(); ++k) {
       const double most = contacts[k].most;
       largest = std::max(
           largest, updateRow(contacts[k], 0, lift[k], pseudo, [most](double l) { return std::clamp(l, 0.0, most); }));
     }
-    if (largest <= 1e-12) break;
+    if (largest <= settings.joint_space_tolerance) break;
   }
   return true;
 }

@@ -6,34 +6,12 @@
 #include <limits>
 
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
+#include "rigid_body_sim/core/bodies/settings.h"
 
 namespace rigid_body_sim::core::detail {
 
-namespace {
-
-/// The symplectic corrector's fixed-point passes (§11.5): at most this
-/// many, each at least halving the change of the last, to this tolerance
-/// relative to the fastest coordinate; else the prediction stands.
-/// Where the passes stall at the solve's rounding, a change below the
-/// looser tolerance counts as converged.
-constexpr int kCorrectorPasses = 8;
-constexpr double kCorrectorContraction = 0.5;
-constexpr double kCorrectorTolerance = 1e-12;
-constexpr double kCorrectorRounding = 1e-9;
-/// After a step whose passes did not contract, this many steps go straight
-/// to the prediction (a long, light chain rarely contracts: the passes
-/// would double its step's cost for nothing).
-constexpr int kPredictOnlySteps = 3;
-/// The Verlet step's passes from its extrapolated prediction (§11.5):
-/// none is second order but lets the energy drift (a double pendulum's by
-/// 4.4e-4 m g l over 200 s), one holds it (2.4e-5), three reach the
-/// symmetric solution (4.6e-6) at half again the cost.
-constexpr int kVerletPasses = 1;
-/// A floating base's Verlet twist: rounds to find the middle of the move.
-constexpr int kMiddleRounds = 8;
-constexpr double kMiddleTolerance = 1e-15;
-
-}  // namespace
+/// Its constants are in settings.h (SolverSettings: a robot's integrators).
+using S = SolverSettings;
 
 bool symplecticPasses(const ArticulationModel& model, double h, ArticulationWorkspace& ws) {
   const int nj = model.jointCount();
@@ -44,7 +22,7 @@ bool symplecticPasses(const ArticulationModel& model, double h, ArticulationWork
   int& predict_only = ws.predict_only;
   double last_change = std::numeric_limits<double>::infinity();
   bool converged = false;
-  const int passes = predict_only > 0 ? 0 : kCorrectorPasses;
+  const int passes = predict_only > 0 ? 0 : S::kCorrectorPasses;
   for (int pass = 0; pass < passes && !converged; ++pass) {
     setTwists(model, u_next, ws.kin);
     kineticEnergyGradient(model, ws.kin, ws.dynamics, ws.gradient);
@@ -53,18 +31,18 @@ bool symplecticPasses(const ArticulationModel& model, double h, ArticulationWork
     ws.factor.solveInPlace(corrected);
     const double change = (corrected - u_next).cwiseAbs().maxCoeff();
     const double scale = 1.0 + corrected.cwiseAbs().maxCoeff();
-    if (!(change <= kCorrectorContraction * last_change)) {
-      converged = last_change <= kCorrectorRounding * scale;
+    if (!(change <= S::kCorrectorContraction * last_change)) {
+      converged = last_change <= S::kCorrectorRounding * scale;
       break;
     }
     u_next.swap(corrected);
     last_change = change;
-    converged = change <= kCorrectorTolerance * scale;
+    converged = change <= S::kCorrectorTolerance * scale;
   }
   if (predict_only > 0) {
     --predict_only;
   } else if (!converged) {
-    predict_only = kPredictOnlySteps;
+    predict_only = S::kPredictOnlySteps;
   }
   return converged;
 }
@@ -102,14 +80,14 @@ bool verletPasses(const ArticulationModel& model, const ArticulationLoads& loads
   before = ws.u;
   u_next = ws.predicted;
   double last_change = std::numeric_limits<double>::infinity();
-  for (int pass = 0; pass < kVerletPasses; ++pass) {
+  for (int pass = 0; pass < S::kVerletPasses; ++pass) {
     ws.mid = 0.5 * (before + u_next);
     biasForcesAt(model, ws.kin, ws.mid, g_W, wrench_L, ws.dynamics, ws.bias);
     gain(ws.bias, step);
     const double change = (step - u_next).cwiseAbs().maxCoeff();
     if (!(change < last_change)) break;  // growing: the passes diverge; the last stands
     u_next.swap(step);
-    if (change <= kCorrectorTolerance * (1.0 + u_next.cwiseAbs().maxCoeff())) break;
+    if (change <= S::kCorrectorTolerance * (1.0 + u_next.cwiseAbs().maxCoeff())) break;
     last_change = change;
   }
   ws.gain = u_next - before;
@@ -130,13 +108,13 @@ void middleMomentum(const ArticulationModel& model, const ArticulationState& sta
   const Eigen::LLT<Mat6> base(ws.middle_M.topLeftCorner<6, 6>());
   const Vec6 joints_part = ws.middle_M.bottomLeftCorner(nj, 6).transpose() * u_next.tail(nj);
   double last_change = std::numeric_limits<double>::infinity();
-  for (int round = 0; round < kMiddleRounds; ++round) {
+  for (int round = 0; round < S::kMiddleRounds; ++round) {
     const Placement X_WB = Placement::of(advanceBase(state.X_WB, u_next.head<6>(), 0.5 * h));
     const Vec6 twist = base.solve(X_WB.forceToChild(ws.H_W) - joints_part);
     const double change = (twist - u_next.head<6>()).cwiseAbs().maxCoeff();
     u_next.head<6>() = twist;
     // Done at the tolerance, or where the rounds stall at rounding.
-    if (change <= kMiddleTolerance * (1.0 + twist.cwiseAbs().maxCoeff()) || change >= last_change) break;
+    if (change <= S::kMiddleTolerance * (1.0 + twist.cwiseAbs().maxCoeff()) || change >= last_change) break;
     last_change = change;
   }
 }

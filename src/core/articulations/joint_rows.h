@@ -15,6 +15,7 @@
 #include "rigid_body_sim/core/articulations/articulation_contacts.h"
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
 #include "rigid_body_sim/core/articulations/tree_factor.h"
+#include "rigid_body_sim/core/bodies/settings.h"
 #include "rigid_body_sim/core/bodies/state.h"
 #include "rigid_body_sim/core/contacts/contact.h"
 #include "rigid_body_sim/core/step/workspace.h"
@@ -170,9 +171,11 @@ void reportContactImpulses(const std::vector<ContactRows>& contacts, std::vector
 /// The position correction (split impulse): where a contact would end the
 /// step deeper than the slop, a second solve of the normal rows alone
 /// finds the velocity that lifts each out to half the slop in one step:
-/// `pseudo` (sized as u). Returns whether anything must move.
-bool liftOutOfContacts(std::vector<ContactRows>& contacts, const Eigen::VectorXd& u, double h, double slop,
-                       Eigen::VectorXd& pseudo);
+/// `pseudo` (sized as u). Returns whether anything must move. Its sweeps
+/// stop as the velocity solve's do: `settings`' joint_space_sweeps and
+/// joint_space_tolerance (absolute here, m/s: the lifts are small).
+bool liftOutOfContacts(const SolverSettings& settings, std::vector<ContactRows>& contacts, const Eigen::VectorXd& u,
+                       double h, double slop, Eigen::VectorXd& pseudo);
 
 /// Moves a robot's positions (not its velocities) by h times the pseudo
 /// velocity `pseudo` (its block), its joints kept within their limits.

@@ -168,8 +168,8 @@ void solveRobotIslands(const World& world, WorldState& state, double h, WorldWor
   if (solve.rows.empty() && solve.contacts.empty()) return;
   detail::solveRows(model.solver(), solve.blocks, solve.rows, solve.contacts, solve.u, solve.impulse);
   detail::reportContactImpulses(solve.contacts, ws.scratch->robot_contacts);
-  solve.lift = !solve.contacts.empty() &&
-               detail::liftOutOfContacts(solve.contacts, solve.u, h, model.contact().position_slop, solve.pseudo);
+  solve.lift = !solve.contacts.empty() && detail::liftOutOfContacts(model.solver(), solve.contacts, solve.u, h,
+                                                                    model.contact().position_slop, solve.pseudo);
   // The velocities back: the robots' for their second half, the bodies'.
   for (std::size_t r = 0; r < robots.size(); ++r) {
     if (solve.robot_offset[r] >= 0)

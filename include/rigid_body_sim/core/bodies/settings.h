@@ -164,8 +164,36 @@ struct SolverSettings {
   /// above, below velocity_tolerance). Tighter than the free bodies': the
   /// robots' closed forms hold to 1e-9 m/s (scene_test); a box behaves
   /// alike pushed by a robot or by a body to velocity_tolerance.
+  /// The same two stop the position lift of those islands (§11.9; absolute
+  /// there, m/s of lift).
   double joint_space_tolerance = 1e-12;
   int joint_space_sweeps = 200;
+
+  // -- a robot's integrators (§11.5): constants, not settings (the energy
+  // figures and closed forms of articulation_test were measured with them;
+  // no robot needs others)
+  /// The symplectic corrector's fixed-point passes: at most this many, each
+  /// at least halving the change of the last, to this tolerance relative to
+  /// the fastest coordinate; else the prediction stands. Where the passes
+  /// stall at the solve's rounding, a change below the looser tolerance
+  /// counts as converged.
+  static constexpr int kCorrectorPasses = 8;
+  static constexpr double kCorrectorContraction = 0.5;
+  static constexpr double kCorrectorTolerance = 1e-12;
+  static constexpr double kCorrectorRounding = 1e-9;
+  /// After a step whose passes did not contract, this many steps go straight
+  /// to the prediction (a long, light chain rarely contracts: the passes
+  /// would double its step's cost for nothing).
+  static constexpr int kPredictOnlySteps = 3;
+  /// The Verlet step's passes from its extrapolated prediction: none is
+  /// second order but lets the energy drift (a double pendulum's by 4.4e-4
+  /// m g l over 200 s), one holds it (2.4e-5), three reach the symmetric
+  /// solution (4.6e-6) at half again the cost.
+  static constexpr int kVerletPasses = 1;
+  /// A floating base's Verlet twist: rounds to find the middle of the move,
+  /// and their tolerance relative to the fastest coordinate.
+  static constexpr int kMiddleRounds = 8;
+  static constexpr double kMiddleTolerance = 1e-15;
 
   // -- position correction (§5.8)
   /// Gauss-Seidel sweeps on positions. Key position_iterations.
