@@ -53,6 +53,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/controllers/steered_drive.cpp
   ${RBS_SOURCE_ROOT}/src/core/controllers/steering.cpp
   ${RBS_SOURCE_ROOT}/src/core/controllers/joint_control.cpp
+  ${RBS_SOURCE_ROOT}/src/core/controllers/robot_control.cpp
   ${RBS_SOURCE_ROOT}/src/core/articulations/joint_effort_schedule.cpp
   ${RBS_SOURCE_ROOT}/src/core/controllers/joint_trajectory.cpp
   ${RBS_SOURCE_ROOT}/src/core/step/simulation.cpp

@@ -75,10 +75,7 @@ std::vector<std::string> RobotCommands::odometryFrames(std::size_t r) const {
 }
 
 void RobotCommands::observe(const core::Simulation& sim) {
-  const double dt = sim.model().dt();
-  for (std::size_t r = 0; r < controls_.size(); ++r) {
-    for (core::DiffDrive& drive : controls_[r].drives) drive.observe(sim.robots[r], dt);
-  }
+  for (std::size_t r = 0; r < controls_.size(); ++r) controls_[r].observe(sim.robots[r], sim.model().dt());
 }
 
 void RobotCommands::publishDrives(const ros::Time& stamp, long long steps) {
@@ -299,24 +296,10 @@ void RobotCommands::loadsFor(const core::Simulation& sim, double t, std::vector<
   const double dt = sim.model().dt();
   for (std::size_t r = 0; r < controls_.size(); ++r) {
     const core::ArticulationModel& model = sim.scene.robots()[r].model;
-    Eigen::VectorXd& effort = applied_[r];
-    controls_[r].controllers.efforts(sim.robots[r], t, dt, effort);  // zero where none acts
-    if (effort.size() != model.jointCount()) effort.setZero(model.jointCount());
-    for (core::DiffDrive& drive : controls_[r].drives) drive.efforts(sim.robots[r], t, dt, effort);
-    sim.joint_efforts.addEfforts(r, t, dt, effort);
-    for (int j = 1; j <= model.jointCount(); ++j) {  // the sum within the limit, as reported
-      effort(j - 1) = std::clamp(effort(j - 1), -model.links[j].limits.effort, model.links[j].limits.effort);
-    }
-    loads[r].effort = effort;
-    if (controls_[r].base_driver) {  // its base's wrench toward cmd_vel
-      core::kinematics(model, sim.robots[r], kin_);
-      loads[r].wrench_L.assign(model.links.size(), core::Vec6::Zero());
-      loads[r].wrench_L[0] = core::baseLoad(*controls_[r].base_driver, model, kin_, t, dt);
-    } else {  // none (a robot deleted before it may have left its own here)
-      loads[r].wrench_L.clear();
-    }
+    controls_[r].loads(model, sim.robots[r], t, dt, sim.joint_efforts, r, loads[r]);  // the core's control stage
+    applied_[r] = loads[r].effort;
     for (const std::string& trouble :
-         watch_.observe(r, robot_names_[r], model, controls_[r].controllers, sim.robots[r], effort, dt)) {
+         watch_.observe(r, robot_names_[r], model, controls_[r].controllers, sim.robots[r], applied_[r], dt)) {
       ROS_WARN("sim_node: %s", trouble.c_str());
     }
   }
@@ -342,8 +325,7 @@ void RobotCommands::restart(const core::Simulation& sim) {
 }
 
 void RobotCommands::restart(const core::Simulation& sim, std::size_t r, bool zero_odometry) {
-  controls_.at(r).controllers.restart(sim.robots[r]);
-  for (core::DiffDrive& drive : controls_[r].drives) drive.restart(sim.robots[r], zero_odometry);
+  controls_.at(r).restart(sim.robots[r], zero_odometry);
   applied_[r].resize(0);
   watch_.restart(r);
 }

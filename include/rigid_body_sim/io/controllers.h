@@ -8,26 +8,24 @@
 #include <vector>
 
 #include "rigid_body_sim/core/controllers/joint_control.h"
+#include "rigid_body_sim/core/controllers/robot_control.h"
 #include "rigid_body_sim/core/devices/velocity_driver.h"
 #include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::io {
 
-/// What the node runs of a robot's controllers.
-struct RobotControls {
-  core::JointControllers controllers;  ///< every commanding controller, in the map's order
+/// What the node runs of a robot's controllers: the core's control stage
+/// (its controllers, drives and base driver, core::RobotControl) and the
+/// names of their ports.
+struct RobotControls : core::RobotControl {
   /// Per controller of `controllers`: its command is a std_msgs/Float64MultiArray
   /// (a Joint*GroupController), else a std_msgs/Float64.
   std::vector<char> group;
   /// Hz of sim time of a joint_state_controller/JointStateController's
   /// joint_states; 0: none was given (the node's ~publish_rate).
   double joint_state_rate = 0.0;
-  std::vector<core::DiffDrive> drives;    ///< its DiffDriveControllers, in the map's order
-  std::vector<DriveTopics> drive_topics;  ///< per drive: what it publishes, on which frames
-  /// `cmd_vel` on the robot (a body's key): its floating base driven toward
-  /// the commanded twist by a wrench (core::baseLoad), not through wheels.
-  std::optional<core::VelocityDriver> base_driver;
-  /// Its command topic (a config's `cmd_vel`: "cmd_vel"; a markup plugin's
+  std::vector<DriveTopics> drive_topics;  ///< per drive of `drives`: what it publishes, on which frames
+  /// The base driver's command topic (a config's `cmd_vel`: "cmd_vel"; a markup plugin's
   /// `commandTopic`), under the robot's prefix, or from the root ('/...').
   std::string base_driver_topic = "cmd_vel";
   /// gazebo_ros_control's `robotNamespace` in the URDF's markup ("": none):

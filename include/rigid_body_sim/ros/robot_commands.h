@@ -120,7 +120,6 @@ class RobotCommands {
   std::vector<std::vector<std::unique_ptr<DrivePorts>>> drives_;  ///< per robot, per drive
   std::vector<geometry_msgs::TransformStamped> odom_tf_;          ///< this publication's
   tf2_ros::TransformBroadcaster tf_;
-  core::ArticulationKinematics kin_;  ///< a robot's, for its base driver's load (reused)
 };
 
 }  // namespace rigid_body_sim::node

@@ -127,8 +127,7 @@ void predictArticulation(const ArticulationModel& model, const ArticulationState
   }
   if (loads.effort.size() > 0) {
     for (int i = 1; i <= nj; ++i) {
-      const double limit = model.links[i].limits.effort;
-      force(model.dofOf(i)) += std::clamp(loads.effort(i - 1), -limit, limit);
+      force(model.dofOf(i)) += model.links[i].limits.heldEffort(loads.effort(i - 1));
     }
   }
   // The base: the whole articulation's momentum changes by the impulse of the

@@ -234,7 +234,7 @@ void JointControllers::efforts(const ArticulationState& state, double t, double 
           break;
         }
       }
-      effort(j - 1) = std::clamp(u, -limits_[j].effort, limits_[j].effort);
+      effort(j - 1) = limits_[j].heldEffort(u);
     }
   }
 }

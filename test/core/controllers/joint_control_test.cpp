@@ -16,11 +16,15 @@
 #include <vector>
 
 #include "../articulations/articulation_models.h"
+#include "controlled_robot.h"
 #include "rigid_body_sim/core/articulations/articulation_step.h"
 #include "rigid_body_sim/core/articulations/scene.h"
 
 namespace rigid_body_sim::core {
 namespace {
+
+using test::Alone;
+using test::pendulum;
 
 constexpr double kG = 9.81;
 constexpr double kH = 1e-3;
@@ -86,42 +90,6 @@ TEST(Pid, ItsServoDoesNotWindUpWhileHeldAtItsLimit) {
   EXPECT_LT(overshoot(true), 0.05);
   EXPECT_GT(overshoot(false), 0.3);
 }
-
-/// A 1 kg point-like bob on a 0.5 m massless arm about y, hinge at the
-/// origin: gravity's torque about the hinge at angle q is m g l sin q (q
-/// from hanging straight down, positive turning the bob toward +x... its
-/// sign read off the model below).
-ArticulationModel pendulum(double effort_limit) {
-  ArticulationModel model = test::oneJoint(JointType::Revolute, "bob", "hinge", Vec3::Zero(), Vec3::UnitY());
-  ArticulatedLink& bob = model.links[1];
-  bob.limits.lower = -3.0;
-  bob.limits.upper = 3.0;
-  bob.limits.effort = effort_limit;
-  bob.mass.mass = 1.0;
-  bob.mass.p_FC = Vec3(0.0, 0.0, -0.5);
-  bob.mass.I_C_F = 1e-4 * Mat3::Identity();
-  checkArticulation(model);
-  return model;
-}
-
-/// `model` alone in a scene with gravity `g` and no ground, stepped as the
-/// node and rbsim step a robot (stepScene).
-struct Alone {
-  Scene scene;
-  SceneState state;
-  SceneWorkspace ws;
-
-  Alone(const ArticulationModel& model, const Vec3& g)
-      : scene(spec(g), {{"robot", model}}), state(sceneState(scene, {}, {restState(model)})) {}
-  static ModelSpec spec(const Vec3& g) {
-    ModelSpec s;
-    s.dt = kH;
-    s.gravity_W = g;
-    return s;
-  }
-  ArticulationState& robot() { return state.robots[0]; }
-  void step(const ArticulationLoads& loads) { stepScene(scene, state, {{}, {loads}}, ws); }
-};
 
 JointControllerSpec positionController(double p, double i, double d, double i_clamp) {
   return {"hinge_position", ControlMode::kPosition, {1}, {{p, i, d, i_clamp}}};

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <string>
@@ -27,6 +28,10 @@ struct JointLimits {
   double upper = std::numeric_limits<double>::infinity();     ///< rad or m
   double effort = std::numeric_limits<double>::infinity();    ///< N·m or N, a clip on commanded effort
   double velocity = std::numeric_limits<double>::infinity();  ///< rad/s or m/s
+
+  /// u within ±effort: the one clip of a commanded effort, whoever gives it
+  /// (a controller, the control stage's sum, the step's input).
+  double heldEffort(double u) const { return std::clamp(u, -effort, effort); }
 };
 
 /// A URDF <mimic>: q = multiplier · q_joint + offset.
