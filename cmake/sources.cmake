@@ -68,6 +68,9 @@ set(RBS_CORE_SOURCES
 set(RBS_IO_SOURCES
   ${RBS_SOURCE_ROOT}/src/io/articulation_loader.cpp
   ${RBS_SOURCE_ROOT}/src/io/config.cpp
+  ${RBS_SOURCE_ROOT}/src/io/config_text.cpp
+  ${RBS_SOURCE_ROOT}/src/io/node_keys.cpp
+  ${RBS_SOURCE_ROOT}/src/io/timeline.cpp
   ${RBS_SOURCE_ROOT}/src/io/input_bounds.cpp
   ${RBS_SOURCE_ROOT}/src/io/joint_start.cpp
   ${RBS_SOURCE_ROOT}/src/io/sensor_mount.cpp

@@ -14,6 +14,7 @@
 #include "rigid_body_sim/core/bodies/setting_keys.h"
 #include "rigid_body_sim/io/input_bounds.h"
 #include "rigid_body_sim/io/mesh_loader.h"
+#include "rigid_body_sim/io/node_keys.h"
 #include "rigid_body_sim/io/orientation.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "scene_config.h"
@@ -157,8 +158,10 @@ SimConfig parseTree(const YAML::Node& root, const std::string& base_dir, Streame
                     "urdf",
                     "devices",
                     "lidar",
-                    "depth_camera"});
+                    "depth_camera",
+                    "timeline"});
   parseSection(root, "", c.model);  // dt, gravity, gyroscopic, articulation_integrator
+  if (root["timeline"]) c.timeline = parseTimeline(root["timeline"]);
   if (const YAML::Node urdf = root["urdf"]) {
     requireKnownKeys(urdf, "urdf", {"repair"});
     if (urdf["repair"]) c.urdf_repair = boolean(urdf["repair"], "urdf.repair");
@@ -285,7 +288,7 @@ std::string bodyNameProblem(const std::string& name) {
 }
 
 SimConfig parseConfigText(const std::string& yaml, const std::string& source, const std::vector<std::string>& overrides,
-                          const std::string& base_dir) {
+                          const std::string& base_dir, std::vector<std::string>* node_keys) {
   const std::string problem = yamlProblem(yaml);
   if (!problem.empty()) throw ConfigError(source + ": " + problem);
   BodyList bodies(base_dir);
@@ -310,6 +313,14 @@ SimConfig parseConfigText(const std::string& yaml, const std::string& source, co
     replaced = replaced || s.compare(0, s.find_first_of(".="), "bodies") == 0;
   }
   streamed.bodies = bodies.take();
+  if (node_keys != nullptr && load.root.IsMap()) {
+    const YAML::Node& root = load.root;  // const: a look-up that adds nothing
+    for (const std::string& key : nodeKeys()) {
+      if (!root[key]) continue;
+      node_keys->push_back(key);
+      load.root.remove(key);
+    }
+  }
   try {
     return parseTree(load.root, base_dir, load.split && !replaced ? &streamed : nullptr);
   } catch (const YAML::Exception& e) {
@@ -318,81 +329,9 @@ SimConfig parseConfigText(const std::string& yaml, const std::string& source, co
 }
 
 SimConfig loadConfigFile(const std::string& path, const std::vector<std::string>& overrides,
-                         const std::string& base_dir) {
+                         const std::string& base_dir, std::vector<std::string>* node_keys) {
   return parseConfigText(readInput<ConfigError>(path, InputCaps::kConfigBytes, "config"), "config '" + path + "'",
-                         overrides, base_dir);
-}
-
-namespace {
-
-/// `parse` of the YAML text `yaml` (a map given in a request), any YAML
-/// error a ConfigError naming `path`.
-template <class Parse>
-auto fromText(const std::string& yaml, const std::string& path, const Parse& parse) {
-  try {
-    return parse(loadYamlText(yaml, path));
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(path + ": " + e.what());
-  }
-}
-
-}  // namespace
-
-ImuEntry parseImuText(const std::string& yaml, const std::string& path, double dt) {
-  return fromText(yaml, path, [&](const YAML::Node& node) {
-    ImuEntry imu = parseImu(node, path);
-    validateImuEntry(imu, dt, path);
-    return imu;
-  });
-}
-
-core::OdomNoiseSettings parseOdomNoiseText(const std::string& yaml, const std::string& path) {
-  return fromText(yaml, path, [&](const YAML::Node& node) { return parseOdomNoise(node, path); });
-}
-
-core::DriverSettings parseDriverText(const std::string& yaml, const std::string& path) {
-  return fromText(yaml, path, [&](const YAML::Node& node) { return parseDriver(node, path); });
-}
-
-YAML::Node loadYamlFile(const std::string& path) {
-  return loadYamlText(readInput<ConfigError>(path, InputCaps::kConfigBytes, "config"), "config '" + path + "'");
-}
-
-YAML::Node loadYamlText(const std::string& text, const std::string& source) {
-  const std::string problem = yamlProblem(text);
-  if (!problem.empty()) throw ConfigError(source + ": " + problem);
-  try {
-    return loadSplittingSequence(text, "", {}).root;
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(source + " is not valid YAML: " + e.what());
-  }
-}
-
-void applyOverride(YAML::Node& root, const std::string& assignment) {
-  const auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0) {
-    throw ConfigError("--set '" + assignment + "': expected KEY=VALUE, e.g. gravity=[0,0,0]");
-  }
-  const std::string key = assignment.substr(0, eq);
-  const YAML::Node value = loadYamlText(assignment.substr(eq + 1), "--set '" + assignment + "': the value");
-  std::vector<std::string> parts;
-  std::stringstream ss(key);
-  for (std::string part; std::getline(ss, part, '.');) {
-    if (part.empty()) throw ConfigError("--set '" + assignment + "': empty key component");
-    parts.push_back(part);
-  }
-  if (!root || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
-  // yaml-cpp nodes are references: walk with reset(), never with '='.
-  YAML::Node node;
-  node.reset(root);
-  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
-    if (!node.IsMap()) fail(key, "cannot set '" + parts[i] + "' inside a value that is not a map");
-    YAML::Node child = node[parts[i]];
-    if (!child.IsDefined() || child.IsNull()) child = YAML::Node(YAML::NodeType::Map);
-    node.reset(child);
-  }
-  if (!node.IsMap()) fail(key, "cannot set '" + parts.back() + "' inside a value that is not a map");
-  node[parts.back()] = value;
+                         overrides, base_dir, node_keys);
 }
 
 }  // namespace rigid_body_sim::io

@@ -26,6 +26,7 @@ void SimNode::stepOnce() {
     loads_[i].force_W += drive.force_W;
     loads_[i].torque_W += drive.torque_W;
   }
+  commands_->giveTimed(t);                     // the config's timeline, before the step it is due at
   commands_->loadsFor(sim_, t, robot_loads_);  // the robots' controllers, from the state before the step
   joint_wrenches_->before(sim_);
   sim_.step(loads_, robot_loads_);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "request_checks.h"
 #include "rigid_body_sim/ros/robot_ports.h"
@@ -317,6 +318,17 @@ void RobotCommands::baseCommand(std::size_t r, const geometry_msgs::Twist& msg) 
         "sim_node: cmd_vel for robot '%s' clipped to cmd_vel.max_linear_speed %g m/s, max_angular_speed %g rad/s "
         "(said once per robot)",
         robot_names_[r].c_str(), driver.settings().max_linear_speed, driver.settings().max_angular_speed);
+  }
+}
+
+void RobotCommands::setTimeline(std::vector<io::TimedCommand> entries) {
+  timeline_ = io::Timeline(std::move(entries), robot_names_, controls_);
+}
+
+void RobotCommands::giveTimed(double t) {
+  if (timeline_.empty()) return;
+  for (const std::string& said : timeline_.apply(t, robot_names_, controls_)) {
+    if (warned_.insert({said, "timeline"}).second) ROS_WARN("sim_node: %s (said once)", said.c_str());
   }
 }
 

@@ -162,6 +162,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     topic_claims_.take(name, topics);
   }
   commands_.emplace(nh_, std::move(start_controls_), sim_, time_, control_prefixes);
+  commands_->setTimeline(params_.sim.timeline);
   robot_publisher_.emplace(nh_, sim_.scene, control_prefixes, settings_.world_frame, model_.dt(),
                            settings_.publish_rate, [this](std::size_t r) { return commands_->jointStateRate(r); });
   checkRobotFrames(robot_publisher_->robots(), settings_.world_frame, ports_.frames());

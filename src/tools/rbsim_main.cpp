@@ -47,7 +47,7 @@ namespace io = rigid_body_sim::io;
 
 constexpr const char* kUsage =
     "usage: rbsim --urdf FILE [--config FILE.yaml] [--set KEY=VALUE ...] --duration S\n"
-    "             [--dt S] [--csv OUT.csv] [--every N] [--quiet]\n"
+    "             [--dt S] [--csv OUT.csv] [--every N] [--out DIR] [--quiet]\n"
     "       rbsim --config WORLD.yaml [--set KEY=VALUE ...] --duration S [...]\n"
     "\n"
     "Simulates the rigid body of a URDF (its root link and every link fixed to it),\n"
@@ -65,6 +65,10 @@ constexpr const char* kUsage =
     "                     with several bodies a body column follows t; a robot's base\n"
     "                     link, then JOINT.position,JOINT.velocity per joint)\n"
     "  --every N          one CSV row every N steps (default 1), plus the final state\n"
+    "  --out DIR          a robot's controllers' outputs: each wheeled-base controller's\n"
+    "                     odometry in DIR/ROBOT.CONTROLLER.odom.csv at its publish_rate\n"
+    "                     (t,x,y,heading,linear,lateral,angular); the controllers run\n"
+    "                     as sim_node runs them, commanded by the config's timeline\n"
     "  --quiet            no summary on stderr\n";
 
 using rigid_body_sim::tools::checkStep;
@@ -78,7 +82,7 @@ using rigid_body_sim::tools::UsageError;
 using rigid_body_sim::tools::vec;
 
 struct Args {
-  std::string urdf, config, csv;
+  std::string urdf, config, csv, out;
   std::vector<std::string> sets;
   double duration = -1.0;
   std::string dt;  // kept as text: it becomes a --set dt=... override
@@ -107,8 +111,8 @@ Args parseArgs(int argc, char** argv) {
       a.quiet = true;
       continue;
     }
-    static const std::set<std::string> kTakesValue = {"--urdf", "--config", "--set",  "--duration",
-                                                      "--dt",   "--csv",    "--every"};
+    static const std::set<std::string> kTakesValue = {"--urdf", "--config", "--set",   "--duration",
+                                                      "--dt",   "--csv",    "--every", "--out"};
     if (kTakesValue.count(flag) == 0) throw UsageError("unknown argument '" + flag + "' (see rbsim --help)");
     if (i + 1 >= argc) throw UsageError(flag + ": missing value (see rbsim --help)");
     const std::string value = argv[++i];
@@ -124,6 +128,8 @@ Args parseArgs(int argc, char** argv) {
       parsePositive(flag, value), a.dt = value;
     else if (flag == "--csv")
       a.csv = value;
+    else if (flag == "--out")
+      a.out = value;
     else if (flag == "--every") {
       const double n = parsePositive(flag, value);
       if (n != std::floor(n)) throw UsageError("--every: expected a whole number > 0, got '" + value + "'");
@@ -146,37 +152,42 @@ Vec3 angularMomentum(const core::Model& model, const core::State& state) {
   return rigid_body_sim::tools::bodiesAngularMomentum(model, state, model.bodyCount());
 }
 
-/// The config file with the command line's overrides. Its bodies list is
-/// read an entry at a time: as a YAML tree it took about 7 KB a body, more
-/// than the bodies themselves (bench/HISTORY.md).
-/// Refuses a config's `controllers` (ConfigError naming the key): they take
-/// their commands on the node's topics, and rbsim runs none.
+/// A world of bodies alone refuses a config's `controllers` and `timeline`
+/// (ConfigError naming the key): there is no robot (a URDF with a moving
+/// joint) for them.
 void refuseControllers(const io::SimConfig& config) {
   const auto refuse = [](const std::string& key) {
-    throw io::ConfigError("config key '" + key +
-                          "': rbsim runs no controllers (they take their commands on sim_node's topics)");
+    throw io::ConfigError("config key '" + key + "': no robot to control (a URDF with a moving joint)");
   };
   if (!config.controllers.empty()) refuse("controllers");
+  if (!config.timeline.empty()) refuse("timeline");
   for (std::size_t i = 0; i < config.bodies.size(); ++i) {
     if (!config.bodies[i].controllers.empty()) refuse("bodies[" + std::to_string(i) + "].controllers");
   }
 }
 
+/// The config file with the command line's overrides; the node's own keys
+/// (sim_node's ~rate, ~publish_rate, ...) set aside and named once, so the
+/// node's files run unchanged.
 io::SimConfig readConfig(const Args& args) {
   std::vector<std::string> overrides = args.sets;
   if (!args.dt.empty()) overrides.push_back("dt=" + args.dt);
   if (args.config.empty()) {
     YAML::Node tree;
     for (const std::string& s : overrides) io::applyOverride(tree, s);
-    io::SimConfig config = io::parseConfig(tree, ".");
-    refuseControllers(config);
-    return config;
+    return io::parseConfig(tree, ".");
   }
   // Absolute: a body's relative URDF is joined to it once, and a relative
   // folder was joined twice ("worlds/worlds/box.urdf").
   const std::string config_dir = std::filesystem::absolute(args.config).parent_path().string();
-  io::SimConfig config = io::loadConfigFile(args.config, overrides, config_dir);
-  refuseControllers(config);
+  std::vector<std::string> node_keys;
+  io::SimConfig config = io::loadConfigFile(args.config, overrides, config_dir, &node_keys);
+  if (!node_keys.empty()) {
+    std::string names;
+    for (const std::string& k : node_keys) names += (names.empty() ? "'" : ", '") + k + "'";
+    std::fprintf(stderr, "rbsim: note: config keys %s are sim_node's own (its loop and topics): not used here\n",
+                 names.c_str());
+  }
   return config;
 }
 
@@ -218,7 +229,7 @@ void checkDuration(const Args& args, const io::SimConfig& config) {
 }
 
 int run(const Args& args) {
-  const rigid_body_sim::tools::RunOptions options{args.duration, args.csv, args.every, args.quiet};
+  const rigid_body_sim::tools::RunOptions options{args.duration, args.csv, args.every, args.quiet, args.out};
   if (!args.urdf.empty()) {  // a URDF with moving joints is a robot: a scene of one (rbsim_scene.cpp)
     const std::string xml = io::readInput<io::UrdfError>(args.urdf, io::InputCaps::kUrdfBytes, "URDF");
     if (io::describesRobot(xml, args.urdf)) {
@@ -226,7 +237,7 @@ int run(const Args& args) {
       const io::SimConfig config = readConfig(args);
       checkDuration(args, config);
       const auto urdf = [&] { return io::UrdfText{xml, args.urdf, dir}; };
-      return rigid_body_sim::tools::runScene(io::loadScene(config, urdf), options);
+      return rigid_body_sim::tools::runScene(io::loadScene(config, urdf), options, config.timeline);
     }
   }
   bool world_config = false;
@@ -235,8 +246,10 @@ int run(const Args& args) {
     const io::SimConfig config = readConfig(args);
     checkDuration(args, config);
     if (args.urdf.empty() && !config.bodies.empty() && io::listsRobots(config)) {  // rbsim_scene.cpp
-      return rigid_body_sim::tools::runScene(io::buildScene(config), options);
+      return rigid_body_sim::tools::runScene(io::buildScene(config), options, config.timeline);
     }
+    refuseControllers(config);
+    if (!args.out.empty()) throw UsageError("--out: a world of bodies alone has no controllers' outputs to write");
     world.emplace(loadWorld(args, config, &world_config));
     warnAll(world->notes);
   }  // the config goes: its bodies list is a tenth of the memory of a world of 10,000 boxes

@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "rbsim_controls.h"
 #include "rbsim_loop.h"
 #include "rbsim_output.h"
 #include "rbsim_report.h"
@@ -44,7 +46,7 @@ core::Vec3 sceneAngularMomentum(const core::Scene& scene, const core::SceneState
 
 }  // namespace
 
-int runScene(io::SceneSetup setup, const RunOptions& options) {
+int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::TimedCommand> timeline) {
   for (const std::string& note : setup.notes) std::fprintf(stderr, "rbsim: warning: %s\n", note.c_str());
   const core::Scene& scene = setup.scene;
   core::SceneState& state = setup.state;
@@ -63,6 +65,15 @@ int runScene(io::SceneSetup setup, const RunOptions& options) {
                      "as in Gazebo\n",
                      robot.name.c_str());
       }
+    }
+  }
+  for (std::size_t r = 0; r < setup.sensors.size() && r < robots.size(); ++r) {  // said, not silently dropped
+    const io::RobotSensors& d = setup.sensors[r];
+    const std::size_t count = d.imus.size() + d.lidars.size() + d.cameras.size() + d.odometry.size() + d.gnss.size() +
+                              d.magnetometers.size() + d.contact_sensors.size() + d.force_torques.size();
+    if (count > 0) {
+      std::fprintf(stderr, "rbsim: note: robot '%s' has %zu sensors (sim_node samples them; rbsim does not yet)\n",
+                   robots[r].name.c_str(), count);
     }
   }
   const double dt = model.dt();
@@ -99,14 +110,18 @@ int runScene(io::SceneSetup setup, const RunOptions& options) {
     }
   };
   core::SceneWorkspace ws;
-  const core::SceneLoads loads;
+  core::SceneLoads loads;
+  ControlRun controls(scene, state, std::move(setup.controls), std::move(timeline), options.out_dir);
+  controls.write(0.0);
   std::vector<char> limited(model.bodyCount(), 0);  // free bodies the speed limits held back, warned once each
   std::vector<char> robot_limited(robots.size(), 0);
   double max_penetration = 0.0;  // m, over the states at the start of every step
   const LoopTimes times = runLoop(
       steps, csv != nullptr, options.every, isatty(STDERR_FILENO) && steps * (free + robots.size()) >= 2'000'000,
       [&](long long k) {
+        controls.loadsFor(state, static_cast<double>(k - 1) * dt, loads.robots);  // as the node's clock: steps × dt
         core::stepScene(scene, state, loads, ws);
+        controls.observe(state, k, static_cast<double>(k) * dt);
         max_penetration = std::max(max_penetration, ws.bodies.deepest_penetration);
         if (!ws.bodies.speed_limited.empty() || !ws.bodies.diverged.empty()) {
           checkStep(model, ws.bodies, k * dt, limited);
@@ -168,6 +183,7 @@ int runScene(io::SceneSetup setup, const RunOptions& options) {
   out["at_rest"] = all_rest;
   out["speed_limited"] = limited_json;
   if (csv) csv->finish();
+  controls.finish();
   JsonLine line(out, "bodies");
   for (const Json& entry : entries) line.element(entry);
   line.finish();

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "rigid_body_sim/io/scene_loader.h"
 
@@ -14,6 +15,7 @@ struct RunOptions {
   std::string csv;        ///< "" for none
   long long every = 1;    ///< one CSV row every this many steps
   bool quiet = false;
+  std::string out_dir;  ///< "" for none: each drive's odometry, ROBOT.CONTROLLER.odom.csv
 };
 
 /// Runs `setup` (io::buildScene for a config's bodies list, io::loadScene
@@ -23,6 +25,8 @@ struct RunOptions {
 /// CSV has a row per body and robot, and a position and a velocity column
 /// per robot joint (ROBOT/JOINT), filled on its robot's row; a robot alone
 /// has no name column and its joints' own names.
-int runScene(io::SceneSetup setup, const RunOptions& options);
+/// The robots' controllers run as the node runs them, commanded by
+/// `timeline` (rbsim_controls.h).
+int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::TimedCommand> timeline = {});
 
 }  // namespace rigid_body_sim::tools

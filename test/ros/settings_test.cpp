@@ -16,6 +16,7 @@
 
 #include "rigid_body_sim/core/bodies/setting_keys.h"
 #include "rigid_body_sim/io/config.h"
+#include "rigid_body_sim/io/node_keys.h"
 #include "rigid_body_sim/io/urdf_loader.h"
 #include "rigid_body_sim/ros/params.h"
 
@@ -77,6 +78,16 @@ std::string text(double x) {
   os.precision(17);
   os << x;
   return os.str();
+}
+
+// rbsim sets the node's own keys aside by io::nodeKeys(): the same keys,
+// in the same order, as the node's parameter table.
+TEST(Settings, TheNodeKeysRbsimSetsAsideAreTheNodesParameters) {
+  std::vector<std::string> params;
+  for (const NodeParamKey& k : rigid_body_sim::node::nodeParamKeys()) params.emplace_back(k.key);
+  EXPECT_EQ(rigid_body_sim::io::nodeKeys(), params);
+  EXPECT_TRUE(rigid_body_sim::io::isNodeKey("publish_rate"));
+  EXPECT_FALSE(rigid_body_sim::io::isNodeKey("dt"));
 }
 
 TEST(Settings, TheUrdfKeyIsTheLoadersDefault) {

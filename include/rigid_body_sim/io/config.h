@@ -19,6 +19,7 @@
 #include "rigid_body_sim/core/controllers/diff_drive.h"
 #include "rigid_body_sim/core/controllers/joint_control.h"
 #include "rigid_body_sim/io/device_entries.h"
+#include "rigid_body_sim/io/timeline.h"
 
 namespace rigid_body_sim::io {
 
@@ -183,6 +184,7 @@ struct SimConfig {
   std::vector<ControllerEntry> controllers;     ///< the one robot's `controllers`
   std::vector<LidarEntry> lidars;               ///< the one robot's `lidar`
   std::vector<DepthCameraEntry> cameras;        ///< the one robot's `depth_camera`
+  std::vector<TimedCommand> timeline;           ///< `timeline`: commands at given sim times (timeline.h)
   /// urdf.repair: read the URDFs as Gazebo and KDL do, repairing what a
   /// strict reading refuses (io::UrdfOptions); false refuses it.
   bool urdf_repair = true;
@@ -231,11 +233,14 @@ SimConfig parseConfigWithBodies(const YAML::Node& root, std::size_t count,
 /// `bodies` list is parsed an entry at a time as it is read, never held
 /// whole as a YAML tree (about 7 KB an entry: 70 MB for a world of 10,000
 /// bodies, bench/HISTORY.md). ConfigError as parseConfig and loadYamlText.
+/// With `node_keys`, the node's own top-level keys (node_keys.h) are set
+/// aside, their names appended to it, instead of refused as unknown.
 SimConfig parseConfigText(const std::string& yaml, const std::string& source,
-                          const std::vector<std::string>& overrides = {}, const std::string& base_dir = "");
+                          const std::vector<std::string>& overrides = {}, const std::string& base_dir = "",
+                          std::vector<std::string>* node_keys = nullptr);
 /// parseConfigText of the file at `path` (at most InputCaps::kConfigBytes).
 SimConfig loadConfigFile(const std::string& path, const std::vector<std::string>& overrides = {},
-                         const std::string& base_dir = "");
+                         const std::string& base_dir = "", std::vector<std::string>* node_keys = nullptr);
 
 /// An IMU from the YAML text of an `imu` map (the node's ~spawn_body), for a
 /// model of step `dt`; ConfigError naming `path`.KEY.

@@ -25,6 +25,7 @@
 #include "rigid_body_sim/core/articulations/articulation_step.h"
 #include "rigid_body_sim/core/step/simulation.h"
 #include "rigid_body_sim/io/controllers.h"
+#include "rigid_body_sim/io/timeline.h"
 #include "rigid_body_sim/ros/controller_watch.h"
 #include "rigid_body_sim/ros/drive_ports.h"
 #include "rigid_body_sim/ros/sim_clock.h"
@@ -96,6 +97,14 @@ class RobotCommands {
   /// warning when not finite, clipped to the driver's speeds (said once).
   void baseCommand(std::size_t r, const geometry_msgs::Twist& msg);
 
+  /// The config's `timeline` (io/timeline.h), checked against the robots
+  /// at start (ConfigError naming the entry); its commands are then given
+  /// before the steps they are due at, as its topics' messages are, so a
+  /// scenario runs here as it does in rbsim.
+  void setTimeline(std::vector<io::TimedCommand> entries);
+  /// Before the step that starts at sim time t: the timeline's commands due.
+  void giveTimed(double t);
+
  private:
   /// Robot r's controllers' command topics and its joint_command, under `prefix`.
   std::vector<ros::Subscriber> subscribe(std::size_t r, const std::string& prefix);
@@ -120,6 +129,7 @@ class RobotCommands {
   std::vector<std::vector<std::unique_ptr<DrivePorts>>> drives_;  ///< per robot, per drive
   std::vector<geometry_msgs::TransformStamped> odom_tf_;          ///< this publication's
   tf2_ros::TransformBroadcaster tf_;
+  io::Timeline timeline_;  ///< the config's commands at given sim times
 };
 
 }  // namespace rigid_body_sim::node

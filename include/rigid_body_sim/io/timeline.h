@@ -1,0 +1,75 @@
+// A config's `timeline`: commands for the robots' controllers at given sim
+// times, as a user would publish them on the node's topics (docs/rbsim.md).
+// rbsim takes its commands from it, and the node gives them as it gives
+// its topics' messages, so a scenario runs the same with and without ROS.
+// ROS-free.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/core/bodies/types.h"
+
+namespace rigid_body_sim::io {
+
+struct RobotControls;
+
+/// One entry: `{t: 1.0, cmd_vel: {linear: [0.5, 0, 0], angular: [0, 0, 0.3]}}`
+/// (a geometry_msgs/Twist, to the robot's base driver or one drive) or
+/// `{t: 1.0, controller: NAME, command: [values]}` (CONTROLLER/command's data).
+struct TimedCommand {
+  std::string key;  ///< "timeline[3]", for messages
+  double t = 0.0;   ///< s of sim time: given before the first step that starts at or after it
+  double until =
+      0;  ///< s: given again before every step that starts before it (a publisher at the step's rate); ≤ t: once
+  std::string robot;  ///< "": the world's one robot
+  std::string
+      controller;        ///< cmd_vel: a drive's name, "" for the base driver or the one drive; command: its controller
+  bool cmd_vel = false;  ///< a twist (linear, angular), else `values`
+  core::Vec3 linear = core::Vec3::Zero(), angular = core::Vec3::Zero();  ///< m/s, rad/s, in the base's axes
+  std::vector<double> values;                                            ///< one per joint of the controller
+};
+
+/// The config's `timeline` list (ConfigError naming `timeline[i].FIELD`):
+/// each `t` within [0, 1e6] s, `until` after it, one of `cmd_vel` and
+/// `command`, every value finite.
+std::vector<TimedCommand> parseTimeline(const YAML::Node& list);
+
+/// A timeline checked against a world's robots, each command found by
+/// its robot's and controller's names when it is given (so a robot
+/// deleted or spawned in the node moves no command onto another).
+class Timeline {
+ public:
+  Timeline() = default;
+  /// Refuses (ConfigError naming the entry's key) a robot not in `robots`
+  /// (or no robot named in a world of several), a controller the robot
+  /// does not have or of the wrong kind (cmd_vel to a drive or a base
+  /// driver, command to a joint controller), a command of the wrong length.
+  Timeline(std::vector<TimedCommand> entries, const std::vector<std::string>& robots,
+           const std::vector<RobotControls>& controls);
+
+  /// Gives each command due before the step that starts at sim time t to
+  /// its controller in `controls` (robot r's named robots[r]), as the node
+  /// gives a topic's message received at t. Returns what to say: a command
+  /// held to its controller's limits, or whose robot is gone.
+  std::vector<std::string> apply(double t, const std::vector<std::string>& robots,
+                                 std::vector<RobotControls>& controls);
+  bool empty() const { return entries_.empty(); }
+
+ private:
+  struct Entry {
+    TimedCommand command;
+    std::string robot;  ///< its robot's name
+  };
+  void give(const Entry& e, double t, const std::vector<std::string>& robots, std::vector<RobotControls>& controls,
+            std::vector<std::string>& said) const;
+
+  std::vector<Entry> entries_;     ///< by t, then as listed
+  std::size_t next_ = 0;           ///< the first not yet given
+  std::vector<std::size_t> held_;  ///< given, and given again until their `until`
+};
+
+}  // namespace rigid_body_sim::io

@@ -1,0 +1,172 @@
+// A config's timeline: timeline.h.
+#include "rigid_body_sim/io/timeline.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "rigid_body_sim/core/bodies/ranges.h"
+#include "rigid_body_sim/io/controllers.h"
+#include "yaml_fields.h"
+
+namespace rigid_body_sim::io {
+
+using namespace yaml_fields;
+
+namespace {
+
+TimedCommand parseEntry(const YAML::Node& node, const std::string& key) {
+  if (!node.IsMap()) fail(key, "expected a map such as {t: 1.0, cmd_vel: {linear: [0.5, 0, 0]}}, got " + show(node));
+  requireKnownKeys(node, key, {"t", "until", "robot", "controller", "cmd_vel", "command"});
+  TimedCommand c;
+  c.key = key;
+  if (!node["t"]) fail(key + ".t", "every entry needs its time (s of sim time)");
+  c.t = number(node["t"], key + ".t");
+  if (c.t < 0.0 || c.t > core::ranges::kMaxDuration) {
+    fail(key + ".t", "must be within [0, 1e6] s, got " + show(node["t"]));
+  }
+  c.until = c.t;
+  if (node["until"]) {
+    c.until = number(node["until"], key + ".until");
+    if (c.until <= c.t || c.until > core::ranges::kMaxDuration) {
+      fail(key + ".until", "must be after t and at most 1e6 s, got " + show(node["until"]));
+    }
+  }
+  if (node["robot"]) c.robot = text(node["robot"], key + ".robot");
+  if (node["controller"]) c.controller = text(node["controller"], key + ".controller");
+  if (static_cast<bool>(node["cmd_vel"]) == static_cast<bool>(node["command"])) {
+    fail(key, "needs one of cmd_vel (a twist) and command (a controller's values)");
+  }
+  if (const YAML::Node twist = node["cmd_vel"]) {
+    requireKnownKeys(twist, key + ".cmd_vel", {"linear", "angular"});
+    c.cmd_vel = true;
+    if (twist["linear"]) c.linear = vec3(twist["linear"], key + ".cmd_vel.linear");
+    if (twist["angular"]) c.angular = vec3(twist["angular"], key + ".cmd_vel.angular");
+  } else {
+    const YAML::Node values = node["command"];
+    if (!values.IsSequence() || values.size() == 0) fail(key + ".command", "expected a list of numbers");
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      c.values.push_back(number(values[k], key + ".command[" + std::to_string(k) + "]"));
+    }
+  }
+  return c;
+}
+
+}  // namespace
+
+std::vector<TimedCommand> parseTimeline(const YAML::Node& list) {
+  if (!list.IsSequence()) fail("timeline", "expected a list of commands, got " + show(list));
+  std::vector<TimedCommand> out;
+  for (std::size_t i = 0; i < list.size(); ++i)
+    out.push_back(parseEntry(list[i], "timeline[" + std::to_string(i) + "]"));
+  return out;
+}
+
+namespace {
+
+/// What `c` drives of robot `robot`'s controls: a drive's or a joint
+/// controller's index, −1 for the base driver; ConfigError naming the
+/// entry's field otherwise.
+int targetOf(const TimedCommand& c, const std::string& robot, const RobotControls& rc) {
+  const std::string who = "robot '" + robot + "'";
+  const std::vector<core::JointControllerSpec>& specs = rc.controllers.specs();
+  int joint_controller = -1;
+  for (std::size_t k = 0; k < specs.size(); ++k) {
+    if (specs[k].name == c.controller) joint_controller = static_cast<int>(k);
+  }
+  if (c.cmd_vel) {
+    if (c.controller.empty()) {
+      if (rc.base_driver) return -1;
+      if (rc.drives.size() == 1) return 0;
+      fail(c.key + ".controller", who + " has " + std::to_string(rc.drives.size()) +
+                                      " wheeled-base controllers and no base driver: name the one it is for");
+    }
+    for (std::size_t d = 0; d < rc.drives.size(); ++d) {
+      if (rc.drives[d].spec().name == c.controller) return static_cast<int>(d);
+    }
+    fail(c.key + ".controller", joint_controller >= 0
+                                    ? "'" + c.controller + "' is a joint controller: give it a command, not a cmd_vel"
+                                    : who + " has no wheeled-base controller '" + c.controller + "'");
+  }
+  if (joint_controller < 0) fail(c.key + ".controller", who + " has no joint controller '" + c.controller + "'");
+  const core::JointControllerSpec& spec = specs[static_cast<std::size_t>(joint_controller)];
+  if (spec.mode == core::ControlMode::kTrajectory) {
+    fail(c.key + ".command", "'" + c.controller + "' follows trajectories: a timeline gives no trajectory yet");
+  }
+  if (c.values.size() != spec.joints.size()) {
+    fail(c.key + ".command", "'" + c.controller + "' takes " + std::to_string(spec.joints.size()) +
+                                 " values (one per joint), got " + std::to_string(c.values.size()));
+  }
+  return joint_controller;
+}
+
+}  // namespace
+
+Timeline::Timeline(std::vector<TimedCommand> entries, const std::vector<std::string>& robots,
+                   const std::vector<RobotControls>& controls) {
+  for (TimedCommand& c : entries) {
+    std::size_t r = 0;
+    if (c.robot.empty()) {
+      if (robots.size() != 1) {
+        fail(c.key + ".robot", "a world of " + std::to_string(robots.size()) + " robots: name the one it is for");
+      }
+    } else {
+      const auto it = std::find(robots.begin(), robots.end(), c.robot);
+      if (it == robots.end()) fail(c.key + ".robot", "no robot '" + c.robot + "' in the world");
+      r = static_cast<std::size_t>(it - robots.begin());
+    }
+    targetOf(c, robots[r], controls.at(r));  // refused now, not when it is due
+    entries_.push_back({std::move(c), robots[r]});
+  }
+  std::stable_sort(entries_.begin(), entries_.end(),
+                   [](const Entry& a, const Entry& b) { return a.command.t < b.command.t; });
+}
+
+void Timeline::give(const Entry& e, double t, const std::vector<std::string>& robots,
+                    std::vector<RobotControls>& controls, std::vector<std::string>& said) const {
+  const TimedCommand& c = e.command;
+  const auto it = std::find(robots.begin(), robots.end(), e.robot);
+  if (it == robots.end()) {
+    said.push_back(c.key + ": robot '" + e.robot + "' is gone: not given");
+    return;
+  }
+  RobotControls& rc = controls.at(static_cast<std::size_t>(it - robots.begin()));
+  int target = 0;
+  try {
+    target = targetOf(c, e.robot, rc);
+  } catch (const ConfigError& error) {  // a robot of that name spawned since, with other controllers
+    said.push_back(error.what());
+    return;
+  }
+  bool held = false;
+  if (c.cmd_vel && target < 0) {
+    held = rc.base_driver->command(c.linear, c.angular, t);
+  } else if (c.cmd_vel) {
+    held = !rc.drives.at(static_cast<std::size_t>(target)).command(c.linear.x(), c.angular.z(), t, c.linear.y());
+  } else {
+    std::vector<core::Clipped> clipped;
+    held = !rc.controllers.command(static_cast<std::size_t>(target), c.values, clipped) || !clipped.empty();
+  }
+  if (held) said.push_back(c.key + ": held to its controller's limits, or refused beyond them");
+}
+
+std::vector<std::string> Timeline::apply(double t, const std::vector<std::string>& robots,
+                                         std::vector<RobotControls>& controls) {
+  std::vector<std::string> said;
+  const auto ended = [&](std::size_t k) { return !(t < entries_[k].command.until); };
+  held_.erase(std::remove_if(held_.begin(), held_.end(), ended), held_.end());
+  for (const std::size_t k : held_) give(entries_[k], t, robots, controls, said);
+  for (; next_ < entries_.size() && entries_[next_].command.t <= t; ++next_) {
+    const Entry& e = entries_[next_];
+    // A new command for a controller ends one held for it.
+    const auto replaced = [&](std::size_t k) {
+      const TimedCommand& h = entries_[k].command;
+      return entries_[k].robot == e.robot && h.controller == e.command.controller && h.cmd_vel == e.command.cmd_vel;
+    };
+    held_.erase(std::remove_if(held_.begin(), held_.end(), replaced), held_.end());
+    give(e, t, robots, controls, said);
+    if (t < e.command.until) held_.push_back(next_);
+  }
+  return said;
+}
+
+}  // namespace rigid_body_sim::io

@@ -1,0 +1,62 @@
+// rbsim's controls: the robots' control stage run as the node runs it
+// (core::RobotControl: the controllers' efforts, the drives, the base
+// drivers), their commands from the config's timeline, and each wheeled
+// base's odometry written to a CSV file of its own at its publish_rate, as
+// the node publishes it (docs/rbsim.md).
+#pragma once
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/core/articulations/joint_effort_schedule.h"
+#include "rigid_body_sim/core/articulations/scene.h"
+#include "rigid_body_sim/io/controllers.h"
+#include "rigid_body_sim/io/timeline.h"
+
+namespace rigid_body_sim::tools {
+
+class ControlRun {
+ public:
+  /// The robots of `scene` with their `controls`, each started from where
+  /// `start` has it as the node starts a robot's (position targets where the
+  /// joints are, odometry at zero), commanded by `timeline` (refused as
+  /// Timeline refuses it); with `out_dir`, each drive's odometry goes to
+  /// OUT_DIR/ROBOT.CONTROLLER.odom.csv (a UsageError if it cannot).
+  ControlRun(const core::Scene& scene, const core::SceneState& start, std::vector<io::RobotControls> controls,
+             std::vector<io::TimedCommand> timeline, const std::string& out_dir);
+  ~ControlRun();
+  ControlRun(const ControlRun&) = delete;
+  ControlRun& operator=(const ControlRun&) = delete;
+
+  /// Before the step that starts at t: the timeline's commands due, then
+  /// each robot's loads into `loads` (one per robot).
+  void loadsFor(const core::SceneState& state, double t, std::vector<core::ArticulationLoads>& loads);
+  /// After step `steps` (its end at sim time t): the drives read their
+  /// wheels, and those due write their odometry's row.
+  void observe(const core::SceneState& state, long long steps, double t);
+  /// Each drive's odometry row at sim time t (the start, as the node publishes at start).
+  void write(double t);
+  /// Closes the files; a UsageError if one could not be written whole.
+  void finish();
+
+ private:
+  /// The rows due at step `steps` (every one for steps < 0), at sim time t.
+  void rows(double t, long long steps);
+
+  struct Log {
+    std::size_t robot, drive;
+    long long every;
+    std::FILE* file;
+  };
+  const core::Scene& scene_;
+  std::vector<io::RobotControls> controls_;
+  std::vector<std::string> names_;
+  io::Timeline timeline_;
+  const core::JointEffortSchedule none_;  ///< rbsim gives no timed efforts
+  std::vector<Log> logs_;
+  std::vector<std::string> said_;  ///< the timeline's notes, each said once
+};
+
+}  // namespace rigid_body_sim::tools
