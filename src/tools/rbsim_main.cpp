@@ -249,6 +249,7 @@ int run(const Args& args) {
       return rigid_body_sim::tools::runScene(io::buildScene(config), options, config.timeline);
     }
     refuseControllers(config);
+    rigid_body_sim::tools::noteDevices(config);
     if (!args.out.empty()) throw UsageError("--out: a world of bodies alone has no controllers' outputs to write");
     world.emplace(loadWorld(args, config, &world_config));
     warnAll(world->notes);

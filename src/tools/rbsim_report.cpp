@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
 #include "rigid_body_sim/core/step/diagnostics.h"
@@ -67,6 +68,25 @@ void warnRobotLimited(const std::string& name, const core::SpeedLimits& limits, 
                "m/s, limits.max_angular_speed %s rad/s): its velocities are held to them\n",
                name.c_str(), text(t).c_str(), text(limits.max_linear_speed).c_str(),
                text(limits.max_angular_speed).c_str());
+}
+
+void noteDevices(const io::SimConfig& config) {
+  std::string keys;
+  const auto add = [&keys](bool given, const std::string& key) {
+    if (given) keys += (keys.empty() ? "'" : ", '") + key + "'";
+  };
+  add(config.imu.has_value(), "imu");
+  add(config.odom_noise.has_value(), "odom_noise");
+  add(config.cmd_vel.has_value(), "cmd_vel");
+  for (std::size_t i = 0; i < config.bodies.size(); ++i) {
+    const std::string key = "bodies[" + std::to_string(i) + "].";
+    add(config.bodies[i].imu.has_value(), key + "imu");
+    add(config.bodies[i].odom_noise.has_value(), key + "odom_noise");
+    add(config.bodies[i].cmd_vel.has_value(), key + "cmd_vel");
+  }
+  if (keys.empty()) return;
+  std::fprintf(stderr, "rbsim: note: config keys %s: sim_node runs a body's devices; rbsim does not yet\n",
+               keys.c_str());
 }
 
 }  // namespace rigid_body_sim::tools

@@ -1,9 +1,10 @@
 // What rbsim reports of a run besides the states: energies, momenta, rest,
-// joints, and the steps' warnings. Shared by the world's run
+// joints, the steps' warnings, and the devices it does not run. Shared by the world's run
 // (rbsim_main.cpp) and a scene's, robots and all (rbsim_scene.cpp).
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "rbsim_output.h"
@@ -11,6 +12,7 @@
 #include "rigid_body_sim/core/bodies/model.h"
 #include "rigid_body_sim/core/bodies/state.h"
 #include "rigid_body_sim/core/step/workspace.h"
+#include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::tools {
 
@@ -35,6 +37,11 @@ core::Vec3 bodiesAngularMomentum(const core::Model& model, const core::State& st
 /// limits (a warning, once per body, `limited` remembering) or put back by
 /// the guard (Diverged: the end).
 void checkStep(const core::Model& model, const core::Workspace& ws, double t, std::vector<char>& limited);
+
+/// A world of bodies' devices (`imu`, `odom_noise`, `cmd_vel`, and each
+/// `bodies[i]`'s) are the node's to run: named once on stderr, never
+/// taken silently.
+void noteDevices(const io::SimConfig& config);
 
 /// The warning for a robot held back by the speed limits.
 void warnRobotLimited(const std::string& name, const core::SpeedLimits& limits, double t);

@@ -160,6 +160,12 @@ TEST(Rbsim, RefusesARobotsBadStart) {
   }
   expectUsageError("--urdf " + kBox + " --duration 1 --set 'timeline=[{t: 0, command: [1]}]'",
                    "'timeline': no robot to control");
+  // A body's devices are the node's: named, not taken silently (they were).
+  const Result box = rbsim("--urdf " + kBox + " --set 'cmd_vel={}' --set 'imu={}' --duration 0.01 --quiet");
+  EXPECT_EQ(box.code, 0) << box.err;
+  EXPECT_NE(box.err.find("config keys 'imu', 'cmd_vel': sim_node runs a body's devices; rbsim does not yet"),
+            std::string::npos)
+      << box.err;
   const std::string world = tempPath("robot_world.yaml");
   std::ofstream(world) << "bodies:\n  - {name: swing, urdf: " << RBS_SOURCE_DIR
                        << "/urdf/pendulum.urdf, initial: {angular_velocity: [0, 1, 0]}}\n";
