@@ -313,8 +313,10 @@ SimConfig parseConfigText(const std::string& yaml, const std::string& source, co
     replaced = replaced || s.compare(0, s.find_first_of(".="), "bodies") == 0;
   }
   streamed.bodies = bodies.take();
+  std::optional<double> publish_rate;  // the one node key the simulation's devices read
   if (node_keys != nullptr && load.root.IsMap()) {
     const YAML::Node& root = load.root;  // const: a look-up that adds nothing
+    if (root["publish_rate"]) publish_rate = publishRate(root["publish_rate"], "publish_rate");
     for (const std::string& key : nodeKeys()) {
       if (!root[key]) continue;
       node_keys->push_back(key);
@@ -322,7 +324,9 @@ SimConfig parseConfigText(const std::string& yaml, const std::string& source, co
     }
   }
   try {
-    return parseTree(load.root, base_dir, load.split && !replaced ? &streamed : nullptr);
+    SimConfig config = parseTree(load.root, base_dir, load.split && !replaced ? &streamed : nullptr);
+    if (publish_rate) config.publish_rate = *publish_rate;
+    return config;
   } catch (const YAML::Exception& e) {
     throw ConfigError(std::string("config: ") + e.what());
   }

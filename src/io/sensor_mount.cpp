@@ -305,4 +305,18 @@ RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup
   return out;
 }
 
+core::LinkSensors linkSensors(const RobotSensors& sensors, const core::ArticulationModel& model,
+                              const core::ArticulationState& now, double dt, double odometry_rate) {
+  core::LinkSensors out(dt);
+  for (const RobotImu& m : sensors.imus) out.addImu(m.entry.settings, m.link, model, now);
+  for (const RobotOdometry& o : sensors.odometry) {
+    out.addOdometry(o.entry.noise, {o.link, o.X_LS}, o.entry.rate > 0.0 ? o.entry.rate : odometry_rate);
+  }
+  for (const RobotGnss& g : sensors.gnss) out.addGnss(g.entry.settings, {g.link, g.X_LS}, g.entry.rate);
+  for (const RobotMagnetometer& m : sensors.magnetometers) {
+    out.addMagnetometer(m.entry.settings, {m.link, m.X_LS}, m.entry.rate);
+  }
+  return out;
+}
+
 }  // namespace rigid_body_sim::io

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "rigid_body_sim/core/contacts/contact_report.h"
-#include "rigid_body_sim/ros/link_imus.h"
+#include "rigid_body_sim/core/devices/link_sensors.h"
 #include "rigid_body_sim/ros/state_publisher.h"
 #include "rigid_body_sim/ros/topic_claims.h"
 
@@ -69,7 +69,7 @@ void LinkContacts::publish(const core::Simulation& sim, long long steps, const r
           core::kinematics(robot.model, sim.robots[r], kin_);
           placed = true;
         }
-        const core::LinkState F = core::frameState(linkStateOf(kin_, p.link), p.X_LS);
+        const core::LinkState F = core::frameState(core::linkStateOf(kin_, p.link), p.X_LS);
         const core::Quat q_FW = F.q_WL.conjugate();
         for (core::ContactPairReport& c : mine) {
           for (core::Vec3& q : c.points_W) q = q_FW * (q - F.p_WL);

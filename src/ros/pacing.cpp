@@ -36,7 +36,7 @@ void SimNode::stepOnce() {
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
   sampleSensors();
   range_sensors_->sample(sim_, steps_, stamp());
-  link_odometry_->publish(sim_, steps_, simTime(), stamp());
+  link_sensors_->publish(sim_, steps_, simTime(), stamp());
   sim_.contacts.update(state_, workspace_.contacts);
   link_contacts_->publish(sim_, steps_, stamp());
   joint_wrenches_->publish(sim_, robot_loads_, steps_, stamp());

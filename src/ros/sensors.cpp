@@ -1,6 +1,6 @@
 // The bodies' sensors: each IMU (core::Imu, docs/physics.md §10.1) sampled
 // at its rate of sim time and published as sensor_msgs/Imu (REP 145).
-#include "rigid_body_sim/ros/link_imus.h"
+#include "rigid_body_sim/ros/sensor_messages.h"
 #include "rigid_body_sim/ros/sim_node.h"
 
 namespace rigid_body_sim::node {
@@ -14,7 +14,6 @@ void SimNode::sampleSensors() {
     if (!ros::ok() || !p.imu_pub.listened()) continue;  // sampled all the same: the noise stays seeded
     p.imu_pub.publish(imuMessage(r, p.imu->settings(), p.imu_frame, stamp()));
   }
-  link_imus_->sample(sim_, steps_, stamp());
 }
 
 }  // namespace rigid_body_sim::node

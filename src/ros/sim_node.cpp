@@ -167,8 +167,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
                            settings_.publish_rate, [this](std::size_t r) { return commands_->jointStateRate(r); });
   checkRobotFrames(robot_publisher_->robots(), settings_.world_frame, ports_.frames());
   range_sensors_.emplace(nh_, model_.dt());
-  link_imus_.emplace(nh_, model_.dt());
-  link_odometry_.emplace(nh_, model_.dt(), settings_.publish_rate, settings_.world_frame);
+  link_sensors_.emplace(nh_, model_.dt(), settings_.publish_rate, settings_.world_frame);
   link_contacts_.emplace(nh_, model_.dt(), settings_.world_frame);
   joint_wrenches_.emplace(nh_, model_.dt());
   for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
@@ -176,8 +175,7 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     const std::string prefix = several ? name + "/" : "";
     const std::string& frame_prefix = robot_publisher_->robots()[r].frame_prefix;
     range_sensors_->addRobot(name, prefix, frame_prefix, start_sensors_[r].lidars, start_sensors_[r].cameras);
-    link_imus_->addRobot(sim_, r, prefix, frame_prefix, start_sensors_[r].imus);
-    link_odometry_->addRobot(name, prefix, frame_prefix, start_sensors_[r]);
+    link_sensors_->addRobot(sim_, r, prefix, frame_prefix, start_sensors_[r]);
     link_contacts_->addRobot(name, prefix, frame_prefix, start_sensors_[r].contact_sensors);
     joint_wrenches_->addRobot(name, prefix, frame_prefix, start_sensors_[r].force_torques);
     leaveBase(r);
@@ -229,8 +227,7 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   robot_publisher_->addRobot(sim_.scene.robots()[r], control_prefix, hz, spawn.frame_prefix);
   commands_->addRobot(sim_, r, control_prefix, spawn.frame_prefix, std::move(controls));
   range_sensors_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.lidars, spawn.sensors.cameras);
-  link_imus_->addRobot(sim_, r, prefix, spawn.frame_prefix, spawn.sensors.imus);
-  link_odometry_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors);
+  link_sensors_->addRobot(sim_, r, prefix, spawn.frame_prefix, spawn.sensors);
   link_contacts_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.contact_sensors);
   joint_wrenches_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.force_torques);
   leaveBase(r);
@@ -239,7 +236,7 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
 void SimNode::leaveBase(std::size_t r) {
   // A frame has one parent: a drive's or a base plugin's odom -> base takes world -> base's place.
   std::vector<std::string> frames = commands_->odometryFrames(r);
-  for (std::string& frame : link_odometry_->tfFrames(r)) frames.push_back(std::move(frame));
+  for (std::string& frame : link_sensors_->tfFrames(r)) frames.push_back(std::move(frame));
   robot_publisher_->leaveBase(r, frames);
 }
 
@@ -247,8 +244,7 @@ void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {
   robot_publisher_->removeRobot(r);
   commands_->removeRobot(r);
   range_sensors_->removeRobot(r);
-  link_imus_->removeRobot(r);
-  link_odometry_->removeRobot(r);
+  link_sensors_->removeRobot(r);
   link_contacts_->removeRobot(r);
   joint_wrenches_->removeRobot(r);
   robots_speed_limited_.erase(name);

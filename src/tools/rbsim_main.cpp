@@ -68,7 +68,9 @@ constexpr const char* kUsage =
     "  --out DIR          a robot's controllers' outputs: each wheeled-base controller's\n"
     "                     odometry in DIR/ROBOT.CONTROLLER.odom.csv at its publish_rate\n"
     "                     (t,x,y,heading,linear,lateral,angular); the controllers run\n"
-    "                     as sim_node runs them, commanded by the config's timeline\n"
+    "                     as sim_node runs them, commanded by the config's timeline;\n"
+    "                     each IMU's, odometry's, GPS's and magnetometer's samples in\n"
+    "                     DIR/ROBOT.TOPIC.csv, as sim_node publishes them (docs/rbsim.md)\n"
     "  --quiet            no summary on stderr\n";
 
 using rigid_body_sim::tools::checkStep;
@@ -182,9 +184,11 @@ io::SimConfig readConfig(const Args& args) {
   const std::string config_dir = std::filesystem::absolute(args.config).parent_path().string();
   std::vector<std::string> node_keys;
   io::SimConfig config = io::loadConfigFile(args.config, overrides, config_dir, &node_keys);
-  if (!node_keys.empty()) {
-    std::string names;
-    for (const std::string& k : node_keys) names += (names.empty() ? "'" : ", '") + k + "'";
+  std::string names;  // publish_rate is read: the rate of odometry with none of its own
+  for (const std::string& k : node_keys) {
+    if (k != "publish_rate") names += (names.empty() ? "'" : ", '") + k + "'";
+  }
+  if (!names.empty()) {
     std::fprintf(stderr, "rbsim: note: config keys %s are sim_node's own (its loop and topics): not used here\n",
                  names.c_str());
   }
@@ -229,13 +233,14 @@ void checkDuration(const Args& args, const io::SimConfig& config) {
 }
 
 int run(const Args& args) {
-  const rigid_body_sim::tools::RunOptions options{args.duration, args.csv, args.every, args.quiet, args.out};
+  rigid_body_sim::tools::RunOptions options{args.duration, args.csv, args.every, args.quiet, args.out};
   if (!args.urdf.empty()) {  // a URDF with moving joints is a robot: a scene of one (rbsim_scene.cpp)
     const std::string xml = io::readInput<io::UrdfError>(args.urdf, io::InputCaps::kUrdfBytes, "URDF");
     if (io::describesRobot(xml, args.urdf)) {
       const std::string dir = std::filesystem::path(args.urdf).parent_path().string();
       const io::SimConfig config = readConfig(args);
       checkDuration(args, config);
+      options.publish_rate = config.publish_rate;
       const auto urdf = [&] { return io::UrdfText{xml, args.urdf, dir}; };
       return rigid_body_sim::tools::runScene(io::loadScene(config, urdf), options, config.timeline);
     }
@@ -246,6 +251,7 @@ int run(const Args& args) {
     const io::SimConfig config = readConfig(args);
     checkDuration(args, config);
     if (args.urdf.empty() && !config.bodies.empty() && io::listsRobots(config)) {  // rbsim_scene.cpp
+      options.publish_rate = config.publish_rate;
       return rigid_body_sim::tools::runScene(io::buildScene(config), options, config.timeline);
     }
     refuseControllers(config);

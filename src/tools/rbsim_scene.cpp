@@ -14,6 +14,7 @@
 #include "rbsim_loop.h"
 #include "rbsim_output.h"
 #include "rbsim_report.h"
+#include "rbsim_sensors.h"
 #include "rigid_body_sim/core/contacts/contact.h"
 #include "rigid_body_sim/core/step/diagnostics.h"
 #include "rigid_body_sim/io/scene_loader.h"
@@ -69,10 +70,11 @@ int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::Ti
   }
   for (std::size_t r = 0; r < setup.sensors.size() && r < robots.size(); ++r) {  // said, not silently dropped
     const io::RobotSensors& d = setup.sensors[r];
-    const std::size_t count = d.imus.size() + d.lidars.size() + d.cameras.size() + d.odometry.size() + d.gnss.size() +
-                              d.magnetometers.size() + d.contact_sensors.size() + d.force_torques.size();
+    const std::size_t count = d.lidars.size() + d.cameras.size() + d.contact_sensors.size() + d.force_torques.size();
     if (count > 0) {
-      std::fprintf(stderr, "rbsim: note: robot '%s' has %zu sensors (sim_node samples them; rbsim does not yet)\n",
+      std::fprintf(stderr,
+                   "rbsim: note: robot '%s' has %zu lidars, depth cameras, contact or force-torque sensors (sim_node "
+                   "samples them; rbsim does not yet)\n",
                    robots[r].name.c_str(), count);
     }
   }
@@ -113,6 +115,7 @@ int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::Ti
   core::SceneLoads loads;
   ControlRun controls(scene, state, std::move(setup.controls), std::move(timeline), options.out_dir);
   controls.write(0.0);
+  SensorRun sensors(scene, state, setup.sensors, options.publish_rate, options.out_dir);
   std::vector<char> limited(model.bodyCount(), 0);  // free bodies the speed limits held back, warned once each
   std::vector<char> robot_limited(robots.size(), 0);
   double max_penetration = 0.0;  // m, over the states at the start of every step
@@ -122,6 +125,7 @@ int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::Ti
         controls.loadsFor(state, static_cast<double>(k - 1) * dt, loads.robots);  // as the node's clock: steps × dt
         core::stepScene(scene, state, loads, ws);
         controls.observe(state, k, static_cast<double>(k) * dt);
+        sensors.sample(state, k, static_cast<double>(k) * dt);
         max_penetration = std::max(max_penetration, ws.bodies.deepest_penetration);
         if (!ws.bodies.speed_limited.empty() || !ws.bodies.diverged.empty()) {
           checkStep(model, ws.bodies, k * dt, limited);
@@ -184,6 +188,7 @@ int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::Ti
   out["speed_limited"] = limited_json;
   if (csv) csv->finish();
   controls.finish();
+  sensors.finish();
   JsonLine line(out, "bodies");
   for (const Json& entry : entries) line.element(entry);
   line.finish();

@@ -15,7 +15,10 @@ struct RunOptions {
   std::string csv;        ///< "" for none
   long long every = 1;    ///< one CSV row every this many steps
   bool quiet = false;
-  std::string out_dir;  ///< "" for none: each drive's odometry, ROBOT.CONTROLLER.odom.csv
+  /// "" for none: each drive's odometry, ROBOT.CONTROLLER.odom.csv, and
+  /// each link sensor's samples, ROBOT.TOPIC.csv
+  std::string out_dir;
+  double publish_rate = 100.0;  ///< Hz: the config's (the node's) publish_rate, an odometry's with no rate of its own
 };
 
 /// Runs `setup` (io::buildScene for a config's bodies list, io::loadScene
@@ -26,7 +29,8 @@ struct RunOptions {
 /// per robot joint (ROBOT/JOINT), filled on its robot's row; a robot alone
 /// has no name column and its joints' own names.
 /// The robots' controllers run as the node runs them, commanded by
-/// `timeline` (rbsim_controls.h).
+/// `timeline` (rbsim_controls.h), and their link sensors are sampled
+/// (rbsim_sensors.h).
 int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::TimedCommand> timeline = {});
 
 }  // namespace rigid_body_sim::tools

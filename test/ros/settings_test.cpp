@@ -90,6 +90,21 @@ TEST(Settings, TheNodeKeysRbsimSetsAsideAreTheNodesParameters) {
   EXPECT_FALSE(rigid_body_sim::io::isNodeKey("dt"));
 }
 
+// rbsim's odometry with no rate of its own reports at the node's
+// ~publish_rate: its default is the node's, and a file's value is read.
+TEST(Settings, RbsimReadsTheNodesPublishRateWithTheNodesDefault) {
+  EXPECT_EQ(rigid_body_sim::io::SimConfig{}.publish_rate, rigid_body_sim::node::NodeSettings{}.publish_rate);
+  std::vector<std::string> set_aside;
+  EXPECT_EQ(rigid_body_sim::io::parseConfigText("publish_rate: 40\n", "config", {}, "", &set_aside).publish_rate, 40.0);
+  EXPECT_EQ(set_aside, std::vector<std::string>{"publish_rate"});
+  try {
+    rigid_body_sim::io::parseConfigText("publish_rate: -1\n", "config", {}, "", &set_aside);
+    ADD_FAILURE() << "a negative publish_rate was taken";
+  } catch (const rigid_body_sim::io::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("publish_rate"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Settings, TheUrdfKeyIsTheLoadersDefault) {
   const YAML::Node root = YAML::LoadFile(std::string(RBS_SOURCE_DIR) + "/config/default.yaml");
   ASSERT_TRUE(root["urdf"].IsMap());

@@ -1,9 +1,12 @@
 // A config's timeline in the node (timeline.test): the shipped scenario run
-// in lock-step (paused, then ~step) publishes on /base_controller/odom what
-// rbsim writes for the same URDF and config, to the last bit (issue 57).
+// in lock-step (paused, then ~step) publishes what rbsim writes for the
+// same URDF and config, to the last bit (issue 57): the controller's
+// odometry on /base_controller/odom, the IMU's samples on /imu, the noisy
+// odometry on /odom and its truth on /ground_truth.
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <sensor_msgs/Imu.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -22,18 +25,28 @@ namespace {
 
 using namespace rbs_test;
 
-/// rbsim's odometry rows by their step (t / dt), each t,x,y,heading,linear,lateral,angular.
-std::map<long long, std::vector<double>> rbsimOdometry() {
-  const std::string out = rigid_body_sim::test::scratch().path().string();
-  const std::string src = RBS_SOURCE_DIR;
-  const std::string cmd = std::string(RBS_RBSIM) + " --urdf " + src + "/urdf/diff_drive.urdf --config " + src +
-                          "/config/diff_drive_timeline.yaml --duration 3 --quiet --out " + out +
-                          " 2>/dev/null >/dev/null";
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  std::ifstream in(out + "/diff_drive.base_controller.odom.csv");
+using Rows = std::map<long long, std::vector<double>>;
+
+/// rbsim's run of the scenario, once, into the scratch folder.
+const std::string& rbsimOut() {
+  static const std::string out = [] {
+    const std::string dir = rigid_body_sim::test::scratch().path().string();
+    const std::string src = RBS_SOURCE_DIR;
+    const std::string cmd = std::string(RBS_RBSIM) + " --urdf " + src + "/urdf/diff_drive.urdf --config " + src +
+                            "/config/diff_drive_timeline.yaml --duration 3 --quiet --out " + dir +
+                            " 2>/dev/null >/dev/null";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    return dir;
+  }();
+  return out;
+}
+
+/// The rows of rbsim's file `name` by their step (t / dt).
+Rows rbsimRows(const std::string& name) {
+  std::ifstream in(rbsimOut() + "/" + name);
   std::string line;
   std::getline(in, line);
-  std::map<long long, std::vector<double>> rows;
+  Rows rows;
   while (std::getline(in, line)) {
     std::vector<double> x;
     std::istringstream cells(line);
@@ -43,31 +56,75 @@ std::map<long long, std::vector<double>> rbsimOdometry() {
   return rows;
 }
 
-TEST(Timeline, TheNodeInLockStepPublishesRbsimsOdometryToTheLastBit) {
-  ros::NodeHandle nh;
-  std::vector<nav_msgs::Odometry> odom;
-  ros::Subscriber sub = nh.subscribe<nav_msgs::Odometry>(
-      "/base_controller/odom", 1000, [&](const nav_msgs::Odometry::ConstPtr& m) { odom.push_back(*m); });
-  ros::ServiceClient step = nh.serviceClient<rigid_body_sim::Step>("/sim_node/step");
-  ASSERT_TRUE(step.waitForExistence(ros::Duration(30.0)));
-  ASSERT_TRUE(spinUntil([&] { return sub.getNumPublishers() > 0; }, 30.0));
-  // 3 s in batches of 0.3 s, each batch's 15 messages in before the next.
-  for (int batch = 1; batch <= 10; ++batch) {
-    rigid_body_sim::Step srv;
-    srv.request.steps = 300;
-    ASSERT_TRUE(step.call(srv) && srv.response.success) << srv.response.message;
-    ASSERT_TRUE(
-        spinUntil([&] { return !odom.empty() && odom.back().header.stamp.toSec() >= 0.3 * batch - 1e-9; }, 30.0))
-        << "batch " << batch;
+/// The row of `rows` at a message's stamp.
+const std::vector<double>& rowAt(const Rows& rows, const ros::Time& stamp) {
+  static const std::vector<double> none;
+  const auto it = rows.find(std::llround(stamp.toSec() / kDt));
+  EXPECT_NE(it, rows.end()) << "no rbsim row at t " << stamp.toSec();
+  return it == rows.end() ? none : it->second;
+}
+
+/// An odometry message against a sensor file's row t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz.
+void expectOdometryRow(const nav_msgs::Odometry& m, const std::vector<double>& r) {
+  ASSERT_EQ(r.size(), 14u);
+  const geometry_msgs::Pose& p = m.pose.pose;
+  const geometry_msgs::Twist& v = m.twist.twist;
+  const std::vector<double> got{p.position.x,    p.position.y,    p.position.z, p.orientation.x, p.orientation.y,
+                                p.orientation.z, p.orientation.w, v.linear.x,   v.linear.y,      v.linear.z,
+                                v.angular.x,     v.angular.y,     v.angular.z};
+  for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], r[i + 1]) << "t " << r[0] << " column " << i + 1;
+}
+
+class Timeline : public ::testing::Test {
+ protected:
+  /// 3 s in batches of 0.04 s, each batch's messages in before the next
+  /// (four of /odom's: its publisher queues 10; and a whole number of the
+  /// controller's periods, since the node publishes its odometry after a
+  /// ~step as well).
+  void run() {
+    ros::ServiceClient step = nh_.serviceClient<rigid_body_sim::Step>("/sim_node/step");
+    ASSERT_TRUE(step.waitForExistence(ros::Duration(30.0)));
+    ASSERT_TRUE(spinUntil(
+        [&] {
+          return drive_.getNumPublishers() > 0 && imu_.getNumPublishers() > 0 && noisy_.getNumPublishers() > 0 &&
+                 truth_.getNumPublishers() > 0;
+        },
+        30.0));
+    for (int batch = 1; batch <= 75; ++batch) {
+      rigid_body_sim::Step srv;
+      srv.request.steps = 40;
+      ASSERT_TRUE(step.call(srv) && srv.response.success) << srv.response.message;
+      const double t = 0.04 * batch - 1e-9;
+      ASSERT_TRUE(spinUntil(
+          [&] {
+            return !odom.empty() && odom.back().header.stamp.toSec() >= t && !imus.empty() &&
+                   imus.back().header.stamp.toSec() >= t && !truths.empty() &&
+                   truths.back().header.stamp.toSec() >= t && !noisy.empty() && noisy.back().header.stamp.toSec() >= t;
+          },
+          30.0))
+          << "batch " << batch;
+    }
   }
-  const std::map<long long, std::vector<double>> rows = rbsimOdometry();
+
+  ros::NodeHandle nh_;
+  std::vector<nav_msgs::Odometry> odom, noisy, truths;
+  std::vector<sensor_msgs::Imu> imus;
+  template <class M>
+  ros::Subscriber into(const std::string& topic, std::vector<M>& out) {
+    return nh_.subscribe<M>(topic, 1000, [&out](const typename M::ConstPtr& m) { out.push_back(*m); });
+  }
+  ros::Subscriber drive_ = into("/base_controller/odom", odom), imu_ = into("/imu", imus),
+                  noisy_ = into("/odom", noisy), truth_ = into("/ground_truth", truths);
+};
+
+TEST_F(Timeline, TheNodeInLockStepPublishesRbsimsOutputsToTheLastBit) {
+  run();
+  // The controller's odometry: t,x,y,heading,linear,lateral,angular every 20 steps.
+  const Rows rows = rbsimRows("diff_drive.base_controller.odom.csv");
   ASSERT_EQ(rows.size(), 151u);
-  int compared = 0;
   for (const nav_msgs::Odometry& m : odom) {
-    const long long k = std::llround(m.header.stamp.toSec() / kDt);
-    const auto it = rows.find(k);
-    ASSERT_NE(it, rows.end()) << "no rbsim row at step " << k;
-    const std::vector<double>& r = it->second;
+    const std::vector<double>& r = rowAt(rows, m.header.stamp);
+    ASSERT_EQ(r.size(), 7u);
     const Eigen::Quaterniond q(Eigen::AngleAxisd(r[3], Eigen::Vector3d::UnitZ()));
     EXPECT_EQ(m.pose.pose.position.x, r[1]) << "t " << r[0];
     EXPECT_EQ(m.pose.pose.position.y, r[2]) << "t " << r[0];
@@ -76,11 +133,34 @@ TEST(Timeline, TheNodeInLockStepPublishesRbsimsOdometryToTheLastBit) {
     EXPECT_EQ(m.twist.twist.linear.x, r[4]) << "t " << r[0];
     EXPECT_EQ(m.twist.twist.linear.y, r[5]) << "t " << r[0];
     EXPECT_EQ(m.twist.twist.angular.z, r[6]) << "t " << r[0];
-    ++compared;
   }
-  EXPECT_GE(compared, 150);  // every 20 steps (the one at start may come before the subscription)
-  // And it moved: 0.5 m/s on an arc for 2 s.
-  EXPECT_GT(odom.back().pose.pose.position.x, 0.8);
+  EXPECT_GE(odom.size(), 150u);  // every 20 steps (the one at start may come before the subscription)
+  EXPECT_GT(odom.back().pose.pose.position.x, 0.8);  // and it moved: 0.5 m/s on an arc for 2 s
+
+  // The IMU, every 10 steps from the first period's end: t,qx,qy,qz,qw,wx,wy,wz,ax,ay,az.
+  const Rows imu_rows = rbsimRows("diff_drive.imu.csv");
+  ASSERT_EQ(imu_rows.size(), 300u);
+  EXPECT_GE(imus.size(), 299u);  // the first may come before the node counts the subscriber
+  for (const sensor_msgs::Imu& m : imus) {
+    const std::vector<double>& r = rowAt(imu_rows, m.header.stamp);
+    ASSERT_EQ(r.size(), 11u);
+    const std::vector<double> got{m.orientation.x,        m.orientation.y,         m.orientation.z,
+                                  m.orientation.w,        m.angular_velocity.x,    m.angular_velocity.y,
+                                  m.angular_velocity.z,   m.linear_acceleration.x, m.linear_acceleration.y,
+                                  m.linear_acceleration.z};
+    for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], r[i + 1]) << "t " << r[0] << " column " << i + 1;
+  }
+  // The noisy odometry and its truth, every 10 steps (publish_rate 100 Hz).
+  const Rows noisy_rows = rbsimRows("diff_drive.odom.csv"), truth_rows = rbsimRows("diff_drive.ground_truth.csv");
+  ASSERT_EQ(noisy_rows.size(), 300u);
+  ASSERT_EQ(truth_rows.size(), 300u);
+  EXPECT_GE(noisy.size(), 299u);
+  EXPECT_GE(truths.size(), 299u);
+  for (const nav_msgs::Odometry& m : noisy) expectOdometryRow(m, rowAt(noisy_rows, m.header.stamp));
+  for (const nav_msgs::Odometry& m : truths) expectOdometryRow(m, rowAt(truth_rows, m.header.stamp));
+  // The noise is there: the report is not the truth.
+  ASSERT_FALSE(noisy.empty());
+  EXPECT_NE(noisy.back().pose.pose.position.x, truths.back().pose.pose.position.x);
 }
 
 }  // namespace

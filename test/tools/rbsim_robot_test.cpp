@@ -183,8 +183,7 @@ TEST(Rbsim, RunsTheNodesControllersCommandedByATimeline) {
             "/config/arm2.yaml --set 'timeline=[{t: 0.5, controller: shoulder_position_controller, "
             "command: [-0.5]}]' --duration 10 --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.err.find("config keys 'rate', 'realtime_factor', 'publish_rate' are sim_node's own"), std::string::npos)
-      << r.err;
+  EXPECT_NE(r.err.find("config keys 'rate', 'realtime_factor' are sim_node's own"), std::string::npos) << r.err;
   const YAML::Node joints = YAML::Load(r.out)["final"]["joints"];
   EXPECT_NEAR(joints["shoulder"]["position"].as<double>(), -0.5, 2e-4);  // 1.4e-5 measured
   EXPECT_NEAR(joints["elbow"]["position"].as<double>(), 0.0, 5e-4);      // 9e-5 measured
@@ -197,12 +196,14 @@ TEST(Rbsim, RunsTheNodesControllersCommandedByATimeline) {
       0.1);
 }
 
-/// The rows of a drive's odometry file, each t,x,y,heading,linear,lateral,angular.
-std::vector<std::vector<double>> odometryRows(const std::string& path) {
+/// The rows of one of --out's files after its header, which is `header` if given.
+std::vector<std::vector<double>> csvRows(const std::string& path, const std::string& header = "") {
   std::istringstream in(slurp(path));
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "t,x,y,heading,linear,lateral,angular") << path;
+  if (!header.empty()) {
+    EXPECT_EQ(line, header) << path;
+  }
   std::vector<std::vector<double>> rows;
   while (std::getline(in, line)) {
     std::vector<double> x;
@@ -226,8 +227,8 @@ TEST(Rbsim, RunsATimelineScenarioAndWritesItsOdometry) {
   const std::string a = tempPath(""), file = "/diff_drive.base_controller.odom.csv";
   const Result r = rbsim(cmd + a);
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.err.find("config keys 'publish_rate', 'paused' are sim_node's own"), std::string::npos) << r.err;
-  const std::vector<std::vector<double>> rows = odometryRows(a + file);
+  EXPECT_NE(r.err.find("config keys 'paused' are sim_node's own"), std::string::npos) << r.err;
+  const std::vector<std::vector<double>> rows = csvRows(a + file, "t,x,y,heading,linear,lateral,angular");
   ASSERT_EQ(rows.size(), 151u);  // 0, 0.02, ..., 3
   const std::vector<double>& at2 = rows[100];
   EXPECT_DOUBLE_EQ(at2[0], 2.0);
@@ -238,11 +239,32 @@ TEST(Rbsim, RunsATimelineScenarioAndWritesItsOdometry) {
   EXPECT_NEAR(rows.back()[6], 0.0, 1e-9);
   const std::vector<double> truth = seq(YAML::Load(r.out)["final"]["position"]);
   EXPECT_NEAR(std::hypot(truth[0] - rows.back()[1], truth[1] - rows.back()[2]), 0.0, 0.01);
+  // Its IMU at 100 Hz from the first period's end: at rest at the end, the
+  // mean of its last 0.5 s reads g up (σ 0.01 m/s^2 a sample: 0.0014 for the mean).
+  const std::vector<std::vector<double>> imu_rows =
+      csvRows(a + "/diff_drive.imu.csv", "t,qx,qy,qz,qw,wx,wy,wz,ax,ay,az");
+  ASSERT_EQ(imu_rows.size(), 300u);
+  EXPECT_DOUBLE_EQ(imu_rows.front()[0], 0.01);
+  double az = 0.0;
+  for (std::size_t i = 250; i < 300; ++i) az += imu_rows[i][10] / 50.0;
+  EXPECT_NEAR(az, 9.81, 0.006);
+  // The noisy odometry and its truth, at publish_rate, the truth as the JSON's final state.
+  const std::string odometry = "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz";
+  const std::vector<std::vector<double>> noisy = csvRows(a + "/diff_drive.odom.csv", odometry),
+                                         exact = csvRows(a + "/diff_drive.ground_truth.csv", odometry);
+  ASSERT_EQ(noisy.size(), 300u);
+  ASSERT_EQ(exact.size(), 300u);
+  EXPECT_EQ(exact.back()[1], truth[0]);
+  EXPECT_EQ(exact.back()[2], truth[1]);
+  EXPECT_NE(noisy.back()[1], truth[0]);
+  EXPECT_NEAR(noisy.back()[1], truth[0], 0.05);  // σ 0.01 m
   // The same bits again.
   const std::string b = tempPath("again");
   ASSERT_EQ(std::system(("mkdir -p " + b).c_str()), 0);
   ASSERT_EQ(rbsim(cmd + b).code, 0);
-  EXPECT_EQ(slurp(a + file), slurp(b + file));
+  for (const std::string& f : {file, std::string("/diff_drive.imu.csv"), std::string("/diff_drive.odom.csv")}) {
+    EXPECT_EQ(slurp(a + f), slurp(b + f)) << f;
+  }
 }
 
 // The shipped world of robots and bodies: each entry in the config's

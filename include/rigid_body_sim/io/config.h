@@ -195,6 +195,10 @@ struct SimConfig {
   /// The config file's folder (parseConfig's base_dir): package:// URDFs are
   /// also looked for above it, so a package's own worlds load without ROS.
   std::string base_dir;
+  /// `publish_rate` (Hz), sim_node's ~publish_rate, read where the node's
+  /// keys are set aside (rbsim): an odometry with no rate of its own
+  /// reports at it in both. Its default is the node's.
+  double publish_rate = 100.0;
 };
 
 /// Parses a config tree. Missing keys keep the defaults documented in
@@ -234,7 +238,8 @@ SimConfig parseConfigWithBodies(const YAML::Node& root, std::size_t count,
 /// whole as a YAML tree (about 7 KB an entry: 70 MB for a world of 10,000
 /// bodies, bench/HISTORY.md). ConfigError as parseConfig and loadYamlText.
 /// With `node_keys`, the node's own top-level keys (node_keys.h) are set
-/// aside, their names appended to it, instead of refused as unknown.
+/// aside, their names appended to it, instead of refused as unknown;
+/// `publish_rate` among them is read (SimConfig::publish_rate).
 SimConfig parseConfigText(const std::string& yaml, const std::string& source,
                           const std::vector<std::string>& overrides = {}, const std::string& base_dir = "",
                           std::vector<std::string>* node_keys = nullptr);

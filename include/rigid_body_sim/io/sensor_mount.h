@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rigid_body_sim/core/articulations/articulation.h"
+#include "rigid_body_sim/core/devices/link_sensors.h"
 #include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::io {
@@ -98,5 +99,12 @@ struct DeviceMemory {
 /// kRaysKeepingRealTime rays a second.
 RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup, const core::ArticulationModel& model,
                           double dt, DeviceMemory& memory);
+
+/// The core's set of `sensors`' IMUs, odometry, receivers and
+/// magnetometers on a robot of `model` at `now`, in steps of `dt`: each at
+/// its entry's rate (an odometry's 0: `odometry_rate`, the node's
+/// ~publish_rate; a receiver's or magnetometer's 0: every step).
+core::LinkSensors linkSensors(const RobotSensors& sensors, const core::ArticulationModel& model,
+                              const core::ArticulationState& now, double dt, double odometry_rate);
 
 }  // namespace rigid_body_sim::io

@@ -42,8 +42,7 @@
 #include "rigid_body_sim/ros/joint_requests.h"
 #include "rigid_body_sim/ros/joint_wrenches.h"
 #include "rigid_body_sim/ros/link_contacts.h"
-#include "rigid_body_sim/ros/link_imus.h"
-#include "rigid_body_sim/ros/link_odometry.h"
+#include "rigid_body_sim/ros/link_sensor_ports.h"
 #include "rigid_body_sim/ros/load_requests.h"
 #include "rigid_body_sim/ros/markers.h"
 #include "rigid_body_sim/ros/pacer.h"
@@ -133,7 +132,7 @@ class SimNode {
   const NodeSettings& settings_ = params_.node;  ///< ~physics changes params_.node
   /// The robots' controllers as the world was loaded, until commands_ takes them.
   std::vector<io::RobotControls> start_controls_;
-  /// The robots' sensors as the world was loaded, until range_sensors_ and link_imus_ take them.
+  /// The robots' sensors as the world was loaded, until range_sensors_ and link_sensors_ take them.
   std::vector<io::RobotSensors> start_sensors_;
   /// The model and every table in its bodies' order: a world edit goes through it once.
   core::Simulation sim_;
@@ -145,8 +144,7 @@ class SimNode {
   std::vector<core::ArticulationLoads> robot_loads_;  ///< per robot, its controllers' efforts
   std::optional<RobotCommands> commands_;             ///< the robots' controllers and their topics
   std::optional<RangeSensors> range_sensors_;         ///< the robots' lidars and depth cameras
-  std::optional<LinkImus> link_imus_;                 ///< the IMUs on robots' links
-  std::optional<LinkOdometry> link_odometry_;         ///< the odometry of robots' links (odom_noise, p3d)
+  std::optional<LinkSensorPorts> link_sensors_;       ///< the IMUs, odometry, GNSS and magnetometers on robots' links
   std::optional<LinkContacts> link_contacts_;         ///< the contact sensors on robots' links (bumpers)
   std::optional<JointWrenches> joint_wrenches_;       ///< the force-torque sensors on robots' joints
 
@@ -179,18 +177,17 @@ class SimNode {
          rebaseClock();
          commands_->restart(sim_);  // nothing drives a reset robot back (gazebo_ros_pkgs #1311)
          range_sensors_->restart();
-         for (std::size_t r = 0; r < sim_.robots.size(); ++r) link_imus_->restart(sim_, r);
-         link_odometry_->restart();
+         link_sensors_->restart(sim_);
          joint_wrenches_->restart();
        }}};
   /// set_model_configuration, get_joint_properties.
   JointRequests joint_requests_{sim_, time_, [this](std::size_t r) {
                                   commands_->restart(sim_, r);
-                                  link_imus_->restart(sim_, r);
+                                  link_sensors_->restartImus(sim_, r);
                                   publish();
                                 }};
   PortContext port_context_;  ///< what opening a body's ports needs of the node (read only once made)
-  /// Samples the IMUs due at this step, the bodies' and the robots' links', and publishes them (sensors.cpp).
+  /// Samples the bodies' IMUs due at this step and publishes them (sensors.cpp).
   void sampleSensors();
   const double dt_ = model_.dt();                           ///< for the spawn thread (no edit changes it)
   const core::SpeedLimits spawn_limits_ = model_.limits();  ///< for the spawn thread (no edit changes them)

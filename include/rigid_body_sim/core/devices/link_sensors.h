@@ -1,0 +1,132 @@
+// A robot's sensors that read its links' motion (docs/physics.md §10.11):
+// IMUs, odometry (exact, or with its noise), GNSS receivers and
+// magnetometers, each at a mount on a moving link, each sampled at its
+// rate of sim time from the state a step left. One robot's set is one
+// object: the node turns its fresh samples into messages, rbsim into rows
+// of a file, and both get the same numbers. ROS-free.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "rigid_body_sim/core/articulations/articulation_dynamics.h"
+#include "rigid_body_sim/core/devices/earth_sensors.h"
+#include "rigid_body_sim/core/devices/imu.h"
+#include "rigid_body_sim/core/devices/odom_noise.h"
+
+namespace rigid_body_sim::core {
+
+/// When a device samples: after every `every()` steps of the world's (its
+/// rate of sim time rounded to whole steps, at least one), counted on the
+/// world's step count, and when it last did.
+class SampleClock {
+ public:
+  /// `rate` Hz of sim time (0: every step), with steps of `dt` s.
+  SampleClock(double rate, double dt);
+  long long every() const { return every_; }
+  /// Hz of sim time it samples at: 1 / (every × dt).
+  double rate() const { return 1.0 / (static_cast<double>(every_) * dt_); }
+  /// Whether a sample is due after the world's step `steps` (1 the first).
+  bool due(long long steps) const { return steps % every_ == 0; }
+  /// s of sim time since its last sample (the first: one period), and t
+  /// becomes the last.
+  double elapsed(double t);
+
+ private:
+  long long every_;
+  double dt_;
+  double last_ = -1.0;  ///< s of sim time; < 0: none yet
+};
+
+/// Link `link`'s pose and twist in `kin` as a LinkState (the world's axes).
+LinkState linkStateOf(const ArticulationKinematics& kin, int link);
+
+/// A frame on a robot's moving link: link `link` (index in the model) and
+/// the frame at X_LS in it.
+struct LinkMount {
+  int link = 0;
+  Pose X_LS;
+};
+
+/// An IMU on a link: its reading of the period that ended at the last sample.
+struct ImuChannel {
+  Imu imu;
+  int link = 0;  ///< the sensor frame is imu.settings().X_LS in it
+  SampleClock clock;
+  ImuReading reading;
+};
+
+/// A link's odometry (a robot's `odom_noise`, gazebo_ros_p3d, a base
+/// plugin's): the report, with its noise if it has one, and the truth.
+struct OdometryChannel {
+  std::optional<OdomNoise> noise;  ///< none: the report is the truth
+  LinkMount at;
+  SampleClock clock;
+  OdomReport report, truth;
+};
+
+struct GnssChannel {
+  Gnss gnss;
+  LinkMount at;
+  SampleClock clock;
+  GnssFix fix;
+};
+
+struct MagnetometerChannel {
+  Magnetometer magnetometer;
+  LinkMount at;
+  SampleClock clock;
+  Vec3 field_S = Vec3::Zero();  ///< in the sensor's axes
+};
+
+/// One robot's link sensors, in the order they were added (each kind its
+/// own list), and which of them the last sample() took.
+class LinkSensors {
+ public:
+  /// Steps of `dt` s.
+  explicit LinkSensors(double dt) : dt_(dt) {}
+
+  /// An IMU on link `link` of `model` (its pose settings.X_LS there), its
+  /// first period starting from `now`.
+  void addImu(const ImuSettings& settings, int link, const ArticulationModel& model, const ArticulationState& now);
+  /// Odometry at `at`, `rate` Hz; with `noise`, its report carries it.
+  void addOdometry(const std::optional<OdomNoiseSettings>& noise, const LinkMount& at, double rate);
+  void addGnss(const GnssSettings& settings, const LinkMount& at, double rate);
+  void addMagnetometer(const MagnetometerSettings& settings, const LinkMount& at, double rate);
+
+  /// After the world's step `steps` (1 the first), which left `state` at
+  /// sim time t: every sensor due samples (its noise is drawn whether or
+  /// not anyone reads it), its channel holds the sample and fresh() says
+  /// so. Returns whether any was due.
+  bool sample(const ArticulationModel& model, const ArticulationState& state, long long steps, double t,
+              const Vec3& gravity_W);
+
+  /// The robot was put somewhere (set_model_configuration, a reset): each
+  /// IMU's next period starts at `now` (a jump is no acceleration).
+  void restartImus(const ArticulationModel& model, const ArticulationState& now);
+  /// A reset: each odometry's drift from zero, each receiver's and
+  /// magnetometer's error from its seed (the world's clock runs on, and
+  /// with it theirs).
+  void restartNoise();
+
+  const std::vector<ImuChannel>& imus() const { return imus_; }
+  const std::vector<OdometryChannel>& odometry() const { return odometry_; }
+  const std::vector<GnssChannel>& gnss() const { return gnss_; }
+  const std::vector<MagnetometerChannel>& magnetometers() const { return magnetometers_; }
+  /// Whether the last sample() took the channel (`kind`'s i-th).
+  enum class Kind { kImu, kOdometry, kGnss, kMagnetometer };
+  bool fresh(Kind kind, std::size_t i) const { return fresh_[static_cast<std::size_t>(kind)].at(i) != 0; }
+  bool empty() const { return imus_.empty() && odometry_.empty() && gnss_.empty() && magnetometers_.empty(); }
+
+ private:
+  double dt_;
+  std::vector<ImuChannel> imus_;
+  std::vector<OdometryChannel> odometry_;
+  std::vector<GnssChannel> gnss_;
+  std::vector<MagnetometerChannel> magnetometers_;
+  std::array<std::vector<char>, 4> fresh_;  ///< per Kind, per channel
+  ArticulationKinematics kin_;              ///< reused by every sample
+};
+
+}  // namespace rigid_body_sim::core

@@ -1,0 +1,103 @@
+// The topics of robots' link sensors: each robot's core::LinkSensors (its
+// IMUs, odometry, GNSS receivers and magnetometers, sampled by the core at
+// their rates of sim time, core/devices/link_sensors.h) and, beside each
+// channel, the port that turns its fresh samples into messages stamped on
+// the node's clock:
+// - an IMU's sensor_msgs/Imu (REP 145);
+// - odometry, a robot's `odom_noise` (its base on `odom` with the noise,
+//   exact on `ground_truth`) and Gazebo's gazebo_ros_p3d, a
+//   nav_msgs/Odometry of its link: the pose in the world frame, the twist
+//   in the link's axes (child_frame_id); gazebo_ros_planar_move's and
+//   force_based_move's, the truth in their odometry frame (where the world
+//   is), odom -> link on tf too;
+// - hector's GNSS receivers (sensor_msgs/NavSatFix and its velocity,
+//   geometry_msgs/Vector3Stamped) and magnetometers (Vector3Stamped or
+//   sensor_msgs/MagneticField).
+// The noise is drawn whether or not anyone listens. A robot's sensors and
+// their ports are one record, added and dropped together.
+#pragma once
+
+#include <ros/ros.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/core/devices/link_sensors.h"
+#include "rigid_body_sim/core/step/simulation.h"
+#include "rigid_body_sim/io/sensor_mount.h"
+#include "rigid_body_sim/ros/counted_publisher.h"
+
+namespace rigid_body_sim::node {
+
+class LinkSensorPorts {
+ public:
+  /// Each odometry of rate 0 at `publish_rate` Hz; `world_frame` heads every message.
+  LinkSensorPorts(const ros::NodeHandle& nh, double dt, double publish_rate, std::string world_frame)
+      : nh_(nh), dt_(dt), publish_rate_(publish_rate), world_frame_(std::move(world_frame)) {}
+  /// Robot r of `sim` (the last added) and its link sensors of `sensors`,
+  /// started from its state now: topics under `prefix` (an absolute topic
+  /// as it is), frames after `frame_prefix`.
+  void addRobot(const core::Simulation& sim, std::size_t r, const std::string& prefix, const std::string& frame_prefix,
+                const io::RobotSensors& sensors);
+  /// The frames robot r's odometry puts on tf (odom -> frame, after its
+  /// tf_prefix): the world's frame of its base leaves tf for them.
+  std::vector<std::string> tfFrames(std::size_t r) const;
+  /// Robot r deleted: its topics close; the later robots move down by one.
+  void removeRobot(std::size_t r) { robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r)); }
+  /// Robot r was put somewhere (set_model_configuration, a reset): each of
+  /// its IMUs' next period starts now.
+  void restartImus(const core::Simulation& sim, std::size_t r);
+  /// After a reset: every robot's IMUs restarted, each drift from zero, each noise from its seed.
+  void restart(const core::Simulation& sim);
+  /// Samples what is due after step `steps` of `sim`'s state (sim time
+  /// t) and publishes it, stamped `stamp`.
+  void publish(const core::Simulation& sim, long long steps, double t, const ros::Time& stamp);
+
+ private:
+  struct ImuPort {
+    std::string frame;
+    CountedPublisher imu;
+  };
+  struct OdometryPort {
+    std::string child;   ///< the link's frame: the twist's axes
+    std::string frame;   ///< the pose's frame ("": the world's)
+    bool on_tf = false;  ///< frame -> child on tf too
+    CountedPublisher odom, truth;
+  };
+  struct FixPort {
+    std::string frame;
+    int status = 0, service = 1;
+    CountedPublisher fix, velocity;
+  };
+  struct FieldPort {
+    std::string frame;
+    bool field_message = false;
+    CountedPublisher field;
+  };
+  /// One robot: its own handle first (what it opened closes before it), its
+  /// sensors, and a port per channel, in the channels' order.
+  struct Robot {
+    std::shared_ptr<ros::NodeHandle> nh;  ///< ownHandle
+    core::LinkSensors sensors;
+    std::vector<ImuPort> imus;
+    std::vector<OdometryPort> odometry;
+    std::vector<FixPort> fixes;
+    std::vector<FieldPort> fields;
+  };
+
+  /// Publishes robot `robot`'s fresh samples.
+  void publishRobot(const Robot& robot, const std_msgs::Header& header);
+
+  ros::NodeHandle nh_;
+  double dt_, publish_rate_;
+  std::string world_frame_;
+  std::vector<Robot> robots_;
+  std::vector<geometry_msgs::TransformStamped> tf_;           ///< this publication's, reused
+  std::optional<tf2_ros::TransformBroadcaster> broadcaster_;  ///< made with the first odometry on tf
+};
+
+}  // namespace rigid_body_sim::node

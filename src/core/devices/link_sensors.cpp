@@ -1,0 +1,109 @@
+// A robot's link sensors (docs/physics.md §10.11): link_sensors.h.
+#include "rigid_body_sim/core/devices/link_sensors.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rigid_body_sim::core {
+
+SampleClock::SampleClock(double rate, double dt)
+    : every_(rate > 0.0 ? std::max(1LL, std::llround(1.0 / (rate * dt))) : 1), dt_(dt) {}
+
+double SampleClock::elapsed(double t) {
+  const double e = last_ < 0.0 ? static_cast<double>(every_) * dt_ : t - last_;
+  last_ = t;
+  return e;
+}
+
+LinkState linkStateOf(const ArticulationKinematics& kin, int link) {
+  const Placement& X_WL = kin.X_WL[static_cast<std::size_t>(link)];
+  const Vec6& V_L = kin.V_L[static_cast<std::size_t>(link)];  // [ω; v] in the link's axes
+  LinkState s;
+  s.p_WL = X_WL.p_PC;
+  s.q_WL = Quat(X_WL.R_PC).normalized();
+  s.w_W = X_WL.R_PC * V_L.head<3>();
+  s.v_WL = X_WL.R_PC * V_L.tail<3>();
+  return s;
+}
+
+void LinkSensors::addImu(const ImuSettings& settings, int link, const ArticulationModel& model,
+                         const ArticulationState& now) {
+  kinematics(model, now, kin_);
+  imus_.push_back({Imu(settings, linkStateOf(kin_, link)), link, SampleClock(settings.rate, dt_), {}});
+  fresh_[static_cast<std::size_t>(Kind::kImu)].push_back(0);
+}
+
+void LinkSensors::addOdometry(const std::optional<OdomNoiseSettings>& noise, const LinkMount& at, double rate) {
+  OdometryChannel& c = odometry_.emplace_back(OdometryChannel{std::nullopt, at, SampleClock(rate, dt_), {}, {}});
+  if (noise) c.noise.emplace(*noise);
+  fresh_[static_cast<std::size_t>(Kind::kOdometry)].push_back(0);
+}
+
+void LinkSensors::addGnss(const GnssSettings& settings, const LinkMount& at, double rate) {
+  gnss_.push_back({Gnss(settings), at, SampleClock(rate, dt_), {}});
+  fresh_[static_cast<std::size_t>(Kind::kGnss)].push_back(0);
+}
+
+void LinkSensors::addMagnetometer(const MagnetometerSettings& settings, const LinkMount& at, double rate) {
+  magnetometers_.push_back({Magnetometer(settings), at, SampleClock(rate, dt_), Vec3::Zero()});
+  fresh_[static_cast<std::size_t>(Kind::kMagnetometer)].push_back(0);
+}
+
+bool LinkSensors::sample(const ArticulationModel& model, const ArticulationState& state, long long steps, double t,
+                         const Vec3& gravity_W) {
+  bool placed = false;  // the robot's links, once for all its sensors
+  const auto place = [&] {
+    if (!placed) kinematics(model, state, kin_);
+    placed = true;
+  };
+  const auto frame = [&](const LinkMount& at) {
+    place();
+    return frameState(linkStateOf(kin_, at.link), at.X_LS);
+  };
+  for (std::size_t i = 0; i < imus_.size(); ++i) {
+    ImuChannel& c = imus_[i];
+    fresh_[static_cast<std::size_t>(Kind::kImu)][i] = c.clock.due(steps);
+    if (!c.clock.due(steps)) continue;
+    place();
+    c.reading = c.imu.sample(linkStateOf(kin_, c.link), gravity_W, static_cast<double>(c.clock.every()) * dt_);
+  }
+  for (std::size_t i = 0; i < odometry_.size(); ++i) {
+    OdometryChannel& c = odometry_[i];
+    fresh_[static_cast<std::size_t>(Kind::kOdometry)][i] = c.clock.due(steps);
+    if (!c.clock.due(steps)) continue;
+    const LinkState link = frame(c.at);
+    const double elapsed = c.clock.elapsed(t);
+    c.truth = exactOdom(link);
+    c.report = c.noise ? c.noise->report(link, elapsed) : c.truth;
+  }
+  for (std::size_t i = 0; i < gnss_.size(); ++i) {
+    GnssChannel& c = gnss_[i];
+    fresh_[static_cast<std::size_t>(Kind::kGnss)][i] = c.clock.due(steps);
+    if (!c.clock.due(steps)) continue;
+    const LinkState link = frame(c.at);
+    c.fix = c.gnss.report(link.p_WL, link.v_WL, c.clock.elapsed(t));
+  }
+  for (std::size_t i = 0; i < magnetometers_.size(); ++i) {
+    MagnetometerChannel& c = magnetometers_[i];
+    fresh_[static_cast<std::size_t>(Kind::kMagnetometer)][i] = c.clock.due(steps);
+    if (!c.clock.due(steps)) continue;
+    c.field_S = c.magnetometer.report(frame(c.at).q_WL, c.clock.elapsed(t));
+  }
+  return placed;
+}
+
+void LinkSensors::restartImus(const ArticulationModel& model, const ArticulationState& now) {
+  if (imus_.empty()) return;
+  kinematics(model, now, kin_);
+  for (ImuChannel& c : imus_) c.imu.restart(linkStateOf(kin_, c.link));
+}
+
+void LinkSensors::restartNoise() {
+  for (OdometryChannel& c : odometry_) {
+    if (c.noise) c.noise->restart();
+  }
+  for (GnssChannel& c : gnss_) c.gnss.restart();
+  for (MagnetometerChannel& c : magnetometers_) c.magnetometer.restart();
+}
+
+}  // namespace rigid_body_sim::core

@@ -1,0 +1,144 @@
+// The topics of robots' link sensors: link_sensor_ports.h.
+#include "rigid_body_sim/ros/link_sensor_ports.h"
+
+#include <nav_msgs/Odometry.h>
+
+#include <utility>
+
+#include "rigid_body_sim/ros/conversions.h"
+#include "rigid_body_sim/ros/sensor_messages.h"
+#include "rigid_body_sim/ros/state_publisher.h"
+#include "rigid_body_sim/ros/topic_claims.h"
+
+namespace rigid_body_sim::node {
+
+void LinkSensorPorts::addRobot(const core::Simulation& sim, std::size_t r, const std::string& prefix,
+                               const std::string& frame_prefix, const io::RobotSensors& sensors) {
+  const core::SceneRobot& robot = sim.scene.robots()[r];
+  Robot& ports = robots_.emplace_back(
+      Robot{ownHandle(nh_), io::linkSensors(sensors, robot.model, sim.robots[r], dt_, publish_rate_), {}, {}, {}, {}});
+  ros::NodeHandle& nh = *ports.nh;
+  const char* name = robot.name.c_str();
+  const auto resolved = [&](const std::string& topic) { return deviceTopic(prefix, topic); };
+  const auto shown = [&](const std::string& topic) { return nh_.resolveName(resolved(topic)); };
+  for (std::size_t i = 0; i < sensors.imus.size(); ++i) {
+    const io::ImuEntry& e = sensors.imus[i].entry;
+    ImuPort& p = ports.imus.emplace_back(ImuPort{frame_prefix + e.frame_id, {}});
+    p.imu = CountedPublisher::advertise<sensor_msgs::Imu>(nh, resolved(e.topic), 100);
+    ROS_INFO("sim_node: IMU on '%s' link '%s', frame '%s', on %s at %g Hz", name, e.link.c_str(), p.frame.c_str(),
+             shown(e.topic).c_str(), ports.sensors.imus()[i].clock.rate());
+  }
+  for (std::size_t i = 0; i < sensors.odometry.size(); ++i) {
+    const io::OdometryEntry& e = sensors.odometry[i].entry;
+    OdometryPort& p = ports.odometry.emplace_back();
+    p.child = frame_prefix + e.link;
+    if (!e.frame_id.empty()) p.frame = frame_prefix + e.frame_id;
+    p.on_tf = e.on_tf;
+    if (p.on_tf && !broadcaster_) broadcaster_.emplace();
+    p.odom = CountedPublisher::advertise<nav_msgs::Odometry>(nh, resolved(e.topic), 10);
+    if (!e.ground_truth.empty()) {
+      p.truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh, resolved(e.ground_truth), 10);
+    }
+    const std::string on_tf = p.on_tf ? ", " + p.frame + " -> " + p.child + " on tf" : "";
+    ROS_INFO("sim_node: odometry of '%s' link '%s' on %s at %g Hz%s%s", name, e.link.c_str(), shown(e.topic).c_str(),
+             ports.sensors.odometry()[i].clock.rate(), e.noise ? ", with noise" : "", on_tf.c_str());
+  }
+  for (std::size_t i = 0; i < sensors.gnss.size(); ++i) {
+    const io::GnssEntry& e = sensors.gnss[i].entry;
+    FixPort& p = ports.fixes.emplace_back(FixPort{frame_prefix + e.frame_id, e.status, e.service, {}, {}});
+    p.fix = CountedPublisher::advertise<sensor_msgs::NavSatFix>(nh, resolved(e.topic), 10);
+    p.velocity = CountedPublisher::advertise<geometry_msgs::Vector3Stamped>(nh, resolved(e.velocity_topic), 10);
+    ROS_INFO("sim_node: GNSS of '%s' on link '%s': fix on %s, velocity on %s at %g Hz", name, e.link.c_str(),
+             shown(e.topic).c_str(), shown(e.velocity_topic).c_str(), ports.sensors.gnss()[i].clock.rate());
+  }
+  for (std::size_t i = 0; i < sensors.magnetometers.size(); ++i) {
+    const io::MagnetometerEntry& e = sensors.magnetometers[i].entry;
+    FieldPort& p = ports.fields.emplace_back(FieldPort{frame_prefix + e.frame_id, e.field_message, {}});
+    p.field = e.field_message ? CountedPublisher::advertise<sensor_msgs::MagneticField>(nh, resolved(e.topic), 10)
+                              : CountedPublisher::advertise<geometry_msgs::Vector3Stamped>(nh, resolved(e.topic), 10);
+    ROS_INFO("sim_node: magnetometer of '%s' on link '%s' on %s at %g Hz", name, e.link.c_str(), shown(e.topic).c_str(),
+             ports.sensors.magnetometers()[i].clock.rate());
+  }
+}
+
+std::vector<std::string> LinkSensorPorts::tfFrames(std::size_t r) const {
+  std::vector<std::string> out;
+  for (const OdometryPort& p : robots_.at(r).odometry) {
+    if (p.on_tf) out.push_back(p.child);
+  }
+  return out;
+}
+
+void LinkSensorPorts::restartImus(const core::Simulation& sim, std::size_t r) {
+  robots_.at(r).sensors.restartImus(sim.scene.robots()[r].model, sim.robots[r]);
+}
+
+void LinkSensorPorts::restart(const core::Simulation& sim) {
+  for (std::size_t r = 0; r < robots_.size(); ++r) {
+    restartImus(sim, r);
+    robots_[r].sensors.restartNoise();
+  }
+}
+
+void LinkSensorPorts::publish(const core::Simulation& sim, long long steps, double t, const ros::Time& stamp) {
+  std_msgs::Header header;
+  header.stamp = stamp;
+  header.frame_id = world_frame_;
+  tf_.clear();
+  for (std::size_t r = 0; r < robots_.size(); ++r) {
+    Robot& robot = robots_[r];
+    if (robot.sensors.empty()) continue;
+    const bool any = robot.sensors.sample(sim.scene.robots()[r].model, sim.robots[r], steps, t, sim.model().gravity());
+    if (any && ros::ok()) publishRobot(robot, header);
+  }
+  if (!tf_.empty() && broadcaster_ && ros::ok()) broadcaster_->sendTransform(tf_);
+}
+
+void LinkSensorPorts::publishRobot(const Robot& robot, const std_msgs::Header& header) {
+  using Kind = core::LinkSensors::Kind;
+  const core::LinkSensors& s = robot.sensors;
+  for (std::size_t i = 0; i < robot.imus.size(); ++i) {
+    const ImuPort& p = robot.imus[i];
+    if (!s.fresh(Kind::kImu, i) || !p.imu.listened()) continue;
+    const core::ImuChannel& c = s.imus()[i];
+    p.imu.publish(imuMessage(c.reading, c.imu.settings(), p.frame, header.stamp));
+  }
+  for (std::size_t i = 0; i < robot.odometry.size(); ++i) {
+    const OdometryPort& p = robot.odometry[i];
+    if (!s.fresh(Kind::kOdometry, i)) continue;
+    const core::OdometryChannel& c = s.odometry()[i];
+    std_msgs::Header h = header;
+    if (!p.frame.empty()) h.frame_id = p.frame;
+    if (p.odom.listened()) p.odom.publish(odometryMessage(c.report, p.child, h, std::nullopt));
+    if (p.truth.listened()) p.truth.publish(odometryMessage(c.truth, p.child, h, std::nullopt));
+    if (p.on_tf) {
+      geometry_msgs::TransformStamped& tf = tf_.emplace_back();
+      tf.header = h;
+      tf.child_frame_id = p.child;
+      tf.transform = toTransform(c.report.p_WL, c.report.q_WL);
+    }
+  }
+  for (std::size_t i = 0; i < robot.fixes.size(); ++i) {
+    const FixPort& p = robot.fixes[i];
+    if (!s.fresh(Kind::kGnss, i)) continue;
+    std_msgs::Header h = header;
+    h.frame_id = p.frame;
+    const core::GnssFix& fix = s.gnss()[i].fix;
+    if (p.fix.listened()) p.fix.publish(fixMessage(fix, h, p.status, p.service));
+    if (p.velocity.listened()) p.velocity.publish(vectorMessage(fix.v_NWU, h));
+  }
+  for (std::size_t i = 0; i < robot.fields.size(); ++i) {
+    const FieldPort& p = robot.fields[i];
+    if (!s.fresh(Kind::kMagnetometer, i) || !p.field.listened()) continue;
+    std_msgs::Header h = header;
+    h.frame_id = p.frame;
+    const core::Vec3& field = s.magnetometers()[i].field_S;
+    if (p.field_message) {
+      p.field.publish(magneticFieldMessage(field, h));
+    } else {
+      p.field.publish(vectorMessage(field, h));
+    }
+  }
+}
+
+}  // namespace rigid_body_sim::node

@@ -1,0 +1,57 @@
+// rbsim's sensors: each robot's link sensors (core::LinkSensors: IMUs,
+// odometry, GNSS receivers, magnetometers) sampled after each step as the
+// node samples them, and with --out each one's samples written to a CSV
+// file of its own (docs/rbsim.md). Lidars, cameras, contact and
+// force-torque sensors are named once as not run yet.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "rigid_body_sim/core/articulations/scene.h"
+#include "rigid_body_sim/core/devices/link_sensors.h"
+#include "rigid_body_sim/io/sensor_mount.h"
+
+namespace rigid_body_sim::tools {
+
+class SensorRun {
+ public:
+  /// The link sensors of each robot of `scene` (`sensors`, one per robot),
+  /// started from `start`; an odometry with no rate of its own at
+  /// `publish_rate` Hz. With `out_dir`, each writes its samples to
+  /// OUT_DIR/ROBOT.TOPIC.csv (its topic's '/' as '.'; a UsageError if it
+  /// cannot, or if two would share a file).
+  SensorRun(const core::Scene& scene, const core::SceneState& start, const std::vector<io::RobotSensors>& sensors,
+            double publish_rate, const std::string& out_dir);
+  ~SensorRun();
+  SensorRun(const SensorRun&) = delete;
+  SensorRun& operator=(const SensorRun&) = delete;
+
+  /// After step `steps` (its end at sim time t): the sensors due sample,
+  /// and their rows are written.
+  void sample(const core::SceneState& state, long long steps, double t);
+  /// Closes the files; a UsageError if one could not be written whole.
+  void finish();
+
+ private:
+  /// A file of one channel of robot `robot`: channel `index` of `kind`
+  /// (its odometry's truth if `truth`).
+  struct Log {
+    std::size_t robot;
+    core::LinkSensors::Kind kind;
+    std::size_t index;
+    bool truth;
+    std::FILE* file;
+  };
+  /// Opens OUT_DIR/ROBOT.TOPIC.csv with `header` for the channel.
+  void open(const std::string& out_dir, std::size_t robot, const std::string& topic, const char* header, Log log);
+  void row(const Log& log, double t) const;
+
+  const core::Scene& scene_;
+  std::vector<core::LinkSensors> sensors_;
+  std::vector<Log> logs_;
+  std::vector<std::string> paths_;
+};
+
+}  // namespace rigid_body_sim::tools

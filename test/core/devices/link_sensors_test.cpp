@@ -1,0 +1,136 @@
+// A robot's link sensors (core::LinkSensors, docs/physics.md §10.11) on a
+// swinging pendulum stepped as the node and rbsim step it: each samples
+// only at its rate of sim time, its sample is its device's over its own
+// period at its mount, noise is seeded, a restart forgets a jump.
+#include "rigid_body_sim/core/devices/link_sensors.h"
+
+#include <gtest/gtest.h>
+
+#include "../controllers/controlled_robot.h"
+
+namespace rigid_body_sim::test {
+namespace {
+
+using core::LinkSensors;
+using Kind = core::LinkSensors::Kind;
+
+const Vec3 kG(0.0, 0.0, -9.81);
+const core::Pose kAtBob{Quat::Identity(), Vec3(0.0, 0.0, -0.5)};  ///< the bob, in the arm's frame
+
+/// A swinging pendulum (1 rad from hanging) and the arm's state at it.
+struct Swing : Alone {
+  Swing() : Alone(pendulum(10.0), kG) { robot().q[0] = 1.0; }
+  core::LinkState bob() const {
+    return core::frameState(core::linkStateOf(core::kinematics(scene.robots()[0].model, state.robots[0]), 1), kAtBob);
+  }
+  const core::ArticulationModel& model() const { return scene.robots()[0].model; }
+};
+
+TEST(SampleClock, RoundsItsRateToWholeStepsAndCountsItsPeriods) {
+  core::SampleClock clock(30.0, 0.01);
+  EXPECT_EQ(clock.every(), 3);
+  EXPECT_DOUBLE_EQ(clock.rate(), 1.0 / 0.03);
+  EXPECT_FALSE(clock.due(4));
+  EXPECT_TRUE(clock.due(6));
+  EXPECT_DOUBLE_EQ(clock.elapsed(0.03), 0.03);         // the first: one period
+  EXPECT_DOUBLE_EQ(clock.elapsed(0.09), 0.06);         // then since the last
+  EXPECT_EQ(core::SampleClock(0.0, 0.01).every(), 1);  // 0: every step
+  EXPECT_EQ(core::SampleClock(1e9, 0.01).every(), 1);  // never faster than the step
+}
+
+// An IMU at 100 Hz on 1 ms steps samples every tenth step, and its reading
+// is the exact one over those ten steps at its mount on the bob.
+TEST(LinkSensors, AnImuSamplesAtItsRateOverItsOwnPeriod) {
+  Swing w;
+  core::ImuSettings imu;
+  imu.rate = 100.0;
+  imu.X_LS = kAtBob;
+  LinkSensors sensors(kStep);
+  sensors.addImu(imu, 1, w.model(), w.robot());
+  core::LinkState previous = core::linkStateOf(core::kinematics(w.model(), w.robot()), 1);
+  int samples = 0;
+  for (long long k = 1; k <= 100; ++k) {
+    w.step({});
+    const bool any = sensors.sample(w.model(), w.robot(), k, static_cast<double>(k) * kStep, kG);
+    EXPECT_EQ(any, k % 10 == 0) << k;
+    EXPECT_EQ(sensors.fresh(Kind::kImu, 0), k % 10 == 0) << k;
+    if (!any) continue;
+    const core::LinkState now = core::linkStateOf(core::kinematics(w.model(), w.robot()), 1);
+    const core::ImuReading exact = core::exactImuReading(previous, now, kAtBob, kG, 0.01);
+    const core::ImuReading& got = sensors.imus()[0].reading;
+    EXPECT_EQ(got.w_S, exact.w_S) << k;
+    EXPECT_EQ(got.f_S, exact.f_S) << k;
+    previous = now;
+    ++samples;
+  }
+  EXPECT_EQ(samples, 10);
+  // It swung: the gyro reads the arm's turn about y.
+  EXPECT_GT(std::abs(sensors.imus()[0].reading.w_S.y()), 0.5);
+}
+
+// Odometry reports its mount's state: exact as the truth, with noise as the
+// seed draws it (the same seed, the same report); a receiver at rate 0
+// fixes every step where the mount is; a magnetometer reads the field in
+// its axes.
+TEST(LinkSensors, OdometryReceiversAndMagnetometersReadTheirMount) {
+  Swing w;
+  core::OdomNoiseSettings noise;
+  noise.position = 0.01;
+  noise.drift_x = 0.1;
+  noise.seed = 5;
+  core::GnssSettings gnss;
+  core::MagnetometerSettings field;
+  LinkSensors a(kStep), b(kStep);
+  for (LinkSensors* s : {&a, &b}) {
+    s->addOdometry(std::nullopt, {1, kAtBob}, 50.0);
+    s->addOdometry(noise, {1, kAtBob}, 50.0);
+    s->addGnss(gnss, {1, kAtBob}, 0.0);
+    s->addMagnetometer(field, {1, kAtBob}, 0.0);
+  }
+  for (long long k = 1; k <= 40; ++k) {
+    w.step({});
+    a.sample(w.model(), w.robot(), k, static_cast<double>(k) * kStep, kG);
+    b.sample(w.model(), w.robot(), k, static_cast<double>(k) * kStep, kG);
+    const core::LinkState bob = w.bob();
+    EXPECT_TRUE(a.fresh(Kind::kGnss, 0));
+    const core::GnssFix exact = core::exactGnssFix(gnss.reference, bob.p_WL, bob.v_WL);
+    EXPECT_EQ(a.gnss()[0].fix.latitude, exact.latitude) << k;
+    EXPECT_EQ(a.gnss()[0].fix.altitude, exact.altitude) << k;
+    EXPECT_TRUE((a.magnetometers()[0].field_S - bob.q_WL.conjugate() * core::magneticField_W(field)).norm() < 1e-15);
+    EXPECT_EQ(a.fresh(Kind::kOdometry, 1), k % 20 == 0) << k;
+    if (k % 20 != 0) continue;
+    const core::OdomReport truth = core::exactOdom(bob);
+    EXPECT_EQ(a.odometry()[0].report.p_WL, truth.p_WL) << k;
+    EXPECT_EQ(a.odometry()[1].truth.p_WL, truth.p_WL) << k;
+    EXPECT_GT((a.odometry()[1].report.p_WL - truth.p_WL).norm(), 0.0) << k;
+    EXPECT_EQ(a.odometry()[1].report.p_WL, b.odometry()[1].report.p_WL) << k;
+  }
+  EXPECT_NE(a.odometry()[1].noise->drift().x(), 0.0);
+  a.restartNoise();
+  EXPECT_EQ(a.odometry()[1].noise->drift().x(), 0.0);
+}
+
+// Put somewhere else between samples (set_model_configuration), an IMU
+// restarted reads the pendulum's own motion, hanging at rest; one not
+// restarted reads the jump of 1 rad as a turn in one sample (1000 rad/s).
+TEST(LinkSensors, ARestartedImuReadsNoJump) {
+  core::ImuSettings imu;
+  imu.X_LS = kAtBob;
+  imu.rate = 1000.0;
+  Swing w;
+  LinkSensors kept(kStep), restarted(kStep);
+  kept.addImu(imu, 1, w.model(), w.robot());
+  restarted.addImu(imu, 1, w.model(), w.robot());
+  w.robot().q[0] = 0.0;  // hanging, at rest
+  w.robot().v.setZero();
+  restarted.restartImus(w.model(), w.robot());
+  w.step({});
+  kept.sample(w.model(), w.robot(), 1, kStep, kG);
+  restarted.sample(w.model(), w.robot(), 1, kStep, kG);
+  EXPECT_NEAR((restarted.imus()[0].reading.f_S - Vec3(0.0, 0.0, 9.81)).norm(), 0.0, 1e-6);
+  EXPECT_NEAR(restarted.imus()[0].reading.w_S.norm(), 0.0, 1e-9);
+  EXPECT_NEAR(kept.imus()[0].reading.w_S.norm(), 1000.0, 1.0);
+}
+
+}  // namespace
+}  // namespace rigid_body_sim::test
