@@ -316,6 +316,12 @@ core::LinkSensors linkSensors(const RobotSensors& sensors, const core::Articulat
   for (const RobotMagnetometer& m : sensors.magnetometers) {
     out.addMagnetometer(m.entry.settings, {m.link, m.X_LS}, m.entry.rate);
   }
+  for (const RobotLidar& l : sensors.lidars) {
+    std::optional<core::RangeFinderSettings> finder;
+    if (l.entry.range) finder = l.entry.range->settings;
+    out.addLidar(l.entry.settings, finder, {l.link, l.X_LS}, l.entry.rate);
+  }
+  for (const RobotCamera& c : sensors.cameras) out.addDepthCamera(c.entry.settings, {c.link, c.X_LS}, c.entry.rate);
   return out;
 }
 

@@ -3,9 +3,11 @@
 
 #include <nav_msgs/Odometry.h>
 
+#include <array>
 #include <utility>
 
 #include "rigid_body_sim/ros/conversions.h"
+#include "rigid_body_sim/ros/range_messages.h"
 #include "rigid_body_sim/ros/sensor_messages.h"
 #include "rigid_body_sim/ros/state_publisher.h"
 #include "rigid_body_sim/ros/topic_claims.h"
@@ -15,8 +17,16 @@ namespace rigid_body_sim::node {
 void LinkSensorPorts::addRobot(const core::Simulation& sim, std::size_t r, const std::string& prefix,
                                const std::string& frame_prefix, const io::RobotSensors& sensors) {
   const core::SceneRobot& robot = sim.scene.robots()[r];
-  Robot& ports = robots_.emplace_back(
-      Robot{ownHandle(nh_), io::linkSensors(sensors, robot.model, sim.robots[r], dt_, publish_rate_), {}, {}, {}, {}});
+  Robot& ports = robots_.emplace_back(Robot{ownHandle(nh_),
+                                            io::linkSensors(sensors, robot.model, sim.robots[r], dt_, publish_rate_),
+                                            {},
+                                            {},
+                                            {},
+                                            {},
+                                            {},
+                                            {},
+                                            sensors.bytes});
+  bytes_ += sensors.bytes;
   ros::NodeHandle& nh = *ports.nh;
   const char* name = robot.name.c_str();
   const auto resolved = [&](const std::string& topic) { return deviceTopic(prefix, topic); };
@@ -59,6 +69,50 @@ void LinkSensorPorts::addRobot(const core::Simulation& sim, std::size_t r, const
     ROS_INFO("sim_node: magnetometer of '%s' on link '%s' on %s at %g Hz", name, e.link.c_str(), shown(e.topic).c_str(),
              ports.sensors.magnetometers()[i].clock.rate());
   }
+  addRangePorts(ports, name, prefix, frame_prefix, sensors);
+}
+
+void LinkSensorPorts::addRangePorts(Robot& robot, const char* name, const std::string& prefix,
+                                    const std::string& frame_prefix, const io::RobotSensors& sensors) {
+  ros::NodeHandle& nh = *robot.nh;
+  for (std::size_t i = 0; i < sensors.cameras.size(); ++i) {
+    const io::DepthCameraEntry& e = sensors.cameras[i].entry;
+    CameraPort& p = robot.cameras.emplace_back();
+    p.frame = frame_prefix + (e.frame_id.empty() ? e.link : e.frame_id);
+    p.millimetres = e.millimetres;
+    const std::array<std::string, 3> topics = cameraTopics(prefix, e);  // image, info, points
+    p.image = CountedPublisher::advertise<sensor_msgs::Image>(nh, topics[0], 2);
+    p.info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(nh, topics[1], 2);
+    p.points = CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh, topics[2], 2);
+    ROS_INFO("sim_node: robot '%s': a depth camera of %d x %d on '%s', %s{%s, %s, %s} at %g Hz", name, e.settings.width,
+             e.settings.height, p.frame.c_str(), nh_.resolveName(deviceTopic(prefix, e.topic) + "/").c_str(),
+             e.image_topic.c_str(), e.info_topic.c_str(), e.points_topic.c_str(),
+             robot.sensors.depthCameras()[i].clock.rate());
+  }
+  for (std::size_t i = 0; i < sensors.lidars.size(); ++i) {
+    const io::LidarEntry& e = sensors.lidars[i].entry;
+    LidarPort& p = robot.lidars.emplace_back();
+    p.frame = frame_prefix + (e.frame_id.empty() ? e.link : e.frame_id);
+    p.rate = e.rate;
+    p.range = e.range;
+    p.organized = e.organized;
+    const bool cloud = e.settings.vertical_samples > 1;
+    const std::string topic = deviceTopic(prefix, e.topic);
+    p.publisher = p.range ? CountedPublisher::advertise<sensor_msgs::Range>(nh, topic, 10)
+                  : cloud ? CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh, topic, 10)
+                          : CountedPublisher::advertise<sensor_msgs::LaserScan>(nh, topic, 10);
+    ROS_INFO("sim_node: robot '%s': a %s of %zu rays on '%s', %s on %s at %g Hz", name,
+             p.range ? "range finder" : "lidar", robot.sensors.lidars()[i].lidar.rayCount(), p.frame.c_str(),
+             p.range ? "sensor_msgs/Range"
+             : cloud ? "sensor_msgs/PointCloud2"
+                     : "sensor_msgs/LaserScan",
+             nh_.resolveName(topic).c_str(), robot.sensors.lidars()[i].clock.rate());
+  }
+}
+
+void LinkSensorPorts::removeRobot(std::size_t r) {
+  bytes_ -= robots_.at(r).bytes;
+  robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r));
 }
 
 std::vector<std::string> LinkSensorPorts::tfFrames(std::size_t r) const {
@@ -88,7 +142,8 @@ void LinkSensorPorts::publish(const core::Simulation& sim, long long steps, doub
   for (std::size_t r = 0; r < robots_.size(); ++r) {
     Robot& robot = robots_[r];
     if (robot.sensors.empty()) continue;
-    const bool any = robot.sensors.sample(sim.scene.robots()[r].model, sim.robots[r], steps, t, sim.model().gravity());
+    chooseCasts(robot);
+    const bool any = robot.sensors.sample(sim.scene, r, sim.state, sim.robots[r], steps, t);
     if (any && ros::ok()) publishRobot(robot, header);
   }
   if (!tf_.empty() && broadcaster_ && ros::ok()) broadcaster_->sendTransform(tf_);
@@ -138,6 +193,44 @@ void LinkSensorPorts::publishRobot(const Robot& robot, const std_msgs::Header& h
     } else {
       p.field.publish(vectorMessage(field, h));
     }
+  }
+  publishRanges(robot, header.stamp);
+}
+
+void LinkSensorPorts::chooseCasts(Robot& robot) {
+  using Kind = core::LinkSensors::Kind;
+  for (std::size_t i = 0; i < robot.lidars.size(); ++i) {
+    robot.sensors.cast(Kind::kLidar, i, robot.lidars[i].publisher.listened());
+  }
+  for (std::size_t i = 0; i < robot.cameras.size(); ++i) {
+    const CameraPort& p = robot.cameras[i];
+    robot.sensors.cast(Kind::kDepthCamera, i, p.image.listened() || p.points.listened());
+  }
+}
+
+void LinkSensorPorts::publishRanges(const Robot& robot, const ros::Time& stamp) {
+  using Kind = core::LinkSensors::Kind;
+  const core::LinkSensors& s = robot.sensors;
+  for (std::size_t i = 0; i < robot.lidars.size(); ++i) {
+    const LidarPort& p = robot.lidars[i];
+    if (!s.fresh(Kind::kLidar, i) || !s.cast(Kind::kLidar, i)) continue;
+    const core::LidarChannel& c = s.lidars()[i];
+    if (p.range) {
+      p.publisher.publish(rangeMessage(c.lidar, *p.range, c.reading, p.frame, stamp));
+    } else if (c.lidar.settings().vertical_samples > 1) {
+      p.publisher.publish(cloudMessage(c.lidar, c.ranges, p.organized, p.frame, stamp));
+    } else {
+      p.publisher.publish(scanMessage(c.lidar, c.ranges, p.rate, p.frame, stamp));
+    }
+  }
+  for (std::size_t i = 0; i < robot.cameras.size(); ++i) {
+    const CameraPort& p = robot.cameras[i];
+    if (!s.fresh(Kind::kDepthCamera, i)) continue;
+    const core::DepthCameraChannel& c = s.depthCameras()[i];
+    if (p.info.listened()) p.info.publish(cameraInfoMessage(c.camera, p.frame, stamp));
+    if (!s.cast(Kind::kDepthCamera, i)) continue;
+    if (p.image.listened()) p.image.publish(depthImageMessage(c.camera, c.depth, p.millimetres, p.frame, stamp));
+    if (p.points.listened()) p.points.publish(depthCloudMessage(c.camera, c.depth, p.frame, stamp));
   }
 }
 

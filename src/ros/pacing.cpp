@@ -35,7 +35,6 @@ void SimNode::stepOnce() {
   ++steps_;
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
   sampleSensors();
-  range_sensors_->sample(sim_, steps_, stamp());
   link_sensors_->publish(sim_, steps_, simTime(), stamp());
   sim_.contacts.update(state_, workspace_.contacts);
   link_contacts_->publish(sim_, steps_, stamp());

@@ -166,7 +166,6 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
   robot_publisher_.emplace(nh_, sim_.scene, control_prefixes, settings_.world_frame, model_.dt(),
                            settings_.publish_rate, [this](std::size_t r) { return commands_->jointStateRate(r); });
   checkRobotFrames(robot_publisher_->robots(), settings_.world_frame, ports_.frames());
-  range_sensors_.emplace(nh_, model_.dt());
   link_sensors_.emplace(nh_, model_.dt(), settings_.publish_rate, settings_.world_frame);
   link_contacts_.emplace(nh_, model_.dt(), settings_.world_frame);
   joint_wrenches_.emplace(nh_, model_.dt());
@@ -174,7 +173,6 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     const std::string& name = sim_.scene.robots()[r].name;
     const std::string prefix = several ? name + "/" : "";
     const std::string& frame_prefix = robot_publisher_->robots()[r].frame_prefix;
-    range_sensors_->addRobot(name, prefix, frame_prefix, start_sensors_[r].lidars, start_sensors_[r].cameras);
     link_sensors_->addRobot(sim_, r, prefix, frame_prefix, start_sensors_[r]);
     link_contacts_->addRobot(name, prefix, frame_prefix, start_sensors_[r].contact_sensors);
     joint_wrenches_->addRobot(name, prefix, frame_prefix, start_sensors_[r].force_torques);
@@ -226,7 +224,6 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   const double hz = controls.joint_state_rate > 0.0 ? controls.joint_state_rate : settings_.publish_rate;
   robot_publisher_->addRobot(sim_.scene.robots()[r], control_prefix, hz, spawn.frame_prefix);
   commands_->addRobot(sim_, r, control_prefix, spawn.frame_prefix, std::move(controls));
-  range_sensors_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.lidars, spawn.sensors.cameras);
   link_sensors_->addRobot(sim_, r, prefix, spawn.frame_prefix, spawn.sensors);
   link_contacts_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.contact_sensors);
   joint_wrenches_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.force_torques);
@@ -243,7 +240,6 @@ void SimNode::leaveBase(std::size_t r) {
 void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {
   robot_publisher_->removeRobot(r);
   commands_->removeRobot(r);
-  range_sensors_->removeRobot(r);
   link_sensors_->removeRobot(r);
   link_contacts_->removeRobot(r);
   joint_wrenches_->removeRobot(r);

@@ -189,7 +189,7 @@ bool SimNode::spawnBody(SpawnBody::Request& req, SpawnBody::Response& res) {
     if (io::describesRobot(urdf.xml, urdf.source)) {
       // Its devices counted on top of those built so far (a delete on the loop may lower that meanwhile).
       loadRequestedRobot(req, urdf, options, spawn_limits_, dt_, nh_,
-                         io::DeviceMemory{params_.sim.device_memory, range_sensors_ ? range_sensors_->bytes() : 0},
+                         io::DeviceMemory{params_.sim.device_memory, link_sensors_ ? link_sensors_->bytes() : 0},
                          spawn);
       spawn.topics = robotTopics(spawn.sensor_prefix, spawn.control_prefix, spawn.sensors, spawn.controls);
       notes.insert(notes.end(), spawn.controls.notes.begin(), spawn.controls.notes.end());

@@ -70,10 +70,10 @@ int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::Ti
   }
   for (std::size_t r = 0; r < setup.sensors.size() && r < robots.size(); ++r) {  // said, not silently dropped
     const io::RobotSensors& d = setup.sensors[r];
-    const std::size_t count = d.lidars.size() + d.cameras.size() + d.contact_sensors.size() + d.force_torques.size();
+    const std::size_t count = d.contact_sensors.size() + d.force_torques.size();
     if (count > 0) {
       std::fprintf(stderr,
-                   "rbsim: note: robot '%s' has %zu lidars, depth cameras, contact or force-torque sensors (sim_node "
+                   "rbsim: note: robot '%s' has %zu contact or force-torque sensors (sim_node "
                    "samples them; rbsim does not yet)\n",
                    robots[r].name.c_str(), count);
     }

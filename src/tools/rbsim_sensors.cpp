@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <utility>
 
 #include "rbsim_output.h"
 
@@ -16,6 +17,15 @@ constexpr const char* kImuHeader = "t,qx,qy,qz,qw,wx,wy,wz,ax,ay,az\n";
 constexpr const char* kOdometryHeader = "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz\n";
 constexpr const char* kGnssHeader = "t,latitude,longitude,altitude,v_north,v_west,v_up\n";
 constexpr const char* kFieldHeader = "t,x,y,z\n";
+constexpr const char* kRangeHeader = "t,range\n";
+constexpr const char* kImageHeader = "t,image\n";
+
+/// A lidar's header: t and a column per ray, r0 to r(n-1), fan by fan.
+std::string scanHeader(std::size_t rays) {
+  std::string h = "t";
+  for (std::size_t k = 0; k < rays; ++k) h += ",r" + std::to_string(k);
+  return h + "\n";
+}
 
 /// A topic as a file name's part: no leading '/', each '/' a '.'.
 std::string fileName(std::string topic) {
@@ -38,36 +48,53 @@ SensorRun::SensorRun(const core::Scene& scene, const core::SceneState& start,
     sensors_.push_back(io::linkSensors(s, scene.robots()[r].model, start.robots[r], dt, publish_rate));
     if (out_dir.empty()) continue;
     for (std::size_t i = 0; i < s.imus.size(); ++i) {
-      open(out_dir, r, s.imus[i].entry.topic, kImuHeader, {r, Kind::kImu, i, false, nullptr});
+      open(out_dir, r, s.imus[i].entry.topic, kImuHeader, Kind::kImu, i);
     }
     for (std::size_t i = 0; i < s.odometry.size(); ++i) {
       const io::OdometryEntry& e = s.odometry[i].entry;
-      open(out_dir, r, e.topic, kOdometryHeader, {r, Kind::kOdometry, i, false, nullptr});
+      open(out_dir, r, e.topic, kOdometryHeader, Kind::kOdometry, i);
       if (!e.ground_truth.empty()) {
-        open(out_dir, r, e.ground_truth, kOdometryHeader, {r, Kind::kOdometry, i, true, nullptr});
+        open(out_dir, r, e.ground_truth, kOdometryHeader, Kind::kOdometry, i, true);
       }
     }
     for (std::size_t i = 0; i < s.gnss.size(); ++i) {
-      open(out_dir, r, s.gnss[i].entry.topic, kGnssHeader, {r, Kind::kGnss, i, false, nullptr});
+      open(out_dir, r, s.gnss[i].entry.topic, kGnssHeader, Kind::kGnss, i);
     }
     for (std::size_t i = 0; i < s.magnetometers.size(); ++i) {
-      open(out_dir, r, s.magnetometers[i].entry.topic, kFieldHeader, {r, Kind::kMagnetometer, i, false, nullptr});
+      open(out_dir, r, s.magnetometers[i].entry.topic, kFieldHeader, Kind::kMagnetometer, i);
+    }
+    for (std::size_t i = 0; i < s.lidars.size(); ++i) {
+      const io::LidarEntry& e = s.lidars[i].entry;
+      const std::string header = e.range ? kRangeHeader : scanHeader(sensors_[r].lidars()[i].lidar.rayCount());
+      open(out_dir, r, e.topic, header, Kind::kLidar, i);
+    }
+    for (std::size_t i = 0; i < s.cameras.size(); ++i) {
+      const io::DepthCameraEntry& e = s.cameras[i].entry;
+      const std::string topic = e.image_topic.rfind('/', 0) == 0 ? e.image_topic : e.topic + "/" + e.image_topic;
+      open(out_dir, r, topic, kImageHeader, Kind::kDepthCamera, i);
+    }
+  }
+  if (out_dir.empty()) {  // nothing reads them: not cast
+    for (core::LinkSensors& s : sensors_) {
+      for (std::size_t i = 0; i < s.lidars().size(); ++i) s.cast(Kind::kLidar, i, false);
+      for (std::size_t i = 0; i < s.depthCameras().size(); ++i) s.cast(Kind::kDepthCamera, i, false);
     }
   }
 }
 
-void SensorRun::open(const std::string& out_dir, std::size_t robot, const std::string& topic, const char* header,
-                     Log log) {
-  const std::string path = out_dir + "/" + scene_.robots()[robot].name + "." + fileName(topic) + ".csv";
+void SensorRun::open(const std::string& out_dir, std::size_t robot, const std::string& topic, const std::string& header,
+                     Kind kind, std::size_t index, bool truth) {
+  Log log{robot, kind, index, truth, nullptr, out_dir + "/" + scene_.robots()[robot].name + "." + fileName(topic)};
+  const std::string path = log.stem + ".csv";
   if (std::find(paths_.begin(), paths_.end(), path) != paths_.end()) {
     throw UsageError("--out: two of robot '" + scene_.robots()[robot].name + "''s sensors would write '" + path +
                      "' (their topics are the same)");
   }
   log.file = std::fopen(path.c_str(), "w");
   if (log.file == nullptr) throw UsageError("--out: cannot write '" + path + "': " + std::strerror(errno));
-  std::fputs(header, log.file);
+  std::fputs(header.c_str(), log.file);
   paths_.push_back(path);
-  logs_.push_back(log);
+  logs_.push_back(std::move(log));
 }
 
 SensorRun::~SensorRun() {
@@ -86,15 +113,34 @@ void SensorRun::sample(const core::SceneState& state, long long steps, double t)
   bool any = false;
   for (std::size_t r = 0; r < sensors_.size(); ++r) {
     if (sensors_[r].empty()) continue;
-    any = sensors_[r].sample(scene_.robots()[r].model, state.robots[r], steps, t, scene_.model().gravity()) || any;
+    any = sensors_[r].sample(scene_, r, state.bodies, state.robots[r], steps, t) || any;
   }
   if (!any) return;
   for (const Log& log : logs_) {
-    if (sensors_[log.robot].fresh(log.kind, log.index)) row(log, t);
+    if (sensors_[log.robot].fresh(log.kind, log.index)) row(log, steps, t);
   }
 }
 
-void SensorRun::row(const Log& log, double t) const {
+std::string SensorRun::writeImage(const Log& log, long long steps) const {
+  const core::DepthCameraChannel& c = sensors_[log.robot].depthCameras()[log.index];
+  const int width = c.camera.settings().width, height = c.camera.settings().height;
+  const std::string path = log.stem + "." + std::to_string(steps) + ".pfm";
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (f == nullptr) throw UsageError("--out: cannot write '" + path + "': " + std::strerror(errno));
+  // PFM: one channel of little-endian float32 (the scale's sign), rows from the bottom.
+  std::fprintf(f, "Pf\n%d %d\n-1.0\n", width, height);
+  const auto w = static_cast<std::size_t>(width);
+  std::vector<float> pixels(w);
+  for (auto v = static_cast<std::size_t>(height); v-- > 0;) {
+    for (std::size_t u = 0; u < w; ++u) pixels[u] = static_cast<float>(c.depth[v * w + u]);
+    std::fwrite(pixels.data(), sizeof(float), pixels.size(), f);
+  }
+  const bool whole = std::ferror(f) == 0;
+  if (std::fclose(f) != 0 || !whole) throw UsageError("--out: '" + path + "' could not be written whole");
+  return path.substr(path.find_last_of('/') + 1);
+}
+
+void SensorRun::row(const Log& log, long long steps, double t) const {
   const core::LinkSensors& s = sensors_[log.robot];
   std::vector<double> v;
   switch (log.kind) {
@@ -123,6 +169,20 @@ void SensorRun::row(const Log& log, double t) const {
     case Kind::kMagnetometer:
       append(v, s.magnetometers()[log.index].field_S);
       break;
+    case Kind::kLidar: {
+      const core::LidarChannel& c = s.lidars()[log.index];
+      if (c.finder) {
+        v = {c.reading};
+      } else {
+        v = c.ranges;
+      }
+      break;
+    }
+    case Kind::kDepthCamera: {
+      const std::string line = text(t) + "," + writeImage(log, steps) + "\n";
+      std::fputs(line.c_str(), log.file);
+      return;
+    }
   }
   std::string line = text(t);
   for (const double x : v) line += "," + text(x);

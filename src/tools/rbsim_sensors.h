@@ -1,8 +1,10 @@
 // rbsim's sensors: each robot's link sensors (core::LinkSensors: IMUs,
-// odometry, GNSS receivers, magnetometers) sampled after each step as the
-// node samples them, and with --out each one's samples written to a CSV
-// file of its own (docs/rbsim.md). Lidars, cameras, contact and
-// force-torque sensors are named once as not run yet.
+// odometry, GNSS receivers, magnetometers, lidars, range finders, depth
+// cameras) sampled after each step as the node samples them, and with
+// --out each one's samples written to a file of its own (docs/rbsim.md):
+// a CSV row per sample, a depth image a PFM file beside it. Without --out
+// nothing is cast (the noise of what is cast later is the same). Contact
+// and force-torque sensors are named once as not run yet.
 #pragma once
 
 #include <cstdio>
@@ -43,10 +45,15 @@ class SensorRun {
     std::size_t index;
     bool truth;
     std::FILE* file;
+    std::string stem;  ///< OUT_DIR/ROBOT.TOPIC: a depth camera's images are STEM.STEPS.pfm
   };
-  /// Opens OUT_DIR/ROBOT.TOPIC.csv with `header` for the channel.
-  void open(const std::string& out_dir, std::size_t robot, const std::string& topic, const char* header, Log log);
-  void row(const Log& log, double t) const;
+  /// Opens OUT_DIR/ROBOT.TOPIC.csv with `header` for robot `robot`'s
+  /// channel `index` of `kind` (its odometry's truth if `truth`).
+  void open(const std::string& out_dir, std::size_t robot, const std::string& topic, const std::string& header,
+            core::LinkSensors::Kind kind, std::size_t index, bool truth = false);
+  void row(const Log& log, long long steps, double t) const;
+  /// A depth camera's image after step `steps`: OUT_DIR/ROBOT.TOPIC.STEPS.pfm; its name.
+  std::string writeImage(const Log& log, long long steps) const;
 
   const core::Scene& scene_;
   std::vector<core::LinkSensors> sensors_;

@@ -3,6 +3,8 @@
 // time; azimuth by azimuth, ring 0 the lowest fan), every met ray in one
 // row or, organized, every ray with NaN where none met; a depth camera's
 // cloud organized as its image.
+#include "rigid_body_sim/ros/range_messages.h"
+
 #include <gtest/gtest.h>
 #include <sensor_msgs/point_cloud2_iterator.h>
 
@@ -11,7 +13,6 @@
 #include <vector>
 
 #include "cloud_field.h"
-#include "rigid_body_sim/ros/range_sensors.h"
 
 namespace rigid_body_sim::node {
 namespace {

@@ -1,17 +1,20 @@
-// A config's timeline in the node (timeline.test): the shipped scenario run
-// in lock-step (paused, then ~step) publishes what rbsim writes for the
-// same URDF and config, to the last bit (issue 57): the controller's
+// A config's timeline in the node: the shipped scenarios run in lock-step
+// (paused, then ~step) publish what rbsim writes for the same URDF and
+// config, to the last bit (issue 57). timeline.test: the controller's
 // odometry on /base_controller/odom, the IMU's samples on /imu, the noisy
-// odometry on /odom and its truth on /ground_truth.
+// odometry on /odom and its truth on /ground_truth; timeline_lidar.test:
+// the lidar's scans on /scan.
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <sensor_msgs/Imu.h>
+#include <sensor_msgs/LaserScan.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <string>
@@ -27,23 +30,20 @@ using namespace rbs_test;
 
 using Rows = std::map<long long, std::vector<double>>;
 
-/// rbsim's run of the scenario, once, into the scratch folder.
-const std::string& rbsimOut() {
-  static const std::string out = [] {
-    const std::string dir = rigid_body_sim::test::scratch().path().string();
-    const std::string src = RBS_SOURCE_DIR;
-    const std::string cmd = std::string(RBS_RBSIM) + " --urdf " + src + "/urdf/diff_drive.urdf --config " + src +
-                            "/config/diff_drive_timeline.yaml --duration 3 --quiet --out " + dir +
-                            " 2>/dev/null >/dev/null";
-    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
-    return dir;
-  }();
-  return out;
+/// rbsim's run of `urdf` (under urdf/) with `config` (under config/) for
+/// 3 s into the scratch folder (one scenario a test process).
+std::string rbsimOut(const std::string& urdf, const std::string& config) {
+  const std::string dir = rigid_body_sim::test::scratch().path().string();
+  const std::string src = RBS_SOURCE_DIR;
+  const std::string cmd = std::string(RBS_RBSIM) + " --urdf " + src + "/urdf/" + urdf + " --config " + src +
+                          "/config/" + config + " --duration 3 --quiet --out " + dir + " 2>/dev/null >/dev/null";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  return dir;
 }
 
-/// The rows of rbsim's file `name` by their step (t / dt).
-Rows rbsimRows(const std::string& name) {
-  std::ifstream in(rbsimOut() + "/" + name);
+/// The rows of rbsim's file `name` in `dir` by their step (t / dt).
+Rows rbsimRows(const std::string& dir, const std::string& name) {
+  std::ifstream in(dir + "/" + name);
   std::string line;
   std::getline(in, line);
   Rows rows;
@@ -75,53 +75,14 @@ void expectOdometryRow(const nav_msgs::Odometry& m, const std::vector<double>& r
   for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], r[i + 1]) << "t " << r[0] << " column " << i + 1;
 }
 
-class Timeline : public ::testing::Test {
- protected:
-  /// 3 s in batches of 0.04 s, each batch's messages in before the next
-  /// (four of /odom's: its publisher queues 10; and a whole number of the
-  /// controller's periods, since the node publishes its odometry after a
-  /// ~step as well).
-  void run() {
-    ros::ServiceClient step = nh_.serviceClient<rigid_body_sim::Step>("/sim_node/step");
-    ASSERT_TRUE(step.waitForExistence(ros::Duration(30.0)));
-    ASSERT_TRUE(spinUntil(
-        [&] {
-          return drive_.getNumPublishers() > 0 && imu_.getNumPublishers() > 0 && noisy_.getNumPublishers() > 0 &&
-                 truth_.getNumPublishers() > 0;
-        },
-        30.0));
-    for (int batch = 1; batch <= 75; ++batch) {
-      rigid_body_sim::Step srv;
-      srv.request.steps = 40;
-      ASSERT_TRUE(step.call(srv) && srv.response.success) << srv.response.message;
-      const double t = 0.04 * batch - 1e-9;
-      ASSERT_TRUE(spinUntil(
-          [&] {
-            return !odom.empty() && odom.back().header.stamp.toSec() >= t && !imus.empty() &&
-                   imus.back().header.stamp.toSec() >= t && !truths.empty() &&
-                   truths.back().header.stamp.toSec() >= t && !noisy.empty() && noisy.back().header.stamp.toSec() >= t;
-          },
-          30.0))
-          << "batch " << batch;
-    }
-  }
+/// Whether the last of `messages` is stamped at or after t.
+template <class M>
+bool through(const std::vector<M>& messages, double t) {
+  return !messages.empty() && messages.back().header.stamp.toSec() >= t;
+}
 
-  ros::NodeHandle nh_;
-  std::vector<nav_msgs::Odometry> odom, noisy, truths;
-  std::vector<sensor_msgs::Imu> imus;
-  template <class M>
-  ros::Subscriber into(const std::string& topic, std::vector<M>& out) {
-    return nh_.subscribe<M>(topic, 1000, [&out](const typename M::ConstPtr& m) { out.push_back(*m); });
-  }
-  ros::Subscriber drive_ = into("/base_controller/odom", odom), imu_ = into("/imu", imus),
-                  noisy_ = into("/odom", noisy), truth_ = into("/ground_truth", truths);
-};
-
-TEST_F(Timeline, TheNodeInLockStepPublishesRbsimsOutputsToTheLastBit) {
-  run();
-  // The controller's odometry: t,x,y,heading,linear,lateral,angular every 20 steps.
-  const Rows rows = rbsimRows("diff_drive.base_controller.odom.csv");
-  ASSERT_EQ(rows.size(), 151u);
+/// The controller's odometry against rbsim's rows t,x,y,heading,linear,lateral,angular.
+void expectDriveOdometry(const std::vector<nav_msgs::Odometry>& odom, const Rows& rows) {
   for (const nav_msgs::Odometry& m : odom) {
     const std::vector<double>& r = rowAt(rows, m.header.stamp);
     ASSERT_EQ(r.size(), 7u);
@@ -134,11 +95,69 @@ TEST_F(Timeline, TheNodeInLockStepPublishesRbsimsOutputsToTheLastBit) {
     EXPECT_EQ(m.twist.twist.linear.y, r[5]) << "t " << r[0];
     EXPECT_EQ(m.twist.twist.angular.z, r[6]) << "t " << r[0];
   }
+}
+
+class LockStep : public ::testing::Test {
+ protected:
+  /// 3 s in `batches` batches of ~step, each batch's messages in
+  /// (`caught_up` at its end's sim time) before the next.
+  void run(int batches, const std::vector<ros::Subscriber*>& topics, const std::function<bool(double)>& caught_up) {
+    ros::ServiceClient step = nh_.serviceClient<rigid_body_sim::Step>("/sim_node/step");
+    ASSERT_TRUE(step.waitForExistence(ros::Duration(30.0)));
+    ASSERT_TRUE(spinUntil(
+        [&] {
+          for (const ros::Subscriber* s : topics) {
+            if (s->getNumPublishers() == 0) return false;
+          }
+          return true;
+        },
+        30.0));
+    const int steps = 3000 / batches;
+    for (int batch = 1; batch <= batches; ++batch) {
+      rigid_body_sim::Step srv;
+      srv.request.steps = steps;
+      ASSERT_TRUE(step.call(srv) && srv.response.success) << srv.response.message;
+      const double t = kDt * steps * batch - 1e-9;
+      ASSERT_TRUE(spinUntil([&] { return caught_up(t); }, 30.0)) << "batch " << batch;
+    }
+  }
+
+  ros::NodeHandle nh_;
+  template <class M>
+  ros::Subscriber into(const std::string& topic, std::vector<M>& out) {
+    return nh_.subscribe<M>(topic, 1000, [&out](const typename M::ConstPtr& m) { out.push_back(*m); });
+  }
+};
+
+class Timeline : public LockStep {
+ protected:
+  /// 3 s in batches of 0.04 s (four of /odom's: its publisher queues 10;
+  /// and a whole number of the controller's periods, since the node
+  /// publishes its odometry after a ~step as well).
+  void run() {
+    LockStep::run(75, {&drive_, &imu_, &noisy_, &truth_}, [&](double t) {
+      return through(odom, t) && through(imus, t) && through(truths, t) && through(noisy, t);
+    });
+  }
+
+  std::vector<nav_msgs::Odometry> odom, noisy, truths;
+  std::vector<sensor_msgs::Imu> imus;
+  ros::Subscriber drive_ = into("/base_controller/odom", odom), imu_ = into("/imu", imus),
+                  noisy_ = into("/odom", noisy), truth_ = into("/ground_truth", truths);
+};
+
+TEST_F(Timeline, TheNodeInLockStepPublishesRbsimsOutputsToTheLastBit) {
+  run();
+  const std::string out = rbsimOut("diff_drive.urdf", "diff_drive_timeline.yaml");
+  // The controller's odometry: t,x,y,heading,linear,lateral,angular every 20 steps.
+  const Rows rows = rbsimRows(out, "diff_drive.base_controller.odom.csv");
+  ASSERT_EQ(rows.size(), 151u);
+  expectDriveOdometry(odom, rows);
   EXPECT_GE(odom.size(), 150u);  // every 20 steps (the one at start may come before the subscription)
   EXPECT_GT(odom.back().pose.pose.position.x, 0.8);  // and it moved: 0.5 m/s on an arc for 2 s
 
   // The IMU, every 10 steps from the first period's end: t,qx,qy,qz,qw,wx,wy,wz,ax,ay,az.
-  const Rows imu_rows = rbsimRows("diff_drive.imu.csv");
+  const Rows imu_rows = rbsimRows(out, "diff_drive.imu.csv");
   ASSERT_EQ(imu_rows.size(), 300u);
   EXPECT_GE(imus.size(), 299u);  // the first may come before the node counts the subscriber
   for (const sensor_msgs::Imu& m : imus) {
@@ -151,7 +170,8 @@ TEST_F(Timeline, TheNodeInLockStepPublishesRbsimsOutputsToTheLastBit) {
     for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], r[i + 1]) << "t " << r[0] << " column " << i + 1;
   }
   // The noisy odometry and its truth, every 10 steps (publish_rate 100 Hz).
-  const Rows noisy_rows = rbsimRows("diff_drive.odom.csv"), truth_rows = rbsimRows("diff_drive.ground_truth.csv");
+  const Rows noisy_rows = rbsimRows(out, "diff_drive.odom.csv"),
+             truth_rows = rbsimRows(out, "diff_drive.ground_truth.csv");
   ASSERT_EQ(noisy_rows.size(), 300u);
   ASSERT_EQ(truth_rows.size(), 300u);
   EXPECT_GE(noisy.size(), 299u);
@@ -161,6 +181,38 @@ TEST_F(Timeline, TheNodeInLockStepPublishesRbsimsOutputsToTheLastBit) {
   // The noise is there: the report is not the truth.
   ASSERT_FALSE(noisy.empty());
   EXPECT_NE(noisy.back().pose.pose.position.x, truths.back().pose.pose.position.x);
+}
+
+class TimelineLidar : public LockStep {
+ protected:
+  /// 3 s in batches of 0.1 s: a scan and five of the controller's odometry each.
+  void run() {
+    LockStep::run(30, {&drive_, &scan_}, [&](double t) { return through(odom, t) && through(scans, t); });
+  }
+
+  std::vector<nav_msgs::Odometry> odom;
+  std::vector<sensor_msgs::LaserScan> scans;
+  ros::Subscriber drive_ = into("/base_controller/odom", odom), scan_ = into("/scan", scans);
+};
+
+TEST_F(TimelineLidar, TheNodeInLockStepPublishesRbsimsScansToTheLastBit) {
+  run();
+  const std::string out = rbsimOut("diff_drive_lidar.urdf", "diff_drive_lidar_timeline.yaml");
+  expectDriveOdometry(odom, rbsimRows(out, "diff_drive_lidar.base_controller.odom.csv"));
+  EXPECT_GE(odom.size(), 150u);
+  // Every scan: t and 360 ranges (m; LaserScan's are float32 of the same doubles, REP 117's inf kept).
+  const Rows rows = rbsimRows(out, "diff_drive_lidar.scan.csv");
+  ASSERT_EQ(rows.size(), 30u);
+  EXPECT_EQ(scans.size(), 30u);
+  for (const sensor_msgs::LaserScan& m : scans) {
+    const std::vector<double>& r = rowAt(rows, m.header.stamp);
+    ASSERT_EQ(r.size(), 361u);
+    ASSERT_EQ(m.ranges.size(), 360u);
+    for (std::size_t k = 0; k < 360; ++k)
+      EXPECT_EQ(m.ranges[k], static_cast<float>(r[k + 1])) << "t " << r[0] << " ray " << k;
+  }
+  ASSERT_FALSE(scans.empty());
+  EXPECT_NEAR(scans.front().ranges[180], 1.9, 0.01);  // the wall ahead, from 0.1 m ahead of the base
 }
 
 }  // namespace

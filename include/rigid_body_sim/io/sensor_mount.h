@@ -100,10 +100,11 @@ struct DeviceMemory {
 RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup, const core::ArticulationModel& model,
                           double dt, DeviceMemory& memory);
 
-/// The core's set of `sensors`' IMUs, odometry, receivers and
-/// magnetometers on a robot of `model` at `now`, in steps of `dt`: each at
-/// its entry's rate (an odometry's 0: `odometry_rate`, the node's
-/// ~publish_rate; a receiver's or magnetometer's 0: every step).
+/// The core's set of `sensors`' IMUs, odometry, receivers, magnetometers,
+/// lidars (range finders among them) and depth cameras on a robot of
+/// `model` at `now`, in steps of `dt`: each at its entry's rate (an
+/// odometry's 0: `odometry_rate`, the node's ~publish_rate; a receiver's
+/// or magnetometer's 0: every step).
 core::LinkSensors linkSensors(const RobotSensors& sensors, const core::ArticulationModel& model,
                               const core::ArticulationState& now, double dt, double odometry_rate);
 

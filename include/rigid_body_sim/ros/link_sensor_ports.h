@@ -1,8 +1,8 @@
 // The topics of robots' link sensors: each robot's core::LinkSensors (its
-// IMUs, odometry, GNSS receivers and magnetometers, sampled by the core at
-// their rates of sim time, core/devices/link_sensors.h) and, beside each
-// channel, the port that turns its fresh samples into messages stamped on
-// the node's clock:
+// IMUs, odometry, GNSS receivers, magnetometers, lidars, range finders and
+// depth cameras, sampled by the core at their rates of sim time,
+// core/devices/link_sensors.h) and, beside each channel, the port that
+// turns its fresh samples into messages stamped on the node's clock:
 // - an IMU's sensor_msgs/Imu (REP 145);
 // - odometry, a robot's `odom_noise` (its base on `odom` with the noise,
 //   exact on `ground_truth`) and Gazebo's gazebo_ros_p3d, a
@@ -12,15 +12,22 @@
 //   is), odom -> link on tf too;
 // - hector's GNSS receivers (sensor_msgs/NavSatFix and its velocity,
 //   geometry_msgs/Vector3Stamped) and magnetometers (Vector3Stamped or
-//   sensor_msgs/MagneticField).
-// The noise is drawn whether or not anyone listens. A robot's sensors and
-// their ports are one record, added and dropped together.
+//   sensor_msgs/MagneticField);
+// - a lidar's sensor_msgs/LaserScan (one fan) or PointCloud2 (several), a
+//   range finder's sensor_msgs/Range, in the sensor's frame; a depth
+//   camera's TOPIC/depth/image_raw (sensor_msgs/Image, 32FC1 or 16UC1),
+//   TOPIC/depth/camera_info and TOPIC/depth/points (range_messages.h).
+// A ray device nobody listens to is not cast; every noise is what it would
+// be if someone had. A robot's sensors and their ports are one record,
+// added and dropped together.
 #pragma once
 
 #include <ros/ros.h>
 #include <tf2_ros/transform_broadcaster.h>
 
+#include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -47,7 +54,10 @@ class LinkSensorPorts {
   /// tf_prefix): the world's frame of its base leaves tf for them.
   std::vector<std::string> tfFrames(std::size_t r) const;
   /// Robot r deleted: its topics close; the later robots move down by one.
-  void removeRobot(std::size_t r) { robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r)); }
+  void removeRobot(std::size_t r);
+  /// Bytes the lidars and cameras of every robot may hold (io::RobotSensors::bytes):
+  /// what a spawn's devices are counted on top of. Read on the spawn thread, changed on the loop's.
+  std::uintmax_t bytes() const { return bytes_.load(); }
   /// Robot r was put somewhere (set_model_configuration, a reset): each of
   /// its IMUs' next period starts now.
   void restartImus(const core::Simulation& sim, std::size_t r);
@@ -78,6 +88,18 @@ class LinkSensorPorts {
     bool field_message = false;
     CountedPublisher field;
   };
+  struct LidarPort {
+    std::string frame;
+    double rate = 10.0;                   ///< its entry's Hz: a LaserScan's scan_time is 1 / rate
+    std::optional<io::RangeEntry> range;  ///< a range finder: its Range's fields
+    bool organized = false;               ///< a cloud of every ray (LidarEntry::organized)
+    CountedPublisher publisher;
+  };
+  struct CameraPort {
+    std::string frame;
+    bool millimetres = false;
+    CountedPublisher image, info, points;
+  };
   /// One robot: its own handle first (what it opened closes before it), its
   /// sensors, and a port per channel, in the channels' order.
   struct Robot {
@@ -87,7 +109,18 @@ class LinkSensorPorts {
     std::vector<OdometryPort> odometry;
     std::vector<FixPort> fixes;
     std::vector<FieldPort> fields;
+    std::vector<LidarPort> lidars;
+    std::vector<CameraPort> cameras;
+    std::uintmax_t bytes = 0;  ///< what its lidars and cameras may hold
   };
+
+  /// Robot `robot`'s (named `name`) lidars and depth cameras: their ports.
+  void addRangePorts(Robot& robot, const char* name, const std::string& prefix, const std::string& frame_prefix,
+                     const io::RobotSensors& sensors);
+  /// Which of robot `robot`'s ray devices someone listens to: those cast.
+  static void chooseCasts(Robot& robot);
+  /// Publishes its lidars' and cameras' fresh samples.
+  static void publishRanges(const Robot& robot, const ros::Time& stamp);
 
   /// Publishes robot `robot`'s fresh samples.
   void publishRobot(const Robot& robot, const std_msgs::Header& header);
@@ -96,6 +129,7 @@ class LinkSensorPorts {
   double dt_, publish_rate_;
   std::string world_frame_;
   std::vector<Robot> robots_;
+  std::atomic<std::uintmax_t> bytes_{0};
   std::vector<geometry_msgs::TransformStamped> tf_;           ///< this publication's, reused
   std::optional<tf2_ros::TransformBroadcaster> broadcaster_;  ///< made with the first odometry on tf
 };

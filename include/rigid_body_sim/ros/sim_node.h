@@ -47,7 +47,6 @@
 #include "rigid_body_sim/ros/markers.h"
 #include "rigid_body_sim/ros/pacer.h"
 #include "rigid_body_sim/ros/params.h"
-#include "rigid_body_sim/ros/range_sensors.h"
 #include "rigid_body_sim/ros/robot_commands.h"
 #include "rigid_body_sim/ros/robot_ports.h"
 #include "rigid_body_sim/ros/sim_clock.h"
@@ -132,7 +131,7 @@ class SimNode {
   const NodeSettings& settings_ = params_.node;  ///< ~physics changes params_.node
   /// The robots' controllers as the world was loaded, until commands_ takes them.
   std::vector<io::RobotControls> start_controls_;
-  /// The robots' sensors as the world was loaded, until range_sensors_ and link_sensors_ take them.
+  /// The robots' sensors as the world was loaded, until link_sensors_ takes them.
   std::vector<io::RobotSensors> start_sensors_;
   /// The model and every table in its bodies' order: a world edit goes through it once.
   core::Simulation sim_;
@@ -143,8 +142,7 @@ class SimNode {
   core::Loads loads_;
   std::vector<core::ArticulationLoads> robot_loads_;  ///< per robot, its controllers' efforts
   std::optional<RobotCommands> commands_;             ///< the robots' controllers and their topics
-  std::optional<RangeSensors> range_sensors_;         ///< the robots' lidars and depth cameras
-  std::optional<LinkSensorPorts> link_sensors_;       ///< the IMUs, odometry, GNSS and magnetometers on robots' links
+  std::optional<LinkSensorPorts> link_sensors_;       ///< the sensors on robots' links: motion and ray devices
   std::optional<LinkContacts> link_contacts_;         ///< the contact sensors on robots' links (bumpers)
   std::optional<JointWrenches> joint_wrenches_;       ///< the force-torque sensors on robots' joints
 
@@ -176,7 +174,6 @@ class SimNode {
        [this] {
          rebaseClock();
          commands_->restart(sim_);  // nothing drives a reset robot back (gazebo_ros_pkgs #1311)
-         range_sensors_->restart();
          link_sensors_->restart(sim_);
          joint_wrenches_->restart();
        }}};

@@ -31,7 +31,7 @@ std::uintmax_t depthCameraBytes(const DepthCameraSettings& s) {
   return pixels * (sizeof(Vec3) + 2 * sizeof(double) + 2 * (4 + 16));
 }
 
-DepthCamera::DepthCamera(const DepthCameraSettings& settings) : settings_(settings), rng_(settings.seed) {
+DepthCamera::DepthCamera(const DepthCameraSettings& settings) : settings_(settings) {
   checkDepthCamera(settings_);
   focal_ = 0.5 * settings_.width / std::tan(0.5 * settings_.hfov);
   const std::size_t pixels = static_cast<std::size_t>(settings_.width) * static_cast<std::size_t>(settings_.height);
@@ -84,6 +84,8 @@ void DepthCamera::capture(const Model& model, const State& state, const Pose& X_
     }
   }
   // Then row by row, so that the noise is drawn in the pixels' order.
+  rng_.seed(sampleSeed(s.seed, images_++));
+  normal_.reset();  // no value of the last stream's held over
   for (std::size_t k = 0; k < rays_.size(); ++k) {
     const double length = per_depth_[k];
     const double t = depth[k];

@@ -46,7 +46,7 @@ std::uintmax_t lidarBytes(const LidarSettings& s) {
   return rays * (sizeof(Vec3) + sizeof(double) + sizeof(RayCone) / 16 + 1 + 2 * message);
 }
 
-Lidar::Lidar(const LidarSettings& settings) : settings_(settings), rng_(settings.seed) {
+Lidar::Lidar(const LidarSettings& settings) : settings_(settings) {
   checkLidar(settings_);
   const LidarSettings& s = settings_;
   increment_ = s.samples > 1 ? (s.max_angle - s.min_angle) / (s.samples - 1) : 0.0;
@@ -74,6 +74,8 @@ void Lidar::scan(const Model& model, const State& state, const Pose& X_WS, const
   const LidarSettings& s = settings_;
   const Mat3 R_WS = X_WS.rotation.toRotationMatrix();
   const RayWorld world(model, state, skip);
+  rng_.seed(sampleSeed(s.seed, scans_++));
+  normal_.reset();  // no value of the last stream's held over
   ranges.resize(directions_.size());
   for (std::size_t k = 0; k < directions_.size(); ++k) {
     if (k % kGroup == 0) {  // the next group's bodies, culled once for its rays

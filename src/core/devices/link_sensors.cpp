@@ -49,8 +49,25 @@ void LinkSensors::addMagnetometer(const MagnetometerSettings& settings, const Li
   fresh_[static_cast<std::size_t>(Kind::kMagnetometer)].push_back(0);
 }
 
-bool LinkSensors::sample(const ArticulationModel& model, const ArticulationState& state, long long steps, double t,
-                         const Vec3& gravity_W) {
+void LinkSensors::addLidar(const LidarSettings& settings, const std::optional<RangeFinderSettings>& finder,
+                           const LinkMount& at, double rate) {
+  LidarChannel& c = lidars_.emplace_back(LidarChannel{Lidar(settings), std::nullopt, at, SampleClock(rate, dt_), {}});
+  if (finder) c.finder.emplace(*finder);
+  fresh_[static_cast<std::size_t>(Kind::kLidar)].push_back(0);
+  cast_[static_cast<std::size_t>(Kind::kLidar)].push_back(1);
+}
+
+void LinkSensors::addDepthCamera(const DepthCameraSettings& settings, const LinkMount& at, double rate) {
+  depth_cameras_.push_back({DepthCamera(settings), at, SampleClock(rate, dt_), {}});
+  fresh_[static_cast<std::size_t>(Kind::kDepthCamera)].push_back(0);
+  cast_[static_cast<std::size_t>(Kind::kDepthCamera)].push_back(1);
+}
+
+bool LinkSensors::sample(const Scene& scene, std::size_t r, const State& bodies, const ArticulationState& state,
+                         long long steps, double t) {
+  const SceneRobot& robot = scene.robots().at(r);
+  const ArticulationModel& model = robot.model;
+  const Vec3& gravity_W = scene.model().gravity();
   bool placed = false;  // the robot's links, once for all its sensors
   const auto place = [&] {
     if (!placed) kinematics(model, state, kin_);
@@ -89,7 +106,45 @@ bool LinkSensors::sample(const ArticulationModel& model, const ArticulationState
     if (!c.clock.due(steps)) continue;
     c.field_S = c.magnetometer.report(frame(c.at).q_WL, c.clock.elapsed(t));
   }
-  return placed;
+  bool seen = false;  // the robot's own links marked unseen, once for all its ray devices
+  const auto pose = [&](const LinkMount& at) {
+    place();
+    if (!seen) {
+      skip_.assign(scene.model().bodyCount(), 0);
+      for (std::size_t k = 0; k < robot.link.size(); ++k) skip_.at(static_cast<std::size_t>(robot.first_body) + k) = 1;
+      seen = true;
+    }
+    const Placement X_WS = kin_.X_WL[static_cast<std::size_t>(at.link)] * Placement::of(at.X_LS);
+    return Pose{Quat(X_WS.R_PC), X_WS.p_PC};
+  };
+  const auto due = [&](Kind kind, std::size_t i, const SampleClock& clock) {
+    fresh_[static_cast<std::size_t>(kind)][i] = clock.due(steps);
+    return clock.due(steps);
+  };
+  for (std::size_t i = 0; i < lidars_.size(); ++i) {
+    LidarChannel& c = lidars_[i];
+    if (!due(Kind::kLidar, i, c.clock)) continue;
+    if (!cast(Kind::kLidar, i)) {
+      c.lidar.pass();
+      if (c.finder) c.finder->pass();
+      continue;
+    }
+    c.lidar.scan(scene.model(), bodies, pose(c.at), skip_, c.ranges);
+    const LidarSettings& s = c.lidar.settings();
+    if (c.finder) c.reading = c.finder->reading(c.ranges, s.min_range, s.max_range);
+  }
+  for (std::size_t i = 0; i < depth_cameras_.size(); ++i) {
+    DepthCameraChannel& c = depth_cameras_[i];
+    if (!due(Kind::kDepthCamera, i, c.clock)) continue;
+    if (cast(Kind::kDepthCamera, i)) {
+      c.camera.capture(scene.model(), bodies, pose(c.at), skip_, c.depth);
+    } else {
+      c.camera.pass();
+    }
+  }
+  bool any = placed;
+  for (const std::vector<char>& f : fresh_) any = any || std::find(f.begin(), f.end(), 1) != f.end();
+  return any;
 }
 
 void LinkSensors::restartImus(const ArticulationModel& model, const ArticulationState& now) {
@@ -104,6 +159,11 @@ void LinkSensors::restartNoise() {
   }
   for (GnssChannel& c : gnss_) c.gnss.restart();
   for (MagnetometerChannel& c : magnetometers_) c.magnetometer.restart();
+  for (LidarChannel& c : lidars_) {
+    c.lidar.restart();
+    if (c.finder) c.finder->restart();
+  }
+  for (DepthCameraChannel& c : depth_cameras_) c.camera.restart();
 }
 
 }  // namespace rigid_body_sim::core

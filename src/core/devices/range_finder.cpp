@@ -6,6 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "rigid_body_sim/core/devices/sample_seed.h"
+
 namespace rigid_body_sim::core {
 
 void checkRangeFinder(const RangeFinderSettings& s) {
@@ -14,16 +16,19 @@ void checkRangeFinder(const RangeFinderSettings& s) {
   }
 }
 
-RangeFinder::RangeFinder(const RangeFinderSettings& settings) : settings_(settings), rng_(settings.seed) {
-  checkRangeFinder(settings_);
-}
+RangeFinder::RangeFinder(const RangeFinderSettings& settings) : settings_(settings) { checkRangeFinder(settings_); }
 
 double RangeFinder::reading(const std::vector<double>& ranges, double min_range, double max_range) {
+  const std::uint64_t k = readings_++;
   const double nearest =
       ranges.empty() ? std::numeric_limits<double>::infinity() : *std::min_element(ranges.begin(), ranges.end());
   if (!std::isfinite(nearest)) return nearest;
-  // Drawn for each met reading alone, so the sequence is the seed's whatever is in sight.
-  const double noisy = settings_.noise > 0.0 ? nearest + settings_.noise * normal_(rng_) : nearest;
+  double noisy = nearest;
+  if (settings_.noise > 0.0) {  // reading k's own stream, whatever was in sight before
+    rng_.seed(sampleSeed(settings_.seed, k));
+    normal_.reset();
+    noisy += settings_.noise * normal_(rng_);
+  }
   return std::clamp(noisy, min_range, max_range);
 }
 

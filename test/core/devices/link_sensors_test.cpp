@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "../controllers/controlled_robot.h"
 
 namespace rigid_body_sim::test {
@@ -51,7 +54,7 @@ TEST(LinkSensors, AnImuSamplesAtItsRateOverItsOwnPeriod) {
   int samples = 0;
   for (long long k = 1; k <= 100; ++k) {
     w.step({});
-    const bool any = sensors.sample(w.model(), w.robot(), k, static_cast<double>(k) * kStep, kG);
+    const bool any = sensors.sample(w.scene, 0, w.state.bodies, w.robot(), k, static_cast<double>(k) * kStep);
     EXPECT_EQ(any, k % 10 == 0) << k;
     EXPECT_EQ(sensors.fresh(Kind::kImu, 0), k % 10 == 0) << k;
     if (!any) continue;
@@ -89,8 +92,8 @@ TEST(LinkSensors, OdometryReceiversAndMagnetometersReadTheirMount) {
   }
   for (long long k = 1; k <= 40; ++k) {
     w.step({});
-    a.sample(w.model(), w.robot(), k, static_cast<double>(k) * kStep, kG);
-    b.sample(w.model(), w.robot(), k, static_cast<double>(k) * kStep, kG);
+    a.sample(w.scene, 0, w.state.bodies, w.robot(), k, static_cast<double>(k) * kStep);
+    b.sample(w.scene, 0, w.state.bodies, w.robot(), k, static_cast<double>(k) * kStep);
     const core::LinkState bob = w.bob();
     EXPECT_TRUE(a.fresh(Kind::kGnss, 0));
     const core::GnssFix exact = core::exactGnssFix(gnss.reference, bob.p_WL, bob.v_WL);
@@ -125,11 +128,60 @@ TEST(LinkSensors, ARestartedImuReadsNoJump) {
   w.robot().v.setZero();
   restarted.restartImus(w.model(), w.robot());
   w.step({});
-  kept.sample(w.model(), w.robot(), 1, kStep, kG);
-  restarted.sample(w.model(), w.robot(), 1, kStep, kG);
+  kept.sample(w.scene, 0, w.state.bodies, w.robot(), 1, kStep);
+  restarted.sample(w.scene, 0, w.state.bodies, w.robot(), 1, kStep);
   EXPECT_NEAR((restarted.imus()[0].reading.f_S - Vec3(0.0, 0.0, 9.81)).norm(), 0.0, 1e-6);
   EXPECT_NEAR(restarted.imus()[0].reading.w_S.norm(), 0.0, 1e-9);
   EXPECT_NEAR(kept.imus()[0].reading.w_S.norm(), 1000.0, 1.0);
+}
+
+// A lidar on the bob, hanging at rest 0.5 m above the ground and looking
+// straight down from inside the bob's own ball: it samples at its rate,
+// sees the ground at 0.5 m / cos(azimuth) and not its own link; one not
+// cast while nobody reads it casts the same noisy scan as one cast every
+// time.
+TEST(LinkSensors, ALidarCastsIntoTheWorldAtItsRateAndSkipsItsOwnLinks) {
+  ArticulationModel model = pendulum(10.0);
+  core::CollisionShape ball;
+  ball.kind = core::CollisionShape::Kind::kSphere;
+  ball.radius = 0.05;
+  ball.X_LS.translation = kAtBob.translation;
+  model.links[1].collision = {ball};
+  ModelSpec spec = Alone::spec(kG);
+  spec.scene = {core::Sdf::plane(Vec3::UnitZ(), Vec3(0.0, 0.0, -1.0))};
+  const Scene scene(spec, {{"robot", model}});
+  SceneState state = core::sceneState(scene, {}, {core::restState(model)});
+  ASSERT_EQ(scene.robots()[0].link.size(), 1u);  // the bob's ball is a body of the world
+  core::LidarSettings lidar;
+  lidar.samples = 3;
+  lidar.min_angle = -0.2;
+  lidar.max_angle = 0.2;
+  lidar.noise = 0.001;
+  lidar.seed = 4;
+  const core::LinkMount down{1, core::Pose{Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitY())), kAtBob.translation}};
+  LinkSensors every(kStep), late(kStep);
+  every.addLidar(lidar, std::nullopt, down, 100.0);
+  late.addLidar(lidar, core::RangeFinderSettings{}, down, 100.0);
+  late.cast(Kind::kLidar, 0, false);
+  for (long long k = 1; k <= 20; ++k) {
+    if (k == 11) late.cast(Kind::kLidar, 0, true);  // someone listens from the second scan on
+    const double t = static_cast<double>(k) * kStep;
+    EXPECT_EQ(every.sample(scene, 0, state.bodies, state.robots[0], k, t), k % 10 == 0) << k;
+    late.sample(scene, 0, state.bodies, state.robots[0], k, t);
+    EXPECT_EQ(every.fresh(Kind::kLidar, 0), k % 10 == 0) << k;
+    if (k == 10) {
+      EXPECT_TRUE(late.fresh(Kind::kLidar, 0));
+      EXPECT_TRUE(late.lidars()[0].ranges.empty());  // due, but not cast
+    }
+  }
+  const std::vector<double>& ranges = every.lidars()[0].ranges;
+  ASSERT_EQ(ranges.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(ranges[i], 0.5 / std::cos(-0.2 + 0.2 * static_cast<double>(i)), 0.01) << i;
+  }
+  EXPECT_NE(ranges[1], 0.5);                   // with its noise
+  EXPECT_EQ(late.lidars()[0].ranges, ranges);  // the second scan, as if the first had been cast
+  EXPECT_EQ(late.lidars()[0].reading, *std::min_element(ranges.begin(), ranges.end()));  // no noise of its own
 }
 
 }  // namespace

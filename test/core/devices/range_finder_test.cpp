@@ -44,6 +44,12 @@ TEST(RangeFinder, ItsNoiseIsSeededGaussianAndHeldWithinItsRanges) {
   a.restart();
   RangeFinder fresh(RangeFinderSettings{0.01, 7});
   EXPECT_EQ(a.reading({1.0}, 0.02, 2.0), fresh.reading({1.0}, 0.02, 2.0));
+  // A reading due but not taken (nobody listened) leaves the next one as it would have been.
+  RangeFinder every(RangeFinderSettings{0.01, 9}), late(RangeFinderSettings{0.01, 9});
+  const double first = every.reading({1.0}, 0.02, 2.0), second = every.reading({1.0}, 0.02, 2.0);
+  late.pass();
+  EXPECT_EQ(late.reading({1.0}, 0.02, 2.0), second);
+  EXPECT_NE(first, second);
   EXPECT_THROW(RangeFinder(RangeFinderSettings{-1.0, 0}), std::invalid_argument);
   EXPECT_THROW(RangeFinder(RangeFinderSettings{std::nan(""), 0}), std::invalid_argument);
 }

@@ -316,6 +316,33 @@ TEST(Lidar, NoiseIsSeededGaussianOfItsSigma) {
   EXPECT_EQ(ra, rb);
 }
 
+TEST(Lidar, AScanDueButNotCastLeavesTheNextOneAsItWouldHaveBeen) {
+  // The node casts no scan nobody listens to: a subscriber that comes late
+  // must get the scans a subscriber from the start gets, noise and all.
+  core::ModelSpec s;
+  s.scene = {Sdf::plane(kZ)};
+  const core::Model model(s);
+  const core::State state = core::restState(model);
+  core::LidarSettings settings;
+  settings.samples = 200;
+  settings.min_angle = -1.0;
+  settings.max_angle = 1.0;
+  settings.vertical_samples = 3;
+  settings.vertical_min_angle = -1.2;
+  settings.vertical_max_angle = -0.8;
+  settings.noise = 0.01;
+  settings.seed = 11;
+  core::Lidar every(settings), late(settings);
+  const core::Pose X_WS{Quat::Identity(), Vec3(0, 0, 2)};
+  std::vector<double> first, second, after_pass;
+  every.scan(model, state, X_WS, {}, first);
+  every.scan(model, state, X_WS, {}, second);
+  late.pass();
+  late.scan(model, state, X_WS, {}, after_pass);
+  EXPECT_EQ(after_pass, second);
+  EXPECT_NE(first, second);  // each scan its own noise
+}
+
 TEST(Lidar, RefusesSettingsNamingTheField) {
   const auto refused = [](core::LidarSettings s, const char* what) {
     try {
@@ -422,6 +449,29 @@ TEST(DeviceBytes, CoverWhatTheLidarAndTheCameraAllocate) {
     EXPECT_LE(used, core::depthCameraBytes(c));
     EXPECT_GE(used, core::depthCameraBytes(c) / 3) << "the count is far above what the camera holds";
   }
+}
+
+TEST(DepthCamera, AnImageDueButNotCastLeavesTheNextOneAsItWouldHaveBeen) {
+  core::ModelSpec s;
+  s.scene = {Sdf::plane(Vec3(-1.0, 0.0, 0.0), Vec3(2, 0, 0))};
+  const core::Model model(s);
+  const core::State state = core::restState(model);
+  core::DepthCameraSettings settings;
+  settings.width = 16;
+  settings.height = 12;
+  settings.noise = 0.01;
+  settings.seed = 5;
+  core::DepthCamera every(settings), late(settings);
+  std::vector<double> first, second, after_pass;
+  every.capture(model, state, core::Pose{}, {}, first);
+  every.capture(model, state, core::Pose{}, {}, second);
+  late.pass();
+  late.capture(model, state, core::Pose{}, {}, after_pass);
+  EXPECT_EQ(after_pass, second);
+  EXPECT_NE(first, second);
+  every.restart();
+  every.capture(model, state, core::Pose{}, {}, second);
+  EXPECT_EQ(second, first);  // from its seed again
 }
 
 TEST(DepthCamera, ReadsAPlaneAtAnAngleAsItsDepthPerPixel) {

@@ -14,6 +14,7 @@
 
 #include "rigid_body_sim/core/bodies/geometry.h"
 #include "rigid_body_sim/core/devices/ray_cast.h"
+#include "rigid_body_sim/core/devices/sample_seed.h"
 
 namespace rigid_body_sim::core {
 
@@ -50,10 +51,13 @@ class DepthCamera {
 
   /// One image from S at X_WS in `state`: `depth` (m, row by row from the
   /// top-left), the bodies `skip` marks unseen.
+  /// Image k's noise is its own (sampleSeed(seed, k)), whatever came before.
   void capture(const Model& model, const State& state, const Pose& X_WS, const std::vector<char>& skip,
                std::vector<double>& depth);
-  /// Starts the noise again from its seed.
-  void restart() { rng_.seed(settings_.seed); }
+  /// An image due but not cast (nobody reads it): the next one is image k + 1 all the same.
+  void pass() { ++images_; }
+  /// The next image is image 0 again: the noise from its seed.
+  void restart() { images_ = 0; }
 
  private:
   DepthCameraSettings settings_;
@@ -68,7 +72,8 @@ class DepthCamera {
     double reach;        ///< m per m of max_depth: its longest ray's range per unit depth
   };
   std::vector<Tile> tiles_;
-  std::vector<int> among_;  ///< one tile's bodies, reused
+  std::vector<int> among_;    ///< one tile's bodies, reused
+  std::uint64_t images_ = 0;  ///< images so far, cast or passed
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};
 };

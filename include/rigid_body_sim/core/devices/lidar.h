@@ -13,6 +13,7 @@
 
 #include "rigid_body_sim/core/bodies/geometry.h"
 #include "rigid_body_sim/core/devices/ray_cast.h"
+#include "rigid_body_sim/core/devices/sample_seed.h"
 
 namespace rigid_body_sim::core {
 
@@ -54,10 +55,13 @@ class Lidar {
 
   /// One scan from S at X_WS in `state`: `ranges` (m, one per ray, fan by
   /// fan, REP 117's ±inf), the bodies `skip` marks unseen (its own links).
+  /// Scan k's noise is its own (sampleSeed(seed, k)), whatever came before.
   void scan(const Model& model, const State& state, const Pose& X_WS, const std::vector<char>& skip,
             std::vector<double>& ranges);
-  /// Starts the noise again from its seed (a world reset).
-  void restart() { rng_.seed(settings_.seed); }
+  /// A scan due but not cast (nobody reads it): the next one is scan k + 1 all the same.
+  void pass() { ++scans_; }
+  /// The next scan is scan 0 again: the noise from its seed (a world reset).
+  void restart() { scans_ = 0; }
 
  private:
   LidarSettings settings_;
@@ -67,7 +71,8 @@ class Lidar {
   /// are culled once for all of them (RayWorld::cull).
   static constexpr std::size_t kGroup = 16;
   std::vector<RayCone> cones_;
-  std::vector<int> among_;  ///< one group's bodies, reused
+  std::vector<int> among_;   ///< one group's bodies, reused
+  std::uint64_t scans_ = 0;  ///< scans so far, cast or passed
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};
 };

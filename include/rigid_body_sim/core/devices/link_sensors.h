@@ -1,9 +1,10 @@
-// A robot's sensors that read its links' motion (docs/physics.md §10.11):
-// IMUs, odometry (exact, or with its noise), GNSS receivers and
-// magnetometers, each at a mount on a moving link, each sampled at its
-// rate of sim time from the state a step left. One robot's set is one
-// object: the node turns its fresh samples into messages, rbsim into rows
-// of a file, and both get the same numbers. ROS-free.
+// A robot's sensors on its links (docs/physics.md §10.11): those that read
+// a link's motion (IMUs, odometry exact or with its noise, GNSS receivers,
+// magnetometers) and those that cast rays into the world from it (lidars,
+// range finders, depth cameras), each at a mount on a moving link, each
+// sampled at its rate of sim time from the state a step left. One robot's
+// set is one object: the node turns its fresh samples into messages, rbsim
+// into rows of a file, and both get the same numbers. ROS-free.
 #pragma once
 
 #include <array>
@@ -11,9 +12,13 @@
 #include <vector>
 
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
+#include "rigid_body_sim/core/articulations/scene.h"
+#include "rigid_body_sim/core/devices/depth_camera.h"
 #include "rigid_body_sim/core/devices/earth_sensors.h"
 #include "rigid_body_sim/core/devices/imu.h"
+#include "rigid_body_sim/core/devices/lidar.h"
 #include "rigid_body_sim/core/devices/odom_noise.h"
+#include "rigid_body_sim/core/devices/range_finder.h"
 
 namespace rigid_body_sim::core {
 
@@ -80,6 +85,24 @@ struct MagnetometerChannel {
   Vec3 field_S = Vec3::Zero();  ///< in the sensor's axes
 };
 
+/// A lidar on a link, or a range finder (gazebo_ros_range): one reading,
+/// the nearest of its lidar's rays.
+struct LidarChannel {
+  Lidar lidar;
+  std::optional<RangeFinder> finder;
+  LinkMount at;
+  SampleClock clock;
+  std::vector<double> ranges;  ///< the last scan cast: m per ray, fan by fan (REP 117's ±inf)
+  double reading = kNoHit;     ///< a range finder's last (m, REP 117's ±inf)
+};
+
+struct DepthCameraChannel {
+  DepthCamera camera;
+  LinkMount at;
+  SampleClock clock;
+  std::vector<double> depth;  ///< the last image cast: m per pixel, row by row from the top left
+};
+
 /// One robot's link sensors, in the order they were added (each kind its
 /// own list), and which of them the last sample() took.
 class LinkSensors {
@@ -94,30 +117,47 @@ class LinkSensors {
   void addOdometry(const std::optional<OdomNoiseSettings>& noise, const LinkMount& at, double rate);
   void addGnss(const GnssSettings& settings, const LinkMount& at, double rate);
   void addMagnetometer(const MagnetometerSettings& settings, const LinkMount& at, double rate);
+  /// A lidar at `at`, `rate` Hz; with `finder`, a range finder of its rays.
+  void addLidar(const LidarSettings& settings, const std::optional<RangeFinderSettings>& finder, const LinkMount& at,
+                double rate);
+  void addDepthCamera(const DepthCameraSettings& settings, const LinkMount& at, double rate);
 
-  /// After the world's step `steps` (1 the first), which left `state` at
-  /// sim time t: every sensor due samples (its noise is drawn whether or
-  /// not anyone reads it), its channel holds the sample and fresh() says
-  /// so. Returns whether any was due.
-  bool sample(const ArticulationModel& model, const ArticulationState& state, long long steps, double t,
-              const Vec3& gravity_W);
+  /// After the world's step `steps` (1 the first), which left robot r of
+  /// `scene` at `state` and the world's bodies at `bodies`, at sim time t:
+  /// every sensor due samples, its channel holds the sample and fresh()
+  /// says so. A ray device casts into the world, its robot's own links
+  /// unseen, unless cast(kind, i, false) said nobody reads it this time:
+  /// then it passes (its next sample's noise is the same either way; a
+  /// motion sensor's noise is drawn whether or not anyone reads it).
+  /// Returns whether any was due.
+  bool sample(const Scene& scene, std::size_t r, const State& bodies, const ArticulationState& state, long long steps,
+              double t);
 
   /// The robot was put somewhere (set_model_configuration, a reset): each
   /// IMU's next period starts at `now` (a jump is no acceleration).
   void restartImus(const ArticulationModel& model, const ArticulationState& now);
-  /// A reset: each odometry's drift from zero, each receiver's and
-  /// magnetometer's error from its seed (the world's clock runs on, and
-  /// with it theirs).
+  /// A reset: each odometry's drift from zero, each receiver's,
+  /// magnetometer's and ray device's noise from its seed (the world's clock
+  /// runs on, and with it theirs).
   void restartNoise();
 
   const std::vector<ImuChannel>& imus() const { return imus_; }
   const std::vector<OdometryChannel>& odometry() const { return odometry_; }
   const std::vector<GnssChannel>& gnss() const { return gnss_; }
   const std::vector<MagnetometerChannel>& magnetometers() const { return magnetometers_; }
-  /// Whether the last sample() took the channel (`kind`'s i-th).
-  enum class Kind { kImu, kOdometry, kGnss, kMagnetometer };
+  const std::vector<LidarChannel>& lidars() const { return lidars_; }
+  const std::vector<DepthCameraChannel>& depthCameras() const { return depth_cameras_; }
+  enum class Kind { kImu, kOdometry, kGnss, kMagnetometer, kLidar, kDepthCamera };
+  /// Whether the last sample() took the channel (`kind`'s i-th); a ray
+  /// device's was cast if fresh and cast(kind, i) too.
   bool fresh(Kind kind, std::size_t i) const { return fresh_[static_cast<std::size_t>(kind)].at(i) != 0; }
-  bool empty() const { return imus_.empty() && odometry_.empty() && gnss_.empty() && magnetometers_.empty(); }
+  /// Whether ray device `kind`'s i-th casts when due (as added: yes).
+  bool cast(Kind kind, std::size_t i) const { return cast_[static_cast<std::size_t>(kind)].at(i) != 0; }
+  void cast(Kind kind, std::size_t i, bool yes) { cast_[static_cast<std::size_t>(kind)].at(i) = yes ? 1 : 0; }
+  bool empty() const {
+    return imus_.empty() && odometry_.empty() && gnss_.empty() && magnetometers_.empty() && lidars_.empty() &&
+           depth_cameras_.empty();
+  }
 
  private:
   double dt_;
@@ -125,8 +165,14 @@ class LinkSensors {
   std::vector<OdometryChannel> odometry_;
   std::vector<GnssChannel> gnss_;
   std::vector<MagnetometerChannel> magnetometers_;
-  std::array<std::vector<char>, 4> fresh_;  ///< per Kind, per channel
-  ArticulationKinematics kin_;              ///< reused by every sample
+  std::vector<LidarChannel> lidars_;
+  std::vector<DepthCameraChannel> depth_cameras_;
+  static constexpr std::size_t kKinds = 6;
+  std::array<std::vector<char>, kKinds> fresh_;  ///< per Kind, per channel
+  std::array<std::vector<char>, kKinds> cast_;   ///< per Kind, per channel (the ray devices')
+  // Reused by every sample.
+  ArticulationKinematics kin_;
+  std::vector<char> skip_;  ///< per body of the world: the robot's own
 };
 
 }  // namespace rigid_body_sim::core

@@ -26,12 +26,16 @@ class RangeFinder {
   /// something nearer than `min_range`, else the least met range with
   /// Gaussian noise of σ `noise`, held within [min_range, max_range], else
   /// +∞ (nothing met within max_range).
+  /// Reading k's noise is its own (sampleSeed(seed, k)).
   double reading(const std::vector<double>& ranges, double min_range, double max_range);
-  /// Starts the noise again from its seed (a world reset).
-  void restart() { rng_.seed(settings_.seed); }
+  /// A reading due but not taken: the next one is reading k + 1 all the same.
+  void pass() { ++readings_; }
+  /// The next reading is reading 0 again: the noise from its seed (a world reset).
+  void restart() { readings_ = 0; }
 
  private:
   RangeFinderSettings settings_;
+  std::uint64_t readings_ = 0;  ///< readings so far, taken or passed
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};
 };

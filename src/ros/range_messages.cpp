@@ -1,5 +1,5 @@
-// The robots' lidars and depth cameras in the node: range_sensors.h.
-#include "rigid_body_sim/ros/range_sensors.h"
+// The messages of lidars, range finders and depth cameras: range_messages.h.
+#include "rigid_body_sim/ros/range_messages.h"
 
 #include <sensor_msgs/point_cloud2_iterator.h>
 
@@ -8,8 +8,6 @@
 #include <cstring>
 #include <limits>
 #include <tuple>
-
-#include "rigid_body_sim/ros/topic_claims.h"
 
 namespace rigid_body_sim::node {
 
@@ -164,115 +162,6 @@ sensor_msgs::PointCloud2 depthCloudMessage(const core::DepthCamera& camera, cons
     *z = seen ? static_cast<float>(d) : nan;
   }
   return m;
-}
-
-void RangeSensors::addRobot(const std::string& robot, const std::string& prefix, const std::string& frame_prefix,
-                            const std::vector<io::RobotLidar>& lidars, const std::vector<io::RobotCamera>& cameras) {
-  ros::NodeHandle& nh = *handles_.emplace_back(ownHandle(nh_));
-  std::vector<CameraPort> camera_ports;
-  for (const io::RobotCamera& c : cameras) {
-    bytes_ += core::depthCameraBytes(c.entry.settings);
-    const std::string& frame = c.entry.frame_id.empty() ? c.entry.link : c.entry.frame_id;
-    CameraPort p{
-        core::DepthCamera(c.entry.settings), c.link, c.X_LS, 1, c.entry.millimetres, frame_prefix + frame, {}, {}, {}};
-    p.every = std::max(1LL, std::llround(1.0 / (c.entry.rate * dt_)));
-    const std::array<std::string, 3> topics = cameraTopics(prefix, c.entry);  // image, info, points
-    const std::string ns = deviceTopic(prefix, c.entry.topic) + "/";
-    p.image = CountedPublisher::advertise<sensor_msgs::Image>(nh, topics[0], 2);
-    p.info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(nh, topics[1], 2);
-    p.points = CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh, topics[2], 2);
-    ROS_INFO("sim_node: robot '%s': a depth camera of %d x %d on '%s', %s{%s, %s, %s} at %g Hz", robot.c_str(),
-             c.entry.settings.width, c.entry.settings.height, p.frame.c_str(), nh_.resolveName(ns).c_str(),
-             c.entry.image_topic.c_str(), c.entry.info_topic.c_str(), c.entry.points_topic.c_str(), c.entry.rate);
-    camera_ports.push_back(std::move(p));
-  }
-  cameras_.push_back(std::move(camera_ports));
-  std::vector<Port> ports;
-  for (const io::RobotLidar& l : lidars) {
-    bytes_ += core::lidarBytes(l.entry.settings);
-    const std::string& frame = l.entry.frame_id.empty() ? l.entry.link : l.entry.frame_id;
-    Port p{core::Lidar(l.entry.settings), l.link, l.X_LS, l.entry.rate, 1,
-           frame_prefix + frame,          {},     {},     {},           l.entry.organized};
-    p.every = std::max(1LL, std::llround(1.0 / (l.entry.rate * dt_)));
-    const bool cloud = l.entry.settings.vertical_samples > 1;
-    const std::string topic = deviceTopic(prefix, l.entry.topic);
-    if (l.entry.range) {
-      p.range = l.entry.range;
-      p.finder.emplace(l.entry.range->settings);
-      p.publisher = CountedPublisher::advertise<sensor_msgs::Range>(nh, topic, 10);
-    } else {
-      p.publisher = cloud ? CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh, topic, 10)
-                          : CountedPublisher::advertise<sensor_msgs::LaserScan>(nh, topic, 10);
-    }
-    ROS_INFO("sim_node: robot '%s': a %s of %zu rays on '%s', %s on %s at %g Hz", robot.c_str(),
-             p.range ? "range finder" : "lidar", p.lidar.rayCount(), p.frame.c_str(),
-             p.range ? "sensor_msgs/Range"
-             : cloud ? "sensor_msgs/PointCloud2"
-                     : "sensor_msgs/LaserScan",
-             nh_.resolveName(topic).c_str(), p.rate);
-    ports.push_back(std::move(p));
-  }
-  robots_.push_back(std::move(ports));
-}
-
-void RangeSensors::removeRobot(std::size_t r) {
-  for (const Port& p : robots_.at(r)) bytes_ -= core::lidarBytes(p.lidar.settings());
-  for (const CameraPort& p : cameras_.at(r)) bytes_ -= core::depthCameraBytes(p.camera.settings());
-  robots_.erase(robots_.begin() + static_cast<std::ptrdiff_t>(r));
-  cameras_.erase(cameras_.begin() + static_cast<std::ptrdiff_t>(r));
-  handles_.erase(handles_.begin() + static_cast<std::ptrdiff_t>(r));  // after what it opened
-}
-
-void RangeSensors::restart() {
-  for (std::vector<Port>& ports : robots_) {
-    for (Port& p : ports) {
-      p.lidar.restart();
-      if (p.finder) p.finder->restart();
-    }
-  }
-  for (std::vector<CameraPort>& ports : cameras_) {
-    for (CameraPort& p : ports) p.camera.restart();
-  }
-}
-
-core::Pose RangeSensors::sensorPose(const core::Simulation& sim, std::size_t r, int link, const core::Pose& X_LS,
-                                    bool& placed) {
-  const core::SceneRobot& robot = sim.scene.robots()[r];
-  if (!placed) {  // the robot's links, once for all its sensors
-    core::kinematics(robot.model, sim.robots[r], kin_);
-    skip_.assign(sim.model().bodyCount(), 0);
-    for (std::size_t k = 0; k < robot.link.size(); ++k) skip_[static_cast<std::size_t>(robot.first_body) + k] = 1;
-    placed = true;
-  }
-  const core::Placement X_WS = kin_.X_WL[static_cast<std::size_t>(link)] * core::Placement::of(X_LS);
-  return core::Pose{core::Quat(X_WS.R_PC), X_WS.p_PC};
-}
-
-void RangeSensors::sample(const core::Simulation& sim, long long steps, const ros::Time& stamp) {
-  for (std::size_t r = 0; r < robots_.size(); ++r) {
-    bool placed = false;
-    for (Port& p : robots_[r]) {
-      if (steps % p.every != 0 || !p.publisher.listened()) continue;
-      p.lidar.scan(sim.model(), sim.state, sensorPose(sim, r, p.link, p.X_LS, placed), skip_, ranges_);
-      if (p.finder) {
-        const core::LidarSettings& s = p.lidar.settings();
-        p.publisher.publish(
-            rangeMessage(p.lidar, *p.range, p.finder->reading(ranges_, s.min_range, s.max_range), p.frame, stamp));
-      } else if (p.lidar.settings().vertical_samples > 1) {
-        p.publisher.publish(cloudMessage(p.lidar, ranges_, p.organized, p.frame, stamp));
-      } else {
-        p.publisher.publish(scanMessage(p.lidar, ranges_, p.rate, p.frame, stamp));
-      }
-    }
-    for (CameraPort& p : cameras_[r]) {
-      if (steps % p.every != 0) continue;
-      if (p.info.listened()) p.info.publish(cameraInfoMessage(p.camera, p.frame, stamp));
-      if (!p.image.listened() && !p.points.listened()) continue;
-      p.camera.capture(sim.model(), sim.state, sensorPose(sim, r, p.link, p.X_LS, placed), skip_, depth_);
-      if (p.image.listened()) p.image.publish(depthImageMessage(p.camera, depth_, p.millimetres, p.frame, stamp));
-      if (p.points.listened()) p.points.publish(depthCloudMessage(p.camera, depth_, p.frame, stamp));
-    }
-  }
 }
 
 }  // namespace rigid_body_sim::node
