@@ -1,5 +1,7 @@
 #include "rigid_body_sim/ros/world_edits.h"
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <chrono>
 #include <vector>
@@ -54,6 +56,10 @@ void WorldEdits::deleteRobot(std::size_t r, DeleteBody::Response& res) {
   sim_.removeRobot(r);
   topics_.release(name);
   hooks_.robot_removed(r, name);  // its topics and controllers
+  // What it held goes back to the system, not only to the allocator: after
+  // 200 robots spawned and deleted, 24 at most at once, glibc kept 2 MB
+  // more of them (20 MB -> 25.1 MB resident, 23.1 MB with this; churn.test).
+  malloc_trim(0);
   if (settings_.report_timing) {
     pacer_.recordDelete(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }

@@ -19,15 +19,14 @@
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Float64.h>
-#include <xmlrpcpp/XmlRpcClient.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "node_process.h"
 #include "rigid_body_sim/Contacts.h"
 #include "rigid_body_sim/DeleteBody.h"
 #include "rigid_body_sim/GetJointProperties.h"
@@ -254,34 +253,6 @@ TEST_F(ArmEdits, ASpawnWhoseDevicesWouldPassTheirMemoryIsRefusedBeforeAnyIsBuilt
   rigid_body_sim::DeleteBody d;
   d.request.name = "eyes";
   EXPECT_FALSE(call("delete_body", d).response.success);  // nothing of it in the world
-}
-
-/// sim_node's process id, as rosnode info asks it: the node's own XML-RPC getPid.
-int simNodePid() {
-  XmlRpc::XmlRpcValue args, result, uri;
-  args[0] = ros::this_node::getName();
-  args[1] = "/sim_node";
-  if (!ros::master::execute("lookupNode", args, result, uri, true)) return -1;
-  std::string host;
-  uint32_t port = 0;
-  if (!ros::network::splitURI(uri, host, port)) return -1;
-  XmlRpc::XmlRpcClient client(host.c_str(), static_cast<int>(port), "/");
-  XmlRpc::XmlRpcValue ask, answer;
-  ask[0] = ros::this_node::getName();
-  if (!client.execute("getPid", ask, answer) || answer.size() < 3) return -1;
-  return static_cast<int>(answer[2]);
-}
-
-/// Its resident memory (VmRSS), kB.
-long residentKb(int pid) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  std::string key;
-  long kb = -1;
-  while (status >> key) {
-    if (key == "VmRSS:") status >> kb;
-    status.ignore(1 << 12, '\n');
-  }
-  return kb;
 }
 
 // Spawns and deletes of a robot with sensors and a drive leave the node's
