@@ -322,6 +322,10 @@ core::LinkSensors linkSensors(const RobotSensors& sensors, const core::Articulat
     out.addLidar(l.entry.settings, finder, {l.link, l.X_LS}, l.entry.rate);
   }
   for (const RobotCamera& c : sensors.cameras) out.addDepthCamera(c.entry.settings, {c.link, c.X_LS}, c.entry.rate);
+  for (const RobotForceTorque& f : sensors.force_torques) out.addForceTorque(f.entry.settings, f.link, f.entry.rate);
+  for (const RobotContactSensor& c : sensors.contact_sensors) {
+    out.addContactSensor({c.link, c.X_LS}, c.entry.frame_id.empty(), c.entry.rate);
+  }
   return out;
 }
 

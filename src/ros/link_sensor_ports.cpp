@@ -1,6 +1,7 @@
 // The topics of robots' link sensors: link_sensor_ports.h.
 #include "rigid_body_sim/ros/link_sensor_ports.h"
 
+#include <geometry_msgs/WrenchStamped.h>
 #include <nav_msgs/Odometry.h>
 
 #include <array>
@@ -17,15 +18,8 @@ namespace rigid_body_sim::node {
 void LinkSensorPorts::addRobot(const core::Simulation& sim, std::size_t r, const std::string& prefix,
                                const std::string& frame_prefix, const io::RobotSensors& sensors) {
   const core::SceneRobot& robot = sim.scene.robots()[r];
-  Robot& ports = robots_.emplace_back(Robot{ownHandle(nh_),
-                                            io::linkSensors(sensors, robot.model, sim.robots[r], dt_, publish_rate_),
-                                            {},
-                                            {},
-                                            {},
-                                            {},
-                                            {},
-                                            {},
-                                            sensors.bytes});
+  Robot& ports = robots_.emplace_back(
+      ownHandle(nh_), io::linkSensors(sensors, robot.model, sim.robots[r], dt_, publish_rate_), sensors.bytes);
   bytes_ += sensors.bytes;
   ros::NodeHandle& nh = *ports.nh;
   const char* name = robot.name.c_str();
@@ -70,6 +64,31 @@ void LinkSensorPorts::addRobot(const core::Simulation& sim, std::size_t r, const
              ports.sensors.magnetometers()[i].clock.rate());
   }
   addRangePorts(ports, name, prefix, frame_prefix, sensors);
+  addForcePorts(ports, name, robot.model, prefix, frame_prefix, sensors);
+}
+
+void LinkSensorPorts::addForcePorts(Robot& robot, const char* name, const core::ArticulationModel& model,
+                                    const std::string& prefix, const std::string& frame_prefix,
+                                    const io::RobotSensors& sensors) {
+  ros::NodeHandle& nh = *robot.nh;
+  for (std::size_t i = 0; i < sensors.force_torques.size(); ++i) {
+    const io::RobotForceTorque& f = sensors.force_torques[i];
+    WrenchPort& p = robot.wrenches.emplace_back();
+    p.frame = frame_prefix + model.links[static_cast<std::size_t>(f.link)].name;
+    const std::string topic = deviceTopic(prefix, f.entry.topic);
+    p.wrench = CountedPublisher::advertise<geometry_msgs::WrenchStamped>(nh, topic, 10);
+    ROS_INFO("sim_node: robot '%s': the force-torque sensor of joint '%s' on %s at %g Hz", name, f.entry.joint.c_str(),
+             nh_.resolveName(topic).c_str(), robot.sensors.forceTorques()[i].clock.rate());
+  }
+  for (std::size_t i = 0; i < sensors.contact_sensors.size(); ++i) {
+    const io::ContactSensorEntry& e = sensors.contact_sensors[i].entry;
+    ContactPort& p = robot.contacts.emplace_back();
+    p.frame = e.frame_id.empty() ? world_frame_ : frame_prefix + e.frame_id;
+    const std::string topic = deviceTopic(prefix, e.topic);
+    p.contacts = CountedPublisher::advertise<Contacts>(nh, topic, 10);
+    ROS_INFO("sim_node: robot '%s': the contacts of link '%s' on %s in '%s' at %g Hz", name, e.link.c_str(),
+             nh_.resolveName(topic).c_str(), p.frame.c_str(), robot.sensors.contactSensors()[i].clock.rate());
+  }
 }
 
 void LinkSensorPorts::addRangePorts(Robot& robot, const char* name, const std::string& prefix,
@@ -134,17 +153,28 @@ void LinkSensorPorts::restart(const core::Simulation& sim) {
   }
 }
 
-void LinkSensorPorts::publish(const core::Simulation& sim, long long steps, double t, const ros::Time& stamp) {
+void LinkSensorPorts::before(const core::Simulation& sim) {
+  for (std::size_t r = 0; r < robots_.size(); ++r)
+    robots_[r].sensors.before(sim.scene.robots()[r].model, sim.robots[r]);
+}
+
+void LinkSensorPorts::publish(const core::Simulation& sim, const std::vector<core::ArticulationLoads>& robot_loads,
+                              long long steps, double t, const ros::Time& stamp) {
   std_msgs::Header header;
   header.stamp = stamp;
   header.frame_id = world_frame_;
   tf_.clear();
+  core::StepContacts contacts(sim.model(), sim.state, sim.contacts, sim.workspace.bodies.contacts);
   for (std::size_t r = 0; r < robots_.size(); ++r) {
     Robot& robot = robots_[r];
     if (robot.sensors.empty()) continue;
-    chooseCasts(robot);
-    const bool any = robot.sensors.sample(sim.scene, r, sim.state, sim.robots[r], steps, t);
-    if (any && ros::ok()) publishRobot(robot, header);
+    chooseWanted(robot);
+    const core::StepForces forces{r < robot_loads.size() ? &robot_loads[r] : nullptr, &contacts};
+    const bool any = robot.sensors.sample(sim.scene, r, sim.state, sim.robots[r], steps, t, forces);
+    if (any && ros::ok()) {
+      publishRobot(robot, header);
+      publishForces(sim.model(), robot, stamp);
+    }
   }
   if (!tf_.empty() && broadcaster_ && ros::ok()) broadcaster_->sendTransform(tf_);
 }
@@ -197,14 +227,44 @@ void LinkSensorPorts::publishRobot(const Robot& robot, const std_msgs::Header& h
   publishRanges(robot, header.stamp);
 }
 
-void LinkSensorPorts::chooseCasts(Robot& robot) {
+void LinkSensorPorts::chooseWanted(Robot& robot) {
   using Kind = core::LinkSensors::Kind;
   for (std::size_t i = 0; i < robot.lidars.size(); ++i) {
-    robot.sensors.cast(Kind::kLidar, i, robot.lidars[i].publisher.listened());
+    robot.sensors.want(Kind::kLidar, i, robot.lidars[i].publisher.listened());
   }
   for (std::size_t i = 0; i < robot.cameras.size(); ++i) {
     const CameraPort& p = robot.cameras[i];
-    robot.sensors.cast(Kind::kDepthCamera, i, p.image.listened() || p.points.listened());
+    robot.sensors.want(Kind::kDepthCamera, i, p.image.listened() || p.points.listened());
+  }
+  for (std::size_t i = 0; i < robot.wrenches.size(); ++i) {
+    robot.sensors.want(Kind::kForceTorque, i, robot.wrenches[i].wrench.listened());
+  }
+  for (std::size_t i = 0; i < robot.contacts.size(); ++i) {
+    robot.sensors.want(Kind::kContacts, i, robot.contacts[i].contacts.listened());
+  }
+}
+
+void LinkSensorPorts::publishForces(const core::Model& model, const Robot& robot, const ros::Time& stamp) const {
+  using Kind = core::LinkSensors::Kind;
+  const core::LinkSensors& s = robot.sensors;
+  for (std::size_t i = 0; i < robot.wrenches.size(); ++i) {
+    const WrenchPort& p = robot.wrenches[i];
+    const core::Vec6& w = s.forceTorques()[i].wrench;
+    if (!s.fresh(Kind::kForceTorque, i) || !s.wanted(Kind::kForceTorque, i) || !w.allFinite()) continue;
+    geometry_msgs::WrenchStamped m;  // nothing is published non-finite
+    m.header.stamp = stamp;
+    m.header.frame_id = p.frame;
+    m.wrench.torque = toVector3(w.head<3>());
+    m.wrench.force = toVector3(w.tail<3>());
+    p.wrench.publish(m);
+  }
+  for (std::size_t i = 0; i < robot.contacts.size(); ++i) {
+    const ContactPort& p = robot.contacts[i];
+    if (!s.fresh(Kind::kContacts, i) || !s.wanted(Kind::kContacts, i)) continue;
+    std_msgs::Header header;
+    header.stamp = stamp;
+    header.frame_id = p.frame;
+    p.contacts.publish(contactsMessage(model, s.contactSensors()[i].pairs, header));
   }
 }
 
@@ -213,7 +273,7 @@ void LinkSensorPorts::publishRanges(const Robot& robot, const ros::Time& stamp) 
   const core::LinkSensors& s = robot.sensors;
   for (std::size_t i = 0; i < robot.lidars.size(); ++i) {
     const LidarPort& p = robot.lidars[i];
-    if (!s.fresh(Kind::kLidar, i) || !s.cast(Kind::kLidar, i)) continue;
+    if (!s.fresh(Kind::kLidar, i) || !s.wanted(Kind::kLidar, i)) continue;
     const core::LidarChannel& c = s.lidars()[i];
     if (p.range) {
       p.publisher.publish(rangeMessage(c.lidar, *p.range, c.reading, p.frame, stamp));
@@ -228,7 +288,7 @@ void LinkSensorPorts::publishRanges(const Robot& robot, const ros::Time& stamp) 
     if (!s.fresh(Kind::kDepthCamera, i)) continue;
     const core::DepthCameraChannel& c = s.depthCameras()[i];
     if (p.info.listened()) p.info.publish(cameraInfoMessage(c.camera, p.frame, stamp));
-    if (!s.cast(Kind::kDepthCamera, i)) continue;
+    if (!s.wanted(Kind::kDepthCamera, i)) continue;
     if (p.image.listened()) p.image.publish(depthImageMessage(c.camera, c.depth, p.millimetres, p.frame, stamp));
     if (p.points.listened()) p.points.publish(depthCloudMessage(c.camera, c.depth, p.frame, stamp));
   }

@@ -28,17 +28,15 @@ void SimNode::stepOnce() {
   }
   commands_->giveTimed(t);                     // the config's timeline, before the step it is due at
   commands_->loadsFor(sim_, t, robot_loads_);  // the robots' controllers, from the state before the step
-  joint_wrenches_->before(sim_);
+  link_sensors_->before(sim_);                 // the force-torque sensors' velocities before the step
   sim_.step(loads_, robot_loads_);
   commands_->observe(sim_);  // the drives' odometry, from where the step left the wheels
   reportStep();
   ++steps_;
   state_.time = simTime();  // the node's clock: exact multiples of Δt, never reset
   sampleSensors();
-  link_sensors_->publish(sim_, steps_, simTime(), stamp());
   sim_.contacts.update(state_, workspace_.contacts);
-  link_contacts_->publish(sim_, steps_, stamp());
-  joint_wrenches_->publish(sim_, robot_loads_, steps_, stamp());
+  link_sensors_->publish(sim_, robot_loads_, steps_, simTime(), stamp());
   schedule_.dropFinished(simTime());
   sim_.joint_efforts.dropFinished(simTime());
   if (steps_ % publish_every_ == 0) {

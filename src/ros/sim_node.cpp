@@ -167,15 +167,11 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
                            settings_.publish_rate, [this](std::size_t r) { return commands_->jointStateRate(r); });
   checkRobotFrames(robot_publisher_->robots(), settings_.world_frame, ports_.frames());
   link_sensors_.emplace(nh_, model_.dt(), settings_.publish_rate, settings_.world_frame);
-  link_contacts_.emplace(nh_, model_.dt(), settings_.world_frame);
-  joint_wrenches_.emplace(nh_, model_.dt());
   for (std::size_t r = 0; r < sim_.scene.robots().size(); ++r) {
     const std::string& name = sim_.scene.robots()[r].name;
     const std::string prefix = several ? name + "/" : "";
     const std::string& frame_prefix = robot_publisher_->robots()[r].frame_prefix;
     link_sensors_->addRobot(sim_, r, prefix, frame_prefix, start_sensors_[r]);
-    link_contacts_->addRobot(name, prefix, frame_prefix, start_sensors_[r].contact_sensors);
-    joint_wrenches_->addRobot(name, prefix, frame_prefix, start_sensors_[r].force_torques);
     leaveBase(r);
   }
   start_sensors_.clear();
@@ -225,8 +221,6 @@ void SimNode::afterRobotSpawn(SpawnQueue::Spawn& spawn) {
   robot_publisher_->addRobot(sim_.scene.robots()[r], control_prefix, hz, spawn.frame_prefix);
   commands_->addRobot(sim_, r, control_prefix, spawn.frame_prefix, std::move(controls));
   link_sensors_->addRobot(sim_, r, prefix, spawn.frame_prefix, spawn.sensors);
-  link_contacts_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.contact_sensors);
-  joint_wrenches_->addRobot(spawn.request.name, prefix, spawn.frame_prefix, spawn.sensors.force_torques);
   leaveBase(r);
 }
 
@@ -241,8 +235,6 @@ void SimNode::afterRobotDelete(std::size_t r, const std::string& name) {
   robot_publisher_->removeRobot(r);
   commands_->removeRobot(r);
   link_sensors_->removeRobot(r);
-  link_contacts_->removeRobot(r);
-  joint_wrenches_->removeRobot(r);
   robots_speed_limited_.erase(name);
 }
 

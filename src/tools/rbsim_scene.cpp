@@ -68,16 +68,6 @@ int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::Ti
       }
     }
   }
-  for (std::size_t r = 0; r < setup.sensors.size() && r < robots.size(); ++r) {  // said, not silently dropped
-    const io::RobotSensors& d = setup.sensors[r];
-    const std::size_t count = d.contact_sensors.size() + d.force_torques.size();
-    if (count > 0) {
-      std::fprintf(stderr,
-                   "rbsim: note: robot '%s' has %zu contact or force-torque sensors (sim_node "
-                   "samples them; rbsim does not yet)\n",
-                   robots[r].name.c_str(), count);
-    }
-  }
   const double dt = model.dt();
   const long long steps = stepCount(options.duration, dt);
   const double energy_start = sceneEnergy(scene, state);
@@ -123,9 +113,10 @@ int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::Ti
       steps, csv != nullptr, options.every, isatty(STDERR_FILENO) && steps * (free + robots.size()) >= 2'000'000,
       [&](long long k) {
         controls.loadsFor(state, static_cast<double>(k - 1) * dt, loads.robots);  // as the node's clock: steps × dt
+        sensors.before(state);
         core::stepScene(scene, state, loads, ws);
         controls.observe(state, k, static_cast<double>(k) * dt);
-        sensors.sample(state, k, static_cast<double>(k) * dt);
+        sensors.sample(state, loads, ws, k, static_cast<double>(k) * dt);
         max_penetration = std::max(max_penetration, ws.bodies.deepest_penetration);
         if (!ws.bodies.speed_limited.empty() || !ws.bodies.diverged.empty()) {
           checkStep(model, ws.bodies, k * dt, limited);

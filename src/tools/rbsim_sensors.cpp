@@ -19,6 +19,7 @@ constexpr const char* kGnssHeader = "t,latitude,longitude,altitude,v_north,v_wes
 constexpr const char* kFieldHeader = "t,x,y,z\n";
 constexpr const char* kRangeHeader = "t,range\n";
 constexpr const char* kImageHeader = "t,image\n";
+constexpr const char* kWrenchHeader = "t,fx,fy,fz,tx,ty,tz\n";
 
 /// A lidar's header: t and a column per ray, r0 to r(n-1), fan by fan.
 std::string scanHeader(std::size_t rays) {
@@ -35,6 +36,25 @@ std::string fileName(std::string topic) {
 }
 
 void append(std::vector<double>& out, const core::Vec3& v) { out.insert(out.end(), {v.x(), v.y(), v.z()}); }
+
+/// A contact sensor's sample as a JSON line: t and each pair touching its
+/// link (the `body` side), by name, in its frame.
+std::string contactsLine(const core::Model& model, const std::vector<core::ContactPairReport>& pairs, double t) {
+  Json out = {{"t", t}, {"contacts", Json::array()}};
+  for (const core::ContactPairReport& p : pairs) {
+    Json points = Json::array();
+    for (const core::Vec3& q : p.points_W) points.push_back(vec(q));
+    out["contacts"].push_back({{"body", model.body(p.body).name},
+                               {"other", p.other >= 0 ? Json(model.body(p.other).name) : Json(nullptr)},
+                               {"scene_item", p.item >= 0 ? Json(p.item) : Json(nullptr)},
+                               {"points", points},
+                               {"normal", vec(p.normal_W)},
+                               {"depth", num(p.depth)},
+                               {"normal_force", vec(p.normal_force_W)},
+                               {"friction_force", vec(p.friction_force_W)}});
+  }
+  return out.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
 
 }  // namespace
 
@@ -73,11 +93,19 @@ SensorRun::SensorRun(const core::Scene& scene, const core::SceneState& start,
       const std::string topic = e.image_topic.rfind('/', 0) == 0 ? e.image_topic : e.topic + "/" + e.image_topic;
       open(out_dir, r, topic, kImageHeader, Kind::kDepthCamera, i);
     }
+    for (std::size_t i = 0; i < s.force_torques.size(); ++i) {
+      open(out_dir, r, s.force_torques[i].entry.topic, kWrenchHeader, Kind::kForceTorque, i);
+    }
+    for (std::size_t i = 0; i < s.contact_sensors.size(); ++i) {
+      open(out_dir, r, s.contact_sensors[i].entry.topic, "", Kind::kContacts, i);
+    }
   }
-  if (out_dir.empty()) {  // nothing reads them: not cast
+  if (out_dir.empty()) {  // nothing reads them: not read
     for (core::LinkSensors& s : sensors_) {
-      for (std::size_t i = 0; i < s.lidars().size(); ++i) s.cast(Kind::kLidar, i, false);
-      for (std::size_t i = 0; i < s.depthCameras().size(); ++i) s.cast(Kind::kDepthCamera, i, false);
+      for (std::size_t i = 0; i < s.lidars().size(); ++i) s.want(Kind::kLidar, i, false);
+      for (std::size_t i = 0; i < s.depthCameras().size(); ++i) s.want(Kind::kDepthCamera, i, false);
+      for (std::size_t i = 0; i < s.forceTorques().size(); ++i) s.want(Kind::kForceTorque, i, false);
+      for (std::size_t i = 0; i < s.contactSensors().size(); ++i) s.want(Kind::kContacts, i, false);
     }
   }
 }
@@ -85,7 +113,7 @@ SensorRun::SensorRun(const core::Scene& scene, const core::SceneState& start,
 void SensorRun::open(const std::string& out_dir, std::size_t robot, const std::string& topic, const std::string& header,
                      Kind kind, std::size_t index, bool truth) {
   Log log{robot, kind, index, truth, nullptr, out_dir + "/" + scene_.robots()[robot].name + "." + fileName(topic)};
-  const std::string path = log.stem + ".csv";
+  const std::string path = log.stem + (kind == Kind::kContacts ? ".jsonl" : ".csv");  // JSON lines: one a sample
   if (std::find(paths_.begin(), paths_.end(), path) != paths_.end()) {
     throw UsageError("--out: two of robot '" + scene_.robots()[robot].name + "''s sensors would write '" + path +
                      "' (their topics are the same)");
@@ -109,11 +137,19 @@ void SensorRun::finish() {
   if (!whole) throw UsageError("--out: a sensor's file could not be written whole");
 }
 
-void SensorRun::sample(const core::SceneState& state, long long steps, double t) {
+void SensorRun::before(const core::SceneState& state) {
+  for (std::size_t r = 0; r < sensors_.size(); ++r) sensors_[r].before(scene_.robots()[r].model, state.robots[r]);
+}
+
+void SensorRun::sample(const core::SceneState& state, const core::SceneLoads& loads, const core::SceneWorkspace& ws,
+                       long long steps, double t) {
+  ledger_.update(state.bodies, ws.bodies.contacts);
+  core::StepContacts contacts(scene_.model(), state.bodies, ledger_, ws.bodies.contacts);
   bool any = false;
   for (std::size_t r = 0; r < sensors_.size(); ++r) {
     if (sensors_[r].empty()) continue;
-    any = sensors_[r].sample(scene_, r, state.bodies, state.robots[r], steps, t) || any;
+    const core::StepForces forces{r < loads.robots.size() ? &loads.robots[r] : nullptr, &contacts};
+    any = sensors_[r].sample(scene_, r, state.bodies, state.robots[r], steps, t, forces) || any;
   }
   if (!any) return;
   for (const Log& log : logs_) {
@@ -183,6 +219,15 @@ void SensorRun::row(const Log& log, long long steps, double t) const {
       std::fputs(line.c_str(), log.file);
       return;
     }
+    case Kind::kForceTorque: {
+      const core::Vec6& w = s.forceTorques()[log.index].wrench;  // [torque; force]
+      append(v, w.tail<3>());
+      append(v, w.head<3>());
+      break;
+    }
+    case Kind::kContacts:
+      std::fputs((contactsLine(scene_.model(), s.contactSensors()[log.index].pairs, t) + "\n").c_str(), log.file);
+      return;
   }
   std::string line = text(t);
   for (const double x : v) line += "," + text(x);

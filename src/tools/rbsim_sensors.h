@@ -1,10 +1,11 @@
 // rbsim's sensors: each robot's link sensors (core::LinkSensors: IMUs,
 // odometry, GNSS receivers, magnetometers, lidars, range finders, depth
-// cameras) sampled after each step as the node samples them, and with
-// --out each one's samples written to a file of its own (docs/rbsim.md):
-// a CSV row per sample, a depth image a PFM file beside it. Without --out
-// nothing is cast (the noise of what is cast later is the same). Contact
-// and force-torque sensors are named once as not run yet.
+// cameras, force-torque and contact sensors) sampled after each step as
+// the node samples them, and with --out each one's samples written to a
+// file of its own (docs/rbsim.md): a CSV row per sample, a depth image a
+// PFM file beside it, a contact sensor's pairs a JSON line. Without --out
+// no ray is cast and no force read (the noise of what is read later is
+// the same).
 #pragma once
 
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "rigid_body_sim/core/articulations/scene.h"
+#include "rigid_body_sim/core/contacts/contact_report.h"
 #include "rigid_body_sim/core/devices/link_sensors.h"
 #include "rigid_body_sim/io/sensor_mount.h"
 
@@ -30,9 +32,12 @@ class SensorRun {
   SensorRun(const SensorRun&) = delete;
   SensorRun& operator=(const SensorRun&) = delete;
 
-  /// After step `steps` (its end at sim time t): the sensors due sample,
-  /// and their rows are written.
-  void sample(const core::SceneState& state, long long steps, double t);
+  /// Before a step from `state`: what the force-torque sensors read the step's acceleration from.
+  void before(const core::SceneState& state);
+  /// After step `steps` (its end at sim time t, under `loads`, with the
+  /// workspace `ws` it left): the sensors due sample, and their rows are written.
+  void sample(const core::SceneState& state, const core::SceneLoads& loads, const core::SceneWorkspace& ws,
+              long long steps, double t);
   /// Closes the files; a UsageError if one could not be written whole.
   void finish();
 
@@ -57,6 +62,7 @@ class SensorRun {
 
   const core::Scene& scene_;
   std::vector<core::LinkSensors> sensors_;
+  core::ContactLedger ledger_;  ///< what sleeping bodies touch, as the node's
   std::vector<Log> logs_;
   std::vector<std::string> paths_;
 };

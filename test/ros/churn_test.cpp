@@ -1,12 +1,13 @@
 // Robots coming and going (churn.test: an empty world on the ground): 200
-// robots, each with a lidar, an IMU and a DiffDriveController, spawned and
-// deleted in a random order (seeded), up to 24 at once, interleaved with
+// robots (40 under ASan), each with a lidar, an IMU and a
+// DiffDriveController, spawned and deleted in a random order (seeded), up
+// to 24 at once, interleaved with
 // cmd_vel on their controllers' topics and service calls on their joints,
 // and the same calls on robots already deleted. The node never ends; once
 // the last is deleted nothing of any is left: no topic it published or
 // subscribed, no service, no parameter, no tf frame, no controller; and
-// its resident memory is back within 5 % of where it was before the
-// spawns (issue 57).
+// its resident memory is no higher after the second half of them than
+// after the first (issue 57; why not within 5 % of before: at the end).
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -29,7 +30,11 @@ namespace rbs_test {
 namespace {
 
 /// A name of one of the churned robots ("r17"), at the start of a topic, service, parameter or frame.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kRobots = 40;  ///< spawned and deleted: under ASan each spawn takes about a second
+#else
 constexpr int kRobots = 200;  ///< spawned and deleted
+#endif
 
 const std::regex kChurned("^/?r[0-9]+(/|$)");
 

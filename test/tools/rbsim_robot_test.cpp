@@ -368,6 +368,60 @@ TEST(Rbsim, WritesADepthCamerasImagesAsPfm) {
   }
 }
 
+// The force sensors of Gazebo markup, run as the node runs them. A bar
+// held level on its shoulder by a JointPositionController
+// (test/ros/ft_sensor.urdf's gazebo_ros_ft_sensor, 100 Hz): the joint
+// carries its weight, 1 kg, and its moment, m g 0.3 m, in the bar's axes.
+// A four-wheeled base at rest on the ground (test/ros/skid_steer.urdf's
+// gazebo_ros_bumper on each wheel, 20 Hz, in the world's frame): the
+// wheels' contacts bear its 7.01 kg; the chassis touches nothing.
+TEST(Rbsim, WritesForceTorqueAndContactSensorsSamples) {
+  const std::string src = RBS_SOURCE_DIR;
+  const std::string a = tempPath("forces");
+  ASSERT_EQ(std::system(("mkdir -p " + a).c_str()), 0);
+  const Result held = rbsim("--urdf " + src +
+                            "/test/ros/ft_sensor.urdf --duration 3 --quiet --set 'controllers={shoulder_hold: {type: "
+                            "effort_controllers/JointPositionController, joint: shoulder, pid: {p: 400, i: 400, d: 20, "
+                            "i_clamp: 50}}}' --out " +
+                            a);
+  ASSERT_EQ(held.code, 0) << held.err;
+  const std::vector<std::vector<double>> ft = csvRows(a + "/ft_arm.ft.csv", "t,fx,fy,fz,tx,ty,tz");
+  ASSERT_EQ(ft.size(), 300u);  // 100 Hz for 3 s
+  EXPECT_DOUBLE_EQ(ft.front()[0], 0.01);
+  EXPECT_NEAR(ft.back()[1], 0.0, 0.01);
+  EXPECT_NEAR(ft.back()[3], 9.81, 0.01);
+  EXPECT_NEAR(ft.back()[5], -9.81 * 0.3, 0.01);
+
+  const Result rests = rbsim(
+      "--urdf " + src + "/test/ros/skid_steer.urdf --set initial.position=[0,0,0.1] --duration 1 --quiet --out " + a);
+  ASSERT_EQ(rests.code, 0) << rests.err;
+  double bearing = 0.0;
+  for (const char* wheel : {"front_left_wheel", "front_right_wheel", "rear_left_wheel", "rear_right_wheel"}) {
+    std::istringstream lines(slurp(a + "/skid_steer." + wheel + ".contacts.jsonl"));
+    std::string line, last;
+    int samples = 0;
+    while (std::getline(lines, line)) {
+      last = line;
+      ++samples;
+    }
+    EXPECT_EQ(samples, 20) << wheel;  // its <update_rate> of 20 Hz
+    const YAML::Node at_end = YAML::Load(last);
+    EXPECT_DOUBLE_EQ(at_end["t"].as<double>(), 1.0);
+    ASSERT_EQ(at_end["contacts"].size(), 1u) << wheel << ": " << last;
+    const YAML::Node c = at_end["contacts"][0];
+    EXPECT_EQ(c["body"].as<std::string>(), std::string("skid_steer/") + wheel);
+    EXPECT_TRUE(c["other"].IsNull());
+    EXPECT_EQ(c["scene_item"].as<int>(), 0);  // the ground
+    EXPECT_NEAR(seq(c["normal"])[2], 1.0, 1e-6);
+    bearing += seq(c["normal_force"])[2];
+  }
+  EXPECT_NEAR(bearing, 7.01 * 9.81, 0.01 * 7.01 * 9.81);
+  std::istringstream chassis(slurp(a + "/skid_steer.chassis.contacts.jsonl"));
+  std::string first;
+  ASSERT_TRUE(std::getline(chassis, first));
+  EXPECT_EQ(YAML::Load(first)["contacts"].size(), 0u);
+}
+
 // The shipped world of robots and bodies: each entry in the config's
 // order, a robot's with its joints; the pendulum strikes the ball forward,
 // the rover rolls into the crate and stops against it.

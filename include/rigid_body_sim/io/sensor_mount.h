@@ -101,10 +101,11 @@ RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup
                           double dt, DeviceMemory& memory);
 
 /// The core's set of `sensors`' IMUs, odometry, receivers, magnetometers,
-/// lidars (range finders among them) and depth cameras on a robot of
-/// `model` at `now`, in steps of `dt`: each at its entry's rate (an
-/// odometry's 0: `odometry_rate`, the node's ~publish_rate; a receiver's
-/// or magnetometer's 0: every step).
+/// lidars (range finders among them), depth cameras, force-torque and
+/// contact sensors on a robot of `model` at `now`, in steps of `dt`: each
+/// at its entry's rate (an odometry's 0: `odometry_rate`, the node's
+/// ~publish_rate; a receiver's, magnetometer's, force-torque or contact
+/// sensor's 0: every step).
 core::LinkSensors linkSensors(const RobotSensors& sensors, const core::ArticulationModel& model,
                               const core::ArticulationState& now, double dt, double odometry_rate);
 

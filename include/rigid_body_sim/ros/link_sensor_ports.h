@@ -16,9 +16,15 @@
 // - a lidar's sensor_msgs/LaserScan (one fan) or PointCloud2 (several), a
 //   range finder's sensor_msgs/Range, in the sensor's frame; a depth
 //   camera's TOPIC/depth/image_raw (sensor_msgs/Image, 32FC1 or 16UC1),
-//   TOPIC/depth/camera_info and TOPIC/depth/points (range_messages.h).
-// A ray device nobody listens to is not cast; every noise is what it would
-// be if someone had. A robot's sensors and their ports are one record,
+//   TOPIC/depth/camera_info and TOPIC/depth/points (range_messages.h);
+// - a force-torque sensor's geometry_msgs/WrenchStamped (Gazebo's
+//   gazebo_ros_ft_sensor: what its joint carries onto its child link, in
+//   that link's frame), a contact sensor's rigid_body_sim/Contacts (Gazebo's
+//   gazebo_ros_bumper: every pair touching its link, the link on the `body`
+//   side, in the world frame or a frame fixed to the link;
+//   gazebo_msgs/ContactsState is not in Debian 12).
+// A ray device or force sensor nobody listens to is not read; every noise
+// is what it would be if someone had. A robot's sensors and their ports are one record,
 // added and dropped together.
 #pragma once
 
@@ -31,6 +37,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rigid_body_sim/core/devices/link_sensors.h"
@@ -63,9 +70,13 @@ class LinkSensorPorts {
   void restartImus(const core::Simulation& sim, std::size_t r);
   /// After a reset: every robot's IMUs restarted, each drift from zero, each noise from its seed.
   void restart(const core::Simulation& sim);
+  /// Before a step of `sim`: the velocities its force-torque sensors read the step's acceleration from.
+  void before(const core::Simulation& sim);
   /// Samples what is due after step `steps` of `sim`'s state (sim time
-  /// t) and publishes it, stamped `stamp`.
-  void publish(const core::Simulation& sim, long long steps, double t, const ros::Time& stamp);
+  /// t; its contact ledger updated with the step), under `robot_loads`
+  /// (the step's, per robot, or none), and publishes it, stamped `stamp`.
+  void publish(const core::Simulation& sim, const std::vector<core::ArticulationLoads>& robot_loads, long long steps,
+               double t, const ros::Time& stamp);
 
  private:
   struct ImuPort {
@@ -100,9 +111,19 @@ class LinkSensorPorts {
     bool millimetres = false;
     CountedPublisher image, info, points;
   };
+  struct WrenchPort {
+    std::string frame;  ///< the child link's, after the robot's tf_prefix
+    CountedPublisher wrench;
+  };
+  struct ContactPort {
+    std::string frame;  ///< the world's, or the one the sensor names
+    CountedPublisher contacts;
+  };
   /// One robot: its own handle first (what it opened closes before it), its
   /// sensors, and a port per channel, in the channels' order.
   struct Robot {
+    Robot(std::shared_ptr<ros::NodeHandle> handle, core::LinkSensors set, std::uintmax_t held)
+        : nh(std::move(handle)), sensors(std::move(set)), bytes(held) {}
     std::shared_ptr<ros::NodeHandle> nh;  ///< ownHandle
     core::LinkSensors sensors;
     std::vector<ImuPort> imus;
@@ -111,16 +132,22 @@ class LinkSensorPorts {
     std::vector<FieldPort> fields;
     std::vector<LidarPort> lidars;
     std::vector<CameraPort> cameras;
+    std::vector<WrenchPort> wrenches;
+    std::vector<ContactPort> contacts;
     std::uintmax_t bytes = 0;  ///< what its lidars and cameras may hold
   };
 
   /// Robot `robot`'s (named `name`) lidars and depth cameras: their ports.
   void addRangePorts(Robot& robot, const char* name, const std::string& prefix, const std::string& frame_prefix,
                      const io::RobotSensors& sensors);
-  /// Which of robot `robot`'s ray devices someone listens to: those cast.
-  static void chooseCasts(Robot& robot);
-  /// Publishes its lidars' and cameras' fresh samples.
+  /// Its force-torque and contact sensors' ports.
+  void addForcePorts(Robot& robot, const char* name, const core::ArticulationModel& model, const std::string& prefix,
+                     const std::string& frame_prefix, const io::RobotSensors& sensors);
+  /// Which of robot `robot`'s ray devices and force sensors someone listens to: those read.
+  static void chooseWanted(Robot& robot);
+  /// Publishes its lidars', cameras' and force sensors' fresh samples.
   static void publishRanges(const Robot& robot, const ros::Time& stamp);
+  void publishForces(const core::Model& model, const Robot& robot, const ros::Time& stamp) const;
 
   /// Publishes robot `robot`'s fresh samples.
   void publishRobot(const Robot& robot, const std_msgs::Header& header);

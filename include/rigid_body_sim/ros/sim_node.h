@@ -40,8 +40,6 @@
 #include "rigid_body_sim/ros/body_ports.h"
 #include "rigid_body_sim/ros/counted_publisher.h"
 #include "rigid_body_sim/ros/joint_requests.h"
-#include "rigid_body_sim/ros/joint_wrenches.h"
-#include "rigid_body_sim/ros/link_contacts.h"
 #include "rigid_body_sim/ros/link_sensor_ports.h"
 #include "rigid_body_sim/ros/load_requests.h"
 #include "rigid_body_sim/ros/markers.h"
@@ -142,9 +140,7 @@ class SimNode {
   core::Loads loads_;
   std::vector<core::ArticulationLoads> robot_loads_;  ///< per robot, its controllers' efforts
   std::optional<RobotCommands> commands_;             ///< the robots' controllers and their topics
-  std::optional<LinkSensorPorts> link_sensors_;       ///< the sensors on robots' links: motion and ray devices
-  std::optional<LinkContacts> link_contacts_;         ///< the contact sensors on robots' links (bumpers)
-  std::optional<JointWrenches> joint_wrenches_;       ///< the force-torque sensors on robots' joints
+  std::optional<LinkSensorPorts> link_sensors_;       ///< the sensors on robots' links: motion, ray and force devices
 
   /// Every body's frames, topics and devices, and its names: a spawn, a
   /// delete and a reset go through it (body_ports.h).
@@ -175,7 +171,6 @@ class SimNode {
          rebaseClock();
          commands_->restart(sim_);  // nothing drives a reset robot back (gazebo_ros_pkgs #1311)
          link_sensors_->restart(sim_);
-         joint_wrenches_->restart();
        }}};
   /// set_model_configuration, get_joint_properties.
   JointRequests joint_requests_{sim_, time_, [this](std::size_t r) {

@@ -99,4 +99,16 @@ void ContactLedger::insertBody(int body) {
   if (static_cast<std::size_t>(body) <= was_asleep_.size()) was_asleep_.insert(was_asleep_.begin() + body, char{0});
 }
 
+const std::vector<Contact>& StepContacts::touching() {
+  if (!found_touching_) touching_ = ledger_.touchingNow(state_, step_contacts_);
+  found_touching_ = true;
+  return touching_;
+}
+
+const std::vector<ContactPairReport>& StepContacts::pairs() {
+  if (!found_pairs_) pairs_ = contactPairs(model_, state_, touching());
+  found_pairs_ = true;
+  return pairs_;
+}
+
 }  // namespace rigid_body_sim::core

@@ -36,8 +36,7 @@ std::vector<Vec6> contactWrenches_L(const SceneRobot& robot, const ArticulationK
   return out;
 }
 
-ForceTorqueSensor::ForceTorqueSensor(int link, const ForceTorqueSettings& settings)
-    : link_(link), settings_(settings), rng_(settings.seed) {
+ForceTorqueSensor::ForceTorqueSensor(int link, const ForceTorqueSettings& settings) : link_(link), settings_(settings) {
   checkForceTorque(settings);
   if (link <= 0) throw std::invalid_argument("a force-torque sensor is on a joint: link > 0");
 }
@@ -45,9 +44,12 @@ ForceTorqueSensor::ForceTorqueSensor(int link, const ForceTorqueSettings& settin
 Vec6 ForceTorqueSensor::reading(const ArticulationModel& model, const ArticulationKinematics& kin,
                                 const Eigen::VectorXd& u, const Eigen::VectorXd& u_before, double h, const Vec3& g_W,
                                 const std::vector<Vec6>& wrench_L) {
+  const std::uint64_t sample = readings_++;
   const Eigen::VectorXd udot = (u - u_before) / h;
   Vec6 w = jointWrenches(model, kin, udot, g_W, wrench_L)[static_cast<std::size_t>(link_)];
-  if (settings_.noise > 0.0) {
+  if (settings_.noise > 0.0) {  // reading k's own stream (sample_seed.h)
+    rng_.seed(sampleSeed(settings_.seed, sample));
+    normal_.reset();
     for (int k = 0; k < 6; ++k) w(k) += settings_.noise * normal_(rng_);
   }
   return w;

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 
 namespace rigid_body_sim::core {
 
@@ -54,17 +56,33 @@ void LinkSensors::addLidar(const LidarSettings& settings, const std::optional<Ra
   LidarChannel& c = lidars_.emplace_back(LidarChannel{Lidar(settings), std::nullopt, at, SampleClock(rate, dt_), {}});
   if (finder) c.finder.emplace(*finder);
   fresh_[static_cast<std::size_t>(Kind::kLidar)].push_back(0);
-  cast_[static_cast<std::size_t>(Kind::kLidar)].push_back(1);
+  wanted_[static_cast<std::size_t>(Kind::kLidar)].push_back(1);
 }
 
 void LinkSensors::addDepthCamera(const DepthCameraSettings& settings, const LinkMount& at, double rate) {
   depth_cameras_.push_back({DepthCamera(settings), at, SampleClock(rate, dt_), {}});
   fresh_[static_cast<std::size_t>(Kind::kDepthCamera)].push_back(0);
-  cast_[static_cast<std::size_t>(Kind::kDepthCamera)].push_back(1);
+  wanted_[static_cast<std::size_t>(Kind::kDepthCamera)].push_back(1);
+}
+
+void LinkSensors::addForceTorque(const ForceTorqueSettings& settings, int link, double rate) {
+  force_torques_.push_back({ForceTorqueSensor(link, settings), SampleClock(rate, dt_), Vec6::Zero()});
+  fresh_[static_cast<std::size_t>(Kind::kForceTorque)].push_back(0);
+  wanted_[static_cast<std::size_t>(Kind::kForceTorque)].push_back(1);
+}
+
+void LinkSensors::addContactSensor(const LinkMount& at, bool in_world, double rate) {
+  contact_sensors_.push_back({at, in_world, SampleClock(rate, dt_), {}});
+  fresh_[static_cast<std::size_t>(Kind::kContacts)].push_back(0);
+  wanted_[static_cast<std::size_t>(Kind::kContacts)].push_back(1);
+}
+
+void LinkSensors::before(const ArticulationModel& model, const ArticulationState& state) {
+  if (!force_torques_.empty()) u_before_ = generalizedVelocity(model, state);
 }
 
 bool LinkSensors::sample(const Scene& scene, std::size_t r, const State& bodies, const ArticulationState& state,
-                         long long steps, double t) {
+                         long long steps, double t, const StepForces& forces) {
   const SceneRobot& robot = scene.robots().at(r);
   const ArticulationModel& model = robot.model;
   const Vec3& gravity_W = scene.model().gravity();
@@ -124,7 +142,7 @@ bool LinkSensors::sample(const Scene& scene, std::size_t r, const State& bodies,
   for (std::size_t i = 0; i < lidars_.size(); ++i) {
     LidarChannel& c = lidars_[i];
     if (!due(Kind::kLidar, i, c.clock)) continue;
-    if (!cast(Kind::kLidar, i)) {
+    if (!wanted(Kind::kLidar, i)) {
       c.lidar.pass();
       if (c.finder) c.finder->pass();
       continue;
@@ -136,15 +154,89 @@ bool LinkSensors::sample(const Scene& scene, std::size_t r, const State& bodies,
   for (std::size_t i = 0; i < depth_cameras_.size(); ++i) {
     DepthCameraChannel& c = depth_cameras_[i];
     if (!due(Kind::kDepthCamera, i, c.clock)) continue;
-    if (cast(Kind::kDepthCamera, i)) {
+    if (wanted(Kind::kDepthCamera, i)) {
       c.camera.capture(scene.model(), bodies, pose(c.at), skip_, c.depth);
     } else {
       c.camera.pass();
     }
   }
+  sampleForces(scene, r, bodies, state, steps, forces, placed);
   bool any = placed;
   for (const std::vector<char>& f : fresh_) any = any || std::find(f.begin(), f.end(), 1) != f.end();
   return any;
+}
+
+void LinkSensors::sampleForces(const Scene& scene, std::size_t r, const State& bodies, const ArticulationState& state,
+                               long long steps, const StepForces& forces, bool& placed) {
+  const SceneRobot& robot = scene.robots().at(r);
+  const auto due = [&](Kind kind, std::size_t i, const SampleClock& clock) {
+    fresh_[static_cast<std::size_t>(kind)][i] = clock.due(steps);
+    return clock.due(steps);
+  };
+  const auto contacts = [&]() -> StepContacts& {
+    if (forces.contacts == nullptr)
+      throw std::invalid_argument("a force sensor is due: sample() needs the step's contacts");
+    return *forces.contacts;
+  };
+  const auto place = [&] {
+    if (!placed) kinematics(robot.model, state, kin_);
+    placed = true;
+  };
+  std::vector<Vec6> wrench_L;  // the links' loads of the step, once for every force-torque sensor
+  Eigen::VectorXd u;
+  for (std::size_t i = 0; i < force_torques_.size(); ++i) {
+    ForceTorqueChannel& c = force_torques_[i];
+    if (!due(Kind::kForceTorque, i, c.clock)) continue;
+    if (!wanted(Kind::kForceTorque, i)) {
+      c.sensor.pass();
+      continue;
+    }
+    if (u.size() == 0) {  // its contacts' and those given
+      place();
+      wrench_L = contactWrenches_L(robot, kin_, bodies.bodies, contacts().touching(), dt_);
+      if (forces.loads != nullptr) {
+        const ArticulationLoads& l = *forces.loads;
+        for (std::size_t k = 0; k < wrench_L.size(); ++k) {
+          if (k < l.wrench_L.size()) wrench_L[k] += l.wrench_L[k];
+          if (k < l.impulse_L.size()) wrench_L[k] += l.impulse_L[k] / dt_;
+        }
+      }
+      u = generalizedVelocity(robot.model, state);
+      if (u_before_.size() != u.size()) u_before_ = u;  // no step yet: as if steady
+    }
+    c.wrench = c.sensor.reading(robot.model, kin_, u, u_before_, dt_, scene.model().gravity(), wrench_L);
+  }
+  // The link's body, if it has a collision shape (one without never touches).
+  const auto bodyOf = [&](int link) {
+    const auto at = std::find(robot.link.begin(), robot.link.end(), link);
+    return at == robot.link.end() ? -1 : robot.first_body + static_cast<int>(at - robot.link.begin());
+  };
+  for (std::size_t i = 0; i < contact_sensors_.size(); ++i) {
+    ContactChannel& c = contact_sensors_[i];
+    if (!due(Kind::kContacts, i, c.clock) || !wanted(Kind::kContacts, i)) continue;
+    const int body = bodyOf(c.at.link);
+    c.pairs.clear();
+    for (const ContactPairReport& p : contacts().pairs()) {
+      if (p.body == body) c.pairs.push_back(p);
+      if (p.other == body) {  // seen from the link: the other side of the same pair
+        ContactPairReport& flipped = c.pairs.emplace_back(p);
+        std::swap(flipped.body, flipped.other);
+        flipped.normal_W = -p.normal_W;
+        flipped.normal_force_W = -p.normal_force_W;
+        flipped.friction_force_W = -p.friction_force_W;
+      }
+    }
+    if (c.in_world) continue;
+    place();  // into the frame fixed to the link
+    const LinkState F = frameState(linkStateOf(kin_, c.at.link), c.at.X_LS);
+    const Quat q_FW = F.q_WL.conjugate();
+    for (ContactPairReport& p : c.pairs) {
+      for (Vec3& q : p.points_W) q = q_FW * (q - F.p_WL);
+      p.normal_W = q_FW * p.normal_W;
+      p.normal_force_W = q_FW * p.normal_force_W;
+      p.friction_force_W = q_FW * p.friction_force_W;
+    }
+  }
 }
 
 void LinkSensors::restartImus(const ArticulationModel& model, const ArticulationState& now) {
@@ -164,6 +256,8 @@ void LinkSensors::restartNoise() {
     if (c.finder) c.finder->restart();
   }
   for (DepthCameraChannel& c : depth_cameras_) c.camera.restart();
+  for (ForceTorqueChannel& c : force_torques_) c.sensor.restart();
+  u_before_.resize(0);
 }
 
 }  // namespace rigid_body_sim::core

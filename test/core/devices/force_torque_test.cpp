@@ -130,6 +130,15 @@ TEST(ForceTorque, ItsNoiseIsSeededAndOfItsSigmaOnEachNumber) {
     EXPECT_NEAR(sum(k) / n, 0.0, 0.02) << k;
     EXPECT_NEAR(std::sqrt(squares(k) / n), 0.5, 0.01) << k;
   }
+  // A reading due but not taken (nobody listened) leaves the next one as it would have been.
+  core::ForceTorqueSensor every(1, {0.5, 8}), late(1, {0.5, 8});
+  const Vec6 first = every.reading(model, kin, u, u, 1e-3, Vec3(0.0, 0.0, -kG), {});
+  const Vec6 second = every.reading(model, kin, u, u, 1e-3, Vec3(0.0, 0.0, -kG), {});
+  late.pass();
+  EXPECT_EQ(late.reading(model, kin, u, u, 1e-3, Vec3(0.0, 0.0, -kG), {}), second);
+  EXPECT_NE(first, second);
+  every.restart();
+  EXPECT_EQ(every.reading(model, kin, u, u, 1e-3, Vec3(0.0, 0.0, -kG), {}), first);
   EXPECT_THROW(core::ForceTorqueSensor(1, {-1.0, 0}), std::invalid_argument);
   EXPECT_THROW(core::ForceTorqueSensor(0, {}), std::invalid_argument);
 }

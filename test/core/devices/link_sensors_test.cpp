@@ -162,9 +162,9 @@ TEST(LinkSensors, ALidarCastsIntoTheWorldAtItsRateAndSkipsItsOwnLinks) {
   LinkSensors every(kStep), late(kStep);
   every.addLidar(lidar, std::nullopt, down, 100.0);
   late.addLidar(lidar, core::RangeFinderSettings{}, down, 100.0);
-  late.cast(Kind::kLidar, 0, false);
+  late.want(Kind::kLidar, 0, false);
   for (long long k = 1; k <= 20; ++k) {
-    if (k == 11) late.cast(Kind::kLidar, 0, true);  // someone listens from the second scan on
+    if (k == 11) late.want(Kind::kLidar, 0, true);  // someone listens from the second scan on
     const double t = static_cast<double>(k) * kStep;
     EXPECT_EQ(every.sample(scene, 0, state.bodies, state.robots[0], k, t), k % 10 == 0) << k;
     late.sample(scene, 0, state.bodies, state.robots[0], k, t);
@@ -182,6 +182,59 @@ TEST(LinkSensors, ALidarCastsIntoTheWorldAtItsRateAndSkipsItsOwnLinks) {
   EXPECT_NE(ranges[1], 0.5);                   // with its noise
   EXPECT_EQ(late.lidars()[0].ranges, ranges);  // the second scan, as if the first had been cast
   EXPECT_EQ(late.lidars()[0].reading, *std::min_element(ranges.begin(), ranges.end()));  // no noise of its own
+}
+
+// The force sensors, from what a step left, on the pendulum hanging at
+// rest with its bob's ball on the ground: a contact sensor on the bob
+// reports that one pair, the ground's normal up, in the world or in the
+// bob's frame; the hinge's force-torque sensor (gazebo_ros_ft_sensor's:
+// the joint's load on its child, in the child's axes) reads the rest of
+// the bob's weight, so the two hold it up together, and no moment about
+// the hinge; without the step's contacts a due force sensor is refused,
+// not read as nothing.
+TEST(LinkSensors, ForceSensorsReadTheStepsLoadsAndContacts) {
+  ArticulationModel model = pendulum(10.0);
+  core::CollisionShape ball;
+  ball.kind = core::CollisionShape::Kind::kSphere;
+  ball.radius = 0.05;
+  ball.X_LS.translation = kAtBob.translation;
+  model.links[1].collision = {ball};
+  ModelSpec spec = Alone::spec(kG);
+  spec.scene = {core::Sdf::plane(Vec3::UnitZ(), Vec3(0.0, 0.0, -0.549))};  // 1 mm into the ball
+  const Scene scene(spec, {{"robot", model}});
+  SceneState state = core::sceneState(scene, {}, {core::restState(model)});
+  SceneWorkspace ws;
+  core::ContactLedger ledger;
+  LinkSensors sensors(kStep);
+  sensors.addForceTorque({}, 1, 0.0);
+  sensors.addContactSensor({1, core::Pose{}}, true, 0.0);
+  sensors.addContactSensor({1, core::Pose{}}, false,
+                           0.0);  // in the bob's frame: the hinge's, here the world's turned by q
+  const ArticulationLoads none;
+  for (long long k = 1; k <= 3; ++k) {
+    sensors.before(scene.robots()[0].model, state.robots[0]);
+    core::stepScene(scene, state, {{}, {none}}, ws);
+    ledger.update(state.bodies, ws.bodies.contacts);
+    core::StepContacts contacts(scene.model(), state.bodies, ledger, ws.bodies.contacts);
+    EXPECT_TRUE(sensors.sample(scene, 0, state.bodies, state.robots[0], k, static_cast<double>(k) * kStep,
+                               core::StepForces{&none, &contacts}));
+  }
+  ASSERT_EQ(sensors.contactSensors()[0].pairs.size(), 1u);
+  const core::ContactPairReport& pair = sensors.contactSensors()[0].pairs[0];
+  const core::Vec6& w = sensors.forceTorques()[0].wrench;
+  EXPECT_NEAR(w.tail<3>().z() + pair.normal_force_W.z(), 9.81, 0.05);  // 1 kg held up by the hinge and the ground
+  EXPECT_NEAR(w.tail<3>().x(), 0.0, 0.05);
+  EXPECT_NEAR(w.head<3>().norm(), 0.0, 0.05);
+  EXPECT_EQ(pair.body, scene.robots()[0].first_body);
+  EXPECT_EQ(pair.other, -1);
+  EXPECT_EQ(pair.item, 0);
+  EXPECT_NEAR((pair.normal_W - Vec3::UnitZ()).norm(), 0.0, 1e-9);
+  for (const Vec3& p : pair.points_W) EXPECT_NEAR(p.z(), -0.549, 2e-3);
+  const core::Quat q_WL = core::linkStateOf(core::kinematics(scene.robots()[0].model, state.robots[0]), 1).q_WL;
+  const core::ContactPairReport& in_bob = sensors.contactSensors()[1].pairs.at(0);
+  EXPECT_NEAR((in_bob.normal_W - q_WL.conjugate() * Vec3::UnitZ()).norm(), 0.0, 1e-9);
+  for (const Vec3& p : in_bob.points_W) EXPECT_NEAR(p.z(), -0.549, 3e-3);  // from the hinge, hanging nearly straight
+  EXPECT_THROW(sensors.sample(scene, 0, state.bodies, state.robots[0], 4, 4 * kStep), std::invalid_argument);
 }
 
 }  // namespace

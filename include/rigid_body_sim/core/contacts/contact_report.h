@@ -61,4 +61,27 @@ class ContactLedger {
   std::vector<char> was_asleep_;  ///< per body: asleep after the last update
 };
 
+/// What touches after one step, for those who read it (the sensors of
+/// forces, ~contacts): every touching contact (ContactLedger::touchingNow,
+/// the ledger updated with the step) and their pairs (contactPairs), each
+/// found on its first ask and kept for the step. Refers to what it was made
+/// from, which must outlive it unchanged.
+class StepContacts {
+ public:
+  StepContacts(const Model& model, const State& state, const ContactLedger& ledger,
+               const std::vector<Contact>& step_contacts)
+      : model_(model), state_(state), ledger_(ledger), step_contacts_(step_contacts) {}
+  const std::vector<Contact>& touching();
+  const std::vector<ContactPairReport>& pairs();
+
+ private:
+  const Model& model_;
+  const State& state_;
+  const ContactLedger& ledger_;
+  const std::vector<Contact>& step_contacts_;
+  std::vector<Contact> touching_;
+  std::vector<ContactPairReport> pairs_;
+  bool found_touching_ = false, found_pairs_ = false;
+};
+
 }  // namespace rigid_body_sim::core

@@ -12,6 +12,7 @@
 #include "rigid_body_sim/core/articulations/scene.h"
 #include "rigid_body_sim/core/bodies/state.h"
 #include "rigid_body_sim/core/contacts/contact.h"
+#include "rigid_body_sim/core/devices/sample_seed.h"
 
 namespace rigid_body_sim::core {
 
@@ -41,15 +42,18 @@ class ForceTorqueSensor {
   /// to the state of `kin` (its velocity `u`) in `h` s, under gravity g_W,
   /// the step's loads on its links `wrench_L` (empty: none) and its
   /// contacts' (contactWrenches_L): jointWrenches at u̇ = (u − u_before)/h,
-  /// its link's entry, with the noise. [torque; force].
+  /// its link's entry, with the noise (reading k's own, sampleSeed(seed, k)). [torque; force].
   Vec6 reading(const ArticulationModel& model, const ArticulationKinematics& kin, const Eigen::VectorXd& u,
                const Eigen::VectorXd& u_before, double h, const Vec3& g_W, const std::vector<Vec6>& wrench_L);
-  /// Starts the noise again from its seed (a world reset).
-  void restart() { rng_.seed(settings_.seed); }
+  /// A reading due but not taken (nobody reads it): the next one is reading k + 1 all the same.
+  void pass() { ++readings_; }
+  /// The next reading is reading 0 again: the noise from its seed (a world reset).
+  void restart() { readings_ = 0; }
 
  private:
   int link_;
   ForceTorqueSettings settings_;
+  std::uint64_t readings_ = 0;  ///< readings so far, taken or passed
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};
 };
