@@ -135,12 +135,8 @@ TEST(LinkSensors, ARestartedImuReadsNoJump) {
   EXPECT_NEAR(kept.imus()[0].reading.w_S.norm(), 1000.0, 1.0);
 }
 
-// A lidar on the bob, hanging at rest 0.5 m above the ground and looking
-// straight down from inside the bob's own ball: it samples at its rate,
-// sees the ground at 0.5 m / cos(azimuth) and not its own link; one not
-// cast while nobody reads it casts the same noisy scan as one cast every
-// time.
-TEST(LinkSensors, ALidarCastsIntoTheWorldAtItsRateAndSkipsItsOwnLinks) {
+/// The pendulum with a ball of 0.05 m about its bob, over the ground at height `ground`.
+Scene ballOverGround(double ground) {
   ArticulationModel model = pendulum(10.0);
   core::CollisionShape ball;
   ball.kind = core::CollisionShape::Kind::kSphere;
@@ -148,8 +144,18 @@ TEST(LinkSensors, ALidarCastsIntoTheWorldAtItsRateAndSkipsItsOwnLinks) {
   ball.X_LS.translation = kAtBob.translation;
   model.links[1].collision = {ball};
   ModelSpec spec = Alone::spec(kG);
-  spec.scene = {core::Sdf::plane(Vec3::UnitZ(), Vec3(0.0, 0.0, -1.0))};
-  const Scene scene(spec, {{"robot", model}});
+  spec.scene = {core::Sdf::plane(Vec3::UnitZ(), Vec3(0.0, 0.0, ground))};
+  return Scene(spec, {{"robot", model}});
+}
+
+// A lidar on the bob, hanging at rest 0.5 m above the ground and looking
+// straight down from inside the bob's own ball: it samples at its rate,
+// sees the ground at 0.5 m / cos(azimuth) and not its own link; one not
+// cast while nobody reads it casts the same noisy scan as one cast every
+// time.
+TEST(LinkSensors, ALidarCastsIntoTheWorldAtItsRateAndSkipsItsOwnLinks) {
+  const Scene scene = ballOverGround(-1.0);
+  const ArticulationModel& model = scene.robots()[0].model;
   SceneState state = core::sceneState(scene, {}, {core::restState(model)});
   ASSERT_EQ(scene.robots()[0].link.size(), 1u);  // the bob's ball is a body of the world
   core::LidarSettings lidar;
@@ -193,15 +199,8 @@ TEST(LinkSensors, ALidarCastsIntoTheWorldAtItsRateAndSkipsItsOwnLinks) {
 // the hinge; without the step's contacts a due force sensor is refused,
 // not read as nothing.
 TEST(LinkSensors, ForceSensorsReadTheStepsLoadsAndContacts) {
-  ArticulationModel model = pendulum(10.0);
-  core::CollisionShape ball;
-  ball.kind = core::CollisionShape::Kind::kSphere;
-  ball.radius = 0.05;
-  ball.X_LS.translation = kAtBob.translation;
-  model.links[1].collision = {ball};
-  ModelSpec spec = Alone::spec(kG);
-  spec.scene = {core::Sdf::plane(Vec3::UnitZ(), Vec3(0.0, 0.0, -0.549))};  // 1 mm into the ball
-  const Scene scene(spec, {{"robot", model}});
+  const Scene scene = ballOverGround(-0.549);  // 1 mm into the ball
+  const ArticulationModel& model = scene.robots()[0].model;
   SceneState state = core::sceneState(scene, {}, {core::restState(model)});
   SceneWorkspace ws;
   core::ContactLedger ledger;
