@@ -216,6 +216,7 @@ void LinkSensors::sampleForces(const Scene& scene, std::size_t r, const State& b
     if (!due(Kind::kContacts, i, c.clock) || !wanted(Kind::kContacts, i)) continue;
     const int body = bodyOf(c.at.link);
     c.pairs.clear();
+    if (body < 0) continue;  // nothing touches it (and -1 is the scene's `other`: not its pairs)
     for (const ContactPairReport& p : contacts().pairs()) {
       if (p.body == body) c.pairs.push_back(p);
       if (p.other == body) {  // seen from the link: the other side of the same pair

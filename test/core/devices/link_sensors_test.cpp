@@ -207,8 +207,9 @@ TEST(LinkSensors, ForceSensorsReadTheStepsLoadsAndContacts) {
   LinkSensors sensors(kStep);
   sensors.addForceTorque({}, 1, 0.0);
   sensors.addContactSensor({1, core::Pose{}}, true, 0.0);
-  sensors.addContactSensor({1, core::Pose{}}, false,
-                           0.0);  // in the bob's frame: the hinge's, here the world's turned by q
+  // In the bob's frame: the hinge's, here the world's turned by q.
+  sensors.addContactSensor({1, core::Pose{}}, false, 0.0);
+  sensors.addContactSensor({0, core::Pose{}}, true, 0.0);  // on the fixed base, which has no collision shape
   const ArticulationLoads none;
   for (long long k = 1; k <= 3; ++k) {
     sensors.before(scene.robots()[0].model, state.robots[0]);
@@ -233,6 +234,8 @@ TEST(LinkSensors, ForceSensorsReadTheStepsLoadsAndContacts) {
   const core::ContactPairReport& in_bob = sensors.contactSensors()[1].pairs.at(0);
   EXPECT_NEAR((in_bob.normal_W - q_WL.conjugate() * Vec3::UnitZ()).norm(), 0.0, 1e-9);
   for (const Vec3& p : in_bob.points_W) EXPECT_NEAR(p.z(), -0.549, 3e-3);  // from the hinge, hanging nearly straight
+  // The base touches nothing: the bob's pair with the ground (its `other` -1) is not the base's.
+  EXPECT_TRUE(sensors.contactSensors()[2].pairs.empty());
   EXPECT_THROW(sensors.sample(scene, 0, state.bodies, state.robots[0], 4, 4 * kStep), std::invalid_argument);
 }
 
