@@ -29,10 +29,12 @@ int Pacer::stepsDue(Clock::time_point now, long long steps, double dt, double re
   const double target = ref_sim_ + std::chrono::duration<double>(now - ref_wall_).count() * realtime_factor;
   // A step is due while sim time is at least half a step short of the target
   // (sim time as the node reads it: the step count × dt).
-  int n = 0;
-  while (static_cast<double>(steps + n) * dt + 0.5 * dt <= target && n < kMaxStepsPerTick) ++n;
-  behind_ = n == kMaxStepsPerTick;
-  return n;
+  int due = 0;
+  while (static_cast<double>(steps + due) * dt + 0.5 * dt <= target && due < kMaxStepsBehind) ++due;
+  behind_ = due == kMaxStepsBehind;
+  const int slice = std::max(1, static_cast<int>(std::floor(kCallbackPeriod / dt + 1e-9)));
+  more_ = due > slice && !behind_;
+  return std::min(due, slice);
 }
 
 void Pacer::recordTick(Clock::time_point now) {

@@ -1,5 +1,6 @@
 // The loop's pacing (no master): at any real-time factor sim time follows
-// the wall clock to the nearest step from where it was rebased, a loop that
+// the wall clock to the nearest step from where it was rebased, a late loop
+// catches up in slices with its callbacks between, a loop that
 // falls behind is capped and told so, and the timing report reads the
 // recorded periods and edits.
 #include "rigid_body_sim/ros/pacer.h"
@@ -31,10 +32,40 @@ TEST(Pacer, SimTimeFollowsTheWallClockTimesTheRealTimeFactor) {
   // To the nearest step: 10.4 ms due no more, 10.6 ms one more.
   EXPECT_EQ(p.stepsDue(t0 + microseconds(10400), steps, dt, 1.0), 0);
   EXPECT_EQ(p.stepsDue(t0 + microseconds(10600), steps, dt, 1.0), 1);
-  // At 4x, 10 ms of wall time since t0 are 40 steps of sim time since 2 s.
-  EXPECT_EQ(p.stepsDue(t0 + milliseconds(10), 2000, dt, 4.0), 40);
+  EXPECT_FALSE(p.more());
+  // At 4x, 10 ms of wall time since t0 are 40 steps of sim time since 2 s,
+  // taken in slices of 10 ms of sim time with the callbacks between.
+  steps = 2000;
+  for (const int slice : {10, 10, 10, 10}) {
+    EXPECT_EQ(p.stepsDue(t0 + milliseconds(10), steps, dt, 4.0), slice);
+    steps += slice;
+    EXPECT_EQ(p.more(), steps < 2040) << steps;
+  }
+  EXPECT_EQ(p.stepsDue(t0 + milliseconds(10), steps, dt, 4.0), 0);
   // At 0.1x, 10 ms are one step.
   EXPECT_EQ(p.stepsDue(t0 + milliseconds(10), 2000, dt, 0.1), 1);
+  EXPECT_FALSE(p.behind());
+  // A slice is 10 ms of sim time whatever the step: 2 steps of 5 ms, or one
+  // step when a step is longer than that.
+  EXPECT_EQ(p.stepsDue(t0 + milliseconds(100), 400, 5e-3, 1.0), 2);
+  EXPECT_TRUE(p.more());
+  EXPECT_EQ(p.stepsDue(t0 + milliseconds(500), 80, 0.025, 1.0), 1);
+}
+
+TEST(Pacer, ALoopThatStalledCatchesUpInSlicesAndServesItsCallbacksBetween) {
+  // 0.3 s late (a stall on a busy machine): the 300 steps due come 10 at a
+  // time, so a command that arrives meanwhile waits 10 ms of sim time, not 0.3 s.
+  Pacer p;
+  const Clock::time_point t0 = Clock::now();
+  p.rebase(t0, 0.0);
+  long long steps = 0;
+  int slices = 0;
+  do {
+    steps += p.stepsDue(t0 + milliseconds(300), steps, 1e-3, 1.0);
+    ++slices;
+  } while (p.more());
+  EXPECT_EQ(steps, 300);
+  EXPECT_EQ(slices, 30);
   EXPECT_FALSE(p.behind());
 }
 
@@ -42,8 +73,9 @@ TEST(Pacer, ALoopThatFallsBehindIsCappedAndTold) {
   Pacer p;
   const Clock::time_point t0 = Clock::now();
   p.rebase(t0, 0.0);
-  EXPECT_EQ(p.stepsDue(t0 + std::chrono::seconds(5), 0, 1e-3, 1.0), Pacer::kMaxStepsPerTick);
+  EXPECT_EQ(p.stepsDue(t0 + std::chrono::seconds(5), 0, 1e-3, 1.0), 10);
   EXPECT_TRUE(p.behind());
+  EXPECT_FALSE(p.more());  // rebased, not caught up
   // Rebased where it is, it paces from there.
   p.rebase(t0 + std::chrono::seconds(5), 1.0);
   EXPECT_EQ(p.stepsDue(t0 + std::chrono::seconds(5) + milliseconds(3), 1000, 1e-3, 1.0), 3);

@@ -13,9 +13,15 @@ namespace rigid_body_sim::node {
 class Pacer {
  public:
   using Clock = std::chrono::steady_clock;
-  /// Steps one tick may take to catch up; beyond, the loop gives up and is
+  /// Steps the loop may be behind the wall clock; beyond, it gives up and is
   /// rebased (it cannot keep up with the real-time factor).
-  static constexpr int kMaxStepsPerTick = 1000;
+  static constexpr int kMaxStepsBehind = 1000;
+  /// Sim time the loop steps at most between two turns of its callbacks (s):
+  /// catching up after a stall, it takes the steps due in slices of this and
+  /// serves the callbacks between them, so a command waits at most this long
+  /// in sim time. (Taken in one burst, the steps of a 0.6 s stall on a busy
+  /// machine ran a base 0.6 s on its old cmd_vel.)
+  static constexpr double kCallbackPeriod = 0.01;
 
   /// From now on sim time `sim_time` (s) corresponds to the wall instant
   /// `wall` (the clock's anchor plus any wait for the wall clock to catch up).
@@ -23,11 +29,15 @@ class Pacer {
 
   /// Steps of `dt` to take at `now`, from step count `steps` (sim time
   /// steps × dt), so that sim time reaches (wall time since the reference) ×
-  /// `realtime_factor` to the nearest step; at most kMaxStepsPerTick
+  /// `realtime_factor` to the nearest step; at most one slice of
+  /// kCallbackPeriod (more() then says so) and at most kMaxStepsBehind
   /// (behind() then says so).
   int stepsDue(Clock::time_point now, long long steps, double dt, double realtime_factor);
-  /// The last stepsDue() was capped: the loop cannot keep up.
+  /// The last stepsDue() was capped at kMaxStepsBehind: the loop cannot keep up.
   bool behind() const { return behind_; }
+  /// The last stepsDue() left steps due beyond its slice: the loop serves its
+  /// callbacks and asks again, without waiting for the next tick.
+  bool more() const { return more_; }
 
   /// ~report_timing: records a tick starting at `now`, and what a spawn or a
   /// delete cost the loop (s).
@@ -44,6 +54,7 @@ class Pacer {
   Clock::time_point ref_wall_{};
   double ref_sim_ = 0.0;
   bool behind_ = false;
+  bool more_ = false;
   std::vector<double> periods_;  ///< s between tick starts
   bool ticked_ = false;
   Clock::time_point last_tick_{};
