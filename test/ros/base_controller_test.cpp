@@ -56,7 +56,7 @@ class BaseController : public Node {
     geometry_msgs::Twist twist;
     twist.linear.x = v;
     twist.angular.z = w;
-    const double until = odom_.back().header.stamp.toSec() + seconds;
+    const double until = simNow(odom_.back().header.stamp.toSec()) + seconds;
     while (ros::ok() && odom_.back().header.stamp.toSec() < until) {
       cmd_vel_.publish(twist);
       spinUntil([] { return false; }, 0.02);

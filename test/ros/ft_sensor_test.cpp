@@ -57,7 +57,7 @@ TEST(GazeboForceTorque, ItsJointsWrenchCarriesTheBarAndWhatRestsOnIt) {
   EXPECT_NEAR(leastSpacing(ft), 0.01, 1e-9);    // 100 Hz
   // Held level after a second: the joint bears the bar's 1 kg and its moment
   // about the shoulder, 9.81 N x 0.3 m, about -y (the bar's axes are the world's).
-  const double settled = joints.back().header.stamp.toSec() + 1.0;
+  const double settled = simNow(joints.back().header.stamp.toSec()) + 1.0;
   const geometry_msgs::Wrench bar = meanAfter(ft, settled);
   EXPECT_NEAR(bar.force.z, 9.81, 0.01);
   EXPECT_NEAR(bar.force.x, 0.0, 0.01);
@@ -77,7 +77,7 @@ TEST(GazeboForceTorque, ItsJointsWrenchCarriesTheBarAndWhatRestsOnIt) {
   // Landed, the bar level again, and both asleep: the reading is then the
   // contacts they fell asleep with (physics.md §10.10), within 0.5 % of the
   // static load, where the controller's effort is exact.
-  const double after = joints.back().header.stamp.toSec() + 2.0;
+  const double after = simNow(joints.back().header.stamp.toSec()) + 2.0;
   const geometry_msgs::Wrench loaded = meanAfter(ft, after);
   EXPECT_NEAR(loaded.force.z, 2.0 * 9.81, 0.1);
   EXPECT_NEAR(loaded.force.x, 0.0, 0.05);

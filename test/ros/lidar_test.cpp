@@ -222,7 +222,7 @@ TEST(RobotBase, ItsCmdVelDrivesTheBaseAsABodysDrivesTheBody) {
   ASSERT_TRUE(spinUntil([&] { return cmd_vel.getNumSubscribers() > 0; }, 30.0));  // the drive listens
   geometry_msgs::Twist forward;
   forward.linear.x = 0.2;
-  const double until = imu.back().header.stamp.toSec() + 3.0;  // under ASan the first commands may come late
+  const double until = simNow(imu.back().header.stamp.toSec()) + 3.0;  // under ASan the first commands may come late
   while (ros::ok() && imu.back().header.stamp.toSec() < until) {
     cmd_vel.publish(forward);
     spinUntil([] { return false; }, 0.02);

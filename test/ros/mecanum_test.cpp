@@ -31,7 +31,7 @@ TEST(MecanumBase, ItsControllerTurnsTheWheelsForATwistAndTheBasePluginMovesIt) {
   ASSERT_TRUE(spinUntil([&] { return !wheel_odom.empty() && !truth.empty(); }, 30.0));
   const auto simTime = [&] { return truth.back().header.stamp.toSec(); };
   const auto send = [&](ros::Publisher& pub, const geometry_msgs::Twist& cmd, double seconds) {
-    const double from = simTime();
+    const double from = simNow(simTime());
     return spinUntil(
         [&] {
           pub.publish(cmd);

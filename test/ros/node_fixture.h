@@ -80,6 +80,15 @@ double leastSpacing(const std::vector<Message>& messages) {
   return least;
 }
 
+/// The sim time now, as this test node knows it (s): the later of `latest`,
+/// the stamp of the newest message a test has taken, and its /clock. A test
+/// that falls behind its 1000-message queues on a busy machine (two ASan
+/// rostests at once) holds stamps up to a second old, and "from now" dated by
+/// them starts a wait before its command was sent. roscpp reads /clock on its
+/// own thread and keeps only the newest, so ros::Time::now() is never stale.
+/// Only with /use_sim_time: on the wall clock now() is ahead of every stamp.
+inline double simNow(double latest) { return std::max(latest, ros::Time::now().toSec()); }
+
 /// Waits (wall time) until `done` or `seconds` pass, spinning callbacks.
 inline bool spinUntil(const std::function<bool()>& done, double seconds) {
   const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);

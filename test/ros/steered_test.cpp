@@ -48,7 +48,7 @@ class SteeredBase {
     geometry_msgs::Twist cmd;
     cmd.linear.x = v;
     cmd.angular.z = delta;
-    const double from = simTime();
+    const double from = simNow(simTime());
     EXPECT_TRUE(spinUntil(
         [&] {
           cmd_.publish(cmd);
