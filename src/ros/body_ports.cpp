@@ -68,17 +68,17 @@ BodyPorts openPorts(const PortContext& context, const core::BodyModel& body, con
   }
   if (odom_noise) {
     ports.odom_noise = std::make_unique<core::OdomNoise>(*odom_noise);
-    ports.ground_truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh, prefix + "ground_truth", 10);
+    ports.ground_truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh, prefix + "ground_truth", kStreamQueue);
   }
   if (imu_settings) {
     ports.imu = std::make_unique<core::Imu>(*imu_settings);  // add() gives it the start
     ports.imu_every = std::max(1LL, std::llround(1.0 / (imu->settings.rate * context.dt)));
     const std::string& topic = imu->topic;
     ports.imu_pub =
-        CountedPublisher::advertise<sensor_msgs::Imu>(nh, topic.front() == '/' ? topic : prefix + topic, 100);
+        CountedPublisher::advertise<sensor_msgs::Imu>(nh, topic.front() == '/' ? topic : prefix + topic, kStreamQueue);
   }
   if (!topics && !cmd_vel && !odom_noise && !imu) return ports;
-  ports.odom = CountedPublisher::advertise<nav_msgs::Odometry>(nh, prefix + "odom", 10);
+  ports.odom = CountedPublisher::advertise<nav_msgs::Odometry>(nh, prefix + "odom", kStreamQueue);
   const auto& on_wrench = context.on_wrench;
   ports.wrench = pnh.subscribe<geometry_msgs::WrenchStamped>(
       prefix + "wrench", 10,

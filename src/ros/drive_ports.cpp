@@ -54,9 +54,9 @@ DrivePorts::DrivePorts(ros::NodeHandle& nh, const std::string& prefix, const std
   const std::string ns = driveNamespace(prefix, name, topics_);
   const auto topic = [&](const std::string& t) { return deviceTopic(ns, t); };
   const std::string cmd_vel = topic(topics_.cmd_vel_topic), odom = topic(topics_.odom_topic);
-  odom_ = CountedPublisher::advertise<nav_msgs::Odometry>(nh, odom, 100);
+  odom_ = CountedPublisher::advertise<nav_msgs::Odometry>(nh, odom, kStreamQueue);
   if (topics_.publish_cmd)
-    cmd_vel_out_ = CountedPublisher::advertise<geometry_msgs::TwistStamped>(nh, ns + "cmd_vel_out", 100);
+    cmd_vel_out_ = CountedPublisher::advertise<geometry_msgs::TwistStamped>(nh, ns + "cmd_vel_out", kStreamQueue);
   const bool one_publisher = !topics_.allow_multiple_cmd_vel_publishers;
   // The callback reads its own subscriber's publishers through `this` (the class is neither copied nor moved).
   cmd_vel_ = nh.subscribe<geometry_msgs::Twist>(

@@ -28,7 +28,7 @@ void LinkSensorPorts::addRobot(const core::Simulation& sim, std::size_t r, const
   for (std::size_t i = 0; i < sensors.imus.size(); ++i) {
     const io::ImuEntry& e = sensors.imus[i].entry;
     ImuPort& p = ports.imus.emplace_back(ImuPort{frame_prefix + e.frame_id, {}});
-    p.imu = CountedPublisher::advertise<sensor_msgs::Imu>(nh, resolved(e.topic), 100);
+    p.imu = CountedPublisher::advertise<sensor_msgs::Imu>(nh, resolved(e.topic), kStreamQueue);
     ROS_INFO("sim_node: IMU on '%s' link '%s', frame '%s', on %s at %g Hz", name, e.link.c_str(), p.frame.c_str(),
              shown(e.topic).c_str(), ports.sensors.imus()[i].clock.rate());
   }
@@ -39,9 +39,9 @@ void LinkSensorPorts::addRobot(const core::Simulation& sim, std::size_t r, const
     if (!e.frame_id.empty()) p.frame = frame_prefix + e.frame_id;
     p.on_tf = e.on_tf;
     if (p.on_tf && !broadcaster_) broadcaster_.emplace();
-    p.odom = CountedPublisher::advertise<nav_msgs::Odometry>(nh, resolved(e.topic), 10);
+    p.odom = CountedPublisher::advertise<nav_msgs::Odometry>(nh, resolved(e.topic), kStreamQueue);
     if (!e.ground_truth.empty()) {
-      p.truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh, resolved(e.ground_truth), 10);
+      p.truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh, resolved(e.ground_truth), kStreamQueue);
     }
     const std::string on_tf = p.on_tf ? ", " + p.frame + " -> " + p.child + " on tf" : "";
     ROS_INFO("sim_node: odometry of '%s' link '%s' on %s at %g Hz%s%s", name, e.link.c_str(), shown(e.topic).c_str(),
@@ -50,16 +50,18 @@ void LinkSensorPorts::addRobot(const core::Simulation& sim, std::size_t r, const
   for (std::size_t i = 0; i < sensors.gnss.size(); ++i) {
     const io::GnssEntry& e = sensors.gnss[i].entry;
     FixPort& p = ports.fixes.emplace_back(FixPort{frame_prefix + e.frame_id, e.status, e.service, {}, {}});
-    p.fix = CountedPublisher::advertise<sensor_msgs::NavSatFix>(nh, resolved(e.topic), 10);
-    p.velocity = CountedPublisher::advertise<geometry_msgs::Vector3Stamped>(nh, resolved(e.velocity_topic), 10);
+    p.fix = CountedPublisher::advertise<sensor_msgs::NavSatFix>(nh, resolved(e.topic), kStreamQueue);
+    p.velocity =
+        CountedPublisher::advertise<geometry_msgs::Vector3Stamped>(nh, resolved(e.velocity_topic), kStreamQueue);
     ROS_INFO("sim_node: GNSS of '%s' on link '%s': fix on %s, velocity on %s at %g Hz", name, e.link.c_str(),
              shown(e.topic).c_str(), shown(e.velocity_topic).c_str(), ports.sensors.gnss()[i].clock.rate());
   }
   for (std::size_t i = 0; i < sensors.magnetometers.size(); ++i) {
     const io::MagnetometerEntry& e = sensors.magnetometers[i].entry;
     FieldPort& p = ports.fields.emplace_back(FieldPort{frame_prefix + e.frame_id, e.field_message, {}});
-    p.field = e.field_message ? CountedPublisher::advertise<sensor_msgs::MagneticField>(nh, resolved(e.topic), 10)
-                              : CountedPublisher::advertise<geometry_msgs::Vector3Stamped>(nh, resolved(e.topic), 10);
+    p.field = e.field_message
+                  ? CountedPublisher::advertise<sensor_msgs::MagneticField>(nh, resolved(e.topic), kStreamQueue)
+                  : CountedPublisher::advertise<geometry_msgs::Vector3Stamped>(nh, resolved(e.topic), kStreamQueue);
     ROS_INFO("sim_node: magnetometer of '%s' on link '%s' on %s at %g Hz", name, e.link.c_str(), shown(e.topic).c_str(),
              ports.sensors.magnetometers()[i].clock.rate());
   }
@@ -76,7 +78,7 @@ void LinkSensorPorts::addForcePorts(Robot& robot, const char* name, const core::
     WrenchPort& p = robot.wrenches.emplace_back();
     p.frame = frame_prefix + model.links[static_cast<std::size_t>(f.link)].name;
     const std::string topic = deviceTopic(prefix, f.entry.topic);
-    p.wrench = CountedPublisher::advertise<geometry_msgs::WrenchStamped>(nh, topic, 10);
+    p.wrench = CountedPublisher::advertise<geometry_msgs::WrenchStamped>(nh, topic, kStreamQueue);
     ROS_INFO("sim_node: robot '%s': the force-torque sensor of joint '%s' on %s at %g Hz", name, f.entry.joint.c_str(),
              nh_.resolveName(topic).c_str(), robot.sensors.forceTorques()[i].clock.rate());
   }
@@ -85,7 +87,7 @@ void LinkSensorPorts::addForcePorts(Robot& robot, const char* name, const core::
     ContactPort& p = robot.contacts.emplace_back();
     p.frame = e.frame_id.empty() ? world_frame_ : frame_prefix + e.frame_id;
     const std::string topic = deviceTopic(prefix, e.topic);
-    p.contacts = CountedPublisher::advertise<Contacts>(nh, topic, 10);
+    p.contacts = CountedPublisher::advertise<Contacts>(nh, topic, kStreamQueue);
     ROS_INFO("sim_node: robot '%s': the contacts of link '%s' on %s in '%s' at %g Hz", name, e.link.c_str(),
              nh_.resolveName(topic).c_str(), p.frame.c_str(), robot.sensors.contactSensors()[i].clock.rate());
   }
@@ -117,9 +119,9 @@ void LinkSensorPorts::addRangePorts(Robot& robot, const char* name, const std::s
     p.organized = e.organized;
     const bool cloud = e.settings.vertical_samples > 1;
     const std::string topic = deviceTopic(prefix, e.topic);
-    p.publisher = p.range ? CountedPublisher::advertise<sensor_msgs::Range>(nh, topic, 10)
+    p.publisher = p.range ? CountedPublisher::advertise<sensor_msgs::Range>(nh, topic, kStreamQueue)
                   : cloud ? CountedPublisher::advertise<sensor_msgs::PointCloud2>(nh, topic, 10)
-                          : CountedPublisher::advertise<sensor_msgs::LaserScan>(nh, topic, 10);
+                          : CountedPublisher::advertise<sensor_msgs::LaserScan>(nh, topic, kStreamQueue);
     ROS_INFO("sim_node: robot '%s': a %s of %zu rays on '%s', %s on %s at %g Hz", name,
              p.range ? "range finder" : "lidar", robot.sensors.lidars()[i].lidar.rayCount(), p.frame.c_str(),
              p.range ? "sensor_msgs/Range"

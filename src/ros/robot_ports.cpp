@@ -119,7 +119,7 @@ void RobotPublisher::addRobot(const core::SceneRobot& robot, const std::string& 
   const std::string base = placedBase(robot.model);
   p.base_frame = base.empty() ? "" : frame_prefix + base;
   p.nh = ownHandle(nh_);
-  p.joint_states = CountedPublisher::advertise<sensor_msgs::JointState>(*p.nh, p.prefix + "joint_states", 10);
+  p.joint_states = CountedPublisher::advertise<sensor_msgs::JointState>(*p.nh, p.prefix + "joint_states", kStreamQueue);
   p.every = std::max(1LL, std::llround(1.0 / (hz * dt_)));
   robots_.push_back(std::move(p));
 }

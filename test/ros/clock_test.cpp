@@ -63,6 +63,31 @@ TEST_F(Clock, PausedStepsAreExactlyDtApartInResponsesAndOdometry) {
   EXPECT_EQ(state().stamp, times[2]);  // get_state reads the same clock
 }
 
+TEST_F(Clock, ALongStepDeliversEveryOdometryMessageOfIt) {
+  // 3000 steps in one call publish 300 /odom messages (100 Hz) at once: all
+  // arrive, in order, 10 ms apart (a publisher queue of 10 let 189 of 300 through).
+  ASSERT_TRUE(trigger("pause"));
+  ros::WallDuration(0.3).sleep();
+  ros::spinOnce();
+  const ros::Time from = stepAndSee(1).time;
+  odom_.clear();
+  const auto r = step(3000);
+  ASSERT_TRUE(r.success) << r.message;
+  EXPECT_TRUE(spinUntil([&] { return !odom_.empty() && odom_.back().header.stamp == r.time; }, 30.0));
+  ros::WallDuration(0.3).sleep();  // nothing more comes
+  ros::spinOnce();
+  ASSERT_GE(odom_.size(), 300u);
+  EXPECT_LE(odom_.size(), 301u);  // and at the call's end, when that is not on the 10 ms grid
+  EXPECT_EQ(odom_.back().header.stamp, r.time);
+  ros::Time last = from;
+  for (std::size_t k = 0; k < odom_.size(); ++k) {
+    const int64_t gap = (odom_[k].header.stamp - last).toNSec();
+    ASSERT_GT(gap, 0) << k;
+    ASSERT_LE(gap, 10000000) << k << ": one missing";
+    last = odom_[k].header.stamp;
+  }
+}
+
 TEST_F(Clock, AWrenchAtAnOdometryStampPlusATenthFiresThenAndDeliversForceTimesDuration) {
   ASSERT_TRUE(trigger("pause"));
   stepAndSee(1);
