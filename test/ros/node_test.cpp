@@ -277,6 +277,24 @@ TEST_F(PauseStep, PausedTimeStandsStepAdvancesByNSteps) {
   EXPECT_GT(state().stamp, r.time);
 }
 
+// launch/sim.launch paused:=true (sim_launch_paused.test: the demo's box),
+// as Gazebo's launch files take it: the node starts paused and steps on
+// request. The launch file used to have no such argument and ran at once.
+class SimLaunchPaused : public Node {};
+
+TEST_F(SimLaunchPaused, StartsPausedAndSteps) {
+  const BodyState a = state();
+  ros::WallDuration(0.5).sleep();
+  const BodyState b = state();
+  EXPECT_EQ(a.stamp, b.stamp);
+  EXPECT_EQ(a.pose.position.z, 1.0);  // config/demo.yaml's start, untouched
+  const auto r = step(10);
+  ASSERT_TRUE(r.success) << r.message;
+  EXPECT_EQ((r.time - b.stamp).toNSec(), 10 * 1000000LL);  // demo.yaml: dt 1 ms
+  ASSERT_EQ(r.states.size(), 1u);
+  EXPECT_LT(r.states[0].pose.position.z, 1.0);  // falling, once stepped
+}
+
 class Reset : public Node {};
 
 TEST_F(Reset, ReturnsToTheStartWithTimeMovingOn) {
