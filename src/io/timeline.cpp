@@ -2,6 +2,8 @@
 #include "rigid_body_sim/io/timeline.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <utility>
 
 #include "rigid_body_sim/core/bodies/ranges.h"
@@ -14,9 +16,34 @@ using namespace yaml_fields;
 
 namespace {
 
+/// `joint_effort: {joint_name, effort, duration}` of entry `entry` into `c`,
+/// as apply_joint_effort checks its request.
+void parseJointEffort(const YAML::Node& effort, const std::string& key, const YAML::Node& entry, TimedCommand& c) {
+  const std::string at = key + ".joint_effort";
+  if (!effort.IsMap())
+    fail(at, "expected a map such as {joint_name: J, effort: 1.0, duration: 0.5}, got " + show(effort));
+  requireKnownKeys(effort, at, {"joint_name", "effort", "duration"});
+  if (entry["until"]) fail(key + ".until", "a joint effort lasts its joint_effort.duration: give that instead");
+  if (entry["controller"]) fail(key + ".controller", "a joint effort acts on its joint_name, beside any controller");
+  for (const char* field : {"joint_name", "effort", "duration"}) {
+    if (!effort[field]) fail(at + "." + field, "every joint effort needs it");
+  }
+  c.joint_effort = true;
+  c.joint = text(effort["joint_name"], at + ".joint_name");
+  c.effort = number(effort["effort"], at + ".effort");
+  if (std::abs(c.effort) > core::ranges::kMaxCommandEffort) {
+    fail(at + ".effort", "must be within 1e6 N*m or N, got " + show(effort["effort"]));
+  }
+  c.duration = number(effort["duration"], at + ".duration");
+  if (c.duration == 0.0 || std::abs(c.duration) > core::ranges::kMaxDuration) {
+    fail(at + ".duration",
+         "must be > 0 (for that long) or < 0 (to the end), within 1e6 s, got " + show(effort["duration"]));
+  }
+}
+
 TimedCommand parseEntry(const YAML::Node& node, const std::string& key) {
   if (!node.IsMap()) fail(key, "expected a map such as {t: 1.0, cmd_vel: {linear: [0.5, 0, 0]}}, got " + show(node));
-  requireKnownKeys(node, key, {"t", "until", "robot", "controller", "cmd_vel", "command"});
+  requireKnownKeys(node, key, {"t", "until", "robot", "controller", "cmd_vel", "command", "joint_effort"});
   TimedCommand c;
   c.key = key;
   if (!node["t"]) fail(key + ".t", "every entry needs its time (s of sim time)");
@@ -33,10 +60,16 @@ TimedCommand parseEntry(const YAML::Node& node, const std::string& key) {
   }
   if (node["robot"]) c.robot = text(node["robot"], key + ".robot");
   if (node["controller"]) c.controller = text(node["controller"], key + ".controller");
-  if (static_cast<bool>(node["cmd_vel"]) == static_cast<bool>(node["command"])) {
-    fail(key, "needs one of cmd_vel (a twist) and command (a controller's values)");
+  const int kinds = static_cast<int>(static_cast<bool>(node["cmd_vel"])) +
+                    static_cast<int>(static_cast<bool>(node["command"])) +
+                    static_cast<int>(static_cast<bool>(node["joint_effort"]));
+  if (kinds != 1) {
+    fail(key,
+         "needs one of cmd_vel (a twist), command (a controller's values) and joint_effort (an effort on a joint)");
   }
-  if (const YAML::Node twist = node["cmd_vel"]) {
+  if (const YAML::Node effort = node["joint_effort"]) {
+    parseJointEffort(effort, key, node, c);
+  } else if (const YAML::Node twist = node["cmd_vel"]) {
     requireKnownKeys(twist, key + ".cmd_vel", {"linear", "angular"});
     c.cmd_vel = true;
     if (twist["linear"]) c.linear = vec3(twist["linear"], key + ".cmd_vel.linear");
@@ -99,10 +132,30 @@ int targetOf(const TimedCommand& c, const std::string& robot, const RobotControl
   return joint_controller;
 }
 
+/// The link of the joint a joint effort `c` acts on in robot `robot`;
+/// ConfigError naming the entry's field if it moves no such joint.
+int jointOf(const TimedCommand& c, const core::SceneRobot& robot) {
+  const int j = core::linkOfJoint(robot.model, c.joint);
+  if (j < 0) {
+    fail(c.key + ".joint_effort.joint_name", "robot '" + robot.name + "' has no moving joint '" + c.joint + "'" +
+                                                 core::heldJointNote(robot.model, c.joint));
+  }
+  return j;
+}
+
+/// The index in `scene` of the robot named `name`, or its robot count.
+std::size_t robotNamed(const core::Scene& scene, const std::string& name) {
+  const std::vector<core::SceneRobot>& robots = scene.robots();
+  std::size_t r = 0;
+  while (r < robots.size() && robots[r].name != name) ++r;
+  return r;
+}
+
 }  // namespace
 
-Timeline::Timeline(std::vector<TimedCommand> entries, const std::vector<std::string>& robots,
+Timeline::Timeline(std::vector<TimedCommand> entries, const core::Scene& scene,
                    const std::vector<RobotControls>& controls) {
+  const std::vector<core::SceneRobot>& robots = scene.robots();
   for (TimedCommand& c : entries) {
     std::size_t r = 0;
     if (c.robot.empty()) {
@@ -110,35 +163,43 @@ Timeline::Timeline(std::vector<TimedCommand> entries, const std::vector<std::str
         fail(c.key + ".robot", "a world of " + std::to_string(robots.size()) + " robots: name the one it is for");
       }
     } else {
-      const auto it = std::find(robots.begin(), robots.end(), c.robot);
-      if (it == robots.end()) fail(c.key + ".robot", "no robot '" + c.robot + "' in the world");
-      r = static_cast<std::size_t>(it - robots.begin());
+      r = robotNamed(scene, c.robot);
+      if (r == robots.size()) fail(c.key + ".robot", "no robot '" + c.robot + "' in the world");
     }
-    targetOf(c, robots[r], controls.at(r));  // refused now, not when it is due
-    entries_.push_back({std::move(c), robots[r]});
+    // Refused now, not when it is due.
+    if (c.joint_effort) {
+      jointOf(c, robots[r]);
+    } else {
+      targetOf(c, robots[r].name, controls.at(r));
+    }
+    // A joint effort acts from its own t: given before the step that holds it.
+    const double due = c.joint_effort ? c.t - scene.model().dt() : c.t;
+    entries_.push_back({std::move(c), robots[r].name, due});
   }
-  std::stable_sort(entries_.begin(), entries_.end(),
-                   [](const Entry& a, const Entry& b) { return a.command.t < b.command.t; });
+  std::stable_sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) { return a.due < b.due; });
 }
 
-void Timeline::give(const Entry& e, double t, const std::vector<std::string>& robots,
-                    std::vector<RobotControls>& controls, std::vector<std::string>& said) const {
+void Timeline::give(const Entry& e, double t, const core::Scene& scene, std::vector<RobotControls>& controls,
+                    core::JointEffortSchedule& efforts, std::vector<std::string>& said) const {
   const TimedCommand& c = e.command;
-  const auto it = std::find(robots.begin(), robots.end(), e.robot);
-  if (it == robots.end()) {
+  const std::size_t r = robotNamed(scene, e.robot);
+  if (r == scene.robots().size()) {
     said.push_back(c.key + ": robot '" + e.robot + "' is gone: not given");
     return;
   }
-  RobotControls& rc = controls.at(static_cast<std::size_t>(it - robots.begin()));
+  RobotControls& rc = controls.at(r);
   int target = 0;
-  try {
-    target = targetOf(c, e.robot, rc);
-  } catch (const ConfigError& error) {  // a robot of that name spawned since, with other controllers
+  try {  // a robot of that name spawned since, with other controllers or joints
+    target = c.joint_effort ? jointOf(c, scene.robots()[r]) : targetOf(c, e.robot, rc);
+  } catch (const ConfigError& error) {
     said.push_back(error.what());
     return;
   }
   bool held = false;
-  if (c.cmd_vel && target < 0) {
+  if (c.joint_effort) {  // from its own t, as apply_joint_effort's start_time, off the step grid too
+    efforts.add(r, target, c.effort, c.t,
+                c.duration > 0.0 ? c.t + c.duration : std::numeric_limits<double>::infinity());
+  } else if (c.cmd_vel && target < 0) {
     held = rc.base_driver->command(c.linear, c.angular, t);
   } else if (c.cmd_vel) {
     held = !rc.drives.at(static_cast<std::size_t>(target)).command(c.linear.x(), c.angular.z(), t, c.linear.y());
@@ -149,21 +210,21 @@ void Timeline::give(const Entry& e, double t, const std::vector<std::string>& ro
   if (held) said.push_back(c.key + ": held to its controller's limits, or refused beyond them");
 }
 
-std::vector<std::string> Timeline::apply(double t, const std::vector<std::string>& robots,
-                                         std::vector<RobotControls>& controls) {
+std::vector<std::string> Timeline::apply(double t, const core::Scene& scene, std::vector<RobotControls>& controls,
+                                         core::JointEffortSchedule& efforts) {
   std::vector<std::string> said;
   const auto ended = [&](std::size_t k) { return !(t < entries_[k].command.until); };
   held_.erase(std::remove_if(held_.begin(), held_.end(), ended), held_.end());
-  for (const std::size_t k : held_) give(entries_[k], t, robots, controls, said);
-  for (; next_ < entries_.size() && entries_[next_].command.t <= t; ++next_) {
+  for (const std::size_t k : held_) give(entries_[k], t, scene, controls, efforts, said);
+  for (; next_ < entries_.size() && entries_[next_].due <= t; ++next_) {
     const Entry& e = entries_[next_];
     // A new command for a controller ends one held for it.
     const auto replaced = [&](std::size_t k) {
       const TimedCommand& h = entries_[k].command;
       return entries_[k].robot == e.robot && h.controller == e.command.controller && h.cmd_vel == e.command.cmd_vel;
     };
-    held_.erase(std::remove_if(held_.begin(), held_.end(), replaced), held_.end());
-    give(e, t, robots, controls, said);
+    if (!e.command.joint_effort) held_.erase(std::remove_if(held_.begin(), held_.end(), replaced), held_.end());
+    give(e, t, scene, controls, efforts, said);
     if (t < e.command.until) held_.push_back(next_);
   }
   return said;

@@ -18,14 +18,6 @@ std::string robotNames(const core::Scene& scene) {
   return names.empty() ? "none" : names;
 }
 
-/// The link of robot `model`'s moving joint `name`, or −1.
-int linkOf(const core::ArticulationModel& model, const std::string& name) {
-  for (int j = 1; j <= model.jointCount(); ++j) {
-    if (model.links[j].joint == name) return j;
-  }
-  return -1;
-}
-
 std::string number(double x) {
   std::ostringstream os;
   os << x;
@@ -54,7 +46,7 @@ std::optional<std::pair<std::size_t, int>> JointRequests::joint(const std::strin
   for (std::size_t r = 0; r < robots.size(); ++r) {
     const std::string& robot_name = robots[r].name;
     const bool scoped = name.rfind(robot_name + "/", 0) == 0;
-    const int j = linkOf(robots[r].model, scoped ? name.substr(robot_name.size() + 1) : name);
+    const int j = core::linkOfJoint(robots[r].model, scoped ? name.substr(robot_name.size() + 1) : name);
     if (j < 0) continue;
     if (scoped) return std::make_pair(r, j);
     found = std::make_pair(r, j);
@@ -83,7 +75,7 @@ std::string configureJoints(const core::ArticulationModel& model, const core::Sp
   for (std::size_t k = 0; k < n; ++k) {
     const std::string& name = names[k];
     const std::string at = "[" + std::to_string(k) + "]";
-    const int j = linkOf(model, name);
+    const int j = core::linkOfJoint(model, name);
     if (j < 0) {
       return "joint_names" + at + ": robot '" + model.name + "' has no moving joint '" + io::shownName(name) + "'" +
              core::heldJointNote(model, name);

@@ -26,9 +26,9 @@ void SimNode::stepOnce() {
     loads_[i].force_W += drive.force_W;
     loads_[i].torque_W += drive.torque_W;
   }
-  commands_->giveTimed(t);                     // the config's timeline, before the step it is due at
-  commands_->loadsFor(sim_, t, robot_loads_);  // the robots' controllers, from the state before the step
-  link_sensors_->before(sim_);                 // the force-torque sensors' velocities before the step
+  commands_->giveTimed(t, sim_.joint_efforts);  // the config's timeline, before the step it is due at
+  commands_->loadsFor(sim_, t, robot_loads_);   // the robots' controllers, from the state before the step
+  link_sensors_->before(sim_);                  // the force-torque sensors' velocities before the step
   sim_.step(loads_, robot_loads_);
   commands_->observe(sim_);  // the drives' odometry, from where the step left the wheels
   reportStep();

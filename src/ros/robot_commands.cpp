@@ -322,12 +322,12 @@ void RobotCommands::baseCommand(std::size_t r, const geometry_msgs::Twist& msg) 
 }
 
 void RobotCommands::setTimeline(std::vector<io::TimedCommand> entries) {
-  timeline_ = io::Timeline(std::move(entries), robot_names_, controls_);
+  timeline_ = io::Timeline(std::move(entries), sim_.scene, controls_);
 }
 
-void RobotCommands::giveTimed(double t) {
+void RobotCommands::giveTimed(double t, core::JointEffortSchedule& efforts) {
   if (timeline_.empty()) return;
-  for (const std::string& said : timeline_.apply(t, robot_names_, controls_)) {
+  for (const std::string& said : timeline_.apply(t, sim_.scene, controls_, efforts)) {
     if (warned_.insert({said, "timeline"}).second) ROS_WARN("sim_node: %s (said once)", said.c_str());
   }
 }

@@ -19,7 +19,7 @@ ControlRun::ControlRun(const core::Scene& scene, const core::SceneState& start, 
     names_.push_back(scene.robots()[r].name);
     controls_[r].restart(start.robots[r], true);
   }
-  timeline_ = io::Timeline(std::move(timeline), names_, controls_);
+  timeline_ = io::Timeline(std::move(timeline), scene, controls_);
   if (out_dir.empty()) return;
   const double dt = scene.model().dt();
   for (std::size_t r = 0; r < controls_.size(); ++r) {
@@ -48,7 +48,7 @@ void ControlRun::finish() {
 
 void ControlRun::loadsFor(const core::SceneState& state, double t, std::vector<core::ArticulationLoads>& loads) {
   if (!timeline_.empty()) {
-    for (const std::string& s : timeline_.apply(t, names_, controls_)) {
+    for (const std::string& s : timeline_.apply(t, scene_, controls_, efforts_)) {
       if (std::find(said_.begin(), said_.end(), s) != said_.end()) continue;
       std::fprintf(stderr, "rbsim: warning: %s (said once)\n", s.c_str());
       said_.push_back(s);
@@ -57,8 +57,9 @@ void ControlRun::loadsFor(const core::SceneState& state, double t, std::vector<c
   loads.resize(controls_.size());
   const double dt = scene_.model().dt();
   for (std::size_t r = 0; r < controls_.size(); ++r) {
-    controls_[r].loads(scene_.robots()[r].model, state.robots[r], t, dt, none_, r, loads[r]);
+    controls_[r].loads(scene_.robots()[r].model, state.robots[r], t, dt, efforts_, r, loads[r]);
   }
+  efforts_.dropFinished(t);
 }
 
 void ControlRun::observe(const core::SceneState& state, long long steps, double t) {

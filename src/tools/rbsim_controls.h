@@ -54,7 +54,7 @@ class ControlRun {
   std::vector<io::RobotControls> controls_;
   std::vector<std::string> names_;
   io::Timeline timeline_;
-  const core::JointEffortSchedule none_;  ///< rbsim gives no timed efforts
+  core::JointEffortSchedule efforts_;  ///< the timeline's joint efforts
   std::vector<Log> logs_;
   std::vector<std::string> said_;  ///< the timeline's notes, each said once
 };

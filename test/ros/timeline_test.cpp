@@ -3,18 +3,22 @@
 // config, to the last bit (issue 57). timeline.test: the controller's
 // odometry on /base_controller/odom, the IMU's samples on /imu, the noisy
 // odometry on /odom and its truth on /ground_truth; timeline_lidar.test:
-// the lidar's scans on /scan.
+// the lidar's scans on /scan; timeline_effort.test: a joint effort's
+// pendulum on /joint_states.
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <sensor_msgs/Imu.h>
+#include <sensor_msgs/JointState.h>
 #include <sensor_msgs/LaserScan.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
@@ -30,13 +34,28 @@ using namespace rbs_test;
 
 using Rows = std::map<long long, std::vector<double>>;
 
-/// rbsim's run of `urdf` (under urdf/) with `config` (under config/) for
-/// 3 s into the scratch folder (one scenario a test process).
+/// rbsim's run of `urdf` (under urdf/; "": none) with
+/// `config` (under config/) for 3 s into the scratch folder (one scenario
+/// a test process).
 std::string rbsimOut(const std::string& urdf, const std::string& config) {
   const std::string dir = rigid_body_sim::test::scratch().path().string();
   const std::string src = RBS_SOURCE_DIR;
+  const std::string cmd = std::string(RBS_RBSIM) + (urdf.empty() ? "" : " --urdf " + src + "/urdf/" + urdf) +
+                          " --config " + src + "/config/" + config + " --duration 3 --quiet --out " + dir +
+                          " 2>/dev/null >/dev/null";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  return dir;
+}
+
+/// rbsim's trajectory of `urdf` with `config` for 3 s into the scratch
+/// folder: a row every `every` steps in trajectory.csv (12 digits a
+/// number), its JSON line in run.json (each number to the last bit).
+std::string rbsimTrajectory(const std::string& urdf, const std::string& config, int every) {
+  const std::string dir = rigid_body_sim::test::scratch().path().string();
+  const std::string src = RBS_SOURCE_DIR;
   const std::string cmd = std::string(RBS_RBSIM) + " --urdf " + src + "/urdf/" + urdf + " --config " + src +
-                          "/config/" + config + " --duration 3 --quiet --out " + dir + " 2>/dev/null >/dev/null";
+                          "/config/" + config + " --duration 3 --quiet --every " + std::to_string(every) + " --csv " +
+                          dir + "/trajectory.csv 2>/dev/null >" + dir + "/run.json";
   EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
   return dir;
 }
@@ -72,6 +91,16 @@ void expectOdometryRow(const nav_msgs::Odometry& m, const std::vector<double>& r
   const std::vector<double> got{p.position.x,    p.position.y,    p.position.z, p.orientation.x, p.orientation.y,
                                 p.orientation.z, p.orientation.w, v.linear.x,   v.linear.y,      v.linear.z,
                                 v.angular.x,     v.angular.y,     v.angular.z};
+  for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], r[i + 1]) << "t " << r[0] << " column " << i + 1;
+}
+
+/// An IMU message against a sensor file's row t,qx,qy,qz,qw,wx,wy,wz,ax,ay,az.
+void expectImuRow(const sensor_msgs::Imu& m, const std::vector<double>& r) {
+  ASSERT_EQ(r.size(), 11u);
+  const std::vector<double> got{m.orientation.x,        m.orientation.y,         m.orientation.z,
+                                m.orientation.w,        m.angular_velocity.x,    m.angular_velocity.y,
+                                m.angular_velocity.z,   m.linear_acceleration.x, m.linear_acceleration.y,
+                                m.linear_acceleration.z};
   for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], r[i + 1]) << "t " << r[0] << " column " << i + 1;
 }
 
@@ -160,15 +189,7 @@ TEST_F(Timeline, TheNodeInLockStepPublishesRbsimsOutputsToTheLastBit) {
   const Rows imu_rows = rbsimRows(out, "diff_drive.imu.csv");
   ASSERT_EQ(imu_rows.size(), 300u);
   EXPECT_GE(imus.size(), 299u);  // the first may come before the node counts the subscriber
-  for (const sensor_msgs::Imu& m : imus) {
-    const std::vector<double>& r = rowAt(imu_rows, m.header.stamp);
-    ASSERT_EQ(r.size(), 11u);
-    const std::vector<double> got{m.orientation.x,        m.orientation.y,         m.orientation.z,
-                                  m.orientation.w,        m.angular_velocity.x,    m.angular_velocity.y,
-                                  m.angular_velocity.z,   m.linear_acceleration.x, m.linear_acceleration.y,
-                                  m.linear_acceleration.z};
-    for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], r[i + 1]) << "t " << r[0] << " column " << i + 1;
-  }
+  for (const sensor_msgs::Imu& m : imus) expectImuRow(m, rowAt(imu_rows, m.header.stamp));
   // The noisy odometry and its truth, every 10 steps (publish_rate 100 Hz).
   const Rows noisy_rows = rbsimRows(out, "diff_drive.odom.csv"),
              truth_rows = rbsimRows(out, "diff_drive.ground_truth.csv");
@@ -213,6 +234,59 @@ TEST_F(TimelineLidar, TheNodeInLockStepPublishesRbsimsScansToTheLastBit) {
   }
   ASSERT_FALSE(scans.empty());
   EXPECT_NEAR(scans.front().ranges[180], 1.9, 0.01);  // the wall ahead, from 0.1 m ahead of the base
+}
+
+// A joint effort from the timeline (config/pendulum_effort_timeline.yaml):
+// 1 N·m on the pendulum's pivot from t = 0.2505 s for 0.5 s, in zero
+// gravity. joint_states in lock-step reports rbsim's trajectory (its CSV's
+// 12 digits, its final state to the last bit), and the push is
+// apply_joint_effort's: at rest before it, the effort on the steps it
+// covers (its first and last half a step), then τ d / I = 6 rad/s (I =
+// 1/12 kg·m²).
+class TimelineEffort : public LockStep {
+ protected:
+  void run() {
+    LockStep::run(30, {&joints_}, [&](double t) { return through(states, t); });
+  }
+  std::vector<sensor_msgs::JointState> states;
+  ros::Subscriber joints_ = into("/joint_states", states);
+};
+
+TEST_F(TimelineEffort, TheNodeInLockStepSwingsAsRbsimAndTheClosedForm) {
+  run();
+  const std::string out = rbsimTrajectory("pendulum.urdf", "pendulum_effort_timeline.yaml", 10);
+  const Rows rows = rbsimRows(out, "trajectory.csv");
+  ASSERT_EQ(rows.size(), 301u);  // t 0, 0.01, ..., 3: the same times as joint_states at publish_rate 100
+  EXPECT_GE(states.size(), 300u);
+  const auto near = [](double got, double row) { return std::abs(got - row) <= 1e-11 * std::max(1.0, std::abs(row)); };
+  for (const sensor_msgs::JointState& m : states) {
+    const std::vector<double>& r = rowAt(rows, m.header.stamp);
+    ASSERT_EQ(r.size(), 16u);  // t, the base's 13 columns, pivot.position, pivot.velocity
+    ASSERT_EQ(m.position.size(), 1u);
+    EXPECT_TRUE(near(m.position[0], r[14])) << "t " << r[0] << ": " << m.position[0] << " vs " << r[14];
+    EXPECT_TRUE(near(m.velocity[0], r[15])) << "t " << r[0] << ": " << m.velocity[0] << " vs " << r[15];
+    const double t = m.header.stamp.toSec();
+    if (t < 0.25) EXPECT_EQ(m.velocity[0], 0.0) << "t " << t;
+    if (t > 0.26 && t < 0.75) {
+      EXPECT_EQ(m.effort[0], 1.0) << "t " << t;
+      EXPECT_NEAR(m.velocity[0], 12.0 * (t - 0.2505), 1e-9) << "t " << t;
+    }
+    if (t > 0.76) {
+      EXPECT_EQ(m.effort[0], 0.0) << "t " << t;
+      EXPECT_NEAR(m.velocity[0], 6.0, 1e-9) << "t " << t;
+    }
+  }
+  // The last state, to the last bit: the JSON's "position": NUMBER and "velocity": NUMBER of its joint.
+  std::ifstream in(out + "/run.json");
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto field = [&](const std::string& name) {
+    const std::size_t at = json.find("\"" + name + "\":", json.find("\"pivot\""));
+    return at == std::string::npos ? std::nan("") : std::strtod(json.c_str() + at + name.size() + 3, nullptr);
+  };
+  ASSERT_FALSE(states.empty());
+  ASSERT_NEAR(states.back().header.stamp.toSec(), 3.0, 1e-9);
+  EXPECT_EQ(states.back().position[0], field("position")) << json;
+  EXPECT_EQ(states.back().velocity[0], field("velocity")) << json;
 }
 
 }  // namespace

@@ -157,7 +157,19 @@ TEST(Rbsim, RefusesARobotsBadStart) {
             "'timeline[0].controller': 'a' is a joint controller: give it a command, not a cmd_vel"},
            {"{t: 0, robot: arm, controller: a, command: [1]}", "'timeline[0].robot': no robot 'arm' in the world"},
            {"{t: 1, until: 0.5, controller: a, command: [1]}", "'timeline[0].until': must be after t"},
-           {"{t: 1, controller: a}", "'timeline[0]': needs one of cmd_vel (a twist) and command"}}) {
+           {"{t: 1, controller: a}", "'timeline[0]': needs one of cmd_vel (a twist), command"},
+           {"{t: 0, joint_effort: {joint_name: elbow, effort: 1, duration: 1}}",
+            "'timeline[0].joint_effort.joint_name': robot 'pendulum' has no moving joint 'elbow'"},
+           {"{t: 0, joint_effort: {joint_name: pivot, effort: 1, duration: 0}}",
+            "'timeline[0].joint_effort.duration': must be > 0 (for that long) or < 0"},
+           {"{t: 0, joint_effort: {joint_name: pivot, effort: 2e6, duration: 1}}",
+            "'timeline[0].joint_effort.effort': must be within 1e6"},
+           {"{t: 0, joint_effort: {joint_name: pivot, duration: 1}}",
+            "'timeline[0].joint_effort.effort': every joint effort needs it"},
+           {"{t: 0, until: 2, joint_effort: {joint_name: pivot, effort: 1, duration: 1}}",
+            "'timeline[0].until': a joint effort lasts its joint_effort.duration"},
+           {"{t: 0, command: [1], joint_effort: {joint_name: pivot, effort: 1, duration: 1}}",
+            "'timeline[0]': needs one of"}}) {
     expectUsageError(pendulum + effort + " --set 'timeline=[" + entry + "]'", refusal);
   }
   expectUsageError("--urdf " + kBox + " --duration 1 --set 'timeline=[{t: 0, command: [1]}]'",
@@ -196,6 +208,29 @@ TEST(Rbsim, RunsTheNodesControllersCommandedByATimeline) {
   EXPECT_GT(
       std::abs(fell["shoulder"]["position"].as<double>() + 0.5) + std::abs(fell["elbow"]["position"].as<double>()),
       0.1);
+}
+
+// A timeline's joint effort is apply_joint_effort's (issue 57: rbsim ran
+// none): the shipped scenario (config/pendulum_effort_timeline.yaml) pushes
+// the pendulum in zero gravity with 1 N·m for 0.5 s from half a step off
+// the grid, and it leaves at τ d / I = 6 rad/s (I = 1/12 kg·m²); one with
+// no end (duration < 0) pushes to the end of the run.
+TEST(Rbsim, GivesATimelinesJointEffortsAsApplyJointEffort) {
+  const std::string pendulum = "--urdf " + std::string(RBS_SOURCE_DIR) + "/urdf/pendulum.urdf";
+  const Result r = rbsim(pendulum + " --config " + std::string(RBS_SOURCE_DIR) +
+                         "/config/pendulum_effort_timeline.yaml --duration 1 --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const YAML::Node pivot = YAML::Load(r.out)["final"]["joints"]["pivot"];
+  EXPECT_NEAR(pivot["velocity"].as<double>(), 6.0, 1e-9);
+  // 1.5 rad over the push (α d² / 2), then 6 rad/s for 0.2495 s; the steps' lag is α h d / 2 = 3 mrad.
+  EXPECT_NEAR(pivot["position"].as<double>(), 1.5 + 6.0 * 0.2495, 4e-3);
+  const Result held = rbsim(pendulum +
+                            " --set gravity=[0,0,0] --set 'timeline=[{t: 0.5, joint_effort: {joint_name: pivot, "
+                            "effort: -0.5, duration: -1}}]' --duration 2 --quiet");
+  ASSERT_EQ(held.code, 0) << held.err;
+  const YAML::Node pushed = YAML::Load(held.out)["final"]["joints"]["pivot"];
+  EXPECT_NEAR(pushed["velocity"].as<double>(), -0.5 * 12.0 * 1.5, 1e-9);
+  EXPECT_NEAR(pushed["position"].as<double>(), -0.5 * 6.0 * 1.5 * 1.5, 6e-3);
 }
 
 /// The rows of one of --out's files after its header, which is `header` if given.

@@ -1,5 +1,6 @@
 // A config's `timeline`: commands for the robots' controllers at given sim
-// times, as a user would publish them on the node's topics (docs/rbsim.md).
+// times, as a user would publish them on the node's topics, and efforts on
+// their joints, as apply_joint_effort gives them (docs/rbsim.md).
 // rbsim takes its commands from it, and the node gives them as it gives
 // its topics' messages, so a scenario runs the same with and without ROS.
 // ROS-free.
@@ -11,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "rigid_body_sim/core/articulations/joint_effort_schedule.h"
+#include "rigid_body_sim/core/articulations/scene.h"
 #include "rigid_body_sim/core/bodies/types.h"
 
 namespace rigid_body_sim::io {
@@ -19,7 +22,9 @@ struct RobotControls;
 
 /// One entry: `{t: 1.0, cmd_vel: {linear: [0.5, 0, 0], angular: [0, 0, 0.3]}}`
 /// (a geometry_msgs/Twist, to the robot's base driver or one drive) or
-/// `{t: 1.0, controller: NAME, command: [values]}` (CONTROLLER/command's data).
+/// `{t: 1.0, controller: NAME, command: [values]}` (CONTROLLER/command's data)
+/// or `{t: 1.0, joint_effort: {joint_name: J, effort: 2.0, duration: 0.5}}`
+/// (apply_joint_effort's request, starting at t).
 struct TimedCommand {
   std::string key;  ///< "timeline[3]", for messages
   double t = 0.0;   ///< s of sim time: given before the first step that starts at or after it
@@ -31,11 +36,16 @@ struct TimedCommand {
   bool cmd_vel = false;  ///< a twist (linear, angular), else `values`
   core::Vec3 linear = core::Vec3::Zero(), angular = core::Vec3::Zero();  ///< m/s, rad/s, in the base's axes
   std::vector<double> values;                                            ///< one per joint of the controller
+  bool joint_effort = false;  ///< an effort on `joint` over [t, t + duration), neither a twist nor values
+  std::string joint;          ///< joint_effort.joint_name: a moving joint of the robot
+  double effort = 0.0;        ///< N·m or N
+  double duration = 0.0;      ///< s; < 0: until the run ends (apply_joint_effort's "until cleared")
 };
 
 /// The config's `timeline` list (ConfigError naming `timeline[i].FIELD`):
-/// each `t` within [0, 1e6] s, `until` after it, one of `cmd_vel` and
-/// `command`, every value finite.
+/// each `t` within [0, 1e6] s, `until` after it, one of `cmd_vel`,
+/// `command` and `joint_effort` (its effort within 1e6, its duration not 0
+/// and within 1e6 s, no `until` or `controller` beside it), every value finite.
 std::vector<TimedCommand> parseTimeline(const YAML::Node& list);
 
 /// A timeline checked against a world's robots, each command found by
@@ -44,30 +54,32 @@ std::vector<TimedCommand> parseTimeline(const YAML::Node& list);
 class Timeline {
  public:
   Timeline() = default;
-  /// Refuses (ConfigError naming the entry's key) a robot not in `robots`
+  /// Refuses (ConfigError naming the entry's key) a robot not in `scene`
   /// (or no robot named in a world of several), a controller the robot
   /// does not have or of the wrong kind (cmd_vel to a drive or a base
-  /// driver, command to a joint controller), a command of the wrong length.
-  Timeline(std::vector<TimedCommand> entries, const std::vector<std::string>& robots,
-           const std::vector<RobotControls>& controls);
+  /// driver, command to a joint controller), a command of the wrong length,
+  /// a joint effort on a joint the robot does not move.
+  Timeline(std::vector<TimedCommand> entries, const core::Scene& scene, const std::vector<RobotControls>& controls);
 
   /// Gives each command due before the step that starts at sim time t to
-  /// its controller in `controls` (robot r's named robots[r]), as the node
-  /// gives a topic's message received at t. Returns what to say: a command
-  /// held to its controller's limits, or whose robot is gone.
-  std::vector<std::string> apply(double t, const std::vector<std::string>& robots,
-                                 std::vector<RobotControls>& controls);
+  /// its controller in `controls` (robot r's the scene's r-th), as the node
+  /// gives a topic's message received at t, and each joint effort to
+  /// `efforts` from its own t. Returns what to say: a command held to its
+  /// controller's limits, or whose robot is gone.
+  std::vector<std::string> apply(double t, const core::Scene& scene, std::vector<RobotControls>& controls,
+                                 core::JointEffortSchedule& efforts);
   bool empty() const { return entries_.empty(); }
 
  private:
   struct Entry {
     TimedCommand command;
     std::string robot;  ///< its robot's name
+    double due;         ///< s: given before the first step that starts at or after it
   };
-  void give(const Entry& e, double t, const std::vector<std::string>& robots, std::vector<RobotControls>& controls,
-            std::vector<std::string>& said) const;
+  void give(const Entry& e, double t, const core::Scene& scene, std::vector<RobotControls>& controls,
+            core::JointEffortSchedule& efforts, std::vector<std::string>& said) const;
 
-  std::vector<Entry> entries_;     ///< by t, then as listed
+  std::vector<Entry> entries_;     ///< by due, then as listed
   std::size_t next_ = 0;           ///< the first not yet given
   std::vector<std::size_t> held_;  ///< given, and given again until their `until`
 };

@@ -102,8 +102,9 @@ class RobotCommands {
   /// before the steps they are due at, as its topics' messages are, so a
   /// scenario runs here as it does in rbsim.
   void setTimeline(std::vector<io::TimedCommand> entries);
-  /// Before the step that starts at sim time t: the timeline's commands due.
-  void giveTimed(double t);
+  /// Before the step that starts at sim time t: the timeline's commands
+  /// due, its joint efforts into `efforts` (the simulation's).
+  void giveTimed(double t, core::JointEffortSchedule& efforts);
 
  private:
   /// Robot r's controllers' command topics and its joint_command, under `prefix`.

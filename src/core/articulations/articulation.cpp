@@ -123,6 +123,13 @@ void checkArticulation(const ArticulationModel& model) {
   throw std::invalid_argument(all);
 }
 
+int linkOfJoint(const ArticulationModel& model, const std::string& name) {
+  for (int j = 1; j <= model.jointCount(); ++j) {
+    if (model.links[j].joint == name) return j;
+  }
+  return -1;
+}
+
 std::string heldJointNote(const ArticulationModel& model, const std::string& name) {
   for (const HeldJoint& held : model.held) {
     if (held.name == name) return " (joint '" + name + "' is held: it moves only massless links)";

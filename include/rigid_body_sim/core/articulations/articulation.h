@@ -96,6 +96,9 @@ struct ArticulationModel {
 /// only when what hangs from it moves with its joint).
 void checkArticulation(const ArticulationModel& model);
 
+/// The link whose joint is `model`'s moving joint `name`, or −1.
+int linkOfJoint(const ArticulationModel& model, const std::string& name);
+
 /// " (joint 'NAME' is held: it moves only massless links)" when `name` is a
 /// held joint of `model`, else "": for the messages that refuse a joint name.
 std::string heldJointNote(const ArticulationModel& model, const std::string& name);
