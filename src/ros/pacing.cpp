@@ -56,7 +56,7 @@ void SimNode::publish() {
 }
 
 void SimNode::publishBodies() {
-  if (publisher_->state(sim_, ports_, stamp(), simTime())) markers_->afterTf();
+  if (publisher_->state(sim_, ports_, stamp(), simTime(), steps_ % publish_every_ == 0)) markers_->afterTf();
 }
 
 void SimNode::reportStep() {

@@ -104,7 +104,8 @@ void StatePublisher::clock(const ros::Time& now) {
   clock_pub_.publish(clock);
 }
 
-bool StatePublisher::state(const core::Simulation& sim, PortRegistry& ports, const ros::Time& now, double t) {
+bool StatePublisher::state(const core::Simulation& sim, PortRegistry& ports, const ros::Time& now, double t,
+                           bool on_rate) {
   if (!ros::ok()) return false;
   // On sim time a paused set_state waits for the next step.
   if (!last_published_.isZero() && now <= last_published_) return false;
@@ -128,6 +129,7 @@ bool StatePublisher::state(const core::Simulation& sim, PortRegistry& ports, con
     // noise is drawn all the same, so what a subscriber sees does not
     // depend on when others came.
     if (p.odom_noise) {  // noisy odom, the exact state on ground_truth
+      if (!on_rate) continue;
       const core::OdomReport noisy = p.odom_noise->report(link, t - p.last_odom);
       p.last_odom = t;
       if (p.odom.listened()) p.odom.publish(odometryMessage(noisy, p.frame, header, std::nullopt));

@@ -4,7 +4,8 @@
 // frame, which /tf_static places on the body. odom_noise.test's box has
 // noisy odometry: its difference from ground_truth has the configured σs.
 // contacts.test's box rests on the ground: ~contacts says the ground holds
-// it up with m g, asleep or not.
+// it up with m g, asleep or not. odom_noise_steps.test: two nodes' noisy
+// odometry, stepped in different batches, draws the same noise.
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/Imu.h>
 #include <tf2_msgs/TFMessage.h>
@@ -150,6 +151,50 @@ TEST_F(NodeContacts, ARestingBoxIsHeldUpByTheGroundWithItsWeightAsleepOrNot) {
   ASSERT_GE(drawn.markers.size(), 2u);
   EXPECT_EQ(drawn.markers.front().action, visualization_msgs::Marker::DELETEALL);
   EXPECT_EQ(drawn.markers.back().type, visualization_msgs::Marker::SPHERE_LIST);
+}
+
+// odom_noise_steps.test: two identical nodes, paused, a box with noisy
+// odometry each at publish_rate 100 Hz (every 10 steps); one stepped 10
+// steps at a time, the other 3 then 7. Both publish the same reports, to
+// the bit, at the same sim times: the noise follows the step count. The
+// end of each ~step used to draw a report of its own, so the second node
+// published twice as many and its noise ran ahead of the first's.
+TEST(NodeOdomNoiseSteps, TheNoiseFollowsTheStepCountNotWhereAStepEnds) {
+  ros::NodeHandle nh;
+  std::vector<nav_msgs::Odometry> a, b;
+  const auto into = [&nh](const std::string& topic, std::vector<nav_msgs::Odometry>& out) {
+    return nh.subscribe<nav_msgs::Odometry>(topic, 1000,
+                                            [&out](const nav_msgs::Odometry::ConstPtr& m) { out.push_back(*m); });
+  };
+  const ros::Subscriber sa = into("/a/odom", a), sb = into("/b/odom", b);
+  ASSERT_TRUE(spinUntil([&] { return sa.getNumPublishers() > 0 && sb.getNumPublishers() > 0; }, 30.0));
+  spinUntil([] { return false; }, 0.3);  // what came at start (or not): not compared
+  a.clear();
+  b.clear();
+  const auto step = [](const std::string& node, int n) {
+    rigid_body_sim::Step s;
+    s.request.steps = n;
+    ASSERT_TRUE(ros::service::waitForService(node + "/step", 30000));
+    ASSERT_TRUE(ros::service::call(node + "/step", s) && s.response.success) << s.response.message;
+  };
+  for (int k = 0; k < 20; ++k) {
+    step("/a/sim_node", 10);
+    step("/b/sim_node", 3);
+    step("/b/sim_node", 7);
+  }
+  ASSERT_TRUE(spinUntil([&] { return a.size() >= 20 && b.size() >= 20; }, 30.0));
+  spinUntil([] { return false; }, 0.5);  // any more on their way
+  ASSERT_EQ(a.size(), 20u);
+  ASSERT_EQ(b.size(), 20u);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const geometry_msgs::Pose &p = a[i].pose.pose, &q = b[i].pose.pose;
+    EXPECT_EQ(p.position.x, q.position.x) << i;
+    EXPECT_EQ(p.position.y, q.position.y) << i;
+    EXPECT_EQ(p.orientation.z, q.orientation.z) << i;
+    EXPECT_EQ(a[i].twist.twist.linear.x, b[i].twist.twist.linear.x) << i;
+    EXPECT_EQ(a[i].twist.twist.angular.z, b[i].twist.twist.angular.z) << i;
+  }
+  EXPECT_NE(a[0].pose.pose.position.x, a[1].pose.pose.position.x);  // noisy: each report its own draw
 }
 
 }  // namespace

@@ -70,9 +70,11 @@ class StatePublisher {
   /// /clock at `now`, on sim time.
   void clock(const ros::Time& now);
   /// Every body's tf in one message and its odometry, at `now`, sim time
-  /// `t` (s). Never at the same stamp twice (tf2 would warn of repeated
-  /// data) or an older one: false, and nothing sent, then.
-  bool state(const core::Simulation& sim, PortRegistry& ports, const ros::Time& now, double t);
+  /// `t` (s); a noisy odometry (and its ground_truth) only `on_rate`, at a
+  /// multiple of the publish period in steps, so its draws follow the step
+  /// count, never where a ~step ended. Never at the same stamp twice (tf2
+  /// would warn of repeated data) or an older one: false, and nothing sent, then.
+  bool state(const core::Simulation& sim, PortRegistry& ports, const ros::Time& now, double t, bool on_rate);
   /// ~contacts and ~contact_markers (contacts.cpp), while someone subscribes.
   void contacts(const core::Simulation& sim, const ros::Time& now);
   /// ~body_states, while someone subscribes.
