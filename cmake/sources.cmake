@@ -20,6 +20,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/step/fixed_point.cpp
   ${RBS_SOURCE_ROOT}/src/core/step/guard.cpp
   ${RBS_SOURCE_ROOT}/src/core/devices/imu.cpp
+  ${RBS_SOURCE_ROOT}/src/core/devices/body_sensors.cpp
   ${RBS_SOURCE_ROOT}/src/core/devices/link_sensors.cpp
   ${RBS_SOURCE_ROOT}/src/core/bodies/inertia.cpp
   ${RBS_SOURCE_ROOT}/src/core/bodies/shape_mass.cpp

@@ -329,4 +329,23 @@ core::LinkSensors linkSensors(const RobotSensors& sensors, const core::Articulat
   return out;
 }
 
+core::BodySensors bodySensors(const core::BodyModel& body, const std::optional<ImuEntry>& imu,
+                              const std::optional<core::OdomNoiseSettings>& odom_noise, double dt) {
+  core::BodySensors sensors(dt);
+  if (imu) {
+    const std::optional<core::Pose> X_LK = core::linkPose(body, imu->link);
+    if (!X_LK) {
+      std::string names = "'" + body.link + "'";
+      for (const core::FixedLink& f : body.fixed_links) names += ", '" + f.name + "'";
+      throw ConfigError("config key '" + imu->key + ".link' = '" + imu->link + "': no such link of body '" + body.name +
+                        "' (its links: " + names + ")");
+    }
+    core::ImuSettings settings = imu->settings;
+    settings.X_LS = *X_LK * imu->settings.X_LS;
+    sensors.addImu(settings);
+  }
+  if (odom_noise) sensors.addOdometryNoise(*odom_noise);
+  return sensors;
+}
+
 }  // namespace rigid_body_sim::io

@@ -5,21 +5,12 @@
 
 #include <algorithm>
 #include <boost/make_shared.hpp>
-#include <cmath>
 #include <utility>
+
+#include "rigid_body_sim/io/sensor_mount.h"
 
 namespace rigid_body_sim::node {
 namespace {
-
-/// The pose in the root link frame L of `link` (core::linkPose); another
-/// name is refused naming `key`.link and the body's links.
-core::Pose mountOf(const core::BodyModel& body, const std::string& link, const std::string& key) {
-  if (const std::optional<core::Pose> X_LK = core::linkPose(body, link)) return *X_LK;
-  std::string names = "'" + body.link + "'";
-  for (const core::FixedLink& f : body.fixed_links) names += ", '" + f.name + "'";
-  throw io::ConfigError("config key '" + key + ".link' = '" + link + "': no such link of body '" + body.name +
-                        "' (its links: " + names + ")");
-}
 
 /// Lets what it holds go when the queue calls it, on the queue's thread.
 class Release : public ros::CallbackInterface {
@@ -44,7 +35,9 @@ BodyPorts openPorts(const PortContext& context, const core::BodyModel& body, con
   ports.frame = prefix + body.link;
   // Checked before anything is advertised: a spawn's IMU on no such link is
   // refused with nothing changed (it ended the node once).
-  std::optional<core::ImuSettings> imu_settings;
+  if (imu || odom_noise) {
+    ports.sensors = std::make_unique<core::BodySensors>(io::bodySensors(body, imu, odom_noise, context.dt));
+  }
   if (imu) {
     const std::string own = imu->frame_id.empty() ? "imu_link" : imu->frame_id;
     ports.imu_frame = prefix + own;
@@ -54,8 +47,6 @@ BodyPorts openPorts(const PortContext& context, const core::BodyModel& body, con
       throw io::ConfigError(imu->key + ".frame_id '" + own + "' of body '" + body.name +
                             "': is already a frame (of the body, or the world); name the sensor's own frame");
     }
-    imu_settings = imu->settings;
-    imu_settings->X_LS = mountOf(body, imu->link, imu->key) * imu->settings.X_LS;
   }
   const std::string name = body.name;  // by name: a deletion moves the later bodies' indices
   ros::NodeHandle& nh = ports.nh.emplace(context.nh);
@@ -67,12 +58,9 @@ BodyPorts openPorts(const PortContext& context, const core::BodyModel& body, con
         prefix + "cmd_vel", 10, [on_cmd_vel, name](const geometry_msgs::Twist::ConstPtr& m) { on_cmd_vel(name, m); });
   }
   if (odom_noise) {
-    ports.odom_noise = std::make_unique<core::OdomNoise>(*odom_noise);
     ports.ground_truth = CountedPublisher::advertise<nav_msgs::Odometry>(nh, prefix + "ground_truth", kStreamQueue);
   }
-  if (imu_settings) {
-    ports.imu = std::make_unique<core::Imu>(*imu_settings);  // add() gives it the start
-    ports.imu_every = std::max(1LL, std::llround(1.0 / (imu->settings.rate * context.dt)));
+  if (imu) {
     const std::string& topic = imu->topic;
     ports.imu_pub =
         CountedPublisher::advertise<sensor_msgs::Imu>(nh, topic.front() == '/' ? topic : prefix + topic, kStreamQueue);
@@ -87,12 +75,11 @@ BodyPorts openPorts(const PortContext& context, const core::BodyModel& body, con
 }
 
 BodyPorts& PortRegistry::add(BodyPorts ports, const core::BodyModel& body, const core::BodyState& start, double t) {
-  if (ports.imu) ports.imu->restart(core::linkState(body, start));
-  ports.last_odom = t;
+  if (ports.sensors) ports.sensors->start(body, start, t);
   ports.colour = entered_++;
   BodyDirectory::Entry entry{body.name, ports.frame, {}};
   for (const core::FixedLink& link : body.fixed_links) entry.other_frames.push_back(ports.prefix + link.name);
-  if (ports.imu) entry.other_frames.push_back(ports.imu_frame);
+  if (ports.sensors && ports.sensors->imu()) entry.other_frames.push_back(ports.imu_frame);
   directory_.add(std::move(entry));
   ports_.push_back(std::move(ports));
   return ports_.back();
@@ -106,13 +93,12 @@ void PortRegistry::erase(std::size_t i) {
 }
 
 void PortRegistry::restart(std::size_t i, const core::BodyModel& body, const core::BodyState& now) {
-  if (ports_[i].imu) ports_[i].imu->restart(core::linkState(body, now));
+  if (ports_[i].sensors) ports_[i].sensors->restart(body, now);
 }
 
 void PortRegistry::restartAll(const core::Model& model, const core::State& state) {
   for (std::size_t i = 0; i < ports_.size(); ++i) {
-    restart(i, model.body(i), state.bodies[i]);
-    if (ports_[i].odom_noise) ports_[i].odom_noise->restart();  // the drift starts again
+    if (ports_[i].sensors) ports_[i].sensors->restartAll(model.body(i), state.bodies[i]);  // the drift too
   }
 }
 

@@ -113,9 +113,16 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     const core::BodyModel& body = model_.body(i);
     requireOwnWorldFrame(settings_.world_frame, several ? body.name + "/" : "", body);
     const io::SimConfig& c = params_.sim;
-    const BodyDevices devices = c.bodies_listed
-                                    ? BodyDevices{c.bodies[i].imu, c.bodies[i].odom_noise, c.bodies[i].cmd_vel}
-                                    : BodyDevices{c.imu, c.odom_noise, c.cmd_vel};
+    // A listed body's entry by its name: robots among the bodies take
+    // entries too, so the i-th entry need not be the i-th body (it gave a
+    // body after a robot the robot's devices, and lost its own).
+    const auto listed =
+        std::find_if(c.bodies.begin(), c.bodies.end(), [&](const io::BodyEntry& e) { return e.name == body.name; });
+    BodyDevices devices{c.imu, c.odom_noise, c.cmd_vel};
+    if (c.bodies_listed) {
+      devices =
+          listed != c.bodies.end() ? BodyDevices{listed->imu, listed->odom_noise, listed->cmd_vel} : BodyDevices{};
+    }
     const BodyPorts& ports =
         ports_.add(openPorts(port_context_, body, several ? body.name + "/" : "", devices, all_topics), body,
                    state_.bodies[i], simTime());

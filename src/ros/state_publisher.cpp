@@ -83,7 +83,9 @@ void appendFixedFrames(const core::BodyModel& body, const BodyPorts& ports, cons
   };
   for (const core::FixedLink& link : body.fixed_links)
     add(ports.prefix + link.parent, ports.prefix + link.name, link.X_PK);
-  if (ports.imu) add(ports.frame, ports.imu_frame, ports.imu->settings().X_LS);  // the IMU's frame, on the root link
+  if (ports.sensors && ports.sensors->imu()) {  // the IMU's frame, on the root link
+    add(ports.frame, ports.imu_frame, ports.sensors->imu()->settings().X_LS);
+  }
 }
 
 StatePublisher::StatePublisher(ros::NodeHandle nh, ros::NodeHandle pnh, const NodeSettings& settings, bool use_sim_time)
@@ -128,10 +130,9 @@ bool StatePublisher::state(const core::Simulation& sim, PortRegistry& ports, con
     // Built only for a topic someone listens to (counted_publisher.h); the
     // noise is drawn all the same, so what a subscriber sees does not
     // depend on when others came.
-    if (p.odom_noise) {  // noisy odom, the exact state on ground_truth
+    if (p.sensors && p.sensors->noisy()) {  // noisy odom, the exact state on ground_truth
       if (!on_rate) continue;
-      const core::OdomReport noisy = p.odom_noise->report(link, t - p.last_odom);
-      p.last_odom = t;
+      const core::OdomReport noisy = p.sensors->report(link, t);
       if (p.odom.listened()) p.odom.publish(odometryMessage(noisy, p.frame, header, std::nullopt));
       if (p.ground_truth.listened()) {
         p.ground_truth.publish(odometryMessage(core::exactOdom(link), p.frame, header, settings_.covariance));

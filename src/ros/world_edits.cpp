@@ -187,7 +187,9 @@ SpawnBody::Response WorldEdits::insert(SpawnQueue::Spawn& spawn) {
   const std::string prefix = req.name + "/";
   std::vector<std::string> new_frames{prefix + body.link};
   for (const core::FixedLink& link : body.fixed_links) new_frames.push_back(prefix + link.name);
-  if (spawn.ports->imu) new_frames.push_back(spawn.ports->imu_frame);  // not one of the body's (openPorts)
+  if (spawn.ports->sensors && spawn.ports->sensors->imu()) {
+    new_frames.push_back(spawn.ports->imu_frame);  // not one of the body's (openPorts)
+  }
   res.message = nameTaken(req.name);
   if (!res.message.empty()) return res;
   for (const std::string& frame : new_frames) {

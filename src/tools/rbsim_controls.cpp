@@ -38,13 +38,7 @@ ControlRun::~ControlRun() {
   for (const Log& log : logs_) std::fclose(log.file);
 }
 
-void ControlRun::finish() {
-  std::vector<Log> logs;
-  logs.swap(logs_);
-  bool whole = true;
-  for (const Log& log : logs) whole = std::ferror(log.file) == 0 && std::fclose(log.file) == 0 && whole;
-  if (!whole) throw UsageError("--out: a drive's odometry file could not be written whole");
-}
+void ControlRun::finish() { closeLogs(logs_, "a drive's odometry file"); }
 
 void ControlRun::loadsFor(const core::SceneState& state, double t, std::vector<core::ArticulationLoads>& loads) {
   if (!timeline_.empty()) {

@@ -20,12 +20,14 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rbsim_loop.h"
 #include "rbsim_output.h"
 #include "rbsim_report.h"
 #include "rbsim_scene.h"
+#include "rbsim_sensors.h"
 #include "rigid_body_sim/core/bodies/ranges.h"
 #include "rigid_body_sim/core/contacts/contact.h"
 #include "rigid_body_sim/core/step/diagnostics.h"
@@ -70,9 +72,11 @@ constexpr const char* kUsage =
     "                     (t,x,y,heading,linear,lateral,angular); the controllers run\n"
     "                     as sim_node runs them, commanded by the config's timeline;\n"
     "                     each IMU's, odometry's, GPS's and magnetometer's samples in\n"
-    "                     DIR/ROBOT.TOPIC.csv, as sim_node publishes them (docs/rbsim.md)\n"
+    "                     DIR/ROBOT.TOPIC.csv, as sim_node publishes them; a body's IMU\n"
+    "                     and noisy odometry in DIR/BODY.TOPIC.csv (docs/rbsim.md)\n"
     "  --quiet            no summary on stderr\n";
 
+using rigid_body_sim::tools::BodyDevices;
 using rigid_body_sim::tools::checkStep;
 using rigid_body_sim::tools::CsvWriter;
 using rigid_body_sim::tools::Diverged;
@@ -247,16 +251,26 @@ int run(const Args& args) {
   }
   bool world_config = false;
   std::optional<io::World> world;
+  std::vector<BodyDevices> devices;  // per body
+  double publish_rate = 100.0;       // Hz: the odometry's reports
   {
     const io::SimConfig config = readConfig(args);
     checkDuration(args, config);
     if (args.urdf.empty() && !config.bodies.empty() && io::listsRobots(config)) {  // rbsim_scene.cpp
       options.publish_rate = config.publish_rate;
-      return rigid_body_sim::tools::runScene(io::buildScene(config), options, config.timeline);
+      io::SceneSetup setup = io::buildScene(config);
+      rigid_body_sim::tools::noteDevices(config, setup.entry);
+      const std::vector<BodyDevices> bodies = rigid_body_sim::tools::bodyDevices(config, setup.entry);
+      return rigid_body_sim::tools::runScene(std::move(setup), options, config.timeline, bodies);
     }
     refuseControllers(config);
     rigid_body_sim::tools::noteDevices(config);
-    if (!args.out.empty()) throw UsageError("--out: a world of bodies alone has no controllers' outputs to write");
+    devices = rigid_body_sim::tools::bodyDevices(config);
+    const auto has = [](const BodyDevices& d) { return d.imu || d.odom_noise; };
+    if (!args.out.empty() && std::none_of(devices.begin(), devices.end(), has)) {
+      throw UsageError("--out: no body has a device (imu, odom_noise) whose samples it would write");
+    }
+    publish_rate = config.publish_rate;
     world.emplace(loadWorld(args, config, &world_config));
     warnAll(world->notes);
   }  // the config goes: its bodies list is a tenth of the memory of a world of 10,000 boxes
@@ -282,6 +296,8 @@ int run(const Args& args) {
       csv->row(done * dt, model.body(i).name, core::linkState(model.body(i), state.bodies[i]));
   };
   core::Workspace workspace;
+  rigid_body_sim::tools::BodySensorRun sensors(model, state, devices, publish_rate, args.out);
+  sensors.sample(state, 0, 0.0);    // as the node publishes its odometry at start
   std::vector<char> limited(n, 0);  // bodies the speed limits have held back, warned once each
   double max_penetration = 0.0;     // m, over the states at the start of every step
   // Progress bar only for runs that take a while (about a second or more).
@@ -290,6 +306,7 @@ int run(const Args& args) {
       steps, csv != nullptr, args.every, progress,
       [&](long long k) {
         core::step(model, state, {}, &workspace);
+        sensors.sample(state, k, static_cast<double>(k) * dt);
         max_penetration = std::max(max_penetration, workspace.deepest_penetration);
         if (!workspace.speed_limited.empty() || !workspace.diverged.empty()) {
           checkStep(model, workspace, k * dt, limited);
@@ -327,6 +344,7 @@ int run(const Args& args) {
   }
   out["speed_limited"] = limited_json;
   if (csv) csv->finish();
+  sensors.finish();
   JsonLine line(out, "bodies");
   for (std::size_t i = 0; i < n; ++i) {
     line.element({{"name", model.body(i).name},

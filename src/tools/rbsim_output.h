@@ -25,6 +25,18 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Closes the `file` of each of `logs`, emptied first (so a destructor
+/// after it closes none twice); a UsageError saying `what` could not be
+/// written whole if one could not.
+template <class Log>
+void closeLogs(std::vector<Log>& logs, const std::string& what) {
+  std::vector<Log> closing;
+  closing.swap(logs);
+  bool whole = true;
+  for (const Log& log : closing) whole = std::ferror(log.file) == 0 && std::fclose(log.file) == 0 && whole;
+  if (!whole) throw UsageError("--out: " + what + " could not be written whole");
+}
+
 /// A state stopped being finite (the step's guard put it back): the run's
 /// figures would mean nothing, so it ends with exit code 3.
 struct Diverged : std::runtime_error {

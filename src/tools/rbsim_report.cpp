@@ -70,22 +70,18 @@ void warnRobotLimited(const std::string& name, const core::SpeedLimits& limits, 
                text(limits.max_angular_speed).c_str());
 }
 
-void noteDevices(const io::SimConfig& config) {
+void noteDevices(const io::SimConfig& config, const std::vector<int>& entry) {
   std::string keys;
   const auto add = [&keys](bool given, const std::string& key) {
     if (given) keys += (keys.empty() ? "'" : ", '") + key + "'";
   };
-  add(config.imu.has_value(), "imu");
-  add(config.odom_noise.has_value(), "odom_noise");
-  add(config.cmd_vel.has_value(), "cmd_vel");
+  if (config.bodies.empty()) add(config.cmd_vel.has_value(), "cmd_vel");
   for (std::size_t i = 0; i < config.bodies.size(); ++i) {
-    const std::string key = "bodies[" + std::to_string(i) + "].";
-    add(config.bodies[i].imu.has_value(), key + "imu");
-    add(config.bodies[i].odom_noise.has_value(), key + "odom_noise");
-    add(config.bodies[i].cmd_vel.has_value(), key + "cmd_vel");
+    if (i < entry.size() && entry[i] < 0) continue;  // a robot's: its base drive, run
+    add(config.bodies[i].cmd_vel.has_value(), "bodies[" + std::to_string(i) + "].cmd_vel");
   }
   if (keys.empty()) return;
-  std::fprintf(stderr, "rbsim: note: config keys %s: sim_node runs a body's devices; rbsim does not yet\n",
+  std::fprintf(stderr, "rbsim: note: config keys %s: sim_node drives a body by its cmd_vel topic; rbsim does not yet\n",
                keys.c_str());
 }
 

@@ -38,10 +38,10 @@ core::Vec3 bodiesAngularMomentum(const core::Model& model, const core::State& st
 /// the guard (Diverged: the end).
 void checkStep(const core::Model& model, const core::Workspace& ws, double t, std::vector<char>& limited);
 
-/// A world of bodies' devices (`imu`, `odom_noise`, `cmd_vel`, and each
-/// `bodies[i]`'s) are the node's to run: named once on stderr, never
-/// taken silently.
-void noteDevices(const io::SimConfig& config);
+/// A free body's `cmd_vel` (the config's one body's, and each body's of
+/// `bodies`: entry i is body `entry[i]`, a robot's < 0, all bodies without
+/// `entry`) is the node's to run: named once on stderr, never taken silently.
+void noteDevices(const io::SimConfig& config, const std::vector<int>& entry = {});
 
 /// The warning for a robot held back by the speed limits.
 void warnRobotLimited(const std::string& name, const core::SpeedLimits& limits, double t);

@@ -47,7 +47,8 @@ core::Vec3 sceneAngularMomentum(const core::Scene& scene, const core::SceneState
 
 }  // namespace
 
-int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::TimedCommand> timeline) {
+int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::TimedCommand> timeline,
+             const std::vector<BodyDevices>& devices) {
   for (const std::string& note : setup.notes) std::fprintf(stderr, "rbsim: warning: %s\n", note.c_str());
   const core::Scene& scene = setup.scene;
   core::SceneState& state = setup.state;
@@ -106,6 +107,8 @@ int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::Ti
   ControlRun controls(scene, state, std::move(setup.controls), std::move(timeline), options.out_dir);
   controls.write(0.0);
   SensorRun sensors(scene, state, setup.sensors, options.publish_rate, options.out_dir);
+  BodySensorRun body_sensors(model, state.bodies, devices, options.publish_rate, options.out_dir);
+  body_sensors.sample(state.bodies, 0, 0.0);        // as the node publishes its odometry at start
   std::vector<char> limited(model.bodyCount(), 0);  // free bodies the speed limits held back, warned once each
   std::vector<char> robot_limited(robots.size(), 0);
   double max_penetration = 0.0;  // m, over the states at the start of every step
@@ -117,6 +120,7 @@ int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::Ti
         core::stepScene(scene, state, loads, ws);
         controls.observe(state, k, static_cast<double>(k) * dt);
         sensors.sample(state, loads, ws, k, static_cast<double>(k) * dt);
+        body_sensors.sample(state.bodies, k, static_cast<double>(k) * dt);
         max_penetration = std::max(max_penetration, ws.bodies.deepest_penetration);
         if (!ws.bodies.speed_limited.empty() || !ws.bodies.diverged.empty()) {
           checkStep(model, ws.bodies, k * dt, limited);
@@ -180,6 +184,7 @@ int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::Ti
   if (csv) csv->finish();
   controls.finish();
   sensors.finish();
+  body_sensors.finish();
   JsonLine line(out, "bodies");
   for (const Json& entry : entries) line.element(entry);
   line.finish();

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "rbsim_sensors.h"
 #include "rigid_body_sim/io/scene_loader.h"
 
 namespace rigid_body_sim::tools {
@@ -31,6 +32,8 @@ struct RunOptions {
 /// The robots' controllers run as the node runs them, commanded by
 /// `timeline` (rbsim_controls.h), and their link sensors are sampled
 /// (rbsim_sensors.h).
-int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::TimedCommand> timeline = {});
+/// Its free bodies' `devices` (rbsim_sensors.h's bodyDevices) are sampled too.
+int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::TimedCommand> timeline = {},
+             const std::vector<BodyDevices>& devices = {});
 
 }  // namespace rigid_body_sim::tools

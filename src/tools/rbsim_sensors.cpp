@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <utility>
 
@@ -36,6 +37,32 @@ std::string fileName(std::string topic) {
 }
 
 void append(std::vector<double>& out, const core::Vec3& v) { out.insert(out.end(), {v.x(), v.y(), v.z()}); }
+
+/// An IMU row's values after t: q_WS, ω and the specific force in its axes.
+std::vector<double> imuValues(const core::ImuReading& r) {
+  std::vector<double> v{r.q_WS.x(), r.q_WS.y(), r.q_WS.z(), r.q_WS.w()};
+  append(v, r.w_S);
+  append(v, r.f_S);
+  return v;
+}
+
+/// An odometry row's values after t: the pose in the world, the twist in the link's axes.
+std::vector<double> odometryValues(const core::OdomReport& o) {
+  std::vector<double> v;
+  append(v, o.p_WL);
+  v.insert(v.end(), {o.q_WL.x(), o.q_WL.y(), o.q_WL.z(), o.q_WL.w()});
+  append(v, o.v_L);
+  append(v, o.w_L);
+  return v;
+}
+
+/// A row: t and `values`, 17 digits each.
+void writeRow(std::FILE* file, double t, const std::vector<double>& values) {
+  std::string line = text(t);
+  for (const double x : values) line += "," + text(x);
+  line += "\n";
+  std::fputs(line.c_str(), file);
+}
 
 /// A contact sensor's sample as a JSON line: t and each pair touching its
 /// link (the `body` side), by name, in its frame.
@@ -129,13 +156,7 @@ SensorRun::~SensorRun() {
   for (const Log& log : logs_) std::fclose(log.file);
 }
 
-void SensorRun::finish() {
-  std::vector<Log> logs;
-  logs.swap(logs_);
-  bool whole = true;
-  for (const Log& log : logs) whole = std::ferror(log.file) == 0 && std::fclose(log.file) == 0 && whole;
-  if (!whole) throw UsageError("--out: a sensor's file could not be written whole");
-}
+void SensorRun::finish() { closeLogs(logs_, "a sensor's file"); }
 
 void SensorRun::before(const core::SceneState& state) {
   for (std::size_t r = 0; r < sensors_.size(); ++r) sensors_[r].before(scene_.robots()[r].model, state.robots[r]);
@@ -180,20 +201,12 @@ void SensorRun::row(const Log& log, long long steps, double t) const {
   const core::LinkSensors& s = sensors_[log.robot];
   std::vector<double> v;
   switch (log.kind) {
-    case Kind::kImu: {
-      const core::ImuReading& r = s.imus()[log.index].reading;
-      v = {r.q_WS.x(), r.q_WS.y(), r.q_WS.z(), r.q_WS.w()};
-      append(v, r.w_S);
-      append(v, r.f_S);
+    case Kind::kImu:
+      v = imuValues(s.imus()[log.index].reading);
       break;
-    }
     case Kind::kOdometry: {
       const core::OdometryChannel& c = s.odometry()[log.index];
-      const core::OdomReport& o = log.truth ? c.truth : c.report;
-      append(v, o.p_WL);
-      v.insert(v.end(), {o.q_WL.x(), o.q_WL.y(), o.q_WL.z(), o.q_WL.w()});
-      append(v, o.v_L);
-      append(v, o.w_L);
+      v = odometryValues(log.truth ? c.truth : c.report);
       break;
     }
     case Kind::kGnss: {
@@ -229,10 +242,86 @@ void SensorRun::row(const Log& log, long long steps, double t) const {
       std::fputs((contactsLine(scene_.model(), s.contactSensors()[log.index].pairs, t) + "\n").c_str(), log.file);
       return;
   }
-  std::string line = text(t);
-  for (const double x : v) line += "," + text(x);
-  line += "\n";
-  std::fputs(line.c_str(), log.file);
+  writeRow(log.file, t, v);
+}
+
+std::vector<BodyDevices> bodyDevices(const io::SimConfig& config, const std::vector<int>& entry) {
+  if (!config.bodies_listed) return {BodyDevices{config.imu, config.odom_noise}};
+  std::vector<BodyDevices> devices(config.bodies.size());
+  for (std::size_t k = 0; k < config.bodies.size(); ++k) {
+    const int body = k < entry.size() ? entry[k] : static_cast<int>(k);
+    if (body < 0) continue;
+    devices.at(static_cast<std::size_t>(body)) = {config.bodies[k].imu, config.bodies[k].odom_noise};
+  }
+  return devices;
+}
+
+BodySensorRun::BodySensorRun(const core::Model& model, const core::State& start,
+                             const std::vector<BodyDevices>& devices, double publish_rate, const std::string& out_dir)
+    : model_(model), publish_every_(std::max(1LL, std::llround(1.0 / (publish_rate * model.dt())))) {
+  std::vector<std::string> paths;
+  const auto open = [&](std::size_t k, const std::string& topic, const char* header, Log::What what) {
+    const std::string name = model.body(body_[k]).name;
+    const std::string path = out_dir + "/" + name + "." + fileName(topic) + ".csv";
+    if (std::find(paths.begin(), paths.end(), path) != paths.end()) {
+      throw UsageError("--out: two of body '" + name + "''s sensors would write '" + path +
+                       "' (their topics are the same)");
+    }
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    if (f == nullptr) throw UsageError("--out: cannot write '" + path + "': " + std::strerror(errno));
+    std::fputs(header, f);
+    paths.push_back(path);
+    logs_.push_back({k, what, f});
+  };
+  for (std::size_t i = 0; i < devices.size() && i < model.bodyCount(); ++i) {
+    const BodyDevices& d = devices[i];
+    if (!d.imu && !d.odom_noise) continue;
+    sensors_.push_back(io::bodySensors(model.body(i), d.imu, d.odom_noise, model.dt()));
+    sensors_.back().start(model.body(i), start.bodies[i], 0.0);
+    body_.push_back(i);
+    if (out_dir.empty()) continue;
+    const std::size_t k = sensors_.size() - 1;
+    if (d.imu) open(k, d.imu->topic, kImuHeader, Log::What::kImu);
+    if (d.odom_noise) {
+      open(k, "odom", kOdometryHeader, Log::What::kOdometry);
+      open(k, "ground_truth", kOdometryHeader, Log::What::kTruth);
+    }
+  }
+}
+
+BodySensorRun::~BodySensorRun() {
+  for (const Log& log : logs_) std::fclose(log.file);
+}
+
+void BodySensorRun::finish() { closeLogs(logs_, "a body's sensor file"); }
+
+void BodySensorRun::sample(const core::State& state, long long steps, double t) {
+  if (logs_.empty()) return;  // nothing reads them
+  const bool report = steps % publish_every_ == 0;
+  std::vector<core::OdomReport> reports(sensors_.size());
+  for (std::size_t k = 0; k < sensors_.size(); ++k) {
+    const core::BodyModel& body = model_.body(body_[k]);
+    const core::BodyState& s = state.bodies[body_[k]];
+    if (steps > 0) sensors_[k].sample(body, s, model_.gravity(), steps);
+    if (report && sensors_[k].noisy()) reports[k] = sensors_[k].report(core::linkState(body, s), t);
+  }
+  for (const Log& log : logs_) {
+    const core::BodySensors& sensors = sensors_[log.body];
+    const std::size_t i = body_[log.body];
+    switch (log.what) {
+      case Log::What::kImu:
+        if (steps > 0 && sensors.imuFresh()) writeRow(log.file, t, imuValues(sensors.imuReading()));
+        break;
+      case Log::What::kOdometry:
+        if (report) writeRow(log.file, t, odometryValues(reports[log.body]));
+        break;
+      case Log::What::kTruth:
+        if (report) {
+          writeRow(log.file, t, odometryValues(core::exactOdom(core::linkState(model_.body(i), state.bodies[i]))));
+        }
+        break;
+    }
+  }
 }
 
 }  // namespace rigid_body_sim::tools

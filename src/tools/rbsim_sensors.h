@@ -5,15 +5,18 @@
 // file of its own (docs/rbsim.md): a CSV row per sample, a depth image a
 // PFM file beside it, a contact sensor's pairs a JSON line. Without --out
 // no ray is cast and no force read (the noise of what is read later is
-// the same).
+// the same). And each free body's (core::BodySensors: its IMU and noisy
+// odometry), as the node samples and publishes them.
 #pragma once
 
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rigid_body_sim/core/articulations/scene.h"
 #include "rigid_body_sim/core/contacts/contact_report.h"
+#include "rigid_body_sim/core/devices/body_sensors.h"
 #include "rigid_body_sim/core/devices/link_sensors.h"
 #include "rigid_body_sim/io/sensor_mount.h"
 
@@ -65,6 +68,52 @@ class SensorRun {
   core::ContactLedger ledger_;  ///< what sleeping bodies touch, as the node's
   std::vector<Log> logs_;
   std::vector<std::string> paths_;
+};
+
+/// A free body's devices as its config gives them (`imu`, `odom_noise`;
+/// `bodies[i]`'s in a world).
+struct BodyDevices {
+  std::optional<io::ImuEntry> imu;
+  std::optional<core::OdomNoiseSettings> odom_noise;
+};
+
+/// Each free body's devices by its index in the world: the config's one
+/// body's (no bodies list) or its `bodies` entries' (entry k being body
+/// `entry[k]`, a robot's < 0; without `entry`, body k).
+std::vector<BodyDevices> bodyDevices(const io::SimConfig& config, const std::vector<int>& entry = {});
+
+class BodySensorRun {
+ public:
+  /// The devices of each body of `model` (`devices[i]` body i's, none past
+  /// its end), started from `start` at t = 0; the IMU at its rate, the
+  /// noisy odometry every publish period (`publish_rate` Hz, the node's
+  /// ~publish_rate) from the start, as the node publishes them. An IMU on
+  /// no link of its body is refused (io::ConfigError). With `out_dir`,
+  /// each writes OUT_DIR/BODY.TOPIC.csv: the IMU's topic, and `odom` and
+  /// `ground_truth` for odometry with noise (a UsageError if it cannot).
+  BodySensorRun(const core::Model& model, const core::State& start, const std::vector<BodyDevices>& devices,
+                double publish_rate, const std::string& out_dir);
+  ~BodySensorRun();
+  BodySensorRun(const BodySensorRun&) = delete;
+  BodySensorRun& operator=(const BodySensorRun&) = delete;
+
+  /// After step `steps` (0: the start) left the bodies at `state`, at sim
+  /// time t: those due sample, and their rows are written (nothing without out_dir).
+  void sample(const core::State& state, long long steps, double t);
+  /// Closes the files; a UsageError if one could not be written whole.
+  void finish();
+
+ private:
+  struct Log {
+    std::size_t body;
+    enum class What { kImu, kOdometry, kTruth } what;
+    std::FILE* file;
+  };
+  const core::Model& model_;
+  std::vector<core::BodySensors> sensors_;  ///< per body with devices
+  std::vector<std::size_t> body_;           ///< sensors_[k]'s body
+  long long publish_every_;                 ///< steps per odometry report
+  std::vector<Log> logs_;                   ///< sensors_[log.body]'s
 };
 
 }  // namespace rigid_body_sim::tools

@@ -26,15 +26,23 @@ core::Model world(const std::vector<std::string>& names) {
   return core::Model(spec);
 }
 
-/// Ports as openPorts makes them for a body of a world, without topics.
-BodyPorts portsOf(const core::BodyModel& body, bool with_imu = false) {
+/// Ports as openPorts makes them for a body of a world, without topics:
+/// with an IMU at 100 Hz, or odometry with a drift of 1 m/√s in x.
+BodyPorts portsOf(const core::BodyModel& body, bool with_imu = false, bool with_drift = false) {
   BodyPorts p;
   p.prefix = body.name + "/";
   p.frame = p.prefix + body.link;
+  if (with_imu || with_drift) p.sensors = std::make_unique<core::BodySensors>(1e-3);
   if (with_imu) {
     core::ImuSettings imu;
-    p.imu = std::make_unique<core::Imu>(imu);
+    imu.rate = 100.0;
+    p.sensors->addImu(imu);
     p.imu_frame = p.prefix + "imu_link";
+  }
+  if (with_drift) {
+    core::OdomNoiseSettings noise;
+    noise.drift_x = 1.0;
+    p.sensors->addOdometryNoise(noise);
   }
   return p;
 }
@@ -64,10 +72,12 @@ TEST(PortRegistry, AddAndEraseKeepThePortsAndTheNamesInStep) {
   EXPECT_TRUE(closer.isEmpty());
 
   // A body added after a delete takes the next colour, not the freed one.
-  ports.add(portsOf(model.body(3)), model.body(3), s.bodies[3], 2.5);
+  ports.add(portsOf(model.body(3), false, true), model.body(3), s.bodies[3], 2.5);
   EXPECT_EQ(ports.colours(), (std::vector<std::size_t>{0, 2, 3}));
   EXPECT_EQ(ports.directory().byName("d"), 2);
-  EXPECT_EQ(ports[2].last_odom, 2.5);
+  // Its odometry's drift walks from when it was added: σ² = 1 m²/s × 1 s at 3.5 s.
+  const core::OdomReport first = ports[2].sensors->report(core::linkState(model.body(3), s.bodies[3]), 3.5);
+  EXPECT_DOUBLE_EQ(first.pose_variance[0], 1.0);
   EXPECT_THROW(ports.erase(3), std::out_of_range);
   EXPECT_EQ(ports.size(), 3u);
 }
@@ -81,15 +91,21 @@ TEST(PortRegistry, ARestartMakesAJumpNoAcceleration) {
   ros::CallbackQueue closer;
   PortRegistry ports(closer);
   ports.add(portsOf(model.body(0), true), model.body(0), moving.bodies[0], 0.0);
-  const double period = 0.01;
+  const double period = 0.01;  // 10 steps of 1 ms: the IMU samples after the 10th
   const Vec3 g = model.gravity();
-  const core::ImuReading jumped = ports[0].imu->sample(model.body(0), still.bodies[0], g, period);
-  EXPECT_NEAR(jumped.f_S.x(), -1.0 / period, 1e-9);
+  core::BodySensors& a = *ports[0].sensors;
+  a.sample(model.body(0), still.bodies[0], g, 9);
+  EXPECT_FALSE(a.imuFresh());
+  a.sample(model.body(0), still.bodies[0], g, 10);
+  ASSERT_TRUE(a.imuFresh());
+  EXPECT_NEAR(a.imuReading().f_S.x(), -1.0 / period, 1e-9);
   ports.add(portsOf(model.body(1), true), model.body(1), moving.bodies[1], 0.0);
   ports.restart(1, model.body(1), still.bodies[1]);
-  const core::ImuReading restarted = ports[1].imu->sample(model.body(1), still.bodies[1], g, period);
-  EXPECT_NEAR(restarted.f_S.x(), 0.0, 1e-12);
-  EXPECT_NEAR(restarted.f_S.z(), 9.81, 1e-12);  // at rest: +g up
+  core::BodySensors& b = *ports[1].sensors;
+  b.sample(model.body(1), still.bodies[1], g, 10);
+  ASSERT_TRUE(b.imuFresh());
+  EXPECT_NEAR(b.imuReading().f_S.x(), 0.0, 1e-12);
+  EXPECT_NEAR(b.imuReading().f_S.z(), 9.81, 1e-12);  // at rest: +g up
 }
 
 }  // namespace

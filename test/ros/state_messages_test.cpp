@@ -188,7 +188,8 @@ TEST(StateMessages, FixedFramesHangUnderTheBodysPrefix) {
   p.frame = "a/" + model.body(0).link;
   core::ImuSettings imu;
   imu.X_LS = core::Pose{Quat::Identity(), Vec3(0.05, 0, 0)};
-  p.imu = std::make_unique<core::Imu>(imu);
+  p.sensors = std::make_unique<core::BodySensors>(model.dt());
+  p.sensors->addImu(imu);
   p.imu_frame = "a/imu_link";
   std::vector<geometry_msgs::TransformStamped> frames;
   appendFixedFrames(model.body(0), p, ros::Time(4.0), frames);

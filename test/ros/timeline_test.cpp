@@ -4,7 +4,8 @@
 // odometry on /base_controller/odom, the IMU's samples on /imu, the noisy
 // odometry on /odom and its truth on /ground_truth; timeline_lidar.test:
 // the lidar's scans on /scan; timeline_effort.test: a joint effort's
-// pendulum on /joint_states.
+// pendulum on /joint_states; body_devices.test: a body's IMU and noisy
+// odometry among robots.
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -34,7 +35,7 @@ using namespace rbs_test;
 
 using Rows = std::map<long long, std::vector<double>>;
 
-/// rbsim's run of `urdf` (under urdf/; "": none) with
+/// rbsim's run of `urdf` (under urdf/; "": the config's bodies) with
 /// `config` (under config/) for 3 s into the scratch folder (one scenario
 /// a test process).
 std::string rbsimOut(const std::string& urdf, const std::string& config) {
@@ -287,6 +288,40 @@ TEST_F(TimelineEffort, TheNodeInLockStepSwingsAsRbsimAndTheClosedForm) {
   ASSERT_NEAR(states.back().header.stamp.toSec(), 3.0, 1e-9);
   EXPECT_EQ(states.back().position[0], field("position")) << json;
   EXPECT_EQ(states.back().velocity[0], field("velocity")) << json;
+}
+
+// A free body's devices among robots (config/robots.yaml's ball, struck by
+// the pendulum: an IMU at 100 Hz, noisy odometry at publish_rate): the
+// node in lock-step publishes rbsim's samples to the last bit. The node
+// gave the i-th body the i-th entry's devices, the pendulum's (none) here.
+class TimelineBodies : public LockStep {
+ protected:
+  void run() {
+    LockStep::run(30, {&imu_, &noisy_, &truth_},
+                  [&](double t) { return through(imus, t) && through(noisy, t) && through(truths, t); });
+  }
+  std::vector<nav_msgs::Odometry> noisy, truths;
+  std::vector<sensor_msgs::Imu> imus;
+  ros::Subscriber imu_ = into("/ball/imu", imus), noisy_ = into("/ball/odom", noisy),
+                  truth_ = into("/ball/ground_truth", truths);
+};
+
+TEST_F(TimelineBodies, TheNodeInLockStepPublishesRbsimsBodySamplesToTheLastBit) {
+  run();
+  const std::string out = rbsimOut("", "robots.yaml");
+  const Rows imu_rows = rbsimRows(out, "ball.imu.csv");
+  ASSERT_EQ(imu_rows.size(), 300u);  // 0.01, ..., 3
+  EXPECT_GE(imus.size(), 299u);
+  for (const sensor_msgs::Imu& m : imus) expectImuRow(m, rowAt(imu_rows, m.header.stamp));
+  const Rows noisy_rows = rbsimRows(out, "ball.odom.csv"), truth_rows = rbsimRows(out, "ball.ground_truth.csv");
+  ASSERT_EQ(noisy_rows.size(), 301u);  // 0, 0.01, ..., 3
+  ASSERT_EQ(truth_rows.size(), 301u);
+  EXPECT_GE(noisy.size(), 299u);
+  for (const nav_msgs::Odometry& m : noisy) expectOdometryRow(m, rowAt(noisy_rows, m.header.stamp));
+  for (const nav_msgs::Odometry& m : truths) expectOdometryRow(m, rowAt(truth_rows, m.header.stamp));
+  ASSERT_FALSE(truths.empty());
+  EXPECT_GT(std::abs(truths.back().pose.pose.position.x - 0.15), 0.05);  // struck: it moved
+  EXPECT_NE(noisy.back().pose.pose.position.x, truths.back().pose.pose.position.x);
 }
 
 }  // namespace

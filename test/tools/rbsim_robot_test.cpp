@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "../test_util.h"
 #include "rbsim_run.h"
 
 namespace rigid_body_sim::test {
@@ -174,12 +175,15 @@ TEST(Rbsim, RefusesARobotsBadStart) {
   }
   expectUsageError("--urdf " + kBox + " --duration 1 --set 'timeline=[{t: 0, command: [1]}]'",
                    "'timeline': no robot to control");
-  // A body's devices are the node's: named, not taken silently (they were).
+  // A body's cmd_vel is the node's: named, not taken silently (it was); its IMU is run.
   const Result box = rbsim("--urdf " + kBox + " --set 'cmd_vel={}' --set 'imu={}' --duration 0.01 --quiet");
   EXPECT_EQ(box.code, 0) << box.err;
-  EXPECT_NE(box.err.find("config keys 'imu', 'cmd_vel': sim_node runs a body's devices; rbsim does not yet"),
+  EXPECT_NE(box.err.find("config keys 'cmd_vel': sim_node drives a body by its cmd_vel topic; rbsim does not yet"),
             std::string::npos)
       << box.err;
+  expectUsageError("--urdf " + kBox + " --duration 1 --set initial.position=[0,0,0.05] --set 'imu={link: lid}'",
+                   "config key 'imu.link' = 'lid': no such link of body 'base_link'");
+  expectUsageError("--urdf " + kBox + " --duration 1 --out /tmp", "--out: no body has a device");
   const std::string world = tempPath("robot_world.yaml");
   std::ofstream(world) << "bodies:\n  - {name: swing, urdf: " << RBS_SOURCE_DIR
                        << "/urdf/pendulum.urdf, initial: {angular_velocity: [0, 1, 0]}}\n";
@@ -310,6 +314,49 @@ double toWall(double x, double y, double theta, double h) {
   const double c = std::cos(theta), s = std::sin(theta);
   const double along_x = c > 0 ? (h - x) / c : (-h - x) / c, along_y = s > 0 ? (h - y) / s : (-h - y) / s;
   return std::min(along_x, along_y);
+}
+
+// A body's own devices run as in the node (issue 57: rbsim named them and
+// ran none): the box at rest on the ground with an IMU at 100 Hz reads g
+// up from the first period's end, and its noisy odometry at publish_rate
+// (100 Hz) from the start has the configured σ about its truth. A body
+// given alone is named by its root link, as in the JSON.
+TEST(Rbsim, RunsABodysImuAndNoisyOdometry) {
+  const auto run = [](const std::string& dir) {
+    EXPECT_EQ(std::system(("mkdir -p " + dir).c_str()), 0);
+    return rbsim("--urdf " + kBox +
+                 " --set initial.position=[0,0,0.05] --set 'imu={rate: 100}'"
+                 " --set 'odom_noise={position: 0.01, seed: 3}' --duration 2 --quiet --out " +
+                 dir);
+  };
+  const std::string a = tempPath("body_devices");
+  const Result r = run(a);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("rbsim does not yet"), std::string::npos) << r.err;
+  const std::vector<std::vector<double>> imu = csvRows(a + "/base_link.imu.csv", "t,qx,qy,qz,qw,wx,wy,wz,ax,ay,az");
+  ASSERT_EQ(imu.size(), 200u);
+  EXPECT_DOUBLE_EQ(imu.front()[0], 0.01);
+  EXPECT_NEAR(imu.back()[10], 9.81, 0.01);  // at rest, no noise configured: +g up in its axes
+  const std::string odometry = "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz";
+  const std::vector<std::vector<double>> noisy = csvRows(a + "/base_link.odom.csv", odometry),
+                                         exact = csvRows(a + "/base_link.ground_truth.csv", odometry);
+  ASSERT_EQ(noisy.size(), 201u);  // t 0, 0.01, ..., 2
+  ASSERT_EQ(exact.size(), 201u);
+  EXPECT_DOUBLE_EQ(noisy.back()[0], 2.0);
+  std::vector<double> dx;
+  for (std::size_t i = 0; i < noisy.size(); ++i) {
+    EXPECT_EQ(noisy[i][0], exact[i][0]);
+    dx.push_back(noisy[i][1] - exact[i][1]);
+  }
+  const auto [mean, sd] = meanAndSigma(dx);
+  EXPECT_NEAR(mean, 0.0, 0.0025);  // 3.5 standard errors of 201 samples
+  EXPECT_NEAR(sd, 0.01, 0.002);
+  // Two runs write the same bits.
+  const std::string b = tempPath("body_devices_again");
+  const Result again = run(b);
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_EQ(slurp(a + "/base_link.odom.csv"), slurp(b + "/base_link.odom.csv"));
+  EXPECT_EQ(slurp(a + "/base_link.imu.csv"), slurp(b + "/base_link.imu.csv"));
 }
 
 // The shipped lidar scenario (config/diff_drive_lidar_timeline.yaml): the

@@ -1,14 +1,17 @@
 // Where a robot's sensors sit: each entry of its config (`imu`, `lidar`,
 // `depth_camera`) or of its URDF's Gazebo markup on one of its links, or on
 // a link a fixed joint lumped into one (as a laser_link or an imu_link
-// usually is), at its pose there. ROS-free.
+// usually is), at its pose there; and a free body's (`imu`, `odom_noise`)
+// on its root link. ROS-free.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rigid_body_sim/core/articulations/articulation.h"
+#include "rigid_body_sim/core/devices/body_sensors.h"
 #include "rigid_body_sim/core/devices/link_sensors.h"
 #include "rigid_body_sim/io/config.h"
 
@@ -108,5 +111,13 @@ RobotSensors mountSensors(const RobotDevices& config, const RobotDevices& markup
 /// sensor's 0: every step).
 core::LinkSensors linkSensors(const RobotSensors& sensors, const core::ArticulationModel& model,
                               const core::ArticulationState& now, double dt, double odometry_rate);
+
+/// The core's set of a free body's devices, `imu` and `odom_noise`, in
+/// steps of `dt`: the IMU at its entry's pose in its entry's link (the
+/// body's root link, or a link fixed to it), refused otherwise
+/// (ConfigError naming KEY.link and the body's links). Started by
+/// BodySensors::start when the body enters the world.
+core::BodySensors bodySensors(const core::BodyModel& body, const std::optional<ImuEntry>& imu,
+                              const std::optional<core::OdomNoiseSettings>& odom_noise, double dt);
 
 }  // namespace rigid_body_sim::io

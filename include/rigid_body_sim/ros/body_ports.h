@@ -19,7 +19,7 @@
 
 #include "rigid_body_sim/core/bodies/model.h"
 #include "rigid_body_sim/core/bodies/state.h"
-#include "rigid_body_sim/core/devices/imu.h"
+#include "rigid_body_sim/core/devices/body_sensors.h"
 #include "rigid_body_sim/core/devices/odom_noise.h"
 #include "rigid_body_sim/core/devices/velocity_driver.h"
 #include "rigid_body_sim/io/config.h"
@@ -49,20 +49,17 @@ struct BodyPorts {
   CountedPublisher odom;       ///< PREFIXodom
   ros::Subscriber wrench;      ///< ~PREFIXwrench
   bool speed_limited = false;  ///< the speed limits have held it (warned once)
-  /// Its IMU, sampled whether or not anyone listens. The devices with a
-  /// random generator (2.5 KB each) are held apart: in place they made
-  /// every body's ports 6 KB, devices or not.
-  std::unique_ptr<core::Imu> imu;
-  CountedPublisher imu_pub;                     ///< PREFIXimu, sensor_msgs/Imu
-  std::string imu_frame;                        ///< prefix + the IMU's frame_id
-  long long imu_every = 1;                      ///< steps per IMU sample
-  std::unique_ptr<core::OdomNoise> odom_noise;  ///< noise on odom; the exact state then goes to ground_truth
-  CountedPublisher ground_truth;                ///< PREFIXground_truth, with odom_noise
-  double last_odom = 0.0;                       ///< s of sim time of its last odom report (for the drift)
-  std::optional<core::VelocityDriver> driver;   ///< drives it toward its cmd_vel
-  ros::Subscriber cmd_vel;                      ///< PREFIXcmd_vel, geometry_msgs/Twist
-  bool clipped = false;                         ///< a command was clipped (warned once)
-  std::size_t colour = 0;                       ///< its markers' colour: the order it entered the world in
+  /// Its IMU and its odometry's noise (the core's), sampled whether or not
+  /// anyone listens; none without either. Held apart: in place, the
+  /// devices' random generators (2.5 KB each) made every body's ports 6 KB.
+  std::unique_ptr<core::BodySensors> sensors;
+  CountedPublisher imu_pub;                    ///< PREFIXimu, sensor_msgs/Imu
+  std::string imu_frame;                       ///< prefix + the IMU's frame_id
+  CountedPublisher ground_truth;               ///< PREFIXground_truth, with odom_noise (odom is then noisy)
+  std::optional<core::VelocityDriver> driver;  ///< drives it toward its cmd_vel
+  ros::Subscriber cmd_vel;                     ///< PREFIXcmd_vel, geometry_msgs/Twist
+  bool clipped = false;                        ///< a command was clipped (warned once)
+  std::size_t colour = 0;                      ///< its markers' colour: the order it entered the world in
 };
 
 /// What opening a body's ports needs of the node. Read only once made: the
@@ -70,7 +67,7 @@ struct BodyPorts {
 struct PortContext {
   ros::NodeHandle nh, pnh;  ///< the node's handles, and its private ones
   std::string world_frame;  ///< no body's frame may be this one
-  double dt = 0.0;          ///< s, the step: an IMU's period in steps
+  double dt = 0.0;          ///< s, the step: the sensors' periods in steps
   /// Where a body's ~PREFIXwrench and PREFIXcmd_vel messages go, with the
   /// body's name (a deletion moves the later bodies' indices).
   std::function<void(const std::string&, const geometry_msgs::WrenchStamped::ConstPtr&)> on_wrench;
