@@ -287,6 +287,7 @@ BodySensorRun::BodySensorRun(const core::Model& model, const core::State& start,
       open(k, "ground_truth", kOdometryHeader, Log::What::kTruth);
     }
   }
+  reports_.resize(sensors_.size());
 }
 
 BodySensorRun::~BodySensorRun() {
@@ -298,12 +299,11 @@ void BodySensorRun::finish() { closeLogs(logs_, "a body's sensor file"); }
 void BodySensorRun::sample(const core::State& state, long long steps, double t) {
   if (logs_.empty()) return;  // nothing reads them
   const bool report = steps % publish_every_ == 0;
-  std::vector<core::OdomReport> reports(sensors_.size());
   for (std::size_t k = 0; k < sensors_.size(); ++k) {
     const core::BodyModel& body = model_.body(body_[k]);
     const core::BodyState& s = state.bodies[body_[k]];
     if (steps > 0) sensors_[k].sample(body, s, model_.gravity(), steps);
-    if (report && sensors_[k].noisy()) reports[k] = sensors_[k].report(core::linkState(body, s), t);
+    if (report && sensors_[k].noisy()) reports_[k] = sensors_[k].report(core::linkState(body, s), t);
   }
   for (const Log& log : logs_) {
     const core::BodySensors& sensors = sensors_[log.body];
@@ -313,7 +313,7 @@ void BodySensorRun::sample(const core::State& state, long long steps, double t) 
         if (steps > 0 && sensors.imuFresh()) writeRow(log.file, t, imuValues(sensors.imuReading()));
         break;
       case Log::What::kOdometry:
-        if (report) writeRow(log.file, t, odometryValues(reports[log.body]));
+        if (report) writeRow(log.file, t, odometryValues(reports_[log.body]));
         break;
       case Log::What::kTruth:
         if (report) {

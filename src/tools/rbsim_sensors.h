@@ -114,6 +114,7 @@ class BodySensorRun {
   std::vector<std::size_t> body_;           ///< sensors_[k]'s body
   long long publish_every_;                 ///< steps per odometry report
   std::vector<Log> logs_;                   ///< sensors_[log.body]'s
+  std::vector<core::OdomReport> reports_;   ///< sensors_[k]'s latest noisy report
 };
 
 }  // namespace rigid_body_sim::tools
