@@ -43,7 +43,7 @@ void parseJointEffort(const YAML::Node& effort, const std::string& key, const YA
 
 TimedCommand parseEntry(const YAML::Node& node, const std::string& key) {
   if (!node.IsMap()) fail(key, "expected a map such as {t: 1.0, cmd_vel: {linear: [0.5, 0, 0]}}, got " + show(node));
-  requireKnownKeys(node, key, {"t", "until", "robot", "controller", "cmd_vel", "command", "joint_effort"});
+  requireKnownKeys(node, key, {"t", "until", "robot", "body", "controller", "cmd_vel", "command", "joint_effort"});
   TimedCommand c;
   c.key = key;
   if (!node["t"]) fail(key + ".t", "every entry needs its time (s of sim time)");
@@ -60,6 +60,12 @@ TimedCommand parseEntry(const YAML::Node& node, const std::string& key) {
   }
   if (node["robot"]) c.robot = text(node["robot"], key + ".robot");
   if (node["controller"]) c.controller = text(node["controller"], key + ".controller");
+  if (node["body"]) {
+    c.body = text(node["body"], key + ".body");
+    if (!node["cmd_vel"]) fail(key + ".body", "a body takes a cmd_vel (its velocity driver's), nothing else");
+    if (node["robot"]) fail(key + ".robot", "an entry is for a body or a robot: not both");
+    if (node["controller"]) fail(key + ".controller", "a body has one velocity driver: name no controller");
+  }
   const int kinds = static_cast<int>(static_cast<bool>(node["cmd_vel"])) +
                     static_cast<int>(static_cast<bool>(node["command"])) +
                     static_cast<int>(static_cast<bool>(node["joint_effort"]));
@@ -143,9 +149,8 @@ int jointOf(const TimedCommand& c, const core::SceneRobot& robot) {
   return j;
 }
 
-/// The index in `scene` of the robot named `name`, or its robot count.
-std::size_t robotNamed(const core::Scene& scene, const std::string& name) {
-  const std::vector<core::SceneRobot>& robots = scene.robots();
+/// The index in `robots` of the robot named `name`, or their count.
+std::size_t robotNamed(const std::vector<core::SceneRobot>& robots, const std::string& name) {
   std::size_t r = 0;
   while (r < robots.size() && robots[r].name != name) ++r;
   return r;
@@ -153,17 +158,27 @@ std::size_t robotNamed(const core::Scene& scene, const std::string& name) {
 
 }  // namespace
 
-Timeline::Timeline(std::vector<TimedCommand> entries, const core::Scene& scene,
-                   const std::vector<RobotControls>& controls) {
-  const std::vector<core::SceneRobot>& robots = scene.robots();
+Timeline::Timeline(std::vector<TimedCommand> entries, const std::vector<core::SceneRobot>& robots, double dt,
+                   const std::vector<RobotControls>& controls, BodyDrivers bodies)
+    : bodies_(std::move(bodies)) {
   for (TimedCommand& c : entries) {
+    if (!c.body.empty()) {
+      if (!bodies_ || bodies_(c.body) == nullptr) {
+        fail(c.key + ".body",
+             "no free body '" + c.body + "' with a cmd_vel (its velocity driver's settings) in the world");
+      }
+      const double due = c.t;  // as a message on its topic at t
+      entries_.push_back({std::move(c), "", due});
+      continue;
+    }
     std::size_t r = 0;
     if (c.robot.empty()) {
       if (robots.size() != 1) {
-        fail(c.key + ".robot", "a world of " + std::to_string(robots.size()) + " robots: name the one it is for");
+        fail(c.key + ".robot", "a world of " + std::to_string(robots.size()) +
+                                   " robots: name the one it is for (or the body, body: NAME, for a body's cmd_vel)");
       }
     } else {
-      r = robotNamed(scene, c.robot);
+      r = robotNamed(robots, c.robot);
       if (r == robots.size()) fail(c.key + ".robot", "no robot '" + c.robot + "' in the world");
     }
     // Refused now, not when it is due.
@@ -173,24 +188,35 @@ Timeline::Timeline(std::vector<TimedCommand> entries, const core::Scene& scene,
       targetOf(c, robots[r].name, controls.at(r));
     }
     // A joint effort acts from its own t: given before the step that holds it.
-    const double due = c.joint_effort ? c.t - scene.model().dt() : c.t;
+    const double due = c.joint_effort ? c.t - dt : c.t;
     entries_.push_back({std::move(c), robots[r].name, due});
   }
   std::stable_sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) { return a.due < b.due; });
 }
 
-void Timeline::give(const Entry& e, double t, const core::Scene& scene, std::vector<RobotControls>& controls,
-                    core::JointEffortSchedule& efforts, std::vector<std::string>& said) const {
+void Timeline::giveBody(const TimedCommand& c, double t, std::vector<std::string>& said) const {
+  core::VelocityDriver* driver = bodies_(c.body);
+  if (driver == nullptr) {
+    said.push_back(c.key + ": body '" + c.body + "' is gone: not given");
+  } else if (driver->command(c.linear, c.angular, t)) {
+    said.push_back(c.key + ": held to body '" + c.body + "''s cmd_vel.max_linear_speed and max_angular_speed");
+  }
+}
+
+void Timeline::give(const Entry& e, double t, const std::vector<core::SceneRobot>& robots,
+                    std::vector<RobotControls>& controls, core::JointEffortSchedule& efforts,
+                    std::vector<std::string>& said) const {
   const TimedCommand& c = e.command;
-  const std::size_t r = robotNamed(scene, e.robot);
-  if (r == scene.robots().size()) {
+  if (!c.body.empty()) return giveBody(c, t, said);
+  const std::size_t r = robotNamed(robots, e.robot);
+  if (r == robots.size()) {
     said.push_back(c.key + ": robot '" + e.robot + "' is gone: not given");
     return;
   }
   RobotControls& rc = controls.at(r);
   int target = 0;
   try {  // a robot of that name spawned since, with other controllers or joints
-    target = c.joint_effort ? jointOf(c, scene.robots()[r]) : targetOf(c, e.robot, rc);
+    target = c.joint_effort ? jointOf(c, robots[r]) : targetOf(c, e.robot, rc);
   } catch (const ConfigError& error) {
     said.push_back(error.what());
     return;
@@ -210,21 +236,22 @@ void Timeline::give(const Entry& e, double t, const core::Scene& scene, std::vec
   if (held) said.push_back(c.key + ": held to its controller's limits, or refused beyond them");
 }
 
-std::vector<std::string> Timeline::apply(double t, const core::Scene& scene, std::vector<RobotControls>& controls,
-                                         core::JointEffortSchedule& efforts) {
+std::vector<std::string> Timeline::apply(double t, const std::vector<core::SceneRobot>& robots,
+                                         std::vector<RobotControls>& controls, core::JointEffortSchedule& efforts) {
   std::vector<std::string> said;
   const auto ended = [&](std::size_t k) { return !(t < entries_[k].command.until); };
   held_.erase(std::remove_if(held_.begin(), held_.end(), ended), held_.end());
-  for (const std::size_t k : held_) give(entries_[k], t, scene, controls, efforts, said);
+  for (const std::size_t k : held_) give(entries_[k], t, robots, controls, efforts, said);
   for (; next_ < entries_.size() && entries_[next_].due <= t; ++next_) {
     const Entry& e = entries_[next_];
     // A new command for a controller ends one held for it.
     const auto replaced = [&](std::size_t k) {
       const TimedCommand& h = entries_[k].command;
-      return entries_[k].robot == e.robot && h.controller == e.command.controller && h.cmd_vel == e.command.cmd_vel;
+      return entries_[k].robot == e.robot && h.body == e.command.body && h.controller == e.command.controller &&
+             h.cmd_vel == e.command.cmd_vel;
     };
     if (!e.command.joint_effort) held_.erase(std::remove_if(held_.begin(), held_.end(), replaced), held_.end());
-    give(e, t, scene, controls, efforts, said);
+    give(e, t, robots, controls, efforts, said);
     if (t < e.command.until) held_.push_back(next_);
   }
   return said;

@@ -17,18 +17,13 @@ namespace rigid_body_sim::node {
 
 void SimNode::stepOnce() {
   const double t = simTime(), h = model_.dt();
+  commands_->giveTimed(t, sim_.joint_efforts);       // the config's timeline, before the step it is due at
   schedule_.loadsFor(model_, state_, t, h, loads_);  // timed wrenches, and those ~wrench holds
   for (std::size_t i = 0; i < ports_.size(); ++i) {  // the velocity drivers' forces
-    if (!ports_[i].driver) continue;
-    const core::BodyLoad drive = ports_[i].driver->load(model_.body(i), state_.bodies[i], t, h);
-    if (drive.isZero()) continue;
-    if (loads_.empty()) loads_.resize(model_.bodyCount());
-    loads_[i].force_W += drive.force_W;
-    loads_[i].torque_W += drive.torque_W;
+    if (ports_[i].driver) core::addDriverLoad(*ports_[i].driver, model_, state_, i, t, h, loads_);
   }
-  commands_->giveTimed(t, sim_.joint_efforts);  // the config's timeline, before the step it is due at
-  commands_->loadsFor(sim_, t, robot_loads_);   // the robots' controllers, from the state before the step
-  link_sensors_->before(sim_);                  // the force-torque sensors' velocities before the step
+  commands_->loadsFor(sim_, t, robot_loads_);  // the robots' controllers, from the state before the step
+  link_sensors_->before(sim_);                 // the force-torque sensors' velocities before the step
   sim_.step(loads_, robot_loads_);
   commands_->observe(sim_);  // the drives' odometry, from where the step left the wheels
   reportStep();

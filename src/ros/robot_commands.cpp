@@ -321,13 +321,13 @@ void RobotCommands::baseCommand(std::size_t r, const geometry_msgs::Twist& msg) 
   }
 }
 
-void RobotCommands::setTimeline(std::vector<io::TimedCommand> entries) {
-  timeline_ = io::Timeline(std::move(entries), sim_.scene, controls_);
+void RobotCommands::setTimeline(std::vector<io::TimedCommand> entries, io::BodyDrivers bodies) {
+  timeline_ = io::Timeline(std::move(entries), sim_.scene.robots(), sim_.model().dt(), controls_, std::move(bodies));
 }
 
 void RobotCommands::giveTimed(double t, core::JointEffortSchedule& efforts) {
   if (timeline_.empty()) return;
-  for (const std::string& said : timeline_.apply(t, sim_.scene, controls_, efforts)) {
+  for (const std::string& said : timeline_.apply(t, sim_.scene.robots(), controls_, efforts)) {
     if (warned_.insert({said, "timeline"}).second) ROS_WARN("sim_node: %s (said once)", said.c_str());
   }
 }

@@ -169,7 +169,11 @@ SimNode::SimNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     topic_claims_.take(name, topics);
   }
   commands_.emplace(nh_, std::move(start_controls_), sim_, time_, control_prefixes);
-  commands_->setTimeline(params_.sim.timeline);
+  commands_->setTimeline(params_.sim.timeline, [this](const std::string& body) -> core::VelocityDriver* {
+    const std::optional<int> i = ports_.directory().byName(body);
+    if (!i || !ports_[*i].driver) return nullptr;
+    return &*ports_[*i].driver;
+  });
   robot_publisher_.emplace(nh_, sim_.scene, control_prefixes, settings_.world_frame, model_.dt(),
                            settings_.publish_rate, [this](std::size_t r) { return commands_->jointStateRate(r); });
   checkRobotFrames(robot_publisher_->robots(), settings_.world_frame, ports_.frames());

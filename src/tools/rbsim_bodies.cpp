@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "rbsim_controls.h"
 #include "rbsim_loop.h"
 #include "rbsim_output.h"
 #include "rbsim_report.h"
@@ -31,10 +33,17 @@ Vec3 angularMomentum(const core::Model& model, const core::State& state) {
 
 }  // namespace
 
-int runBodies(io::World world, bool listed, const RunOptions& options, const std::vector<BodyDevices>& devices) {
+int runBodies(io::World world, bool listed, const RunOptions& options, const std::vector<BodyDevices>& devices,
+              std::vector<io::TimedCommand> timeline) {
   const core::Model& model = world.model;
   core::State& state = world.state;
   const std::size_t n = model.bodyCount();
+  const double dt = model.dt();
+  BodyDrives drives(model, devices);
+  std::vector<io::RobotControls> no_controls;  // a world of bodies alone has no robot for them
+  core::JointEffortSchedule no_efforts;
+  io::Timeline commands(std::move(timeline), {}, dt, no_controls, drives.byName());  // refused before any warning
+  for (const std::string& note : world.notes) std::fprintf(stderr, "rbsim: warning: %s\n", note.c_str());
   if (!model.scene().empty()) {
     for (std::size_t i = 0; i < n; ++i) {
       const std::string warning = io::touchesNothing(model.body(i));
@@ -42,7 +51,6 @@ int runBodies(io::World world, bool listed, const RunOptions& options, const std
     }
   }
 
-  const double dt = model.dt();
   const long long steps = stepCount(options.duration, dt);
   const double energy_start = core::totalEnergy(model, state);
   const Vec3 momentum_start = angularMomentum(model, state);
@@ -54,6 +62,8 @@ int runBodies(io::World world, bool listed, const RunOptions& options, const std
       csv->row(done * dt, model.body(i).name, core::linkState(model.body(i), state.bodies[i]));
   };
   core::Workspace workspace;
+  std::vector<std::string> said;  // the timeline's notes, each said once
+  core::Loads loads;
   BodySensorRun sensors(model, state, devices, options.publish_rate, options.out_dir);
   sensors.sample(state, 0, 0.0);    // as the node publishes its odometry at start
   std::vector<char> limited(n, 0);  // bodies the speed limits have held back, warned once each
@@ -63,7 +73,10 @@ int runBodies(io::World world, bool listed, const RunOptions& options, const std
   const LoopTimes times = runLoop(
       steps, csv != nullptr, options.every, progress,
       [&](long long k) {
-        core::step(model, state, {}, &workspace);
+        const double t = static_cast<double>(k - 1) * dt;  // the step's start, as the node's clock: steps × dt
+        if (!commands.empty()) warnOnce(commands.apply(t, {}, no_controls, no_efforts), said);
+        if (!drives.empty()) drives.loadsFor(state, t, loads);
+        core::step(model, state, loads, &workspace);
         sensors.sample(state, k, static_cast<double>(k) * dt);
         max_penetration = std::max(max_penetration, workspace.deepest_penetration);
         if (!workspace.speed_limited.empty() || !workspace.diverged.empty()) {

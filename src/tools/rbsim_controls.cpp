@@ -8,18 +8,42 @@
 #include <utility>
 
 #include "rbsim_output.h"
+#include "rbsim_report.h"
 
 namespace rigid_body_sim::tools {
 
+BodyDrives::BodyDrives(const core::Model& model, const std::vector<BodyDevices>& devices) : model_(model) {
+  for (std::size_t i = 0; i < devices.size() && i < model.bodyCount(); ++i) {
+    if (!devices[i].cmd_vel) continue;
+    body_.push_back(i);
+    drivers_.emplace_back(*devices[i].cmd_vel);
+  }
+}
+
+io::BodyDrivers BodyDrives::byName() {
+  return [this](const std::string& name) -> core::VelocityDriver* {
+    for (std::size_t k = 0; k < body_.size(); ++k) {
+      if (model_.body(body_[k]).name == name) return &drivers_[k];
+    }
+    return nullptr;
+  };
+}
+
+void BodyDrives::loadsFor(const core::State& state, double t, core::Loads& loads) {
+  loads.clear();
+  for (std::size_t k = 0; k < body_.size(); ++k)
+    core::addDriverLoad(drivers_[k], model_, state, body_[k], t, model_.dt(), loads);
+}
+
 ControlRun::ControlRun(const core::Scene& scene, const core::SceneState& start, std::vector<io::RobotControls> controls,
-                       std::vector<io::TimedCommand> timeline, const std::string& out_dir)
+                       std::vector<io::TimedCommand> timeline, io::BodyDrivers bodies, const std::string& out_dir)
     : scene_(scene), controls_(std::move(controls)) {
   controls_.resize(scene.robots().size());
   for (std::size_t r = 0; r < controls_.size(); ++r) {
     names_.push_back(scene.robots()[r].name);
     controls_[r].restart(start.robots[r], true);
   }
-  timeline_ = io::Timeline(std::move(timeline), scene, controls_);
+  timeline_ = io::Timeline(std::move(timeline), scene.robots(), scene.model().dt(), controls_, std::move(bodies));
   if (out_dir.empty()) return;
   const double dt = scene.model().dt();
   for (std::size_t r = 0; r < controls_.size(); ++r) {
@@ -41,13 +65,7 @@ ControlRun::~ControlRun() {
 void ControlRun::finish() { closeLogs(logs_, "a drive's odometry file"); }
 
 void ControlRun::loadsFor(const core::SceneState& state, double t, std::vector<core::ArticulationLoads>& loads) {
-  if (!timeline_.empty()) {
-    for (const std::string& s : timeline_.apply(t, scene_, controls_, efforts_)) {
-      if (std::find(said_.begin(), said_.end(), s) != said_.end()) continue;
-      std::fprintf(stderr, "rbsim: warning: %s (said once)\n", s.c_str());
-      said_.push_back(s);
-    }
-  }
+  if (!timeline_.empty()) warnOnce(timeline_.apply(t, scene_.robots(), controls_, efforts_), said_);
   loads.resize(controls_.size());
   const double dt = scene_.model().dt();
   for (std::size_t r = 0; r < controls_.size(); ++r) {

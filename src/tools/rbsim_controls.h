@@ -10,22 +10,48 @@
 #include <string>
 #include <vector>
 
+#include "rbsim_sensors.h"
 #include "rigid_body_sim/core/articulations/joint_effort_schedule.h"
 #include "rigid_body_sim/core/articulations/scene.h"
+#include "rigid_body_sim/core/devices/velocity_driver.h"
 #include "rigid_body_sim/io/controllers.h"
 #include "rigid_body_sim/io/timeline.h"
 
 namespace rigid_body_sim::tools {
+
+/// The free bodies' velocity drivers (config `cmd_vel`), commanded by the
+/// timeline's `body:` entries as sim_node's BodyPorts hold them, their
+/// loads added as the node adds them.
+class BodyDrives {
+ public:
+  /// A driver for each body of `model` whose `devices` (by index) give a cmd_vel.
+  BodyDrives(const core::Model& model, const std::vector<BodyDevices>& devices);
+  BodyDrives(const BodyDrives&) = delete;
+  BodyDrives& operator=(const BodyDrives&) = delete;
+
+  /// A body's driver by its name, for a Timeline.
+  io::BodyDrivers byName();
+  /// The drivers' loads on the bodies at `state` for the step [t, t + dt)
+  /// into `loads`, cleared first (empty if no driver pushes).
+  void loadsFor(const core::State& state, double t, core::Loads& loads);
+  bool empty() const { return drivers_.empty(); }
+
+ private:
+  const core::Model& model_;
+  std::vector<std::size_t> body_;              ///< drivers_[k]'s body
+  std::vector<core::VelocityDriver> drivers_;  ///< one per driven body
+};
 
 class ControlRun {
  public:
   /// The robots of `scene` with their `controls`, each started from where
   /// `start` has it as the node starts a robot's (position targets where the
   /// joints are, odometry at zero), commanded by `timeline` (refused as
-  /// Timeline refuses it); with `out_dir`, each drive's odometry goes to
+  /// Timeline refuses it), its `body:` entries given to `bodies`; with
+  /// `out_dir`, each drive's odometry goes to
   /// OUT_DIR/ROBOT.CONTROLLER.odom.csv (a UsageError if it cannot).
   ControlRun(const core::Scene& scene, const core::SceneState& start, std::vector<io::RobotControls> controls,
-             std::vector<io::TimedCommand> timeline, const std::string& out_dir);
+             std::vector<io::TimedCommand> timeline, io::BodyDrivers bodies, const std::string& out_dir);
   ~ControlRun();
   ControlRun(const ControlRun&) = delete;
   ControlRun& operator=(const ControlRun&) = delete;

@@ -135,15 +135,14 @@ Args parseArgs(int argc, char** argv) {
 
 // ---------------------------------------------------------------- run
 
-/// A world of bodies alone refuses a config's `controllers` and `timeline`
-/// (ConfigError naming the key): there is no robot (a URDF with a moving
-/// joint) for them.
+/// A world of bodies alone refuses a config's `controllers` (ConfigError
+/// naming the key): there is no robot (a URDF with a moving joint) for
+/// them. Its timeline may drive the bodies (Timeline refuses the rest).
 void refuseControllers(const io::SimConfig& config) {
   const auto refuse = [](const std::string& key) {
     throw io::ConfigError("config key '" + key + "': no robot to control (a URDF with a moving joint)");
   };
   if (!config.controllers.empty()) refuse("controllers");
-  if (!config.timeline.empty()) refuse("timeline");
   for (std::size_t i = 0; i < config.bodies.size(); ++i) {
     if (!config.bodies[i].controllers.empty()) refuse("bodies[" + std::to_string(i) + "].controllers");
   }
@@ -199,11 +198,6 @@ io::World loadWorld(const Args& args, const io::SimConfig& config, bool* world_c
   return world;
 }
 
-/// What a load repaired or warns of, each message once on stderr.
-void warnAll(const std::vector<std::string>& notes) {
-  for (const std::string& note : notes) std::fprintf(stderr, "rbsim: warning: %s\n", note.c_str());
-}
-
 /// A --duration shorter than a step is a usage error before anything is
 /// loaded or warned of (a dt out of its range is the model's to refuse).
 void checkDuration(const Args& args, const io::SimConfig& config) {
@@ -229,28 +223,27 @@ int run(const Args& args) {
   bool world_config = false;
   std::optional<io::World> world;
   std::vector<BodyDevices> devices;  // per body
+  std::vector<io::TimedCommand> timeline;
   {
     const io::SimConfig config = readConfig(args);
     checkDuration(args, config);
     if (args.urdf.empty() && !config.bodies.empty() && io::listsRobots(config)) {  // rbsim_scene.cpp
       options.publish_rate = config.publish_rate;
       io::SceneSetup setup = io::buildScene(config);
-      rigid_body_sim::tools::noteDevices(config, setup.entry);
       const std::vector<BodyDevices> bodies = rigid_body_sim::tools::bodyDevices(config, setup.entry);
       return rigid_body_sim::tools::runScene(std::move(setup), options, config.timeline, bodies);
     }
     refuseControllers(config);
-    rigid_body_sim::tools::noteDevices(config);
     devices = rigid_body_sim::tools::bodyDevices(config);
+    timeline = config.timeline;
     const auto has = [](const BodyDevices& d) { return d.imu || d.odom_noise; };
     if (!args.out.empty() && std::none_of(devices.begin(), devices.end(), has)) {
       throw UsageError("--out: no body has a device (imu, odom_noise) whose samples it would write");
     }
     options.publish_rate = config.publish_rate;
-    world.emplace(loadWorld(args, config, &world_config));
-    warnAll(world->notes);
+    world.emplace(loadWorld(args, config, &world_config));  // its notes are runBodies' to say
   }  // the config goes: its bodies list is a tenth of the memory of a world of 10,000 boxes
-  return rigid_body_sim::tools::runBodies(std::move(*world), world_config, options, devices);
+  return rigid_body_sim::tools::runBodies(std::move(*world), world_config, options, devices, std::move(timeline));
 }
 
 }  // namespace

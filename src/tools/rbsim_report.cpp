@@ -1,6 +1,7 @@
 // What rbsim reports of a run besides the states: rbsim_report.h.
 #include "rbsim_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -70,19 +71,12 @@ void warnRobotLimited(const std::string& name, const core::SpeedLimits& limits, 
                text(limits.max_angular_speed).c_str());
 }
 
-void noteDevices(const io::SimConfig& config, const std::vector<int>& entry) {
-  std::string keys;
-  const auto add = [&keys](bool given, const std::string& key) {
-    if (given) keys += (keys.empty() ? "'" : ", '") + key + "'";
-  };
-  if (config.bodies.empty()) add(config.cmd_vel.has_value(), "cmd_vel");
-  for (std::size_t i = 0; i < config.bodies.size(); ++i) {
-    if (i < entry.size() && entry[i] < 0) continue;  // a robot's: its base drive, run
-    add(config.bodies[i].cmd_vel.has_value(), "bodies[" + std::to_string(i) + "].cmd_vel");
+void warnOnce(const std::vector<std::string>& notes, std::vector<std::string>& said) {
+  for (const std::string& s : notes) {
+    if (std::find(said.begin(), said.end(), s) != said.end()) continue;
+    std::fprintf(stderr, "rbsim: warning: %s (said once)\n", s.c_str());
+    said.push_back(s);
   }
-  if (keys.empty()) return;
-  std::fprintf(stderr, "rbsim: note: config keys %s: sim_node drives a body by its cmd_vel topic; rbsim does not yet\n",
-               keys.c_str());
 }
 
 }  // namespace rigid_body_sim::tools

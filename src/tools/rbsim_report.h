@@ -12,7 +12,6 @@
 #include "rigid_body_sim/core/bodies/model.h"
 #include "rigid_body_sim/core/bodies/state.h"
 #include "rigid_body_sim/core/step/workspace.h"
-#include "rigid_body_sim/io/config.h"
 
 namespace rigid_body_sim::tools {
 
@@ -38,10 +37,9 @@ core::Vec3 bodiesAngularMomentum(const core::Model& model, const core::State& st
 /// the guard (Diverged: the end).
 void checkStep(const core::Model& model, const core::Workspace& ws, double t, std::vector<char>& limited);
 
-/// A free body's `cmd_vel` (the config's one body's, and each body's of
-/// `bodies`: entry i is body `entry[i]`, a robot's < 0, all bodies without
-/// `entry`) is the node's to run: named once on stderr, never taken silently.
-void noteDevices(const io::SimConfig& config, const std::vector<int>& entry = {});
+/// Each of `notes` (a timeline's) not yet in `said` as a warning on stderr,
+/// then kept in `said`: each said once in a run.
+void warnOnce(const std::vector<std::string>& notes, std::vector<std::string>& said);
 
 /// The warning for a robot held back by the speed limits.
 void warnRobotLimited(const std::string& name, const core::SpeedLimits& limits, double t);

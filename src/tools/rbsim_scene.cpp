@@ -104,7 +104,8 @@ int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::Ti
   };
   core::SceneWorkspace ws;
   core::SceneLoads loads;
-  ControlRun controls(scene, state, std::move(setup.controls), std::move(timeline), options.out_dir);
+  BodyDrives drives(model, devices);
+  ControlRun controls(scene, state, std::move(setup.controls), std::move(timeline), drives.byName(), options.out_dir);
   controls.write(0.0);
   SensorRun sensors(scene, state, setup.sensors, options.publish_rate, options.out_dir);
   BodySensorRun body_sensors(model, state.bodies, devices, options.publish_rate, options.out_dir);
@@ -115,7 +116,9 @@ int runScene(io::SceneSetup setup, const RunOptions& options, std::vector<io::Ti
   const LoopTimes times = runLoop(
       steps, csv != nullptr, options.every, isatty(STDERR_FILENO) && steps * (free + robots.size()) >= 2'000'000,
       [&](long long k) {
-        controls.loadsFor(state, static_cast<double>(k - 1) * dt, loads.robots);  // as the node's clock: steps × dt
+        const double t = static_cast<double>(k - 1) * dt;  // as the node's clock: steps × dt
+        controls.loadsFor(state, t, loads.robots);         // the timeline's commands first, as the node gives them
+        if (!drives.empty()) drives.loadsFor(state.bodies, t, loads.bodies);
         sensors.before(state);
         core::stepScene(scene, state, loads, ws);
         controls.observe(state, k, static_cast<double>(k) * dt);

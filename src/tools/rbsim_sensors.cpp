@@ -246,12 +246,13 @@ void SensorRun::row(const Log& log, long long steps, double t) const {
 }
 
 std::vector<BodyDevices> bodyDevices(const io::SimConfig& config, const std::vector<int>& entry) {
-  if (!config.bodies_listed) return {BodyDevices{config.imu, config.odom_noise}};
+  if (!config.bodies_listed) return {BodyDevices{config.imu, config.odom_noise, config.cmd_vel}};
   std::vector<BodyDevices> devices(config.bodies.size());
   for (std::size_t k = 0; k < config.bodies.size(); ++k) {
     const int body = k < entry.size() ? entry[k] : static_cast<int>(k);
     if (body < 0) continue;
-    devices.at(static_cast<std::size_t>(body)) = {config.bodies[k].imu, config.bodies[k].odom_noise};
+    devices.at(static_cast<std::size_t>(body)) = {config.bodies[k].imu, config.bodies[k].odom_noise,
+                                                  config.bodies[k].cmd_vel};
   }
   return devices;
 }

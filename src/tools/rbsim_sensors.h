@@ -18,6 +18,7 @@
 #include "rigid_body_sim/core/contacts/contact_report.h"
 #include "rigid_body_sim/core/devices/body_sensors.h"
 #include "rigid_body_sim/core/devices/link_sensors.h"
+#include "rigid_body_sim/core/devices/velocity_driver.h"
 #include "rigid_body_sim/io/sensor_mount.h"
 
 namespace rigid_body_sim::tools {
@@ -70,11 +71,12 @@ class SensorRun {
   std::vector<std::string> paths_;
 };
 
-/// A free body's devices as its config gives them (`imu`, `odom_noise`;
-/// `bodies[i]`'s in a world).
+/// A free body's devices as its config gives them (`imu`, `odom_noise`,
+/// `cmd_vel`'s velocity driver; `bodies[i]`'s in a world).
 struct BodyDevices {
   std::optional<io::ImuEntry> imu;
   std::optional<core::OdomNoiseSettings> odom_noise;
+  std::optional<core::DriverSettings> cmd_vel;
 };
 
 /// Each free body's devices by its index in the world: the config's one

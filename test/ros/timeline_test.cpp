@@ -5,7 +5,7 @@
 // odometry on /odom and its truth on /ground_truth; timeline_lidar.test:
 // the lidar's scans on /scan; timeline_effort.test: a joint effort's
 // pendulum on /joint_states; body_devices.test: a body's IMU and noisy
-// odometry among robots.
+// odometry among robots; body_drive.test: a body's velocity driver.
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -322,6 +322,35 @@ TEST_F(TimelineBodies, TheNodeInLockStepPublishesRbsimsBodySamplesToTheLastBit) 
   ASSERT_FALSE(truths.empty());
   EXPECT_GT(std::abs(truths.back().pose.pose.position.x - 0.15), 0.05);  // struck: it moved
   EXPECT_NE(noisy.back().pose.pose.position.x, truths.back().pose.pose.position.x);
+}
+
+// A body's velocity driver commanded by the timeline
+// (config/box_cmd_vel_timeline.yaml: the box pushed ahead, then turned in
+// place): the node in lock-step moves it as rbsim does, to the last bit. rbsim
+// ran no body's cmd_vel; the node's driver took a command given at t from
+// the step after it.
+class TimelineBodyDrive : public LockStep {
+ protected:
+  void run() {
+    LockStep::run(30, {&truth_}, [&](double t) { return through(truths, t); });
+  }
+  std::vector<nav_msgs::Odometry> truths;
+  ros::Subscriber truth_ = into("/ground_truth", truths);
+};
+
+TEST_F(TimelineBodyDrive, TheNodeInLockStepDrivesTheBodyAsRbsimDoes) {
+  run();
+  const std::string out = rbsimOut("", "box_cmd_vel_timeline.yaml");
+  const Rows truth_rows = rbsimRows(out, "box.ground_truth.csv");
+  ASSERT_EQ(truth_rows.size(), 301u);  // 0, 0.01, ..., 3
+  EXPECT_GE(truths.size(), 299u);
+  for (const nav_msgs::Odometry& m : truths) expectOdometryRow(m, rowAt(truth_rows, m.header.stamp));
+  ASSERT_FALSE(truths.empty());
+  // Driven: 0.4 m/s for 1 s less the driver's start (0.3907 m measured),
+  // then 1 rad/s in place for 1 s less its start and friction's stop (0.903 rad).
+  const geometry_msgs::Pose& end = truths.back().pose.pose;
+  EXPECT_NEAR(end.position.x, 0.39, 0.01);
+  EXPECT_NEAR(2.0 * std::atan2(end.orientation.z, end.orientation.w), 0.9, 0.05);
 }
 
 }  // namespace

@@ -245,5 +245,29 @@ TEST(Rbsim, ABodyHeldByTheSpeedLimitsIsNamedOnce) {
   EXPECT_NE(slow.out.find("\"speed_limited\":[]"), std::string::npos) << slow.out;
 }
 
+// A body's velocity driver commanded by a timeline (issue 57: rbsim ran
+// none): the box floating in zero gravity, told 0.3 m/s ahead and 0.5 rad/s
+// about its z at every step from 0.2 s to 1.2 s. The PI driver holds both
+// (its integral takes up the turning frame's 0.15 N), so at 1.2 s it moves
+// at 0.3 m/s along its heading; with no command it never moves.
+TEST(Rbsim, ATimelineDrivesABodysVelocityDriver) {
+  const std::string box = "--urdf " + kBox + " --set gravity=[0,0,0] --set scene=[] --set 'cmd_vel={}' --quiet";
+  const Result r = rbsim(box +
+                         " --set 'timeline=[{t: 0.2, until: 1.2, body: base_link, cmd_vel: {linear: [0.3, 0, 0], "
+                         "angular: [0, 0, 0.5]}}]' --duration 1.2");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const YAML::Node end = YAML::Load(r.out)["final"];
+  const std::vector<double> v = seq(end["linear_velocity"]), w = seq(end["angular_velocity"]),
+                            q = seq(end["quaternion"]);
+  const double heading = 2.0 * std::atan2(q[2], q[3]);
+  EXPECT_NEAR(w[2], 0.5, 1e-4);
+  EXPECT_NEAR(v[0], 0.3 * std::cos(heading), 1e-4);
+  EXPECT_NEAR(v[1], 0.3 * std::sin(heading), 1e-4);
+  EXPECT_NEAR(heading, 0.5, 0.05);  // 0.5 rad/s for 1 s, less the driver's start
+  const Result idle = rbsim(box + " --duration 1.2");
+  ASSERT_EQ(idle.code, 0) << idle.err;
+  EXPECT_EQ(seq(YAML::Load(idle.out)["final"]["linear_velocity"]), (std::vector<double>{0, 0, 0}));
+}
+
 }  // namespace
 }  // namespace rigid_body_sim::test

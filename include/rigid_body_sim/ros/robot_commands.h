@@ -98,10 +98,10 @@ class RobotCommands {
   void baseCommand(std::size_t r, const geometry_msgs::Twist& msg);
 
   /// The config's `timeline` (io/timeline.h), checked against the robots
-  /// at start (ConfigError naming the entry); its commands are then given
-  /// before the steps they are due at, as its topics' messages are, so a
-  /// scenario runs here as it does in rbsim.
-  void setTimeline(std::vector<io::TimedCommand> entries);
+  /// and the bodies' drivers at start (ConfigError naming the entry); its
+  /// commands are then given before the steps they are due at, as its
+  /// topics' messages are, so a scenario runs here as it does in rbsim.
+  void setTimeline(std::vector<io::TimedCommand> entries, io::BodyDrivers bodies);
   /// Before the step that starts at sim time t: the timeline's commands
   /// due, its joint efforts into `efforts` (the simulation's).
   void giveTimed(double t, core::JointEffortSchedule& efforts);

@@ -51,6 +51,15 @@ BodyLoad VelocityDriver::load(const BodyModel& body, const BodyState& s, double 
   return load(linkState(body, s), body.mass, body.I_C_L, t, h);
 }
 
+void addDriverLoad(VelocityDriver& driver, const Model& model, const State& state, std::size_t i, double t, double h,
+                   Loads& loads) {
+  const BodyLoad drive = driver.load(model.body(i), state.bodies[i], t, h);
+  if (drive.isZero()) return;
+  if (loads.empty()) loads.resize(model.bodyCount());
+  loads[i].force_W += drive.force_W;
+  loads[i].torque_W += drive.torque_W;
+}
+
 BodyLoad VelocityDriver::load(const LinkState& link, double mass, const Mat3& I_C_L, double t, double h) {
   BodyLoad out;
   if (!active(t)) {

@@ -1,9 +1,10 @@
 // A velocity driver (docs/physics.md §10.4): a force and torque controller
 // that drives a body toward a commanded twist while gravity, contacts and
 // friction still act, as a robot's motors would; not a teleport. ROS-free;
-// the node feeds it from `cmd_vel`.
+// the node feeds it from `cmd_vel`, and both it and rbsim from a timeline.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "rigid_body_sim/core/articulations/articulation_dynamics.h"
@@ -58,6 +59,13 @@ class VelocityDriver {
   Vec3 v_cmd_ = Vec3::Zero(), w_cmd_ = Vec3::Zero();
   Vec3 v_integral_ = Vec3::Zero(), w_integral_ = Vec3::Zero();  ///< ∫e dt, in the frame the error is taken in
 };
+
+/// Adds `driver`'s load on free body i of `model` at `state` for the step
+/// [t, t + h) to loads[i], first sizing `loads` to the model's bodies (each
+/// zero) if it is empty and the load is not zero: how the node and rbsim
+/// alike drive a body by its cmd_vel.
+void addDriverLoad(VelocityDriver& driver, const Model& model, const State& state, std::size_t i, double t, double h,
+                   Loads& loads);
 
 /// The whole robot at `kin` as one body, about its base link's origin in
 /// the base's axes: each link's inertia carried there (§11.3's composite).
