@@ -41,9 +41,65 @@ void parseJointEffort(const YAML::Node& effort, const std::string& key, const YA
   }
 }
 
+/// A list of numbers at `key`.
+std::vector<double> numbers(const YAML::Node& list, const std::string& key) {
+  if (!list.IsSequence()) fail(key, "expected a list of numbers, got " + show(list));
+  std::vector<double> out;
+  for (std::size_t k = 0; k < list.size(); ++k) out.push_back(number(list[k], key + "[" + std::to_string(k) + "]"));
+  return out;
+}
+
+/// `trajectory: {joint_names, points}` of entry `entry` into `c`, as a
+/// trajectory_msgs/JointTrajectory (a time_from_start in s, or {secs, nsecs}).
+void parseTrajectory(const YAML::Node& trajectory, const std::string& key, const YAML::Node& entry, TimedCommand& c) {
+  const std::string at = key + ".trajectory";
+  if (!trajectory.IsMap()) {
+    fail(at, "expected a map such as {joint_names: [a], points: [{positions: [1], time_from_start: 2}]}, got " +
+                 show(trajectory));
+  }
+  requireKnownKeys(trajectory, at, {"joint_names", "points"});
+  if (entry["until"]) fail(key + ".until", "a trajectory runs by its points' times: give it once");
+  if (!entry["controller"]) fail(key + ".controller", "a trajectory is for a trajectory controller: name it");
+  const YAML::Node names = trajectory["joint_names"], points = trajectory["points"];
+  if (!names || !names.IsSequence()) fail(at + ".joint_names", "expected the list of the controller's joints");
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    c.joint_names.push_back(text(names[k], at + ".joint_names[" + std::to_string(k) + "]"));
+  }
+  if (!points || !points.IsSequence() || points.size() == 0) {
+    fail(at + ".points", "expected a list of one or more waypoints");
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::string p = at + ".points[" + std::to_string(i) + "]";
+    const YAML::Node point = points[i];
+    if (!point.IsMap()) fail(p, "expected a map such as {positions: [1], time_from_start: 2}, got " + show(point));
+    requireKnownKeys(point, p, {"positions", "velocities", "accelerations", "effort", "time_from_start"});
+    if (point["effort"]) fail(p + ".effort", "an effort trajectory controller takes no efforts; leave it out");
+    if (!point["positions"]) fail(p + ".positions", "every waypoint needs its positions");
+    if (!point["time_from_start"]) fail(p + ".time_from_start", "every waypoint needs its time (s)");
+    core::TrajectoryPoint w;
+    w.position = numbers(point["positions"], p + ".positions");
+    if (point["velocities"]) w.velocity = numbers(point["velocities"], p + ".velocities");
+    if (point["accelerations"]) w.acceleration = numbers(point["accelerations"], p + ".accelerations");
+    const YAML::Node time = point["time_from_start"];
+    if (time.IsMap()) {
+      requireKnownKeys(time, p + ".time_from_start", {"secs", "nsecs"});
+      w.time = (time["secs"] ? integer(time["secs"], p + ".time_from_start.secs") : 0) +
+               1e-9 * (time["nsecs"] ? integer(time["nsecs"], p + ".time_from_start.nsecs") : 0);
+    } else {
+      w.time = number(time, p + ".time_from_start");
+    }
+    if (w.time < 0.0 || w.time > core::ranges::kMaxDuration) {
+      fail(p + ".time_from_start", "must be within [0, 1e6] s, got " + show(time));
+    }
+    c.points.push_back(std::move(w));
+  }
+  c.trajectory = true;
+}
+
 TimedCommand parseEntry(const YAML::Node& node, const std::string& key) {
   if (!node.IsMap()) fail(key, "expected a map such as {t: 1.0, cmd_vel: {linear: [0.5, 0, 0]}}, got " + show(node));
-  requireKnownKeys(node, key, {"t", "until", "robot", "body", "controller", "cmd_vel", "command", "joint_effort"});
+  requireKnownKeys(node, key,
+                   {"t", "until", "robot", "body", "controller", "cmd_vel", "command", "trajectory", "joint_effort"});
   TimedCommand c;
   c.key = key;
   if (!node["t"]) fail(key + ".t", "every entry needs its time (s of sim time)");
@@ -68,13 +124,17 @@ TimedCommand parseEntry(const YAML::Node& node, const std::string& key) {
   }
   const int kinds = static_cast<int>(static_cast<bool>(node["cmd_vel"])) +
                     static_cast<int>(static_cast<bool>(node["command"])) +
+                    static_cast<int>(static_cast<bool>(node["trajectory"])) +
                     static_cast<int>(static_cast<bool>(node["joint_effort"]));
   if (kinds != 1) {
     fail(key,
-         "needs one of cmd_vel (a twist), command (a controller's values) and joint_effort (an effort on a joint)");
+         "needs one of cmd_vel (a twist), command (a controller's values), trajectory (a trajectory controller's "
+         "waypoints) and joint_effort (an effort on a joint)");
   }
   if (const YAML::Node effort = node["joint_effort"]) {
     parseJointEffort(effort, key, node, c);
+  } else if (const YAML::Node trajectory = node["trajectory"]) {
+    parseTrajectory(trajectory, key, node, c);
   } else if (const YAML::Node twist = node["cmd_vel"]) {
     requireKnownKeys(twist, key + ".cmd_vel", {"linear", "angular"});
     c.cmd_vel = true;
@@ -102,11 +162,31 @@ std::vector<TimedCommand> parseTimeline(const YAML::Node& list) {
 
 namespace {
 
+/// The names of the joints of `spec`, a controller of `robot`, in its order.
+std::vector<std::string> jointNames(const core::SceneRobot& robot, const core::JointControllerSpec& spec) {
+  std::vector<std::string> names;
+  for (const int j : spec.joints) names.push_back(robot.model.links[static_cast<std::size_t>(j)].joint);
+  return names;
+}
+
+/// A trajectory entry's points in the order of the joints of `spec`, a
+/// controller of `robot`; ConfigError naming the entry's field if its
+/// joint names or points do not fit it.
+std::vector<core::TrajectoryPoint> orderedPoints(const TimedCommand& c, const core::SceneRobot& robot,
+                                                 const core::JointControllerSpec& spec) {
+  std::vector<core::TrajectoryPoint> points = c.points;
+  const std::string problem = core::orderTrajectory(jointNames(robot, spec), c.joint_names, points);
+  if (!problem.empty()) fail(c.key + ".trajectory", "'" + c.controller + "': " + problem);
+  const std::string bad = core::JointTrajectory::check(points, spec.joints.size());
+  if (!bad.empty()) fail(c.key + ".trajectory", "'" + c.controller + "': " + bad);
+  return points;
+}
+
 /// What `c` drives of robot `robot`'s controls: a drive's or a joint
 /// controller's index, −1 for the base driver; ConfigError naming the
 /// entry's field otherwise.
-int targetOf(const TimedCommand& c, const std::string& robot, const RobotControls& rc) {
-  const std::string who = "robot '" + robot + "'";
+int targetOf(const TimedCommand& c, const core::SceneRobot& robot, const RobotControls& rc) {
+  const std::string who = "robot '" + robot.name + "'";
   const std::vector<core::JointControllerSpec>& specs = rc.controllers.specs();
   int joint_controller = -1;
   for (std::size_t k = 0; k < specs.size(); ++k) {
@@ -128,8 +208,16 @@ int targetOf(const TimedCommand& c, const std::string& robot, const RobotControl
   }
   if (joint_controller < 0) fail(c.key + ".controller", who + " has no joint controller '" + c.controller + "'");
   const core::JointControllerSpec& spec = specs[static_cast<std::size_t>(joint_controller)];
-  if (spec.mode == core::ControlMode::kTrajectory) {
-    fail(c.key + ".command", "'" + c.controller + "' follows trajectories: a timeline gives no trajectory yet");
+  const bool follows = spec.mode == core::ControlMode::kTrajectory;
+  if (follows != c.trajectory) {
+    fail(c.trajectory ? c.key + ".trajectory" : c.key + ".command",
+         "'" + c.controller +
+             (follows ? "' follows trajectories: give it a trajectory, not a command"
+                      : "' follows no trajectory: give it a command"));
+  }
+  if (c.trajectory) {
+    orderedPoints(c, robot, spec);
+    return joint_controller;
   }
   if (c.values.size() != spec.joints.size()) {
     fail(c.key + ".command", "'" + c.controller + "' takes " + std::to_string(spec.joints.size()) +
@@ -185,7 +273,7 @@ Timeline::Timeline(std::vector<TimedCommand> entries, const std::vector<core::Sc
     if (c.joint_effort) {
       jointOf(c, robots[r]);
     } else {
-      targetOf(c, robots[r].name, controls.at(r));
+      targetOf(c, robots[r], controls.at(r));
     }
     // A joint effort acts from its own t: given before the step that holds it.
     const double due = c.joint_effort ? c.t - dt : c.t;
@@ -216,7 +304,7 @@ void Timeline::give(const Entry& e, double t, const std::vector<core::SceneRobot
   RobotControls& rc = controls.at(r);
   int target = 0;
   try {  // a robot of that name spawned since, with other controllers or joints
-    target = c.joint_effort ? jointOf(c, robots[r]) : targetOf(c, e.robot, rc);
+    target = c.joint_effort ? jointOf(c, robots[r]) : targetOf(c, robots[r], rc);
   } catch (const ConfigError& error) {
     said.push_back(error.what());
     return;
@@ -225,6 +313,14 @@ void Timeline::give(const Entry& e, double t, const std::vector<core::SceneRobot
   if (c.joint_effort) {  // from its own t, as apply_joint_effort's start_time, off the step grid too
     efforts.add(r, target, c.effort, c.t,
                 c.duration > 0.0 ? c.t + c.duration : std::numeric_limits<double>::infinity());
+  } else if (c.trajectory) {  // as a JointTrajectory stamped 0 received at t
+    const std::size_t k = static_cast<std::size_t>(target);
+    std::vector<core::Clipped> clipped;
+    int dropped = 0;
+    const std::string problem = rc.controllers.followTrajectory(
+        k, t, t, orderedPoints(c, robots[r], rc.controllers.specs()[k]), clipped, dropped);
+    if (!problem.empty()) said.push_back(c.key + ": " + problem + ": not given");
+    held = !clipped.empty();
   } else if (c.cmd_vel && target < 0) {
     held = rc.base_driver->command(c.linear, c.angular, t);
   } else if (c.cmd_vel) {

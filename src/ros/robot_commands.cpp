@@ -225,37 +225,21 @@ void RobotCommands::trajectory(std::size_t r, std::size_t c, const trajectory_ms
     ROS_WARN_THROTTLE(kWarnPeriod, "sim_node: robot '%s': controller '%s': trajectory dropped: %s",
                       robot_names_[r].c_str(), spec.name.c_str(), why.c_str());
   };
-  // Each of the controller's joints named once: where each is in the message.
-  const std::size_t n = spec.joints.size();
-  if (msg.joint_names.size() != n) {
-    return drop("joint_names has " + std::to_string(msg.joint_names.size()) + " names; the controller's " +
-                std::to_string(n) + " joints must each be named once");
+  std::vector<core::TrajectoryPoint> points;
+  for (const trajectory_msgs::JointTrajectoryPoint& p : msg.points) {
+    points.push_back({p.time_from_start.toSec(), p.positions, p.velocities, p.accelerations});
   }
-  std::vector<std::size_t> from(n, n);
-  for (std::size_t m = 0; m < n; ++m) {
-    std::size_t k = 0;
-    while (k < n && joint_names_[r][spec.joints[k]] != msg.joint_names[m]) ++k;
-    if (k == n) return drop("joint_names[" + std::to_string(m) + "]: '" + msg.joint_names[m] + "' is not its joint");
-    if (from[k] != n) return drop("joint_names[" + std::to_string(m) + "]: '" + msg.joint_names[m] + "' twice");
-    from[k] = m;
+  // Each of the controller's joints named once, the points put in its order.
+  std::vector<std::string> joints;
+  for (const int j : spec.joints) joints.push_back(joint_names_[r][j]);
+  if (const std::string problem = core::orderTrajectory(joints, msg.joint_names, points); !problem.empty()) {
+    return drop(problem);
   }
   if (msg.points.empty()) {  // ros_controllers: an empty trajectory stops the joints where they are
     controllers.hold(c, sim_.robots[r]);
     ROS_INFO("sim_node: robot '%s': controller '%s': an empty trajectory: holding where the joints are",
              robot_names_[r].c_str(), spec.name.c_str());
     return;
-  }
-  // In the controller's order (a field of another length goes as it is: the check names it).
-  const auto ordered = [&](const std::vector<double>& values) {
-    if (values.size() != n) return values;
-    std::vector<double> out(n);
-    for (std::size_t k = 0; k < n; ++k) out[k] = values[from[k]];
-    return out;
-  };
-  std::vector<core::TrajectoryPoint> points;
-  for (const trajectory_msgs::JointTrajectoryPoint& p : msg.points) {
-    points.push_back(
-        {p.time_from_start.toSec(), ordered(p.positions), ordered(p.velocities), ordered(p.accelerations)});
   }
   const double now = time_.simTime();
   double start = now;

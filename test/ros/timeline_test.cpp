@@ -4,8 +4,9 @@
 // odometry on /base_controller/odom, the IMU's samples on /imu, the noisy
 // odometry on /odom and its truth on /ground_truth; timeline_lidar.test:
 // the lidar's scans on /scan; timeline_effort.test: a joint effort's
-// pendulum on /joint_states; body_devices.test: a body's IMU and noisy
-// odometry among robots; body_drive.test: a body's velocity driver.
+// pendulum on /joint_states; timeline_trajectory.test: a trajectory
+// controller's arm on /joint_states; body_devices.test: a body's IMU and
+// noisy odometry among robots; body_drive.test: a body's velocity driver.
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -288,6 +289,58 @@ TEST_F(TimelineEffort, TheNodeInLockStepSwingsAsRbsimAndTheClosedForm) {
   ASSERT_NEAR(states.back().header.stamp.toSec(), 3.0, 1e-9);
   EXPECT_EQ(states.back().position[0], field("position")) << json;
   EXPECT_EQ(states.back().velocity[0], field("velocity")) << json;
+}
+
+// A trajectory from the timeline (config/arm2_trajectory_timeline.yaml: the
+// two-link arm's trajectory controller sent through [-0.25, 0.4] to
+// [-0.5, 0.8] 2 s after 0.5 s, its joints named in another order):
+// joint_states in lock-step reports rbsim's trajectory (its CSV's 12
+// digits, its final state to the last bit); the arm held near its start
+// before 0.5 s (its sag under gravity as the PID winds up, 28 mrad,
+// measured) and ends near the last waypoint.
+class TimelineTrajectory : public LockStep {
+ protected:
+  void run() {
+    LockStep::run(30, {&joints_}, [&](double t) { return through(states, t); });
+  }
+  std::vector<sensor_msgs::JointState> states;
+  ros::Subscriber joints_ = into("/joint_states", states);
+};
+
+TEST_F(TimelineTrajectory, TheNodeInLockStepSwingsTheArmAsRbsimDoes) {
+  run();
+  const std::string out = rbsimTrajectory("arm2.urdf", "arm2_trajectory_timeline.yaml", 10);
+  const Rows rows = rbsimRows(out, "trajectory.csv");
+  ASSERT_EQ(rows.size(), 301u);  // t 0, 0.01, ..., 3
+  EXPECT_GE(states.size(), 300u);
+  const auto near = [](double got, double row) { return std::abs(got - row) <= 1e-11 * std::max(1.0, std::abs(row)); };
+  for (const sensor_msgs::JointState& m : states) {
+    const std::vector<double>& r = rowAt(rows, m.header.stamp);
+    ASSERT_EQ(r.size(), 18u);  // t, the base's 13 columns, shoulder's and elbow's position and velocity
+    ASSERT_EQ(m.name, (std::vector<std::string>{"shoulder", "elbow"}));
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_TRUE(near(m.position[k], r[14 + 2 * k]))
+          << "t " << r[0] << ": " << m.position[k] << " vs " << r[14 + 2 * k];
+      EXPECT_TRUE(near(m.velocity[k], r[15 + 2 * k]))
+          << "t " << r[0] << ": " << m.velocity[k] << " vs " << r[15 + 2 * k];
+    }
+    if (m.header.stamp.toSec() < 0.5) EXPECT_LT(std::abs(m.position[0]) + std::abs(m.position[1]), 0.05);
+  }
+  ASSERT_FALSE(states.empty());
+  ASSERT_NEAR(states.back().header.stamp.toSec(), 3.0, 1e-9);
+  EXPECT_NEAR(states.back().position[0], -0.5, 0.01);
+  EXPECT_NEAR(states.back().position[1], 0.8, 0.01);
+  // The last state, to the last bit: the JSON's "position": NUMBER and "velocity": NUMBER of each joint.
+  std::ifstream in(out + "/run.json");
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto field = [&](const std::string& joint, const std::string& name) {
+    const std::size_t at = json.find("\"" + name + "\":", json.find("\"" + joint + "\""));
+    return at == std::string::npos ? std::nan("") : std::strtod(json.c_str() + at + name.size() + 3, nullptr);
+  };
+  EXPECT_EQ(states.back().position[0], field("shoulder", "position")) << json;
+  EXPECT_EQ(states.back().velocity[0], field("shoulder", "velocity")) << json;
+  EXPECT_EQ(states.back().position[1], field("elbow", "position")) << json;
+  EXPECT_EQ(states.back().velocity[1], field("elbow", "velocity")) << json;
 }
 
 // A free body's devices among robots (config/robots.yaml's ball, struck by

@@ -250,6 +250,81 @@ TEST(Rbsim, GivesATimelinesJointEffortsAsApplyJointEffort) {
   EXPECT_NEAR(pushed["position"].as<double>(), -0.5 * 6.0 * 1.5 * 1.5, 6e-3);
 }
 
+// A timeline's trajectory is a trajectory_msgs/JointTrajectory on
+// CONTROLLER/command received at t (issue 57: a trajectory controller took
+// no timeline entry): the shipped scenario (config/arm2_trajectory_timeline.yaml)
+// names the arm's joints in another order than its controller's and sends
+// it through [-0.25, 0.4] to [-0.5, 0.8] at rest 2 s after 0.5 s. The arm
+// ends there (the PID's lag under gravity, 3.6 mrad at 3 s, 0.1 mrad at 6 s,
+// measured); without the entry the controller holds it at its start (1.0 mrad
+// from it at 6 s, measured).
+TEST(Rbsim, GivesATimelinesTrajectoryToATrajectoryController) {
+  const std::string arm = "--urdf " + std::string(RBS_SOURCE_DIR) + "/urdf/arm2.urdf --config " +
+                          std::string(RBS_SOURCE_DIR) + "/config/arm2_trajectory_timeline.yaml --quiet";
+  const Result r = rbsim(arm + " --duration 6");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const YAML::Node joints = YAML::Load(r.out)["final"]["joints"];
+  EXPECT_NEAR(joints["shoulder"]["position"].as<double>(), -0.5, 1e-3);
+  EXPECT_NEAR(joints["elbow"]["position"].as<double>(), 0.8, 1e-3);
+  // Halfway, 1 s after it was given, the arm is near the first waypoint, not yet at the last.
+  const Result half = rbsim(arm + " --duration 1.5");
+  ASSERT_EQ(half.code, 0) << half.err;
+  const YAML::Node mid = YAML::Load(half.out)["final"]["joints"];
+  EXPECT_NEAR(mid["shoulder"]["position"].as<double>(), -0.25, 0.05);
+  EXPECT_NEAR(mid["elbow"]["position"].as<double>(), 0.4, 0.05);
+  const Result held = rbsim(arm + " --set 'timeline=[]' --duration 6");
+  ASSERT_EQ(held.code, 0) << held.err;
+  const YAML::Node still = YAML::Load(held.out)["final"]["joints"];
+  EXPECT_NEAR(still["shoulder"]["position"].as<double>(), 0.0, 0.01);
+  EXPECT_NEAR(still["elbow"]["position"].as<double>(), 0.0, 0.01);
+}
+
+// A trajectory that does not fit its controller is refused at start, naming its field.
+TEST(Rbsim, RefusesATimelinesTrajectoryThatDoesNotFit) {
+  const std::string arm = "--urdf " + std::string(RBS_SOURCE_DIR) +
+                          "/urdf/arm2.urdf --duration 1 --set 'controllers={arm_controller: {type: "
+                          "effort_controllers/JointTrajectoryController, joints: [shoulder, elbow], gains: "
+                          "{shoulder: {p: 400, d: 40}, elbow: {p: 200, d: 20}}}}'";
+  const std::string both = "joint_names: [shoulder, elbow], points: ";
+  for (const auto& [entry, refusal] : std::vector<std::pair<std::string, std::string>>{
+           {"{t: 0, controller: arm_controller, command: [1, 2]}",
+            "'timeline[0].command': 'arm_controller' follows trajectories: give it a trajectory, not a command"},
+           {"{t: 0, controller: arm_controller, trajectory: {joint_names: [shoulder, wrist], points: [{positions: "
+            "[0, 0], time_from_start: 1}]}}",
+            "'timeline[0].trajectory': 'arm_controller': joint_names[1]: 'wrist' is not its joint"},
+           {"{t: 0, controller: arm_controller, trajectory: {joint_names: [shoulder], points: [{positions: [0], "
+            "time_from_start: 1}]}}",
+            "'timeline[0].trajectory': 'arm_controller': joint_names has 1 names"},
+           {"{t: 0, controller: arm_controller, trajectory: {" + both +
+                "[{positions: [0, 0], time_from_start: 1}, {positions: [1, 1], time_from_start: 1}]}}",
+            "'timeline[0].trajectory': 'arm_controller': points[1].time_from_start must be after the point before's"},
+           {"{t: 0, controller: arm_controller, trajectory: {" + both + "[{positions: [0], time_from_start: 1}]}}",
+            "'timeline[0].trajectory': 'arm_controller': points[0].positions has 1 values for 2 joints"},
+           {"{t: 0, controller: arm_controller, trajectory: {" + both + "[{positions: [0, 0]}]}}",
+            "'timeline[0].trajectory.points[0].time_from_start': every waypoint needs its time"},
+           {"{t: 0, controller: arm_controller, trajectory: {" + both + "[{positions: [0, 0], time_from_start: -1}]}}",
+            "'timeline[0].trajectory.points[0].time_from_start': must be within [0, 1e6] s"},
+           {"{t: 0, controller: arm_controller, trajectory: {" + both +
+                "[{positions: [0, 0], effort: [1, 1], time_from_start: 1}]}}",
+            "'timeline[0].trajectory.points[0].effort': an effort trajectory controller takes no efforts"},
+           {"{t: 0, controller: arm_controller, trajectory: {" + both + "[]}}",
+            "'timeline[0].trajectory.points': expected a list of one or more waypoints"},
+           {"{t: 0, until: 1, controller: arm_controller, trajectory: {" + both +
+                "[{positions: [0, 0], time_from_start: 1}]}}",
+            "'timeline[0].until': a trajectory runs by its points' times"},
+           {"{t: 0, trajectory: {" + both + "[{positions: [0, 0], time_from_start: 1}]}}",
+            "'timeline[0].controller': a trajectory is for a trajectory controller: name it"}}) {
+    expectUsageError(arm + " --set 'timeline=[" + entry + "]'", refusal);
+  }
+  // A trajectory to a controller that follows none.
+  expectUsageError("--urdf " + std::string(RBS_SOURCE_DIR) +
+                       "/urdf/pendulum.urdf --duration 1 --set 'controllers={a: {type: "
+                       "effort_controllers/JointEffortController, joint: pivot}}' --set 'timeline=[{t: 0, "
+                       "controller: a, trajectory: {joint_names: [pivot], points: [{positions: [1], "
+                       "time_from_start: 1}]}}]'",
+                   "'timeline[0].trajectory': 'a' follows no trajectory: give it a command");
+}
+
 /// The rows of one of --out's files after its header, which is `header` if given.
 std::vector<std::vector<double>> csvRows(const std::string& path, const std::string& header = "") {
   std::istringstream in(slurp(path));

@@ -17,6 +17,7 @@
 #include "rigid_body_sim/core/articulations/joint_effort_schedule.h"
 #include "rigid_body_sim/core/articulations/scene.h"
 #include "rigid_body_sim/core/bodies/types.h"
+#include "rigid_body_sim/core/controllers/joint_trajectory.h"
 #include "rigid_body_sim/core/devices/velocity_driver.h"
 
 namespace rigid_body_sim::io {
@@ -27,6 +28,9 @@ struct RobotControls;
 /// (a geometry_msgs/Twist, to the robot's base driver or one drive; with
 /// `body: NAME`, to that free body's velocity driver, its config `cmd_vel`) or
 /// `{t: 1.0, controller: NAME, command: [values]}` (CONTROLLER/command's data)
+/// or `{t: 1.0, controller: NAME, trajectory: {joint_names: [a, b], points:
+/// [{positions: [0, 1], time_from_start: 2.0}]}}` (a trajectory_msgs/JointTrajectory
+/// on CONTROLLER/command, from the step it is given at)
 /// or `{t: 1.0, joint_effort: {joint_name: J, effort: 2.0, duration: 0.5}}`
 /// (apply_joint_effort's request, starting at t).
 struct TimedCommand {
@@ -41,6 +45,9 @@ struct TimedCommand {
   bool cmd_vel = false;  ///< a twist (linear, angular), else `values`
   core::Vec3 linear = core::Vec3::Zero(), angular = core::Vec3::Zero();  ///< m/s, rad/s, in the base's axes
   std::vector<double> values;                                            ///< one per joint of the controller
+  bool trajectory = false;                    ///< waypoints for a trajectory controller, neither a twist nor values
+  std::vector<std::string> joint_names;       ///< trajectory.joint_names: the order of the points' fields
+  std::vector<core::TrajectoryPoint> points;  ///< trajectory.points, times from the step it is given at
   bool joint_effort = false;  ///< an effort on `joint` over [t, t + duration), neither a twist nor values
   std::string joint;          ///< joint_effort.joint_name: a moving joint of the robot
   double effort = 0.0;        ///< N·m or N

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "rigid_body_sim/core/bodies/ranges.h"
 
@@ -48,6 +49,34 @@ JointTrajectory::JointTrajectory(const std::vector<double>& position) : joints_(
   Piece hold;
   for (const double q : position) hold.coefficients.push_back({q, 0.0, 0.0, 0.0, 0.0, 0.0});
   pieces_.push_back(std::move(hold));
+}
+
+std::string orderTrajectory(const std::vector<std::string>& joints, const std::vector<std::string>& names,
+                            std::vector<TrajectoryPoint>& points) {
+  const std::size_t n = joints.size();
+  if (names.size() != n) {
+    return "joint_names has " + std::to_string(names.size()) + " names; the controller's " + std::to_string(n) +
+           " joints must each be named once";
+  }
+  std::vector<std::size_t> from(n, n);  // from[k]: where joint k is in the names
+  for (std::size_t m = 0; m < n; ++m) {
+    const std::size_t k = static_cast<std::size_t>(std::find(joints.begin(), joints.end(), names[m]) - joints.begin());
+    if (k == n) return "joint_names[" + std::to_string(m) + "]: '" + names[m] + "' is not its joint";
+    if (from[k] != n) return "joint_names[" + std::to_string(m) + "]: '" + names[m] + "' twice";
+    from[k] = m;
+  }
+  const auto ordered = [&](std::vector<double>& values) {
+    if (values.size() != n) return;
+    std::vector<double> out(n);
+    for (std::size_t k = 0; k < n; ++k) out[k] = values[from[k]];
+    values = std::move(out);
+  };
+  for (TrajectoryPoint& p : points) {
+    ordered(p.position);
+    ordered(p.velocity);
+    ordered(p.acceleration);
+  }
+  return "";
 }
 
 std::string JointTrajectory::check(const std::vector<TrajectoryPoint>& points, std::size_t joints) {

@@ -2,7 +2,8 @@
 // piece against its closed form (linear, cubic Hermite, quintic from rest
 // to rest), the lowest common order of its ends, the switch from one
 // trajectory to the next without a jump, past points dropped, a
-// continuous joint's whole turns, and every refusal.
+// continuous joint's whole turns, every refusal, and a message's joint
+// order put in the controller's.
 #include "rigid_body_sim/core/controllers/joint_trajectory.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rigid_body_sim::core {
@@ -150,6 +152,31 @@ TEST(JointTrajectory, CheckNamesTheProblem) {
     EXPECT_EQ(problem.rfind(c.expected, 0), 0u) << problem;
   }
   EXPECT_EQ(JointTrajectory::check({at(0.0, {1.0, 2.0}, {0.0, 0.0}, {0.0, 0.0}), at(0.5, {1.0, 2.0})}, 2), "");
+}
+
+// A message names its joints in any order: its points' fields follow the
+// controller's; a field of another length is left for check to name, and a
+// refused order changes nothing.
+TEST(JointTrajectory, OrderTrajectoryPutsTheNamesInTheControllersOrder) {
+  const std::vector<std::string> joints = {"a", "b", "c"};
+  std::vector<TrajectoryPoint> points = {at(1.0, {3.0, 1.0, 2.0}, {30.0, 10.0, 20.0}, {0.3, 0.1, 0.2}),
+                                         at(2.0, {6.0, 4.0, 5.0}, {1.0})};
+  ASSERT_EQ(orderTrajectory(joints, {"c", "a", "b"}, points), "");
+  EXPECT_EQ(points[0].position, (std::vector<double>{1.0, 2.0, 3.0}));
+  EXPECT_EQ(points[0].velocity, (std::vector<double>{10.0, 20.0, 30.0}));
+  EXPECT_EQ(points[0].acceleration, (std::vector<double>{0.1, 0.2, 0.3}));
+  EXPECT_EQ(points[1].position, (std::vector<double>{4.0, 5.0, 6.0}));
+  EXPECT_EQ(points[1].velocity, (std::vector<double>{1.0}));
+  EXPECT_EQ(JointTrajectory::check(points, 3).rfind("points[1].velocities has 1 values for 3 joints", 0), 0u);
+  const std::vector<TrajectoryPoint> before = {at(1.0, {1.0, 2.0, 3.0})};
+  for (const auto& [names, expected] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"a", "b"}, "joint_names has 2 names; the controller's 3 joints must each be named once"},
+           {{"a", "b", "d"}, "joint_names[2]: 'd' is not its joint"},
+           {{"a", "b", "a"}, "joint_names[2]: 'a' twice"}}) {
+    std::vector<TrajectoryPoint> refused = before;
+    EXPECT_EQ(orderTrajectory(joints, names, refused), expected);
+    EXPECT_EQ(refused[0].position, before[0].position);
+  }
 }
 
 }  // namespace

@@ -24,6 +24,15 @@ struct TrajectoryPoint {
   std::vector<double> acceleration;  ///< per joint (rad/s² or m/s²), or empty (needs velocity)
 };
 
+/// `points` given for the joints named `names` (a JointTrajectory's
+/// joint_names, its points' fields in that order) put in the order of
+/// `joints` (a controller's joint names): "" or why not (a count that
+/// differs, a name not among them or given twice, naming joint_names[m]),
+/// and then nothing has changed. A field of another length than the names
+/// is left as it is, for JointTrajectory::check to name.
+std::string orderTrajectory(const std::vector<std::string>& joints, const std::vector<std::string>& names,
+                            std::vector<TrajectoryPoint>& points);
+
 /// Where one joint should be at a time.
 struct Setpoint {
   double position = 0.0;
