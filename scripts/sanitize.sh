@@ -6,7 +6,7 @@
 #    threads (core_bodies_test, core_broad_phase_test, core_workspace_test, core_parallel_test).
 # Non-zero on any report: leaks, out-of-bounds, undefined behaviour, races.
 #
-#   bash scripts/sanitize.sh          # both (CI runs it; about 20 minutes on 2 cores)
+#   bash scripts/sanitize.sh          # both (CI runs it; about 23 minutes on 2 cores)
 #   bash scripts/sanitize.sh asan     # or tsan
 set -euo pipefail
 source "$(dirname "$0")/common.sh"

@@ -7,7 +7,7 @@ source "$(dirname "$0")/common.sh"
 rbs_install_packages
 rbs_build
 rbs_build tests
-echo "test: running the tests (ctest, 2 at a time, about 2 minutes)" >&2
+echo "test: running the tests (ctest, 2 at a time, about 3 minutes)" >&2
 log="$RBS_WS/ctest.log"
 status=0
 ctest --test-dir "$RBS_WS/build" --output-on-failure -j2 2>&1 | tee "$log" || status=$?
