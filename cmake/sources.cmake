@@ -58,6 +58,7 @@ set(RBS_CORE_SOURCES
   ${RBS_SOURCE_ROOT}/src/core/controllers/robot_control.cpp
   ${RBS_SOURCE_ROOT}/src/core/articulations/joint_effort_schedule.cpp
   ${RBS_SOURCE_ROOT}/src/core/controllers/joint_trajectory.cpp
+  ${RBS_SOURCE_ROOT}/src/core/step/entity_ids.cpp
   ${RBS_SOURCE_ROOT}/src/core/step/simulation.cpp
   ${RBS_SOURCE_ROOT}/src/core/step/sleep.cpp
   ${RBS_SOURCE_ROOT}/src/core/contacts/solver_contact.cpp

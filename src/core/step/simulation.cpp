@@ -9,14 +9,16 @@
 namespace rigid_body_sim::core {
 
 Simulation::Simulation(Model model_in, State state_in)
-    : scene(std::move(model_in)), state(std::move(state_in)), initial(state) {}
+    : scene(std::move(model_in)), state(std::move(state_in)), initial(state), body_ids_(scene.freeBodyCount()) {}
 
 Simulation::Simulation(Scene scene_in, SceneState state_in)
     : scene(std::move(scene_in)),
       state(std::move(state_in.bodies)),
       initial(state),
       robots(std::move(state_in.robots)),
-      initial_robots(robots) {}
+      initial_robots(robots),
+      body_ids_(scene.freeBodyCount()),
+      robot_ids_(robots.size()) {}
 
 void Simulation::step(const Loads& loads, const std::vector<ArticulationLoads>& robot_loads) {
   detail::WorldState now{state, robots};
@@ -24,7 +26,7 @@ void Simulation::step(const Loads& loads, const std::vector<ArticulationLoads>& 
   detail::stepWorld(detail::World(scene), now, detail::WorldLoads{loads, robot_loads}, memory);
 }
 
-void Simulation::addBody(const PreparedBody& body, const BodyState& start) {
+EntityId Simulation::addBody(const PreparedBody& body, const BodyState& start) {
   const int i = static_cast<int>(scene.freeBodyCount());  // before the robots' links
   scene.addBody(body);                                    // in place, unchanged if it throws
   insertBody(state, i, start);
@@ -32,9 +34,10 @@ void Simulation::addBody(const PreparedBody& body, const BodyState& start) {
   contacts.insertBody(i);
   schedule.insertBody(i);
   workspace.bodies = workspace.bodies.forEditedModel();  // its caches assumed the old model
+  return body_ids_.insert(static_cast<std::size_t>(i));
 }
 
-void Simulation::addRobot(Scene::RobotSpec robot, const ArticulationState& start) {
+EntityId Simulation::addRobot(Scene::RobotSpec robot, const ArticulationState& start) {
   scene.addRobot(std::move(robot));  // unchanged if it throws
   const std::size_t r = scene.robots().size() - 1;
   robots.push_back(start);
@@ -44,6 +47,18 @@ void Simulation::addRobot(Scene::RobotSpec robot, const ArticulationState& start
   core::placeRobot(scene, r, start, state);
   core::placeRobot(scene, r, start, initial);
   workspace.bodies = workspace.bodies.forEditedModel();
+  return robot_ids_.insert(r);
+}
+
+EntityId Simulation::bodyId(int i) const {
+  if (i < 0) throw std::out_of_range("body " + std::to_string(i) + ": no free body");
+  return body_ids_.at(static_cast<std::size_t>(i));
+}
+
+std::optional<int> Simulation::bodyIndex(EntityId id) const {
+  const std::optional<std::size_t> i = body_ids_.find(id);
+  if (!i) return std::nullopt;
+  return static_cast<int>(*i);
 }
 
 std::size_t Simulation::removeBody(int i) {
@@ -56,6 +71,7 @@ std::size_t Simulation::removeBody(int i) {
   scene.removeBody(static_cast<std::size_t>(i));
   contacts.removeBody(i);
   workspace.bodies = workspace.bodies.forEditedModel();
+  body_ids_.erase(static_cast<std::size_t>(i));
   return schedule.removeBody(i);
 }
 
@@ -76,6 +92,7 @@ void Simulation::removeRobot(std::size_t r) {
   robots.erase(robots.begin() + static_cast<std::ptrdiff_t>(r));
   initial_robots.erase(initial_robots.begin() + static_cast<std::ptrdiff_t>(r));
   joint_efforts.removeRobot(r);
+  robot_ids_.erase(r);
   // A sleeping robot sleeps as its links do: one of them woken wakes it.
   for (std::size_t s = 0; s < robots.size(); ++s) {
     const SceneRobot& robot = scene.robots()[s];

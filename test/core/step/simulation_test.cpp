@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -229,6 +230,35 @@ TEST(Simulation, ARobotRemovedLeavesTheWorldAsOneMadeWithoutIt) {
   sim.reset(1.0);
   EXPECT_EQ(sim.robots[0].q, low.q);
   expectSameBody(sim.state.bodies[1], without.initial.bodies[1]);
+}
+
+// An entity's id names it through every other edit, and once it is
+// removed its id is refused, even after a new entity is added in its place.
+TEST(Simulation, IdsNameTheirEntityUntilItGoes) {
+  World w({"a", "b", "c"});
+  Simulation sim(w.scene, w.start);
+  const EntityId a = sim.bodyId(0), b = sim.bodyId(1), c = sim.bodyId(2), arm = sim.robotId(0);
+  EXPECT_NE(a, b);
+  EXPECT_EQ(sim.bodyIndex(c), 2);
+  EXPECT_EQ(sim.bodyIndex(EntityId{}), std::nullopt);  // a default id names nothing
+  sim.removeBody(1);
+  EXPECT_EQ(sim.bodyIndex(a), 0);
+  EXPECT_EQ(sim.bodyIndex(b), std::nullopt);
+  EXPECT_EQ(sim.bodyIndex(c), 1);
+  EXPECT_EQ(sim.model().body(*sim.bodyIndex(c)).name, "c");
+  const EntityId d = sim.addBody(sim.model().bodyBuilder().build(box("d")), BodyState{});
+  EXPECT_NE(d, b);  // b's slot again, a newer generation
+  EXPECT_EQ(d.slot, b.slot);
+  EXPECT_EQ(sim.bodyIndex(b), std::nullopt);
+  EXPECT_EQ(sim.bodyIndex(d), 2);
+  EXPECT_EQ(sim.model().body(2).name, "d");
+  const EntityId low = sim.addRobot({"low", pendulum(0.3)}, restState(pendulum(0.3), Pose()));
+  sim.removeRobot(0);
+  EXPECT_EQ(sim.robotIndex(arm), std::nullopt);
+  EXPECT_EQ(sim.robotIndex(low), 0u);
+  EXPECT_EQ(sim.scene.robots()[0].name, "low");
+  EXPECT_THROW(sim.bodyId(3), std::out_of_range);  // a link, not a free body
+  EXPECT_THROW(sim.robotId(1), std::out_of_range);
 }
 
 TEST(Simulation, ResetPutsTheRobotsBack) {

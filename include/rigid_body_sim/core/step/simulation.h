@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "rigid_body_sim/core/articulations/joint_effort_schedule.h"
@@ -13,6 +14,7 @@
 #include "rigid_body_sim/core/bodies/model.h"
 #include "rigid_body_sim/core/bodies/state.h"
 #include "rigid_body_sim/core/contacts/contact_report.h"
+#include "rigid_body_sim/core/step/entity_ids.h"
 #include "rigid_body_sim/core/step/workspace.h"
 #include "rigid_body_sim/core/step/wrench_schedule.h"
 
@@ -47,14 +49,24 @@ struct Simulation {
   void step(const Loads& loads, const std::vector<ArticulationLoads>& robot_loads = {});
 
   /// Adds `body` last among the free bodies (the robots' links move up by
-  /// one), at `start` (also its initial state). The model
+  /// one), at `start` (also its initial state). Returns its id. The model
   /// refuses a body it cannot take (a taken name, settings the body breaks)
   /// by throwing, and then nothing has changed.
-  void addBody(const PreparedBody& body, const BodyState& start);
+  EntityId addBody(const PreparedBody& body, const BodyState& start);
   /// Adds `robot` last (Scene::addRobot), at `start` (also its initial
-  /// state), its links placed there. Throws as Scene::addRobot does, and
-  /// then nothing has changed.
-  void addRobot(Scene::RobotSpec robot, const ArticulationState& start);
+  /// state), its links placed there. Returns its id. Throws as
+  /// Scene::addRobot does, and then nothing has changed.
+  EntityId addRobot(Scene::RobotSpec robot, const ArticulationState& start);
+
+  /// Free body i's id, which names it until it is removed, whatever else is
+  /// added or removed (std::out_of_range for no such body).
+  EntityId bodyId(int i) const;
+  /// The index of the free body `id` names, or nothing once it is removed.
+  std::optional<int> bodyIndex(EntityId id) const;
+  /// Robot r's id, as bodyId's.
+  EntityId robotId(std::size_t r) const { return robot_ids_.at(r); }
+  /// The index of the robot `id` names, or nothing once it is removed.
+  std::optional<std::size_t> robotIndex(EntityId id) const { return robot_ids_.find(id); }
 
   /// Takes free body i out of every table at once: its contacts, its wrenches and
   /// those in its axes go, what may touch it wakes (core::removeBody), and
@@ -86,6 +98,10 @@ struct Simulation {
   /// Back to the initial state, robots too, at sim time `time` (which only
   /// goes forward), every wrench and joint effort cleared.
   void reset(double time);
+
+ private:
+  EntityIds body_ids_;   ///< the free bodies', in their order
+  EntityIds robot_ids_;  ///< the robots', in theirs
 };
 
 }  // namespace rigid_body_sim::core
