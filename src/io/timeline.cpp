@@ -141,11 +141,8 @@ TimedCommand parseEntry(const YAML::Node& node, const std::string& key) {
     if (twist["linear"]) c.linear = vec3(twist["linear"], key + ".cmd_vel.linear");
     if (twist["angular"]) c.angular = vec3(twist["angular"], key + ".cmd_vel.angular");
   } else {
-    const YAML::Node values = node["command"];
-    if (!values.IsSequence() || values.size() == 0) fail(key + ".command", "expected a list of numbers");
-    for (std::size_t k = 0; k < values.size(); ++k) {
-      c.values.push_back(number(values[k], key + ".command[" + std::to_string(k) + "]"));
-    }
+    c.values = numbers(node["command"], key + ".command");
+    if (c.values.empty()) fail(key + ".command", "expected a list of numbers, got none");
   }
   return c;
 }
