@@ -562,8 +562,10 @@ TEST(GazeboImus, HectorsImuPluginIsAnImuWithItsNoiseAndDrift) {
         std::pair{"<updateRate>1e9</updateRate>", "<updateRate> = '1e9'"},
         std::pair{"<topicName>a b</topicName>", "<topicName> = 'a b': no ROS topic name"}}) {
     try {
+      // A lambda captures no structured binding in C++17 (clang refuses it): a copy.
+      const std::string markup = element;
       io::loadScene(config(""), [&] {
-        return laserRobot("<gazebo><plugin name='h' filename='libhector_gazebo_ros_imu.so'>" + std::string(element) +
+        return laserRobot("<gazebo><plugin name='h' filename='libhector_gazebo_ros_imu.so'>" + markup +
                           "</plugin></gazebo>");
       });
       ADD_FAILURE() << element << " was accepted";
@@ -643,8 +645,10 @@ TEST(GazeboEarthSensors, HectorsGpsAndMagnetometerAreReadWithTheirReferencesAndE
         std::pair{"<status>7</status>", "<status> = '7'"},
         std::pair{"<bodyName>nowhere</bodyName>", "has no link 'nowhere'"}}) {
     try {
+      // A lambda captures no structured binding in C++17 (clang refuses it): a copy.
+      const std::string markup = element;
       io::loadScene(config(""), [&] {
-        return laserRobot("<gazebo><plugin name='h' filename='libhector_gazebo_ros_gps.so'>" + std::string(element) +
+        return laserRobot("<gazebo><plugin name='h' filename='libhector_gazebo_ros_gps.so'>" + markup +
                           "</plugin></gazebo>");
       });
       ADD_FAILURE() << element << " was accepted";

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "../sanitizers.h"
 #include "node_fixture.h"
 #include "node_process.h"
 #include "rigid_body_sim/ApplyJointEffort.h"
@@ -30,7 +31,7 @@ namespace rbs_test {
 namespace {
 
 /// A name of one of the churned robots ("r17"), at the start of a topic, service, parameter or frame.
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(RBS_UNDER_ASAN)
 constexpr int kRobots = 40;  ///< spawned and deleted: under ASan each spawn takes about a second
 #else
 constexpr int kRobots = 200;  ///< spawned and deleted
@@ -173,7 +174,7 @@ TEST_F(Churn, TwoHundredRobotsComeAndGoAndLeaveNothingBehind) {
   // No controller: nothing takes a deleted robot's commands.
   for (const std::string& name : gone) EXPECT_FALSE(subscribes("/sim_node", "/" + name + "/base/cmd_vel")) << name;
 
-#if !defined(__SANITIZE_ADDRESS__)  // ASan's quarantine holds what is freed
+#if !defined(RBS_UNDER_ASAN)  // ASan's quarantine holds what is freed
   // Memory: no more after the second hundred robots than after the first
   // (a robot's record left behind, ~100 kB with its lidar, would add 10 MB).
   // The figure, within 5 % of before any spawn, is not what a

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "../sanitizers.h"
 #include "node_process.h"
 #include "rigid_body_sim/Contacts.h"
 #include "rigid_body_sim/DeleteBody.h"
@@ -262,7 +263,7 @@ TEST_F(ArmEdits, ASpawnWhoseDevicesWouldPassTheirMemoryIsRefusedBeforeAnyIsBuilt
 // rover with a lidar, a depth camera and a controller); each robot now
 // opens them through a handle of its own.
 TEST_F(ArmEdits, SpawnsAndDeletesOfARobotWithSensorsLeaveTheNodesMemoryFlat) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(RBS_UNDER_ASAN)
   GTEST_SKIP() << "ASan's quarantine holds what is freed: the node's memory says nothing here";
 #endif
   const int pid = simNodePid();

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "../../sanitizers.h"
 #include "../../test_util.h"
 #include "rigid_body_sim/core/devices/depth_camera.h"
 #include "rigid_body_sim/core/devices/lidar.h"
@@ -415,7 +416,7 @@ TEST(DepthCamera, RefusesSettingsWhoseMessagesWouldNotBeFinite) {
 // covers what it allocates: measured on the heap, it holds at least what the
 // device's own arrays take and no more than the count.
 TEST(DeviceBytes, CoverWhatTheLidarAndTheCameraAllocate) {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(RBS_UNDER_ASAN) || defined(RBS_UNDER_TSAN)
   GTEST_SKIP() << "a sanitizer's allocator keeps no mallinfo";
 #endif
   const auto heap = [] {  // in use: small blocks, and large ones malloc maps apart
