@@ -111,15 +111,15 @@ rbs_build() {
   # (PYTHONPATH) only if it exists when CMake first runs; without it a tests-only
   # build (sanitize.sh) ran the spawn_body script unable to import its messages.
   mkdir -p "$RBS_WS/devel/lib/python3/dist-packages"
-  # First-time figures of CI's fresh root at 310d515: the package 418 s, its
-  # tests 271 s more; under ASan the package and tests 940 s, under TSan the
-  # core's threaded suites 157 s.
+  # First-time figures of CI's fresh root at 5eae2fe: the package 312 s, its
+  # tests 215 s more; under ASan (clang) the package and tests 427 s, under
+  # TSan the core's threaded suites 77 s.
   local minutes
   case "$RBS_BUILD_TYPE:${1:-}" in
-    Sanitize:tests) minutes=16 ;;
-    Sanitize:*) minutes=3 ;;
-    *:tests) minutes=5 ;;
-    *) minutes=7 ;;
+    Sanitize:tests) minutes=8 ;;
+    Sanitize:*) minutes=2 ;;
+    *:tests) minutes=4 ;;
+    *) minutes=6 ;;
   esac
   local what="building ${*:-the package} into ${RBS_WS#"$PWD"/} ($RBS_BUILD_TYPE; about $minutes minutes the first time on 2 cores)"
   local probe=sim_node  # built already: only what changed is built again

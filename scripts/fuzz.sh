@@ -18,7 +18,7 @@ dir=$RBS_WS/fuzz
 mkdir -p "$dir/build" "$dir/artifacts"
 # OSS-Fuzz's optimisation and debug info (-O1, line tables only): builds in
 # less time than -O2 -g and still names the line.
-rbs_phase "building the fuzzers with clang into ${dir#"$PWD"/} (about 5 minutes the first time)" fuzz_build.log \
+rbs_phase "building the fuzzers with clang into ${dir#"$PWD"/} (about 3 minutes the first time)" fuzz_build.log \
   bash -c "CXX=clang++-14 cmake -S '$RBS_ROOT/fuzz' -B '$dir/build' -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     '-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG' && cmake --build '$dir/build' -j2"
 declare -A seeds=([urdf_fuzzer]="fuzz/seeds/urdf urdf" [config_fuzzer]="fuzz/seeds/config config"

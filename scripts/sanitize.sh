@@ -9,7 +9,7 @@
 # and UBSan in two thirds of GCC's time (248 s of CPU to 369 s, 2026-12-04),
 # and it holds to C++17 where GCC lets a lambda capture a structured binding.
 #
-#   bash scripts/sanitize.sh          # both (CI runs it; about 23 minutes on 2 cores)
+#   bash scripts/sanitize.sh          # both (CI runs it; about 14 minutes on 2 cores)
 #   bash scripts/sanitize.sh asan     # or tsan
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
