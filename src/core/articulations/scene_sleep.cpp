@@ -1,4 +1,5 @@
-// Sleep and waking for the islands that hold a robot: docs/physics.md §11.9.
+// Waking the robots and the bodies they touch: docs/physics.md §11.9 (their
+// sleep is the one rule of step/sleep.cpp).
 #include "articulation_phases.h"
 #include "scene_stages.h"
 #include "step/sleep.h"
@@ -34,43 +35,6 @@ void wakeHitRobots(const World& world, const WorldLoads& loads, double h, WorldS
     const int ro = world.robotOf(static_cast<std::size_t>(c.other));
     if (ra >= 0 && woken[ra] && ro < 0 && bodies[c.other].asleep) wakeBody(bodies[c.other]);
     if (ro >= 0 && woken[ro] && ra < 0 && bodies[c.body].asleep) wakeBody(bodies[c.body]);
-  }
-}
-
-void sleepRobotIslands(const World& world, double h, WorldState& state, WorldWorkspace& ws) {
-  if (world.robots().empty()) return;
-  const Model& model = world.model();
-  const std::size_t n = model.bodyCount();
-  std::vector<char> touching(world.robots().size(), 0);
-  for (const Contact& c : ws.scratch->robot_contacts) {
-    for (const int b : {c.body, c.other}) {
-      const int r = b >= 0 ? world.robotOf(static_cast<std::size_t>(b)) : -1;
-      if (r >= 0) touching[r] = 1;
-    }
-  }
-  std::vector<char> ready(n, 1);  // per island root
-  std::vector<char> holds(n, 0);  // per island root: an awake robot
-  for (std::size_t r = 0; r < world.robots().size(); ++r) {
-    const SceneRobot& robot = world.robots()[r];
-    ArticulationState& rs = state.robots[r];
-    if (rs.asleep || robot.link.empty()) continue;
-    const int root = ws.scratch->island_root[robot.first_body];
-    holds[root] = 1;
-    if (!detail::updateStillTime(robot.model, model.sleep(), touching[r] != 0, h, rs)) ready[root] = 0;
-  }
-  for (std::size_t i = 0; i < world.freeBodyCount(); ++i) {
-    const BodyState& s = state.bodies.bodies[i];
-    if (!s.asleep && !readyToSleep(model, true, s)) ready[ws.scratch->island_root[i]] = 0;
-  }
-  for (std::size_t r = 0; r < world.robots().size(); ++r) {
-    const SceneRobot& robot = world.robots()[r];
-    if (state.robots[r].asleep || robot.link.empty()) continue;
-    if (ready[ws.scratch->island_root[robot.first_body]]) detail::fallAsleep(state.robots[r]);
-  }
-  for (std::size_t i = 0; i < world.freeBodyCount(); ++i) {
-    BodyState& s = state.bodies.bodies[i];
-    const int root = ws.scratch->island_root[i];
-    if (!s.asleep && holds[root] && ready[root]) fallAsleep(s);
   }
 }
 

@@ -33,6 +33,7 @@ struct SceneScratch {
   std::vector<ContactImpulse> last_impulses;  ///< the last step's, for the robots' warm start, during a step
   std::vector<int> island_root;               ///< per body: its island's smallest body, during a step
   std::vector<char> woken;                    ///< per robot: woken in this step, during a step
+  std::vector<char> touching;                 ///< per robot: in contact, for the sleep stage
   RobotSolve solve;
 };
 
@@ -98,11 +99,6 @@ void liftBodies(const World& world, const WorldWorkspace& ws, double h, WorldSta
 /// Every awake robot's second half: its momenta from the solve's impulses,
 /// its positions, the speed limits and the guard (ws.robot_diverged).
 void finishRobots(const World& world, double h, WorldState& state, WorldWorkspace& ws);
-
-/// Sleep for the islands that hold a robot (§6, §11.9): every robot in it
-/// touching, slower than the sleep speeds for the sleep time, and every
-/// awake free body in it still as long: all of them fall asleep.
-void sleepRobotIslands(const World& world, double h, WorldState& state, WorldWorkspace& ws);
 
 /// Every robot's links placed where it now is (placeLinks), for readers and
 /// the next step.

@@ -78,7 +78,8 @@ struct StepScratch {
   std::vector<int> island_contacts, island_starts, island_of;
   /// Per body: its island's root, the island's smallest body index (findIslands).
   std::vector<int> island_root;
-  std::vector<char> island_flags;  ///< per island root: scratch of the sleep and position stages
+  std::vector<char> island_flags;     ///< per island root: scratch of the sleep and position stages
+  std::vector<char> island_touching;  ///< per body: touches something, for the sleep stage
   /// Per body: pushed by a contact (λ_N > 0) and left exactly still (v = ω = 0)
   /// by this step's impulse solve: in equilibrium, so it may sleep at once.
   std::vector<char> held_still;

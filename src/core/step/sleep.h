@@ -8,6 +8,7 @@
 #include "rigid_body_sim/core/bodies/state.h"
 #include "rigid_body_sim/core/step/loads.h"
 #include "rigid_body_sim/core/step/workspace.h"
+#include "world.h"
 
 // Not exported from the library (only its own files and the core tests,
 // which link its objects, call these), so link-time optimisation may inline them.
@@ -52,10 +53,19 @@ void wakeLoadedBodies(State& state, const Loads& loads);
 /// contacts. Returns whether any woke.
 bool wakeTouchedSleepers(const Model& model, State& state, const Workspace& ws, double h);
 
-/// Stage 9: islands whose bodies are all ready to sleep (or held exactly
-/// still by the impulse solve) fall asleep together. `islands_known`: the
-/// impulse solve ran and left its islands in the workspace.
+/// sleepIslands (below) for free bodies alone. `islands_known`: the impulse
+/// solve ran and left its islands in the workspace.
 void sleepIslands(const Model& model, State& state, Workspace& ws, bool islands_known);
+
+namespace detail {
+
+/// The sleep stage (§6, §11.9), for bodies and robots alike: islands whose
+/// bodies and robots are all ready to sleep (a body also when held exactly
+/// still by the impulse solve) fall asleep together; a robot's still time
+/// is counted here. `islands_known`: the free bodies' impulse solve ran.
+void sleepIslands(const World& world, double h, WorldState& state, WorldWorkspace& ws, bool islands_known);
+
+}  // namespace detail
 
 }  // namespace rigid_body_sim::core
 #pragma GCC visibility pop

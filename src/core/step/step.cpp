@@ -22,6 +22,36 @@ namespace rigid_body_sim::core {
 namespace detail {
 namespace {
 
+// The stages that do one job for free bodies and robots alike: each runs
+// the free bodies' part (the bodies' own files), then the robots'
+// (articulations/scene_*.cpp), so a world without robots runs the first
+// alone.
+
+/// §5.5, §11.9: the free bodies' islands (contact_solver.cpp), then the
+/// islands that hold a robot, joints and contacts in one solve
+/// (scene_solve.cpp). Returns whether the free bodies' solve ran.
+bool solveContacts(const World& world, WorldState& state, double h, WorldWorkspace& ws) {
+  const bool impulse = solveContactImpulses(world.model(), state.bodies, h, ws.bodies);
+  solveRobotIslands(world, state, h, ws);
+  return impulse;
+}
+
+/// §5.6–5.7, §11.5–11.7: the awake bodies' positions, still times and guard
+/// (integration.cpp), then every awake robot's second half: momenta,
+/// positions, speed limits and guard (scene_step.cpp).
+void integratePositions(const World& world, double h, WorldState& state, WorldWorkspace& ws) {
+  core::integratePositions(world.model(), state.bodies, h, ws.bodies);
+  finishRobots(world, h, state, ws);
+}
+
+/// §5.8, §11.8: the split impulse of the robots' islands on their free
+/// bodies (scene_solve.cpp; the robots took theirs in their second half),
+/// then the free bodies' own (position_correction.cpp), where their solve ran.
+void correctPositions(const World& world, bool impulse, double h, WorldState& state, WorldWorkspace& ws) {
+  liftBodies(world, ws, h, state);
+  if (impulse) core::correctPositions(world.model(), state.bodies, ws.bodies);
+}
+
 /// One step of length h of every awake body and robot. Returns whether the
 /// free bodies' impulse solve ran (its islands are then in the workspace,
 /// for sleep and the fixed-point cache).
@@ -37,14 +67,10 @@ bool advance(const World& world, WorldState& state, const WorldLoads& loads, dou
   wakeHitRobots(world, loads, h, state, ws);                       // §11.9   scene_sleep.cpp
   takeRobotContacts(world, state, ws);                             // §11.9   scene_solve.cpp: the robots' islands apart
   integrateVelocities(model, bodies, loads.bodies, h, bw);         // §5.2–4  integration.cpp: forces, v and ω, damping, limits
-  const bool impulse = solveContactImpulses(model, bodies, h, bw); // §5.5    contact_solver.cpp (then the limits)
-  solveRobotIslands(world, state, h, ws);                          // §11.9   scene_solve.cpp: joints and contacts, one solve
-  integratePositions(model, bodies, h, bw);                        // §5.6–7  integration.cpp: gyroscopic, x and q, guard
-  liftBodies(world, ws, h, state);                                 // §11.8   scene_solve.cpp: split impulse, the bodies
-  if (impulse) correctPositions(model, bodies, bw);                // §5.8    position_correction.cpp
-  sleepIslands(model, bodies, bw, impulse);                        // §6      sleep.cpp
-  finishRobots(world, h, state, ws);                               // §11.5–7 scene_step.cpp: momenta, positions, guard
-  sleepRobotIslands(world, h, state, ws);                          // §11.9   scene_sleep.cpp
+  const bool impulse = solveContacts(world, state, h, ws);         // §5.5    above: every island, bodies' and robots'
+  integratePositions(world, h, state, ws);                         // §5.6–7  above: positions, guard, robots' second halves
+  correctPositions(world, impulse, h, state, ws);                  // §5.8    above: split impulse, position correction
+  sleepIslands(world, h, state, ws, impulse);                      // §6      sleep.cpp: islands of bodies and robots
   placeAllLinks(world, state, ws);                                 // §11.9   scene_step.cpp: for readers and the next step
   recordRobotContacts(world, state, ws);                           // §11.9   scene_step.cpp: every contact, for the warm start
   // clang-format on
