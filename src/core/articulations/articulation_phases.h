@@ -10,10 +10,11 @@
 #pragma GCC visibility push(hidden)
 namespace rigid_body_sim::core::detail {
 
-/// Everything before the rows: the kinematics at the start (ws.kin), the
-/// factored A = M + h D (ws.factor), the velocity the step gives without
-/// rows (ws.next) by `integrator`, the joints' momenta it carries (ws.rhs)
-/// and the floating base's whole momentum (ws.H_W).
+/// Everything before the rows, from the kinematics at the start (ws.kin,
+/// which the caller has computed at `state`): the factored A = M + h D
+/// (ws.factor), the velocity the step gives without rows (ws.next) by
+/// `integrator`, the joints' momenta it carries (ws.rhs) and the floating
+/// base's whole momentum (ws.H_W).
 void predictArticulation(const ArticulationModel& model, const ArticulationState& state, const ArticulationLoads& loads,
                          const Vec3& g_W, double h, ArticulationIntegrator integrator, ArticulationWorkspace& ws);
 

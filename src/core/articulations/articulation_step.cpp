@@ -74,8 +74,7 @@ namespace detail {
 
 void predictArticulation(const ArticulationModel& model, const ArticulationState& state, const ArticulationLoads& loads,
                          const Vec3& g_W, double h, ArticulationIntegrator integrator, ArticulationWorkspace& ws) {
-  ArticulationKinematics& kin = ws.kin;
-  kinematics(model, state, kin);
+  const ArticulationKinematics& kin = ws.kin;  // at `state` already (the caller's placement computed it)
   const int base = model.fixed_base ? 0 : 6;
   const int nj = model.jointCount();
   // A = M + h D: joint damping taken at the new velocity.

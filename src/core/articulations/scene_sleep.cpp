@@ -15,7 +15,23 @@ void wakeBody(BodyState& s) {
 
 }  // namespace
 
-void wakeHitRobots(const World& world, const WorldLoads& loads, double h, WorldState& state, WorldWorkspace& ws) {
+void wakeLoadedRobots(const World& world, const WorldLoads& loads, WorldState& state, WorldWorkspace& ws) {
+  const std::size_t robots = world.robots().size();
+  ws.robots.resize(robots);
+  ws.robot_diverged.assign(robots, 0);
+  if (robots == 0) return;
+  std::vector<char>& woken = ws.scratch->woken;
+  woken.assign(robots, 0);
+  for (std::size_t r = 0; r < robots; ++r) {
+    ArticulationState& rs = state.robots[r];
+    if (rs.asleep && loaded(robotLoads(loads, r))) {
+      wakeRobot(rs);
+      woken[r] = 1;
+    }
+  }
+}
+
+void wakeHitRobots(const World& world, WorldState& state, WorldWorkspace& ws) {
   if (world.robots().empty()) return;
   std::vector<char>& woken = ws.scratch->woken;
   std::vector<BodyState>& bodies = state.bodies.bodies;
@@ -27,7 +43,7 @@ void wakeHitRobots(const World& world, const WorldLoads& loads, double h, WorldS
     if (!hit) continue;
     wakeRobot(state.robots[r]);
     woken[r] = 1;
-    predictRobot(world, r, robotLoads(loads, r), h, state, ws);
+    placeLinks(world, r, state, ws);  // every link awake, where the robot rests
   }
   for (const Contact& c : ws.bodies.contacts) {
     if (c.other < 0) continue;

@@ -50,31 +50,36 @@ void checkWorld(const World& world, const WorldState& state, const WorldLoads& l
 const ArticulationLoads& robotLoads(const WorldLoads& loads, std::size_t r);
 
 /// Robot r's links as bodies where it is now, moving as it does; a
-/// sleeping robot's as sleepers.
+/// sleeping robot's as sleepers. Its kinematics stay in ws.robots[r].kin,
+/// where its first half (predictRobot) starts from.
 void placeLinks(const World& world, std::size_t r, WorldState& state, WorldWorkspace& ws);
 
-/// Robot r's first half (awake, with dofs): its velocity without rows, its
-/// links placed moving at it (for the speculative margins); else its links
-/// placed where it is.
+/// Robot r's first half (awake, with dofs), from the kinematics its
+/// placement left: its velocity without rows, in its workspace (`next`);
+/// where the step began (`start`, for the guard).
 void predictRobot(const World& world, std::size_t r, const ArticulationLoads& loads, double h, WorldState& state,
                   WorldWorkspace& ws);
 
 // ---- The robots' stages, in the order step.cpp lists them.
 
-/// Every robot's first half (predictRobot); a sleeping robot under a load
-/// wakes first (in scratch->woken), one without stays put as a sleeper.
-void predictRobots(const World& world, const WorldLoads& loads, double h, WorldState& state, WorldWorkspace& ws);
+/// Before the stages: the robots' workspaces sized, and every sleeping
+/// robot under a load awake (in scratch->woken).
+void wakeLoadedRobots(const World& world, const WorldLoads& loads, WorldState& state, WorldWorkspace& ws);
+
+/// Every robot's links placed where it now is (placeLinks): what detection
+/// sees at the start, readers and the next step at the end.
+void placeAllLinks(const World& world, WorldState& state, WorldWorkspace& ws);
 
 /// Drops the detection's contacts between links joined by a joint (they
 /// meet at it, and never touch).
 void dropJoinedLinks(const World& world, Workspace& ws);
 
 /// A sleeping robot whose link the detection woke (something came at it)
-/// wakes, and takes its first half now. A robot woken this step (by that or
-/// by a load, scratch->woken) wakes the sleeping bodies its links touch: they
-/// slept as one island, and a robot pressing on a sleeper it rested against
-/// would not come at it fast enough to wake it (the free bodies' rule).
-void wakeHitRobots(const World& world, const WorldLoads& loads, double h, WorldState& state, WorldWorkspace& ws);
+/// wakes, its links with it. A robot woken this step (by that or by a load,
+/// scratch->woken) wakes the sleeping bodies its links touch: they slept as
+/// one island, and a robot pressing on a sleeper it rested against would
+/// not come at it fast enough to wake it (the free bodies' rule).
+void wakeHitRobots(const World& world, WorldState& state, WorldWorkspace& ws);
 
 /// Moves the contacts of the islands that hold an awake robot (bodies
 /// joined by contacts between awake bodies, a robot's links joined to each
@@ -84,6 +89,10 @@ void wakeHitRobots(const World& world, const WorldLoads& loads, double h, WorldS
 /// then see only the other islands' contacts, and no link: the links are
 /// marked asleep until the robots place them again (placeAllLinks).
 void takeRobotContacts(const World& world, WorldState& state, WorldWorkspace& ws);
+
+/// Every robot's first half (predictRobot), beside the free bodies'
+/// velocity stage (integrateVelocities in step.cpp).
+void predictRobots(const World& world, const WorldLoads& loads, double h, WorldState& state, WorldWorkspace& ws);
 
 /// The one solve of the islands that hold a robot: every awake robot's
 /// joint rows and every contact of those islands, warm started; the
@@ -99,10 +108,6 @@ void liftBodies(const World& world, const WorldWorkspace& ws, double h, WorldSta
 /// Every awake robot's second half: its momenta from the solve's impulses,
 /// its positions, the speed limits and the guard (ws.robot_diverged).
 void finishRobots(const World& world, double h, WorldState& state, WorldWorkspace& ws);
-
-/// Every robot's links placed where it now is (placeLinks), for readers and
-/// the next step.
-void placeAllLinks(const World& world, WorldState& state, WorldWorkspace& ws);
 
 /// The robots' contacts merged back among the others (sorted by key), and
 /// every contact's impulses kept in the state for the next step's warm start.

@@ -26,9 +26,9 @@ const ArticulationLoads& robotLoads(const WorldLoads& loads, std::size_t r) {
 
 void placeLinks(const World& world, std::size_t r, WorldState& state, WorldWorkspace& ws) {
   const SceneRobot& robot = world.robots()[r];
-  if (robot.link.empty()) return;  // no link is a body: nothing to place
   ArticulationWorkspace& rw = ws.robots[r];
-  kinematics(robot.model, state.robots[r], rw.kin);
+  kinematics(robot.model, state.robots[r], rw.kin);  // also the first half's, with or without links
+  if (robot.link.empty()) return;                    // no link is a body: nothing to place
   const std::size_t first = static_cast<std::size_t>(robot.first_body);
   detail::setLinkStates(world.model(), robot.link, rw.kin, first, state.bodies.bodies);
   if (!state.robots[r].asleep) return;
@@ -42,16 +42,9 @@ void predictRobot(const World& world, std::size_t r, const ArticulationLoads& lo
   ArticulationState& rs = state.robots[r];
   rw.start.X_WB = rs.X_WB;
   rw.start.q = rs.q;
-  if (m.dofCount() == 0 || rs.asleep) {
-    placeLinks(world, r, state, ws);
-    return;
-  }
+  if (m.dofCount() == 0 || rs.asleep) return;
   detail::predictArticulation(m, rs, loads, world.model().gravity(), h, world.model().articulationIntegrator(), rw);
-  const SceneRobot& robot = world.robots()[r];
-  if (robot.link.empty()) return;  // no link is a body: none to place
   setTwists(m, rw.next, rw.kin);
-  detail::setLinkStates(world.model(), robot.link, rw.kin, static_cast<std::size_t>(robot.first_body),
-                        state.bodies.bodies);
 }
 
 namespace {
@@ -85,20 +78,7 @@ void checkWorld(const World& world, const WorldState& state, const WorldLoads& l
 }
 
 void predictRobots(const World& world, const WorldLoads& loads, double h, WorldState& state, WorldWorkspace& ws) {
-  const std::size_t robots = world.robots().size();
-  ws.robots.resize(robots);
-  ws.robot_diverged.assign(robots, 0);
-  if (robots == 0) return;
-  std::vector<char>& woken = ws.scratch->woken;
-  woken.assign(robots, 0);
-  for (std::size_t r = 0; r < robots; ++r) {
-    ArticulationState& rs = state.robots[r];
-    if (rs.asleep && loaded(robotLoads(loads, r))) {
-      wakeRobot(rs);
-      woken[r] = 1;
-    }
-    predictRobot(world, r, robotLoads(loads, r), h, state, ws);
-  }
+  for (std::size_t r = 0; r < world.robots().size(); ++r) predictRobot(world, r, robotLoads(loads, r), h, state, ws);
 }
 
 void dropJoinedLinks(const World& world, Workspace& ws) {

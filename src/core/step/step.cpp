@@ -27,6 +27,15 @@ namespace {
 // (articulations/scene_*.cpp), so a world without robots runs the first
 // alone.
 
+/// §5.2–5.4, §11.5: the awake bodies' forces, v and ω, damping and speed
+/// limits (integration.cpp), then every awake robot's first half, its
+/// velocities without rows (scene_step.cpp). Both after the detection,
+/// whose speculative margins take every body and link as it moves now.
+void integrateVelocities(const World& world, const WorldLoads& loads, double h, WorldState& state, WorldWorkspace& ws) {
+  core::integrateVelocities(world.model(), state.bodies, loads.bodies, h, ws.bodies);
+  predictRobots(world, loads, h, state, ws);
+}
+
 /// §5.5, §11.9: the free bodies' islands (contact_solver.cpp), then the
 /// islands that hold a robot, joints and contacts in one solve
 /// (scene_solve.cpp). Returns whether the free bodies' solve ran.
@@ -61,17 +70,17 @@ bool advance(const World& world, WorldState& state, const WorldLoads& loads, dou
   Workspace& bw = ws.bodies;
   // The stages, as a table:
   // clang-format off
-  predictRobots(world, loads, h, state, ws);                       // §11.5   scene_step.cpp: the robots' first halves
+  placeAllLinks(world, state, ws);                                 // §11.9   scene_step.cpp: where the robots are
   detectContacts(model, bodies, h, bw);                            // §5.1    detection.cpp (wakes sleepers hit)
   dropJoinedLinks(world, bw);                                      // §11.8   scene_step.cpp
-  wakeHitRobots(world, loads, h, state, ws);                       // §11.9   scene_sleep.cpp
+  wakeHitRobots(world, state, ws);                                 // §11.9   scene_sleep.cpp
   takeRobotContacts(world, state, ws);                             // §11.9   scene_solve.cpp: the robots' islands apart
-  integrateVelocities(model, bodies, loads.bodies, h, bw);         // §5.2–4  integration.cpp: forces, v and ω, damping, limits
+  integrateVelocities(world, loads, h, state, ws);                 // §5.2–4  above: forces, limits, robots' first halves
   const bool impulse = solveContacts(world, state, h, ws);         // §5.5    above: every island, bodies' and robots'
   integratePositions(world, h, state, ws);                         // §5.6–7  above: positions, guard, robots' second halves
   correctPositions(world, impulse, h, state, ws);                  // §5.8    above: split impulse, position correction
   sleepIslands(world, h, state, ws, impulse);                      // §6      sleep.cpp: islands of bodies and robots
-  placeAllLinks(world, state, ws);                                 // §11.9   scene_step.cpp: for readers and the next step
+  placeAllLinks(world, state, ws);                                 // §11.9   scene_step.cpp: where they are, for readers
   recordRobotContacts(world, state, ws);                           // §11.9   scene_step.cpp: every contact, for the warm start
   // clang-format on
   return impulse;
@@ -97,6 +106,7 @@ void stepWorld(const World& world, WorldState& state, const WorldLoads& loads, W
   Workspace& bw = ws.bodies;
   const double h = model.dt();
   wakeLoadedBodies(state.bodies, loads.bodies);
+  wakeLoadedRobots(world, loads, state, ws);
   if (!bw.speed_limited.empty()) bw.speed_limited.clear();
   if (!bw.diverged.empty()) bw.diverged.clear();
   switch (model.contact().method) {      // a scene with robots takes the impulse method (Scene refuses others)
